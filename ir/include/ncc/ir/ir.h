@@ -1,0 +1,138 @@
+#pragma once
+// The IR: a stream of canonical blocks. Every block says everything explicitly (the modal
+// state in force, the frame of offsets, its operations with absolute targets in normalised
+// units: mm, degrees, seconds, mm/min) so no pass re-derives modal state. Blocks flow through
+// the passes one at a time (streaming); no pass needs the whole program.
+//
+// Coordinates: lowering emits targets in the *work* space (program coordinates after unit
+// normalisation and G90/G91 resolution; G53 and reference returns are already machine space).
+// The coordinate-transform pass adds the block's frame and marks them Machine. The backend
+// accepts machine-space operations only (the verifier checks this).
+#include <cstdint>
+#include <string>
+#include <variant>
+#include <vector>
+
+#include "ncc/machine/axes.h"
+#include "ncc/support/source_location.h"
+
+namespace ncc::ir {
+
+enum class Space : uint8_t { Work, Machine };
+enum class Plane : uint8_t { XY, ZX, YZ };              // G17, G18, G19
+enum class DistanceMode : uint8_t { Absolute, Incremental };  // G90, G91
+enum class Units : uint8_t { Millimetre, Inch };          // G21, G20 (input unit)
+enum class FeedMode : uint8_t { PerMinute, PerRevolution, InverseTime };  // G94, G95, G93
+enum class PathControl : uint8_t { Continuous, ExactStop, Tapping, CornerOverride };  // G64 G61 G63 G62
+enum class RapidType : uint8_t { Linear, PerAxis };  // G00 interpolation type (parameter)
+
+// Modal state in force for the block (after its own G codes took effect).
+struct Modal {
+  Plane plane = Plane::XY;
+  DistanceMode distance = DistanceMode::Absolute;
+  Units units = Units::Millimetre;
+  FeedMode feed_mode = FeedMode::PerMinute;
+  PathControl path = PathControl::Continuous;
+  std::string work_offset = "G54";  // name as in MachineConfig::work_offsets
+  int length_offset_h = 0;          // H register in force (0 = none)
+  int length_offset_sign = 0;       // +1 G43, -1 G44, 0 G49
+  double feed = 0.0;                // modal F, normalised (mm/min, or mm/rev in G95)
+  double spindle_speed = 0.0;       // modal S, rev/min
+  int tool = 0;                     // T selected
+  friend bool operator==(const Modal&, const Modal&) = default;
+};
+
+// The translation from work to machine coordinates in force for the block, per axis:
+// machine = work + work_offset + shift + tool_length.
+struct Frame {
+  AxisValues work_offset{};   // G54..G59 / G54.1 Pn (possibly rewritten by G10)
+  AxisValues shift{};         // G92 / G52 combined
+  AxisValues tool_length{};   // G43/G44 H: the tool-length vector
+  AxisValues total() const {
+    AxisValues t{};
+    for (int i = 0; i < kMaxAxes; ++i) t[i] = work_offset[i] + shift[i] + tool_length[i];
+    return t;
+  }
+  friend bool operator==(const Frame&, const Frame&) = default;
+};
+
+struct Rapid {
+  AxisValues to{};  // every configured axis, absolute
+  Space space = Space::Work;
+  RapidType type = RapidType::Linear;
+};
+
+struct Linear {
+  AxisValues to{};
+  Space space = Space::Work;
+  double feed = 0.0;          // mm/min, or mm/rev when feed_per_rev
+  bool feed_per_rev = false;
+};
+
+struct Arc {
+  AxisValues to{};      // end point, every configured axis (helical: the linear axis moves too)
+  AxisValues center{};  // centre; only the two plane axes are meaningful
+  Space space = Space::Work;
+  Plane plane = Plane::XY;
+  bool clockwise = true;    // seen from the positive third axis (for G18: from +Y)
+  uint32_t extra_turns = 0; // full circles beyond the first (reserved; helical L)
+  double feed = 0.0;
+  bool feed_per_rev = false;
+};
+
+struct Dwell {
+  double seconds = 0.0;
+  bool revolutions = false;  // true: `seconds` holds spindle revolutions (G95 dwell parameter)
+};
+
+// A non-motion machine function, in program order within the block.
+struct MachineFunction {
+  enum class Kind : uint8_t {
+    ProgramStop,      // M00
+    OptionalStop,     // M01
+    ProgramEnd,       // M02
+    ProgramEndRewind, // M30
+    SpindleCW,        // M03
+    SpindleCCW,       // M04
+    SpindleStop,      // M05
+    ToolChange,       // M06
+    CoolantOn,        // M08
+    CoolantOff,       // M09
+    SpindleOrient,    // M19
+    OtherM,           // any other M code, passed through (code)
+    SpindleSpeed,     // S (value rev/min)
+    ToolSelect,       // T (code)
+  };
+  Kind kind = Kind::OtherM;
+  int64_t code = 0;   // the M or T number
+  double value = 0.0; // S speed
+};
+
+// A position check (G27): the commanded position must equal the reference position.
+struct ReferenceCheck {
+  AxisValues position{};  // machine coordinates reached
+  AxisMask axes = 0;
+  int reference = 1;
+};
+
+using Operation = std::variant<Rapid, Linear, Arc, Dwell, MachineFunction, ReferenceCheck>;
+
+struct Block {
+  SourceLocation loc;
+  int64_t sequence = -1;  // N number, -1 if none
+  Modal modal;
+  Frame frame;
+  bool exact_stop = false;   // G09 in this block, or G61 in force
+  std::vector<Operation> ops;
+};
+
+// A pass or the backend: receives blocks one at a time. finish() is called once at the end
+// (a look-ahead pass flushes what it holds there).
+class BlockSink {
+ public:
+  virtual ~BlockSink() = default;
+  virtual void accept(Block block) = 0;
+  virtual void finish() = 0;
+};
+
+}  // namespace ncc::ir

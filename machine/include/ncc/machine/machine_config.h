@@ -1,0 +1,71 @@
+#pragma once
+// The machine a program is compiled for and run on: axes, offset registers, work offsets,
+// reference points, start position and the dialect's controller parameters.
+// Read from TOML (machine_file.h); a conformance case's [machine] and [start] tables are a
+// valid machine file. `defaultMachine()` is a 3-axis metric mill.
+#include <cstdint>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "ncc/machine/axes.h"
+#include "ncc/machine/params.h"
+
+namespace ncc {
+
+enum class AxisKind : uint8_t { Linear, Rotary };
+
+struct AxisConfig {
+  std::string name;             // "X", "Y", "Z", "A", ...
+  AxisKind kind = AxisKind::Linear;
+  bool diameter = false;        // lathe: programmed and reported as a diameter
+  double min_travel = -1e9;     // machine coordinates, mm or deg
+  double max_travel = 1e9;
+  double rapid_velocity = 30000.0;  // mm/min (deg/min): G00 speed
+  double max_velocity = 30000.0;    // mm/min: cutting feed limit
+  double max_acceleration = 2000.0; // mm/s^2
+  double max_jerk = 50000.0;        // mm/s^3
+};
+
+// One mill offset register pair: H (length) and D (radius) share numbers on FANUC/Mazak.
+struct ToolOffsetRegisters {
+  std::map<int, double> length;  // H number -> tool length, mm
+  std::map<int, double> radius;  // D number -> cutter radius, mm
+};
+
+// Lathe tool offset memory (geometry/wear with tip direction), used by fanuc-t.
+struct LatheOffset {
+  double x = 0.0, z = 0.0, radius = 0.0;
+  int tip = 0;
+};
+struct LatheOffsetRegisters {
+  std::map<int, LatheOffset> combined;        // T1 = {...}: one register, geometry only
+  std::map<int, LatheOffset> geometry;        // geometryN
+  std::map<int, LatheOffset> wear;            // wearN
+  std::map<int, LatheOffset> second_geometry; // second_geometryN
+};
+
+struct MachineConfig {
+  std::vector<AxisConfig> axes;          // in order; at most kMaxAxes
+  ToolOffsetRegisters tool_offsets;
+  LatheOffsetRegisters lathe_offsets;
+  // Work offsets by name: "G54".."G59", "G54.1P1".."G54.1P48" (FANUC/Mazak additional),
+  // "G54P1".."G54P93" (Siemens ISO). Machine coordinates of the work zero, per axis index.
+  std::map<std::string, AxisValues> work_offsets;
+  AxisValues start_position{};           // machine position before the program starts
+  double ipo_cycle_seconds = 0.001;      // interpolation cycle T
+  ParameterSet params;                   // [machine.params]
+
+  int axisIndex(std::string_view name) const;  // -1 if not configured
+  int axisCount() const { return static_cast<int>(axes.size()); }
+
+  // Stable hash of everything that changes compiled code (axes, offsets, params).
+  // Stored in bytecode headers so a program is not run on a machine it was not compiled for.
+  uint64_t configHash() const;
+};
+
+// 3-axis metric mill: X Y Z linear, G54-G59 at zero, no tool offsets, every parameter default.
+MachineConfig defaultMachine();
+
+}  // namespace ncc

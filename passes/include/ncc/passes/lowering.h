@@ -1,0 +1,49 @@
+#pragma once
+// Lowering: AST blocks -> canonical IR blocks. This is the modal-state machine of the ISO
+// family: it applies the dialect's G-code group table (one-shot vs modal, one code per group
+// per block), the decimal-point and increment-system rules, units, G90/G91, feeds, and the
+// semantics of motion, dwell, coordinate systems, offsets and reference returns. Targets are
+// emitted in the work space with the frame in force (see ir.h).
+#include <filesystem>
+#include <memory>
+#include <optional>
+
+#include "ncc/frontend/ast.h"
+#include "ncc/frontend/block_reader.h"
+#include "ncc/ir/ir.h"
+#include "ncc/machine/dialect.h"
+#include "ncc/machine/machine_config.h"
+#include "ncc/support/diagnostics.h"
+
+namespace ncc::passes {
+
+struct LoweringOptions {
+  Dialect dialect = Dialect::FanucM;
+  const MachineConfig* machine = nullptr;  // required
+  std::filesystem::path program_dir;       // where called subprograms are looked up
+};
+
+// What the caller (the block loop) must do after a block.
+struct LowerResult {
+  std::optional<frontend::Language> switch_language;  // G290 / G291 seen
+  bool program_end = false;                           // M02 / M30: stop reading
+};
+
+class Lowering {
+ public:
+  Lowering(LoweringOptions options, DiagnosticEngine& diags, ir::BlockSink& out);
+  ~Lowering();
+
+  // Lowers one block; IR blocks go to `out`. Errors are reported with the block's location
+  // and the controller's alarm number; the erroneous block produces no IR.
+  LowerResult lower(const ast::Block& block);
+  // End of input: reports a program that ends without M02/M30 where the dialect requires it,
+  // and finishes the sink.
+  void finish();
+
+ private:
+  struct State;
+  std::unique_ptr<State> state_;
+};
+
+}  // namespace ncc::passes

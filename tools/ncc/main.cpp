@@ -1,0 +1,2 @@
+// ncc command line (being assembled; see driver/).
+int main() { return 2; }
