@@ -30,7 +30,7 @@ std::optional<Dialect> parseDialect(std::string_view name) {
 }
 
 Dialect dialectFromFileName(std::string_view file_name) {
-  std::string lower = absl::AsciiStrToLower(file_name);
+  std::string lower = absl::AsciiStrToLower(std::string(file_name));
   if (absl::EndsWith(lower, ".mpf") || absl::EndsWith(lower, ".spf")) return Dialect::SiemensDin;
   return Dialect::FanucM;
 }

@@ -22,9 +22,23 @@ namespace ncc::frontend {
 
 enum class Language : uint8_t { Iso, Din };
 
+// Which parser reads ISO blocks. Auto tries the hand-written fast path for plain word blocks
+// and falls back to the ANTLR parser for anything else; AntlrOnly skips the fast path (the
+// differential test compares the two).
+enum class ParserChoice : uint8_t { Auto, AntlrOnly };
+
 struct ReaderOptions {
   Language initial_language = Language::Iso;
   bool semicolon_ends_block = true;  // FANUC EOB ';' (Siemens ISO: ';' starts an annotation)
+  ParserChoice parser = ParserChoice::Auto;
+};
+
+// Counters of one reader, for tests and benchmarks.
+struct ReaderStats {
+  uint64_t lines = 0;           // physical lines read
+  uint64_t blocks = 0;          // blocks returned by next()
+  uint64_t fast_path_blocks = 0;  // of those, read by the fast path
+  uint64_t rejected_blocks = 0;   // blocks skipped because of a syntax error (or DIN)
 };
 
 class BlockReader {
@@ -44,18 +58,24 @@ class BlockReader {
   void setLanguage(Language language);
   Language language() const;
 
+  const ReaderStats& stats() const;
+
  private:
   struct Impl;
   std::unique_ptr<Impl> impl_;
 };
 
 // Parses one line of ISO text (no line terminator) as a block; used by BlockReader, the
-// fuzzer and tests. Errors go to `diags` with `line` and columns within `text`.
+// fuzzer and tests. Errors go to `diags` with `line` and columns within `text`, the first
+// character of `text` being column `first_column` (a block after a ';' on the same line).
+// Reuses one parser per thread.
 std::optional<ast::Block> parseIsoBlock(std::string_view text, uint32_t file, uint32_t line,
-                                        DiagnosticEngine& diags);
+                                        DiagnosticEngine& diags, uint32_t first_column = 1,
+                                        ParserChoice parser = ParserChoice::Auto);
 
 // Prints a block back as canonical text (`ncc compile --emit=ast`): one block per line,
-// `N10 G01 X10. Y-5. F100.`, expressions fully bracketed.
+// `N10 G1 X10. Y-5. F100.`, expressions fully bracketed (the form is described in
+// src/block_printer.cpp and docs/frontend.md).
 std::string printBlock(const ast::Block& block);
 
 }  // namespace ncc::frontend

@@ -7,6 +7,7 @@
 #include <map>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "ncc/machine/axes.h"
@@ -26,24 +27,29 @@ struct AxisConfig {
   double max_velocity = 30000.0;    // mm/min: cutting feed limit
   double max_acceleration = 2000.0; // mm/s^2
   double max_jerk = 50000.0;        // mm/s^3
+  friend bool operator==(const AxisConfig&, const AxisConfig&) = default;
 };
 
 // One mill offset register pair: H (length) and D (radius) share numbers on FANUC/Mazak.
 struct ToolOffsetRegisters {
   std::map<int, double> length;  // H number -> tool length, mm
   std::map<int, double> radius;  // D number -> cutter radius, mm
+  friend bool operator==(const ToolOffsetRegisters&, const ToolOffsetRegisters&) = default;
 };
 
 // Lathe tool offset memory (geometry/wear with tip direction), used by fanuc-t.
 struct LatheOffset {
   double x = 0.0, z = 0.0, radius = 0.0;
-  int tip = 0;
+  int tip = 0;                  // imaginary tool nose direction 0..9
+  friend bool operator==(const LatheOffset&, const LatheOffset&) = default;
 };
 struct LatheOffsetRegisters {
   std::map<int, LatheOffset> combined;        // T1 = {...}: one register, geometry only
   std::map<int, LatheOffset> geometry;        // geometryN
   std::map<int, LatheOffset> wear;            // wearN
   std::map<int, LatheOffset> second_geometry; // second_geometryN
+  std::map<int, LatheOffset> edge;            // Siemens DIN: D<n> = {...}, cutting edge n
+  friend bool operator==(const LatheOffsetRegisters&, const LatheOffsetRegisters&) = default;
 };
 
 struct MachineConfig {
@@ -60,9 +66,14 @@ struct MachineConfig {
   int axisIndex(std::string_view name) const;  // -1 if not configured
   int axisCount() const { return static_cast<int>(axes.size()); }
 
-  // Stable hash of everything that changes compiled code (axes, offsets, params).
+  // Stable hash of everything that changes compiled code: axes (names, kinds, diameter,
+  // travel limits), offset registers, work offsets, start position and params. Not hashed:
+  // the axes' velocity/acceleration/jerk limits and the IPO cycle (the VM reads them at run
+  // time). FNV-1a 64 over a canonical serialisation: the same on every run and platform.
   // Stored in bytecode headers so a program is not run on a machine it was not compiled for.
   uint64_t configHash() const;
+
+  friend bool operator==(const MachineConfig&, const MachineConfig&) = default;
 };
 
 // 3-axis metric mill: X Y Z linear, G54-G59 at zero, no tool offsets, every parameter default.

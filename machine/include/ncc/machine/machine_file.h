@@ -1,8 +1,8 @@
 #pragma once
 // Reading a machine file (TOML, via toml++). Accepted tables: [machine] (axes, diameter_axes,
-// [machine.offsets], [machine.work], [machine.params], [machine.axis.<NAME>] limits) and
-// [start] (position). Any other key is an error naming the key, with the file's line and
-// column (code NCC0301..; see docs/machine-file.md).
+// ipo_cycle, [machine.offsets], [machine.work], [machine.params], [machine.axis.<NAME>]
+// limits) and [start] (position). Any other key is an error naming the key, with the file's
+// line and column (codes NCC0300..NCC0306; see docs/machine-file.md). Never throws.
 #include <filesystem>
 #include <optional>
 #include <string>
@@ -14,11 +14,21 @@
 
 namespace ncc {
 
+struct MachineFileOptions {
+  // Read only [machine] and [start] and ignore every other top-level key: lets a conformance
+  // case.toml (title, [expect], ...) be loaded as it is, with its own line numbers.
+  bool ignore_other_top_level_keys = false;
+};
+
+// Returns the machine, or nullopt after reporting every error found to `diags`.
 std::optional<MachineConfig> loadMachineFile(const std::filesystem::path& path,
-                                             SourceManager& sources, DiagnosticEngine& diags);
+                                             SourceManager& sources, DiagnosticEngine& diags,
+                                             const MachineFileOptions& options = {});
 
 // Same, from text already in memory (tests, the conformance runner's extracted tables).
+// The text is registered in `sources` under `display_name`.
 std::optional<MachineConfig> parseMachineFile(std::string_view toml_text, std::string display_name,
-                                              SourceManager& sources, DiagnosticEngine& diags);
+                                              SourceManager& sources, DiagnosticEngine& diags,
+                                              const MachineFileOptions& options = {});
 
 }  // namespace ncc

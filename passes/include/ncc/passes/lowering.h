@@ -37,8 +37,8 @@ class Lowering {
   // Lowers one block; IR blocks go to `out`. Errors are reported with the block's location
   // and the controller's alarm number; the erroneous block produces no IR.
   LowerResult lower(const ast::Block& block);
-  // End of input: reports a program that ends without M02/M30 where the dialect requires it,
-  // and finishes the sink.
+  // End of input: finishes the sink. (None of fanuc-m, mazak-m, siemens-iso-m requires
+  // M02/M30: Mazak memory operation implies M30, and the Siemens examples end without it.)
   void finish();
 
  private:

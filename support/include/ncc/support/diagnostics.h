@@ -36,6 +36,12 @@ class DiagnosticEngine {
     report(Severity::Warning, std::move(code), where, std::move(message));
   }
 
+  // Forgets every diagnostic (a new phase, e.g. the run after a compile, reports afresh).
+  void clear() {
+    diagnostics_.clear();
+    error_count_ = 0;
+  }
+
   bool hasErrors() const { return error_count_ > 0; }
   size_t errorCount() const { return error_count_; }
   const std::vector<Diagnostic>& diagnostics() const { return diagnostics_; }

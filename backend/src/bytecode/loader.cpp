@@ -1,0 +1,186 @@
+#include "ncc/bytecode/loader.h"
+
+#include <fstream>
+#include <iterator>
+
+#include "absl/strings/str_cat.h"
+#include "bytes.h"
+#include "header_layout.h"
+
+namespace ncc::bytecode {
+
+namespace {
+
+constexpr const char* kSectionNames[kSectionCount] = {"code", "line table", "string pool",
+                                                           "unit table"};
+
+Error problem(std::string code, std::string message) {
+  return Error{std::move(code), std::move(message)};
+}
+
+std::optional<Error> readAxes(std::span<const uint8_t> bytes, int axis_count, Header& header) {
+  header.axes.clear();
+  for (int i = 0; i < axis_count; ++i) {
+    const uint8_t* entry = bytes.data() + kFixedHeaderSize + kAxisEntrySize * i;
+    const std::string where = absl::StrCat("axis table entry ", i);
+    if (entry[0] > static_cast<uint8_t>(AxisKind::Rotary))
+      return problem("NCC7005", absl::StrCat(where, ": unknown axis kind ", entry[0]));
+    const uint8_t length = entry[1];
+    if (length == 0 || length > kMaxAxisNameLength)
+      return problem("NCC7005", absl::StrCat(where, ": name length ", length, " (1 to ",
+                                             kMaxAxisNameLength, " allowed)"));
+    for (uint32_t k = 0; k < kMaxAxisNameLength; ++k) {
+      const uint8_t c = entry[2 + k];
+      const bool ok = k < length ? (c > 0x20 && c < 0x7F) : c == 0;
+      if (!ok)
+        return problem("NCC7005", absl::StrCat(where, ": invalid name byte 0x",
+                                               absl::Hex(c, absl::kZeroPad2), " at ", k));
+    }
+    AxisInfo axis{std::string(reinterpret_cast<const char*>(entry + 2), length),
+                  static_cast<AxisKind>(entry[0])};
+    for (const AxisInfo& earlier : header.axes)
+      if (earlier.name == axis.name)
+        return problem("NCC7005", absl::StrCat(where, ": axis name '", axis.name, "' repeated"));
+    header.axes.push_back(std::move(axis));
+  }
+  return std::nullopt;
+}
+
+std::optional<Error> readStrings(std::span<const uint8_t> s, std::vector<std::string>& out) {
+  if (s.size() < 4) return problem("NCC7007", "string pool: missing the string count");
+  const uint32_t count = bytes::getU32(s.data());
+  // Each string takes at least its 4-byte length: a larger count cannot fit.
+  if (count > (s.size() - 4) / 4)
+    return problem("NCC7007", absl::StrCat("string pool: count ", count, " does not fit in ",
+                                           s.size(), " bytes"));
+  out.clear();
+  out.reserve(count);
+  size_t at = 4;
+  for (uint32_t i = 0; i < count; ++i) {
+    if (s.size() - at < 4)
+      return problem("NCC7007", absl::StrCat("string pool: string ", i, " truncated"));
+    const uint32_t length = bytes::getU32(s.data() + at);
+    at += 4;
+    if (length > s.size() - at)
+      return problem("NCC7007", absl::StrCat("string pool: string ", i, " (", length,
+                                             " bytes) runs past the section"));
+    out.emplace_back(reinterpret_cast<const char*>(s.data() + at), length);
+    at += length;
+  }
+  if (at != s.size())
+    return problem("NCC7007", absl::StrCat("string pool: ", s.size() - at,
+                                           " bytes after the last string"));
+  return std::nullopt;
+}
+
+std::optional<Error> readLines(std::span<const uint8_t> s, std::vector<LineEntry>& out) {
+  if (s.size() % kLineEntrySize != 0)
+    return problem("NCC7008", absl::StrCat("line table: size ", s.size(),
+                                           " is not a multiple of ", kLineEntrySize));
+  out.clear();
+  out.reserve(s.size() / kLineEntrySize);
+  for (size_t at = 0; at < s.size(); at += kLineEntrySize) {
+    const uint8_t* p = s.data() + at;
+    out.push_back(LineEntry{bytes::getU32(p), bytes::getU32(p + 4), bytes::getU32(p + 8),
+                            bytes::getU32(p + 12)});
+  }
+  return std::nullopt;
+}
+
+std::optional<Error> readUnits(std::span<const uint8_t> s, std::vector<Unit>& out) {
+  if (s.size() < 4) return problem("NCC7009", "unit table: missing the unit count");
+  const uint32_t count = bytes::getU32(s.data());
+  if (count == 0) return problem("NCC7009", "unit table: no program unit");
+  if (uint64_t{count} * kUnitEntrySize != s.size() - 4)
+    return problem("NCC7009", absl::StrCat("unit table: ", count, " units need ",
+                                           uint64_t{count} * kUnitEntrySize + 4,
+                                           " bytes, the section has ", s.size()));
+  out.clear();
+  out.reserve(count);
+  for (uint32_t i = 0; i < count; ++i) {
+    const uint8_t* p = s.data() + 4 + kUnitEntrySize * i;
+    out.push_back(Unit{bytes::getU32(p), bytes::getU32(p + 4)});
+  }
+  return std::nullopt;
+}
+
+}  // namespace
+
+std::optional<Error> load(std::span<const uint8_t> bytes, Program& program) {
+  if (bytes.size() < kFixedHeaderSize)
+    return problem("NCC7001", absl::StrCat("file of ", bytes.size(), " bytes is shorter than the ",
+                                           kFixedHeaderSize, "-byte header"));
+  if (!std::equal(std::begin(kMagic), std::end(kMagic), bytes.begin()))
+    return problem("NCC7002", "not an ncc bytecode file (magic is not 'NCCB')");
+  const uint8_t* p = bytes.data();
+  Header header;
+  header.version_major = bytes::getU16(p + 4);
+  header.version_minor = bytes::getU16(p + 6);
+  if (header.version_major != kVersionMajor || header.version_minor > kVersionMinor)
+    return problem("NCC7003", absl::StrCat("bytecode version ", header.version_major, ".",
+                                           header.version_minor, " is not supported (this is ",
+                                           kVersionMajor, ".", kVersionMinor, ")"));
+  if (p[8] > static_cast<uint8_t>(Dialect::SiemensDin))
+    return problem("NCC7004", absl::StrCat("header: unknown dialect ", p[8]));
+  header.dialect = static_cast<Dialect>(p[8]);
+  const int axis_count = p[9];
+  if (axis_count < 1 || axis_count > kMaxAxes)
+    return problem("NCC7004", absl::StrCat("header: axis count ", axis_count, " (1 to ", kMaxAxes,
+                                           " allowed)"));
+  if (bytes::getU16(p + 10) != 0) return problem("NCC7004", "header: reserved field is not zero");
+  header.variable_count = bytes::getU32(p + 12);
+  if (header.variable_count < 1 || header.variable_count > kMaxVariableCount)
+    return problem("NCC7004", absl::StrCat("header: variable count ", header.variable_count,
+                                           " (1 to ", kMaxVariableCount, " allowed)"));
+  header.config_hash = bytes::getU64(p + 16);
+
+  const uint32_t header_size = headerSize(axis_count);
+  if (bytes.size() < header_size)
+    return problem("NCC7001", absl::StrCat("file of ", bytes.size(), " bytes ends inside the ",
+                                           header_size, "-byte header"));
+  if (std::optional<Error> e = readAxes(bytes, axis_count, header)) return e;
+
+  // The sections must tile the rest of the file exactly, in order.
+  SectionTable sections;
+  uint64_t expected = header_size;
+  for (int i = 0; i < kSectionCount; ++i) {
+    sections[i].offset = bytes::getU32(p + kSectionTableOffset + 8 * i);
+    sections[i].size = bytes::getU32(p + kSectionTableOffset + 8 * i + 4);
+    if (sections[i].offset != expected)
+      return problem("NCC7006", absl::StrCat(kSectionNames[i], " section starts at ",
+                                             sections[i].offset, ", expected ", expected));
+    expected += sections[i].size;
+    if (expected > bytes.size())
+      return problem("NCC7006", absl::StrCat(kSectionNames[i], " section (", sections[i].size,
+                                             " bytes at ", sections[i].offset,
+                                             ") runs past the end of the file (", bytes.size(),
+                                             " bytes)"));
+  }
+  if (expected != bytes.size())
+    return problem("NCC7006", absl::StrCat(bytes.size() - expected,
+                                           " bytes after the last section"));
+  auto section = [&](Section s) {
+    const SectionRange& r = sections[static_cast<int>(s)];
+    return bytes.subspan(r.offset, r.size);
+  };
+
+  Program result;
+  result.header = std::move(header);
+  std::span<const uint8_t> code = section(Section::Code);
+  result.code.assign(code.begin(), code.end());
+  if (std::optional<Error> e = readLines(section(Section::Lines), result.lines)) return e;
+  if (std::optional<Error> e = readStrings(section(Section::Strings), result.strings)) return e;
+  if (std::optional<Error> e = readUnits(section(Section::Units), result.units)) return e;
+  program = std::move(result);
+  return std::nullopt;
+}
+
+std::optional<Error> loadFile(const std::filesystem::path& path, Program& program) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) return problem("NCC7015", absl::StrCat("cannot open '", path.string(), "'"));
+  std::vector<uint8_t> bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  if (in.bad()) return problem("NCC7015", absl::StrCat("cannot read '", path.string(), "'"));
+  return load(bytes, program);
+}
+
+}  // namespace ncc::bytecode

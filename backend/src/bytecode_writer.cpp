@@ -1,0 +1,165 @@
+#include "ncc/backend/bytecode_writer.h"
+
+
+#include "absl/strings/str_cat.h"
+#include "ncc/ir/verifier.h"
+
+namespace ncc::backend {
+
+namespace {
+
+bytecode::Header headerFor(const MachineConfig& machine, Dialect dialect) {
+  bytecode::Header header;
+  header.dialect = dialect;
+  header.config_hash = machine.configHash();
+  for (const AxisConfig& axis : machine.axes) header.axes.push_back({axis.name, axis.kind});
+  return header;
+}
+
+// The two axes of a plane in centre order (G17: X Y, G18: Z X, G19: Y Z).
+std::pair<const char*, const char*> planeAxisNames(ir::Plane plane) {
+  switch (plane) {
+    case ir::Plane::XY: return {"X", "Y"};
+    case ir::Plane::ZX: return {"Z", "X"};
+    case ir::Plane::YZ: return {"Y", "Z"};
+  }
+  return {"X", "Y"};
+}
+
+bytecode::ArcPlane arcPlane(ir::Plane plane) {
+  switch (plane) {
+    case ir::Plane::XY: return bytecode::ArcPlane::XY;
+    case ir::Plane::ZX: return bytecode::ArcPlane::ZX;
+    case ir::Plane::YZ: return bytecode::ArcPlane::YZ;
+  }
+  return bytecode::ArcPlane::XY;
+}
+
+bytecode::Opcode machineFunctionOpcode(ir::MachineFunction::Kind kind) {
+  using K = ir::MachineFunction::Kind;
+  using bytecode::Opcode;
+  switch (kind) {
+    case K::ProgramStop: return Opcode::ProgramStop;
+    case K::OptionalStop: return Opcode::OptionalStop;
+    case K::ProgramEnd: return Opcode::ProgramEnd;
+    case K::ProgramEndRewind: return Opcode::ProgramEndRewind;
+    case K::SpindleCW: return Opcode::SpindleCW;
+    case K::SpindleCCW: return Opcode::SpindleCCW;
+    case K::SpindleStop: return Opcode::SpindleStop;
+    case K::ToolChange: return Opcode::ToolChange;
+    case K::CoolantOn: return Opcode::CoolantOn;
+    case K::CoolantOff: return Opcode::CoolantOff;
+    case K::SpindleOrient: return Opcode::SpindleOrient;
+    case K::OtherM: return Opcode::MCode;
+    case K::SpindleSpeed: return Opcode::SpindleSpeed;
+    case K::ToolSelect: return Opcode::ToolSelect;
+  }
+  return Opcode::MCode;
+}
+
+}  // namespace
+
+BytecodeWriter::BytecodeWriter(std::ostream& out, const MachineConfig& machine, Dialect dialect,
+                               const SourceManager& sources, DiagnosticEngine* diags)
+    : machine_(machine),
+      sources_(sources),
+      diags_(diags),
+      writer_(out, headerFor(machine, dialect)) {
+  if (writer_.error()) error(writer_.error()->code, {}, writer_.error()->message);
+}
+
+void BytecodeWriter::error(std::string code, SourceLocation where, std::string message) {
+  ok_ = false;
+  if (diags_ != nullptr) diags_->error(std::move(code), where, std::move(message));
+}
+
+void BytecodeWriter::accept(ir::Block block) {
+  if (!ok_ || finished_) return;
+  std::vector<std::string> problems =
+      ir::verify(block, ir::VerifyOptions{machine_.axisCount(), /*require_machine_space=*/true});
+  if (!problems.empty()) {
+    for (const std::string& p : problems)
+      error("NCC9001", block.loc, absl::StrCat("internal error: invalid IR: ", p));
+    return;
+  }
+  if (block.ops.empty()) return;
+  if (block.loc.file > sources_.fileCount()) {
+    error("NCC9001", block.loc,
+          absl::StrCat("internal error: block from unknown source file ", block.loc.file));
+    return;
+  }
+  if (!main_file_) main_file_ = block.loc.file;
+  writer_.addLine(block.loc.file, block.loc.line, block.loc.column);
+  for (const ir::Operation& op : block.ops) encode(op, block);
+  if (writer_.error()) error(writer_.error()->code, block.loc, writer_.error()->message);
+}
+
+void BytecodeWriter::encode(const ir::Operation& op, const ir::Block& block) {
+  using bytecode::Opcode;
+  bytecode::Instruction in;
+  const uint8_t exact = block.exact_stop ? bytecode::kFlagExactStop : 0;
+  if (const auto* r = std::get_if<ir::Rapid>(&op)) {
+    in.op = Opcode::Rapid;
+    in.flags = exact | (r->type == ir::RapidType::PerAxis ? bytecode::kFlagPerAxis : 0);
+    in.axes = r->to;
+  } else if (const auto* l = std::get_if<ir::Linear>(&op)) {
+    in.op = Opcode::Line;
+    in.flags = exact | (l->feed_per_rev ? bytecode::kFlagFeedPerRev : 0);
+    in.value = l->feed;
+    in.axes = l->to;
+  } else if (const auto* a = std::get_if<ir::Arc>(&op)) {
+    auto [first, second] = planeAxisNames(a->plane);
+    const int axis1 = machine_.axisIndex(first);
+    const int axis2 = machine_.axisIndex(second);
+    if (axis1 < 0 || axis2 < 0) {
+      error("NCC9003", block.loc,
+            absl::StrCat("internal error: an arc in the ", first, second, " plane needs axes ",
+                         first, " and ", second, " on the machine"));
+      return;
+    }
+    in.op = Opcode::Arc;
+    in.flags = exact | (a->feed_per_rev ? bytecode::kFlagFeedPerRev : 0) |
+               (a->clockwise ? bytecode::kFlagClockwise : 0);
+    in.plane = arcPlane(a->plane);
+    in.axis1 = static_cast<uint8_t>(axis1);
+    in.axis2 = static_cast<uint8_t>(axis2);
+    in.turns = a->extra_turns;
+    in.value = a->feed;
+    in.axes = a->to;
+    in.center1 = a->center[axis1];
+    in.center2 = a->center[axis2];
+  } else if (const auto* d = std::get_if<ir::Dwell>(&op)) {
+    in.op = Opcode::Dwell;
+    in.flags = d->revolutions ? bytecode::kFlagRevolutions : 0;
+    in.value = d->seconds;
+  } else if (const auto* f = std::get_if<ir::MachineFunction>(&op)) {
+    in.op = machineFunctionOpcode(f->kind);
+    in.code = f->code;
+    in.value = f->value;
+  } else if (const auto* c = std::get_if<ir::ReferenceCheck>(&op)) {
+    in.op = Opcode::RefCheck;
+    in.mask = c->axes;
+    in.reference = static_cast<uint8_t>(c->reference);
+    in.axes = c->position;
+  }
+  writer_.emit(in);
+}
+
+void BytecodeWriter::finish() {
+  if (finished_) return;
+  finished_ = true;
+  if (!ok_) return;
+  bytecode::Instruction end;
+  end.op = bytecode::Opcode::End;
+  writer_.emit(end);
+  // String i is the name of source file i, so line-table file indices are the compiler's ids.
+  std::vector<std::string> strings;
+  for (uint32_t file = 0; file <= sources_.fileCount(); ++file)
+    strings.push_back(file == 0 ? std::string() : sources_.displayName(file));
+  uint32_t main = main_file_.value_or(sources_.fileCount() >= 1 ? 1 : 0);
+  if (main >= strings.size()) main = 0;
+  if (std::optional<bytecode::Error> e = writer_.finish(strings, {bytecode::Unit{0, main}}))
+    error(e->code, {}, e->message);
+}
+
+}  // namespace ncc::backend

@@ -1,0 +1,117 @@
+#include "ncc/driver/compile.h"
+
+#include <fstream>
+#include <system_error>
+
+#include "absl/strings/str_cat.h"
+#include "ncc/backend/bytecode_writer.h"
+#include "ncc/frontend/block_reader.h"
+#include "ncc/ir/printer.h"
+#include "ncc/passes/lowering.h"
+#include "ncc/passes/pass_manager.h"
+
+namespace ncc::driver {
+
+namespace {
+
+frontend::ReaderOptions readerOptionsFor(Dialect dialect) {
+  frontend::ReaderOptions options;
+  // FANUC and Mazak end a block at ';' (EOB); the Siemens ISO manual uses ';' to start an
+  // annotation that runs to the end of the line.
+  options.semicolon_ends_block = dialect != Dialect::SiemensIsoM;
+  return options;
+}
+
+ir::AxisNames axisNames(const MachineConfig& machine) {
+  ir::AxisNames names;
+  for (const AxisConfig& axis : machine.axes) names.push_back(axis.name);
+  return names;
+}
+
+// Reads blocks and lowers them until the end of input or of the program (M02/M30).
+void lowerProgram(Session& session, ir::BlockSink& entry) {
+  frontend::BlockReader reader(session.sources(), session.mainFile(), session.diagnostics(),
+                               readerOptionsFor(session.dialect()));
+  passes::LoweringOptions options;
+  options.dialect = session.dialect();
+  options.machine = &session.machine();
+  options.program_dir = session.programDir();
+  passes::Lowering lowering(options, session.diagnostics(), entry);
+  while (std::optional<ast::Block> block = reader.next()) {
+    passes::LowerResult result = lowering.lower(*block);
+    if (result.switch_language) reader.setLanguage(*result.switch_language);
+    if (result.program_end) break;
+  }
+  lowering.finish();
+}
+
+}  // namespace
+
+bool compileToSink(Session& session, ir::BlockSink& sink) {
+  passes::PipelineOptions options;
+  options.axis_count = session.machine().axisCount();
+  passes::PassManager pipeline(options, session.diagnostics(), sink);
+  lowerProgram(session, pipeline.entry());
+  return !session.diagnostics().hasErrors();
+}
+
+bool check(Session& session) {
+  // Discards the IR; every pass and the IR verifier still run, so their diagnostics appear.
+  struct DiscardingSink : ir::BlockSink {
+    void accept(ir::Block) override {}
+    void finish() override {}
+  } discard;
+  return compileToSink(session, discard);
+}
+
+bool emitAst(Session& session, std::ostream& out) {
+  frontend::BlockReader reader(session.sources(), session.mainFile(), session.diagnostics(),
+                               readerOptionsFor(session.dialect()));
+  while (std::optional<ast::Block> block = reader.next()) out << frontend::printBlock(*block) << '\n';
+  return !session.diagnostics().hasErrors();
+}
+
+bool emitIr(Session& session, std::ostream& out) {
+  ir::PrintingSink printer(out, axisNames(session.machine()));
+  return compileToSink(session, printer);
+}
+
+bool emitBytecode(Session& session, std::ostream& out) {
+  backend::BytecodeWriter writer(out, session.machine(), session.dialect(), session.sources(),
+                                 &session.diagnostics());
+  bool ok = compileToSink(session, writer);
+  return ok && writer.ok() && !session.diagnostics().hasErrors();
+}
+
+bool compileToFile(Session& session, const std::filesystem::path& out) {
+  std::filesystem::path temp = out;
+  temp += ".tmp";
+  bool ok = false;
+  {
+    std::ofstream file(temp, std::ios::binary | std::ios::trunc);
+    if (!file) {
+      session.diagnostics().error("NCC0010", {}, absl::StrCat("cannot write '", temp.string(), "'"));
+      return false;
+    }
+    ok = emitBytecode(session, file);
+    file.flush();
+    if (ok && !file) {
+      session.diagnostics().error("NCC0010", {}, absl::StrCat("write error on '", temp.string(), "'"));
+      ok = false;
+    }
+  }
+  std::error_code ec;
+  if (!ok) {
+    std::filesystem::remove(temp, ec);
+    return false;
+  }
+  std::filesystem::rename(temp, out, ec);
+  if (ec) {
+    std::filesystem::remove(temp, ec);
+    session.diagnostics().error("NCC0010", {}, absl::StrCat("cannot create '", out.string(), "'"));
+    return false;
+  }
+  return true;
+}
+
+}  // namespace ncc::driver

@@ -1,0 +1,473 @@
+#include "antlr_block_parser.h"
+
+#include <climits>
+#include <string>
+#include <vector>
+
+#include "IsoLexer.h"
+#include "IsoParser.h"
+#include "absl/strings/str_cat.h"
+#include "antlr4-runtime.h"
+#include "diagnostic_codes.h"
+#include "lexical.h"
+#include "number_text.h"
+
+namespace ncc::frontend {
+
+namespace {
+
+using ncc_iso::IsoLexer;
+using ncc_iso::IsoParser;
+using antlr4::Token;
+
+// Deeper nesting than this is refused before parsing: the parser and the AST are recursive,
+// and no controller allows more than a handful of bracket levels (FANUC: 5).
+constexpr int kMaxNesting = 64;
+
+// Remembers the first error the parser reports; the message is ours, built from the token.
+class FirstErrorListener : public antlr4::BaseErrorListener {
+ public:
+  void syntaxError(antlr4::Recognizer*, Token* offending, size_t, size_t, const std::string&,
+                   std::exception_ptr) override {
+    if (!seen) offending_token = offending;
+    seen = true;
+  }
+  void clear() {
+    seen = false;
+    offending_token = nullptr;
+  }
+  bool seen = false;
+  Token* offending_token = nullptr;
+};
+
+// absl::StrCat takes absl::string_view, which is not std::string_view in this abseil build.
+std::string str(std::string_view s) { return std::string(s); }
+
+// Thrown by the builder after it has reported a diagnostic; caught in parse().
+struct BlockRejected {};
+
+// Builds the AST of one successfully parsed block and performs the checks the grammar leaves
+// to the frontend. Every node gets the location of its first character in the original line.
+class Builder {
+ public:
+  Builder(std::string_view original, const std::string& upper, SourceLocation start,
+          DiagnosticEngine& diags)
+      : original_(original), upper_(upper), start_(start), diags_(diags) {}
+
+  [[noreturn]] void fail(const char* code, SourceLocation where, std::string message) {
+    diags_.error(code, where, std::move(message));
+    throw BlockRejected{};
+  }
+
+  SourceLocation at(size_t index) const {
+    return SourceLocation{start_.file, start_.line,
+                          start_.column + static_cast<uint32_t>(index)};
+  }
+  SourceLocation at(const Token* t) const { return at(t->getStartIndex()); }
+  SourceLocation at(antlr4::tree::TerminalNode* n) const { return at(n->getSymbol()); }
+
+  // Token text as written (original case); for EOF, empty.
+  std::string_view written(const Token* t) const {
+    if (t->getType() == Token::EOF) return {};
+    return original_.substr(t->getStartIndex(), t->getStopIndex() - t->getStartIndex() + 1);
+  }
+  std::string_view upper(const Token* t) const {
+    return std::string_view(upper_).substr(t->getStartIndex(),
+                                           t->getStopIndex() - t->getStartIndex() + 1);
+  }
+  std::string_view upper(antlr4::tree::TerminalNode* n) const { return upper(n->getSymbol()); }
+
+  // ---- checks on the token list, before parsing: they give the precise messages ----------
+
+  void checkTokens(const std::vector<Token*>& tokens) {
+    // Characters outside the alphabet first: they explain whatever else looks wrong.
+    for (const Token* t : tokens) {
+      if (t->getType() == IsoLexer::ERROR_CHAR)
+        fail(codes::kUnexpectedChar, at(t),
+             absl::StrCat("unexpected character ", describeChar(original_[t->getStartIndex()])));
+      if (t->getType() == IsoLexer::OPEN_COMMENT)
+        fail(codes::kUnclosedComment, at(t), "comment '(' is not closed by ')'");
+    }
+    std::vector<const Token*> open_brackets;
+    int sign_run = 0;
+    for (size_t i = 0; i < tokens.size(); ++i) {
+      const Token* t = tokens[i];
+      const size_t type = t->getType();
+      sign_run = (type == IsoLexer::PLUS || type == IsoLexer::MINUS) ? sign_run + 1 : 0;
+      if (sign_run > kMaxNesting)
+        fail(codes::kNesting, at(t), absl::StrCat("more than ", kMaxNesting, " signs in a row"));
+      switch (type) {
+        case IsoLexer::LBRACK:
+          open_brackets.push_back(t);
+          if (open_brackets.size() > kMaxNesting)
+            fail(codes::kNesting, at(t),
+                 absl::StrCat("brackets nested deeper than ", kMaxNesting, " levels"));
+          break;
+        case IsoLexer::RBRACK:
+          if (open_brackets.empty()) fail(codes::kUnopenedBracket, at(t), "unbalanced ']'");
+          open_brackets.pop_back();
+          break;
+        case IsoLexer::COMMA:
+          if (open_brackets.empty()) checkCommaAddress(tokens, i);
+          break;
+        case IsoLexer::LETTER:
+          if (open_brackets.empty()) checkHasValue(tokens, i);
+          break;
+        default:
+          break;
+      }
+    }
+    if (!open_brackets.empty())
+      fail(codes::kUnclosedBracket, at(open_brackets.front()), "unbalanced '['");
+  }
+
+  static bool startsValue(size_t type) {
+    return type == IsoLexer::NUMBER || type == IsoLexer::HASH || type == IsoLexer::LBRACK ||
+           type == IsoLexer::PLUS || type == IsoLexer::MINUS;
+  }
+
+  void checkHasValue(const std::vector<Token*>& tokens, size_t i) {
+    if (i + 1 < tokens.size() && startsValue(tokens[i + 1]->getType())) return;
+    bool comma = i > 0 && tokens[i - 1]->getType() == IsoLexer::COMMA;
+    const Token* where = comma ? tokens[i - 1] : tokens[i];
+    fail(codes::kNoValue, at(where),
+         absl::StrCat("address '", comma ? "," : "", str(upper(tokens[i])), "' has no value"));
+  }
+
+  void checkCommaAddress(const std::vector<Token*>& tokens, size_t i) {
+    const Token* next = i + 1 < tokens.size() ? tokens[i + 1] : nullptr;
+    if (!next || next->getType() != IsoLexer::LETTER)
+      fail(codes::kUnexpectedToken, at(tokens[i]), "unexpected ','");
+    if (!isCommaAddressLetter(upper(next)[0]))
+      fail(codes::kCommaAddress, at(tokens[i]),
+           absl::StrCat("unknown comma address ',", str(upper(next)), "' (expected ,A ,C or ,R)"));
+  }
+
+  // ---- the parser's own error --------------------------------------------------------------
+
+  [[noreturn]] void failAt(const Token* t) {
+    switch (t->getType()) {
+      case Token::EOF:
+        fail(codes::kIncomplete, at(t), "block ends before the statement is complete");
+      case IsoLexer::SLASH:
+        fail(codes::kSkipNotAtStart, at(t), "block skip '/' must be at the start of the block");
+      case IsoLexer::NUMBER:
+        fail(codes::kUnexpectedToken, at(t),
+             absl::StrCat("number '", str(written(t)), "' has no address"));
+      default:
+        fail(codes::kUnexpectedToken, at(t), absl::StrCat("unexpected '", str(written(t)), "'"));
+    }
+  }
+
+  // ---- AST --------------------------------------------------------------------------------
+
+  ast::Block block(IsoParser::BlockContext* ctx) {
+    ast::Block b;
+    b.loc = start_;
+    if (auto* s = ctx->blockStart()) {
+      if (s->PERCENT()) {
+        b.percent = true;
+      } else {
+        b.skip_level = 1;
+        if (auto* n = s->NUMBER()) {
+          std::string_view text = upper(n);
+          if (text.size() != 1 || text[0] < '0' || text[0] > '9')
+            fail(codes::kSkipLevel, at(n),
+                 absl::StrCat("block skip level '", str(text), "' is not a digit 0 to 9"));
+          b.skip_level = text[0] - '0';
+        }
+      }
+    }
+    for (auto* item : ctx->item()) addItem(b, item);
+    return b;
+  }
+
+  // Items and statements are told apart by their first token: dynamic_cast on every parse
+  // tree node is a large part of the ANTLR runtime's cost already.
+  void addItem(ast::Block& b, IsoParser::ItemContext* item) {
+    switch (item->getStart()->getType()) {
+      case IsoLexer::COMMENT: {
+        std::string_view text = written(item->getStart());
+        b.comments.emplace_back(text.substr(1, text.size() - 2));
+        break;
+      }
+      case IsoLexer::LETTER: {
+        auto* w = static_cast<IsoParser::WordItemContext*>(item);
+        char letter = upper(w->getStart())[0];
+        if (letter == 'N' || letter == 'O') {
+          blockNumber(b, letter, at(w->getStart()), w->value());
+          break;
+        }
+        b.words.push_back(ast::Word{std::string(1, letter), value(w->value()), at(w->getStart())});
+        break;
+      }
+      case IsoLexer::COMMA: {
+        auto* cw = static_cast<IsoParser::CommaWordItemContext*>(item);
+        b.words.push_back(ast::Word{absl::StrCat(",", str(upper(cw->LETTER()))),
+                                    value(cw->value()), at(cw->getStart())});
+        break;
+      }
+      case IsoLexer::COLON: {
+        auto* p = static_cast<IsoParser::ColonProgramItemContext*>(item);
+        storeBlockNumber(b, 'O', at(p->getStart()), p->NUMBER(), nullptr);
+        break;
+      }
+      default:
+        b.statements.push_back(
+            statement(static_cast<IsoParser::StatementItemContext*>(item)->statement()));
+    }
+  }
+
+  void blockNumber(ast::Block& b, char letter, SourceLocation where, IsoParser::ValueContext* v) {
+    storeBlockNumber(b, letter, where, v->NUMBER(), v->sign);
+  }
+
+  // N and O take an unsigned integer written as digits (no sign, point or expression).
+  void storeBlockNumber(ast::Block& b, char letter, SourceLocation where,
+                        antlr4::tree::TerminalNode* number, Token* sign) {
+    const char* what = letter == 'N' ? "sequence number" : "program number";
+    std::optional<int64_t>& slot = letter == 'N' ? b.sequence : b.program_number;
+    std::string_view text = number ? upper(number) : std::string_view();
+    if (!number || sign || text.find('.') != std::string_view::npos)
+      fail(codes::kBlockNumber, where,
+           absl::StrCat(what, " '", letter == 'N' ? "N" : "O",
+                        "' needs an unsigned integer without a decimal point"));
+    std::optional<int64_t> n = readInteger(text);
+    if (!n) fail(codes::kNumberRange, where, absl::StrCat(what, " '", str(text), "' is too large"));
+    if (slot) fail(codes::kDuplicateNumber, where, absl::StrCat("second ", what, " in one block"));
+    slot = *n;
+  }
+
+  ast::Expr literal(antlr4::tree::TerminalNode* number, const Token* sign) {
+    std::string_view text = upper(number);
+    std::optional<NumberText> n = readNumber(text);
+    if (!n)
+      fail(codes::kNumberRange, at(number),
+           absl::StrCat("number '", str(text.substr(0, 40)), text.size() > 40 ? "...'" : "'",
+                        " is out of range"));
+    bool negative = sign && sign->getType() == IsoLexer::MINUS;
+    ast::Expr e = ast::Expr::literal(negative ? -n->value : n->value, n->has_point,
+                                     sign ? at(sign) : at(number));
+    e.digits = n->digits;
+    return e;
+  }
+
+  ast::Expr signed_(Token* sign, ast::Expr inner) {
+    if (!sign) return inner;
+    ast::Expr e;
+    e.kind = ast::Expr::Kind::Unary;
+    e.op.assign(1, sign->getType() == IsoLexer::MINUS ? '-' : '+');
+    e.loc = at(sign);
+    e.args.push_back(std::move(inner));
+    return e;
+  }
+
+  // value and target share a shape: sign? (NUMBER | variable | bracket)
+  template <typename Ctx>
+  ast::Expr operand(Ctx* v) {
+    if (auto* n = v->NUMBER()) return literal(n, v->sign);
+    if (auto* var = v->variable()) return signed_(v->sign, variable(var));
+    return signed_(v->sign, bracket(v->bracket()));
+  }
+  ast::Expr value(IsoParser::ValueContext* v) { return operand(v); }
+
+  ast::Expr variable(IsoParser::VariableContext* v) {
+    ast::Expr e;
+    e.kind = ast::Expr::Kind::Variable;
+    e.loc = at(v->HASH());
+    if (auto* n = v->NUMBER()) e.args.push_back(literal(n, nullptr));
+    else e.args.push_back(expr(v->bracket()->expr()));
+    return e;
+  }
+
+  ast::Expr bracket(IsoParser::BracketContext* b) {
+    ast::Expr e;
+    e.kind = ast::Expr::Kind::Bracket;
+    e.loc = at(b->LBRACK());
+    e.args.push_back(expr(b->expr()));
+    return e;
+  }
+
+  ast::Expr binary(ast::Expr lhs, antlr4::ParserRuleContext* op, ast::Expr rhs) {
+    ast::Expr e;
+    e.kind = ast::Expr::Kind::Binary;
+    e.op = std::string(upper(op->getStart()));
+    e.loc = at(op->getStart());
+    e.args.push_back(std::move(lhs));
+    e.args.push_back(std::move(rhs));
+    return e;
+  }
+
+  // The three binary levels have the same shape: operand (op operand)*, left-associative.
+  template <typename Next, typename Ctx, typename Fn>
+  ast::Expr leftAssociative(Ctx* ctx, Fn&& operandOf) {
+    auto& children = ctx->children;
+    ast::Expr lhs = operandOf(static_cast<Next*>(children[0]));
+    for (size_t i = 1; i + 1 < children.size(); i += 2) {
+      auto* op = static_cast<antlr4::ParserRuleContext*>(children[i]);
+      lhs = binary(std::move(lhs), op, operandOf(static_cast<Next*>(children[i + 1])));
+    }
+    return lhs;
+  }
+
+  ast::Expr expr(IsoParser::ExprContext* ctx) {
+    return leftAssociative<IsoParser::AdditiveContext>(
+        ctx, [this](IsoParser::AdditiveContext* c) { return additive(c); });
+  }
+  ast::Expr additive(IsoParser::AdditiveContext* ctx) {
+    return leftAssociative<IsoParser::MultiplicativeContext>(
+        ctx, [this](IsoParser::MultiplicativeContext* c) { return multiplicative(c); });
+  }
+  ast::Expr multiplicative(IsoParser::MultiplicativeContext* ctx) {
+    return leftAssociative<IsoParser::UnaryContext>(
+        ctx, [this](IsoParser::UnaryContext* c) { return unary(c); });
+  }
+
+  ast::Expr unary(IsoParser::UnaryContext* ctx) {
+    if (!ctx->sign) return primary(ctx->primary());
+    // A sign directly before a number is part of the literal, as in a word value.
+    IsoParser::UnaryContext* inner = ctx->unary();
+    if (!inner->sign && inner->primary()->NUMBER())
+      return literal(inner->primary()->NUMBER(), ctx->sign);
+    return signed_(ctx->sign, unary(inner));
+  }
+
+  ast::Expr primary(IsoParser::PrimaryContext* ctx) {
+    if (auto* n = ctx->NUMBER()) return literal(n, nullptr);
+    if (auto* v = ctx->variable()) return variable(v);
+    if (auto* b = ctx->bracket()) return bracket(b);
+    return call(ctx->call());
+  }
+
+  ast::Expr call(IsoParser::CallContext* ctx) {
+    ast::Expr e;
+    e.kind = ast::Expr::Kind::Call;
+    const Token* name = ctx->getStart();
+    e.loc = at(name);
+    e.op = canonicalFunctionName(upper(name));
+    for (auto* arg : ctx->expr()) e.args.push_back(expr(arg));
+    // ATAN has one argument, or two written [a]/[b] or [a,b]; the others a fixed count.
+    const size_t expected = functionArity(e.op);
+    const bool ok = e.op == "ATAN" ? e.args.size() <= 2 : e.args.size() == expected;
+    if (!ok)
+      fail(codes::kArity, at(name),
+           e.op == "ATAN" ? std::string("ATAN takes [a], [a]/[b] or [a,b]")
+                          : absl::StrCat("function '", e.op, "' takes ", expected,
+                                         expected == 1 ? " argument" : " arguments"));
+    return e;
+  }
+
+  ast::Statement statement(IsoParser::StatementContext* ctx) {
+    ast::Statement s;
+    s.loc = at(ctx->getStart());
+    const size_t first = ctx->getStart()->getType();
+    const bool if_then = first == IsoLexer::IF && ctx->children.size() > 2 &&
+                         ctx->children[2]->getText() == "THEN";
+    if (first == IsoLexer::HASH) {
+      auto* a = static_cast<IsoParser::AssignStatementContext*>(ctx);
+      s.kind = ast::Statement::Kind::Assign;
+      s.target = variable(a->variable());
+      s.value = expr(a->expr());
+    } else if (first == IsoLexer::GOTO) {
+      auto* g = static_cast<IsoParser::GotoStatementContext*>(ctx);
+      s.kind = ast::Statement::Kind::Goto;
+      s.target = operand(g->target());
+    } else if (first == IsoLexer::IF && !if_then) {
+      auto* ig = static_cast<IsoParser::IfGotoStatementContext*>(ctx);
+      s.kind = ast::Statement::Kind::IfGoto;
+      s.value = expr(ig->bracket()->expr());
+      s.target = operand(ig->target());
+    } else if (if_then) {
+      auto* it = static_cast<IsoParser::IfThenStatementContext*>(ctx);
+      s.kind = ast::Statement::Kind::IfThen;
+      s.value = expr(it->bracket()->expr());
+      auto then = std::make_unique<ast::Statement>();
+      then->kind = ast::Statement::Kind::Assign;
+      then->loc = at(it->variable()->HASH());
+      then->target = variable(it->variable());
+      then->value = expr(it->expr());
+      s.then_assign = std::move(then);
+    } else if (first == IsoLexer::WHILE) {
+      auto* w = static_cast<IsoParser::WhileStatementContext*>(ctx);
+      s.kind = ast::Statement::Kind::While;
+      s.value = expr(w->bracket()->expr());
+      s.loop_id = loopId(w->NUMBER());
+    } else {
+      auto* e = static_cast<IsoParser::EndStatementContext*>(ctx);
+      s.kind = ast::Statement::Kind::End;
+      s.loop_id = loopId(e->NUMBER());
+    }
+    return s;
+  }
+
+  int loopId(antlr4::tree::TerminalNode* n) {
+    std::optional<int64_t> id;
+    if (upper(n).find('.') == std::string_view::npos) id = readInteger(upper(n));
+    if (!id || *id > INT_MAX)
+      fail(codes::kLoopId, at(n),
+           absl::StrCat("loop identifier '", str(upper(n)), "' is not an integer"));
+    return static_cast<int>(*id);
+  }
+
+ private:
+  std::string_view original_;
+  const std::string& upper_;
+  SourceLocation start_;
+  DiagnosticEngine& diags_;
+};
+
+}  // namespace
+
+struct AntlrBlockParser::Engine {
+  Engine() : lexer(&input), tokens(&lexer), parser(&tokens) {
+    lexer.removeErrorListeners();
+    parser.removeErrorListeners();
+    parser.addErrorListener(&errors);
+  }
+  std::string upper;
+  antlr4::ANTLRInputStream input;
+  IsoLexer lexer;
+  antlr4::CommonTokenStream tokens;
+  IsoParser parser;
+  FirstErrorListener errors;
+
+  // Parses the token stream from its start with the given prediction mode.
+  IsoParser::BlockContext* run(antlr4::atn::PredictionMode mode) {
+    tokens.seek(0);
+    parser.getTreeTracker().reset();
+    parser.setTokenStream(&tokens);
+    errors.clear();
+    parser.getInterpreter<antlr4::atn::ParserATNSimulator>()->setPredictionMode(mode);
+    return parser.block();
+  }
+};
+
+AntlrBlockParser::AntlrBlockParser() : engine_(std::make_unique<Engine>()) {}
+AntlrBlockParser::~AntlrBlockParser() = default;
+
+std::optional<ast::Block> AntlrBlockParser::parse(std::string_view text, SourceLocation start,
+                                                  DiagnosticEngine& diags) {
+  Engine& e = *engine_;
+  e.upper = lexicalForm(text);
+  e.input.load(e.upper);
+  e.lexer.setInputStream(&e.input);
+  e.tokens.setTokenSource(&e.lexer);
+  e.tokens.fill();
+
+  Builder builder(text, e.upper, start, diags);
+  std::optional<ast::Block> result;
+  try {
+    builder.checkTokens(e.tokens.getTokens());
+    // SLL prediction is enough for this grammar; LL is the exact fallback if SLL fails.
+    IsoParser::BlockContext* tree = e.run(antlr4::atn::PredictionMode::SLL);
+    if (e.errors.seen) tree = e.run(antlr4::atn::PredictionMode::LL);
+    if (e.errors.seen) builder.failAt(e.errors.offending_token);
+    result = builder.block(tree);
+  } catch (const BlockRejected&) {
+    result.reset();
+  }
+  e.parser.getTreeTracker().reset();
+  return result;
+}
+
+}  // namespace ncc::frontend

@@ -1,0 +1,137 @@
+#include "fast_block_parser.h"
+
+#include "lexical.h"
+#include "number_text.h"
+
+namespace ncc::frontend {
+
+namespace {
+
+// A cursor over one block. Every method either consumes what it expects or returns false,
+// upon which the whole block is declined.
+class PlainScanner {
+ public:
+  PlainScanner(std::string_view text, SourceLocation start) : text_(text), start_(start) {}
+
+  std::optional<ast::Block> run() {
+    ast::Block b;
+    b.loc = start_;
+    skipBlanks();
+    if (peek() == '%') {
+      ++pos_;
+      b.percent = true;
+    } else if (peek() == '/') {
+      ++pos_;
+      skipBlanks();
+      b.skip_level = 1;
+      if (startsNumber()) {
+        std::string_view level = numberToken();
+        if (level.size() != 1 || !isDigit(level[0])) return std::nullopt;
+        b.skip_level = level[0] - '0';
+      }
+    }
+    for (skipBlanks(); pos_ < text_.size(); skipBlanks()) {
+      const char c = text_[pos_];
+      if (c == '(') {
+        size_t close = text_.find(')', pos_);
+        if (close == std::string_view::npos) return std::nullopt;
+        b.comments.emplace_back(text_.substr(pos_ + 1, close - pos_ - 1));
+        pos_ = close + 1;
+      } else if (isLetter(c)) {
+        const char letter = upperAscii(c);
+        const SourceLocation where = here();
+        ++pos_;
+        if (letter == 'N' || letter == 'O') {
+          if (!blockNumber(letter == 'N' ? b.sequence : b.program_number)) return std::nullopt;
+          continue;
+        }
+        std::optional<ast::Expr> v = value();
+        if (!v) return std::nullopt;
+        b.words.push_back(ast::Word{std::string(1, letter), std::move(*v), where});
+      } else if (c == ',') {
+        const SourceLocation where = here();
+        ++pos_;
+        skipBlanks();
+        const char letter = upperAscii(peek());
+        if (!isCommaAddressLetter(letter)) return std::nullopt;
+        ++pos_;
+        std::optional<ast::Expr> v = value();
+        if (!v) return std::nullopt;
+        b.words.push_back(ast::Word{std::string{',', letter}, std::move(*v), where});
+      } else if (c == ':') {
+        ++pos_;
+        if (!blockNumber(b.program_number)) return std::nullopt;
+      } else {
+        return std::nullopt;
+      }
+    }
+    return b;
+  }
+
+ private:
+  char peek() const { return pos_ < text_.size() ? text_[pos_] : '\0'; }
+  void skipBlanks() {
+    while (pos_ < text_.size() && isBlank(text_[pos_])) ++pos_;
+  }
+  SourceLocation here() const {
+    return SourceLocation{start_.file, start_.line, start_.column + static_cast<uint32_t>(pos_)};
+  }
+  bool startsNumber() const {
+    return isDigit(peek()) || (peek() == '.' && pos_ + 1 < text_.size() && isDigit(text_[pos_ + 1]));
+  }
+  // The NUMBER token of Iso.g4: [0-9]+ ('.' [0-9]*)? | '.' [0-9]+ ; call after startsNumber().
+  std::string_view numberToken() {
+    const size_t begin = pos_;
+    while (isDigit(peek())) ++pos_;
+    if (peek() == '.') {
+      ++pos_;
+      while (isDigit(peek())) ++pos_;
+    }
+    return text_.substr(begin, pos_ - begin);
+  }
+
+  // sign? NUMBER, blanks allowed around the sign.
+  std::optional<ast::Expr> value() {
+    skipBlanks();
+    const SourceLocation where = here();
+    bool negative = false, sign = false;
+    if (peek() == '+' || peek() == '-') {
+      negative = peek() == '-';
+      sign = true;
+      ++pos_;
+      skipBlanks();
+    }
+    if (!startsNumber()) return std::nullopt;
+    const SourceLocation number_at = here();
+    std::optional<NumberText> n = readNumber(numberToken());
+    if (!n) return std::nullopt;
+    ast::Expr e = ast::Expr::literal(negative ? -n->value : n->value, n->has_point,
+                                     sign ? where : number_at);
+    e.digits = n->digits;
+    return e;
+  }
+
+  // N, O and ':' take unsigned integer digits, once per block.
+  bool blockNumber(std::optional<int64_t>& slot) {
+    skipBlanks();
+    if (slot || !startsNumber()) return false;
+    std::string_view digits = numberToken();
+    if (digits.find('.') != std::string_view::npos) return false;
+    std::optional<int64_t> n = readInteger(digits);
+    if (!n) return false;
+    slot = *n;
+    return true;
+  }
+
+  std::string_view text_;
+  SourceLocation start_;
+  size_t pos_ = 0;
+};
+
+}  // namespace
+
+std::optional<ast::Block> parsePlainBlock(std::string_view text, SourceLocation start) {
+  return PlainScanner(text, start).run();
+}
+
+}  // namespace ncc::frontend

@@ -1,0 +1,116 @@
+#include "ncc/ir/verifier.h"
+
+#include <cmath>
+
+#include "absl/strings/str_cat.h"
+
+namespace ncc::ir {
+
+namespace {
+
+// Collects the problems of one block; `where` names the operation being checked.
+class BlockChecker {
+ public:
+  BlockChecker(const VerifyOptions& options, std::vector<std::string>& problems)
+      : options_(options), problems_(problems) {}
+
+  void operator()(const Rapid& r) {
+    space(r.space);
+    axes(r.to, "target");
+  }
+  void operator()(const Linear& l) {
+    space(l.space);
+    axes(l.to, "target");
+    feed(l.feed);
+  }
+  void operator()(const Arc& a) {
+    space(a.space);
+    axes(a.to, "target");
+    axes(a.center, "centre");
+    feed(a.feed);
+  }
+  void operator()(const Dwell& d) {
+    if (!std::isfinite(d.seconds) || d.seconds < 0.0)
+      add(absl::StrCat("dwell ", d.seconds, " is not a finite non-negative amount"));
+  }
+  void operator()(const MachineFunction& f) {
+    using K = MachineFunction::Kind;
+    if ((f.kind == K::OtherM || f.kind == K::ToolSelect) && f.code < 0)
+      add(absl::StrCat("negative M/T code ", f.code));
+    if (f.kind == K::SpindleSpeed && (!std::isfinite(f.value) || f.value < 0.0))
+      add(absl::StrCat("spindle speed ", f.value, " is not a finite non-negative value"));
+  }
+  void operator()(const ReferenceCheck& c) {
+    axes(c.position, "position");
+    const unsigned all = (1u << options_.axis_count) - 1u;
+    if (c.axes == 0 || (c.axes & ~all) != 0)
+      add(absl::StrCat("reference check axis mask ", c.axes, " is empty or names an axis beyond ",
+                       options_.axis_count));
+    if (c.reference < 1 || c.reference > 4)
+      add(absl::StrCat("reference point ", c.reference, " (1 to 4)"));
+  }
+
+  void setOperation(size_t index) { where_ = absl::StrCat("operation ", index + 1, ": "); }
+  void setBlock() { where_ = "block: "; }
+
+  void frame(const Frame& f) {
+    axes(f.work_offset, "work offset");
+    axes(f.shift, "shift");
+    axes(f.tool_length, "tool length");
+  }
+  void modal(const Modal& m) {
+    if (!std::isfinite(m.feed) || m.feed < 0.0) add(absl::StrCat("modal feed ", m.feed));
+    if (!std::isfinite(m.spindle_speed) || m.spindle_speed < 0.0)
+      add(absl::StrCat("modal spindle speed ", m.spindle_speed));
+  }
+
+ private:
+  void add(std::string message) { problems_.push_back(absl::StrCat(where_, message)); }
+  void space(Space s) {
+    if (options_.require_machine_space && s != Space::Machine)
+      add("work-space target reached the backend (the coordinate transform did not run)");
+  }
+  void axes(const AxisValues& v, const char* what) {
+    for (int i = 0; i < options_.axis_count; ++i)
+      if (!std::isfinite(v[i])) add(absl::StrCat(what, " of axis ", i + 1, " is not finite"));
+  }
+  void feed(double f) {
+    if (!std::isfinite(f) || f <= 0.0) add(absl::StrCat("feed ", f, " is not positive"));
+  }
+
+  const VerifyOptions& options_;
+  std::vector<std::string>& problems_;
+  std::string where_;
+};
+
+}  // namespace
+
+std::vector<std::string> verify(const Block& block, const VerifyOptions& options) {
+  std::vector<std::string> problems;
+  if (options.axis_count < 1 || options.axis_count > kMaxAxes) {
+    problems.push_back(absl::StrCat("axis count ", options.axis_count, " (1 to ", kMaxAxes, ")"));
+    return problems;
+  }
+  BlockChecker checker(options, problems);
+  checker.setBlock();
+  checker.modal(block.modal);
+  checker.frame(block.frame);
+  for (size_t i = 0; i < block.ops.size(); ++i) {
+    checker.setOperation(i);
+    std::visit(checker, block.ops[i]);
+  }
+  return problems;
+}
+
+void VerifyingSink::accept(Block block) {
+  std::vector<std::string> problems = verify(block, options_);
+  if (problems.empty()) {
+    next_.accept(std::move(block));
+    return;
+  }
+  // A compiler bug: report it where the block came from and keep it out of the output.
+  for (const std::string& p : problems)
+    diags_.error("NCC9001", block.loc, absl::StrCat("internal error: invalid IR: ", p));
+}
+
+}  // namespace ncc::ir

@@ -1,0 +1,405 @@
+// The registry of `[machine.params]` keys and the ParameterSet accessors.
+// The key list is shared/conformance/FORMAT.md's "Parameter vocabulary" plus ncc's own keys;
+// docs/machine-file.md is checked against it by tests/machine/docs_test.cpp.
+#include "ncc/machine/params.h"
+
+#include <algorithm>
+
+namespace ncc {
+
+std::string_view paramTypeDescription(ParamType type) {
+  switch (type) {
+    case ParamType::Bool: return "a boolean";
+    case ParamType::Number: return "a number";
+    case ParamType::String: return "a string";
+    case ParamType::AxisTable: return "a table of numbers by axis name";
+    case ParamType::NumberList: return "a list of numbers";
+    case ParamType::StringList: return "a list of strings";
+    case ParamType::Any: return "any value";
+    case ParamType::Integer: return "an integer";
+    case ParamType::IntegerList: return "a list of integers";
+    case ParamType::AxisList: return "a list of axis names";
+    case ParamType::AxisNameTable: return "a table of axis names by axis name";
+    case ParamType::StringTable: return "a table of strings";
+    case ParamType::AxisRangeTable: return "a table of [min, max] pairs by axis name";
+  }
+  return "a value";
+}
+
+namespace {
+
+using T = ParamType;
+
+// One registry entry; the chained setters keep each entry on a few readable lines.
+struct Spec {
+  ParamSpec s;
+  Spec(std::string_view key, T type, std::string_view dialects, std::string_view default_text,
+       std::optional<ParamValue> def, std::string_view meaning) {
+    s.key = key;
+    s.type = type;
+    s.dialects = dialects;
+    s.default_text = default_text;
+    s.default_value = std::move(def);
+    s.meaning = meaning;
+    s.integral = type == T::Integer || type == T::IntegerList;
+  }
+  Spec&& oneOf(std::vector<std::string_view> choices) && {
+    s.choices = std::move(choices);
+    return std::move(*this);
+  }
+  Spec&& range(double lo, double hi) && {
+    s.min_value = lo;
+    s.max_value = hi;
+    return std::move(*this);
+  }
+  Spec&& integers() && {
+    s.integral = true;
+    return std::move(*this);
+  }
+  Spec&& atMost(size_t n) && {
+    s.max_items = n;
+    return std::move(*this);
+  }
+};
+
+constexpr double kInf = 1e300;
+constexpr std::string_view kIso = "fanuc-m, fanuc-t, mazak-m, siemens-iso-m";
+
+std::vector<ParamSpec> buildRegistry() {
+  const std::vector<double> no_numbers;
+  const std::vector<std::string> no_names;
+  std::vector<Spec> specs;
+  specs.push_back(Spec("arc_radius_tolerance", T::Number, kIso, "0.01", 0.01,
+                       "Allowed difference of an arc's start and end radius, mm; a larger one is "
+                       "an alarm (FANUC No.3410, Mazak F19)")
+                      .range(0, kInf));
+  specs.push_back(Spec("base_frames", T::Integer, "siemens-iso-m", "0", 0.0,
+                       "Number of base frames (MD $MC_MM_NUM_BASE_FRAMES)")
+                      .range(0, 16));
+  specs.push_back(Spec("block_skip", T::Bool, "mazak-m", "false", false,
+                       "The block-skip switch: blocks starting with / or /1 are skipped when true"));
+  specs.push_back(Spec("block_skip_levels", T::IntegerList, kIso, "[] (none)", no_numbers,
+                       "Enabled optional block-skip levels 1..9 (/n skips when n is listed; / "
+                       "is level 1)")
+                      .range(1, 9)
+                      .atMost(9));
+  specs.push_back(Spec("boring_shift_direction", T::Integer, "siemens-iso-m", "0", 0.0,
+                       "G76/G87 shift direction (GUD7 _ZSFI[5]); 0: shift in -X in G17"));
+  specs.push_back(Spec("c_axis_clamp_m_code", T::Integer, "fanuc-t", "0 (none)", 0.0,
+                       "M code that clamps the C axis in lathe drilling cycles (FANUC No.5110); "
+                       "the unclamp code is this + 1")
+                      .range(0, 99999999));
+  specs.push_back(Spec("c_axis_unclamp_dwell", T::Number, "fanuc-t", "0", 0.0,
+                       "Dwell after the C-axis unclamp M code, s (FANUC No.5111)")
+                      .range(0, kInf));
+  specs.push_back(Spec("chamfer_address", T::String, "fanuc-t", "\"comma\"", std::string("comma"),
+                       "How chamfer/corner R is written: \"comma\" (,C ,R), \"C\" (C/R words, "
+                       "CCR=1), \"IJK\" (I/K/C/R forms)")
+                      .oneOf({"comma", "C", "IJK"}));
+  specs.push_back(Spec("common_variables", T::String, "mazak-m", "\"A\"", std::string("A"),
+                       "Common variable set: A #100-#149 and #500-#549, B #100-#199 and "
+                       "#500-#599, C #100-#199 and #500-#699, D #100-#199 and #500-#999")
+                      .oneOf({"A", "B", "C", "D"}));
+  specs.push_back(Spec("comp3d_normal_length", T::Number, "mazak-m", "0", 0.0,
+                       "3-D tool radius compensation: length of (I,J,K) used instead of its "
+                       "computed length; 0: computed (F11)")
+                      .range(0, kInf));
+  specs.push_back(Spec("corner_move_limit", T::Number, "fanuc-t", "0", 0.0,
+                       "Cutter/nose compensation: corner moves shorter than this are dropped, mm "
+                       "(FANUC No.5010)")
+                      .range(0, kInf));
+  specs.push_back(Spec("cutting_edge_default", T::Integer, "siemens-iso-m", "1", 1.0,
+                       "Cutting edge active after a tool change (MD20270 "
+                       "$MC_CUTTING_EDGE_DEFAULT); 0: no length offset until D is programmed")
+                      .range(-2, 12));
+  specs.push_back(Spec("cycle_safety_clearance", T::Number, "siemens-iso-m", "1.0", 1.0,
+                       "Drilling cycles: safety clearance above the R level, mm (GUD7 _ZSFR[0])")
+                      .range(0, kInf));
+  specs.push_back(Spec("decimal_point", T::String, "fanuc-t, mazak-m, siemens-iso-m",
+                       "\"standard\"", std::string("standard"),
+                       "\"calculator\": X10 = 10 mm; \"standard\": a value without a point is in "
+                       "least input increments (X10 = 0.010 mm)")
+                      .oneOf({"calculator", "standard"}));
+  specs.push_back(Spec("drawing_dimension_input", T::Bool, "fanuc-t", "false", false,
+                       "Direct drawing dimension input (,A ,C ,R) enabled"));
+  specs.push_back(Spec("dwell_always_seconds", T::Bool, "mazak-m", "false", false,
+                       "G04 is always in seconds; false: in G95 the dwell is in spindle "
+                       "revolutions (F92 bit 2 = 0)"));
+  specs.push_back(Spec("dwell_in_revolutions_with_g95", T::Bool, "siemens-iso-m", "false", false,
+                       "In G95 G04 counts spindle revolutions; false: G04 is always s / ms "
+                       "(MD20734 EXTERN_FUNCTION_MASK bit 2 = 0)"));
+  specs.push_back(Spec("eight_digit_program_numbers", T::Bool, "siemens-iso-m", "false", false,
+                       "M98 P takes 8-digit program numbers; false: M98 Pnnnmmmm (repeat count "
+                       "and 4-digit name) (MD20734 EXTERN_FUNCTION_MASK bit 6)"));
+  specs.push_back(Spec("f1_digit_feed", T::Bool, "siemens-iso-m", "false", false,
+                       "F1-F9 select the fixed feedrates of f1_f9_feedrates (MD22920 "
+                       "EXTERN_FEEDRATE_F1_F9_ACTIV)"));
+  specs.push_back(Spec("f1_f9_feedrates", T::NumberList, "siemens-iso-m", "[] (all 0)",
+                       no_numbers,
+                       "Fixed feedrates of F1..F9, mm/min (SD42160 "
+                       "$SC_EXTERN_FIXED_FEEDRATE_F1_F9[0..8])")
+                      .range(0, kInf)
+                      .atMost(9));
+  specs.push_back(Spec("fs15_program_format", T::Bool, "fanuc-t", "false", false,
+                       "FANUC Series 15 program format (FCV): one-block G71-G76 with D, M98 P L, "
+                       "..."));
+  specs.push_back(Spec("g10_geometry_p_limit", T::Integer, "siemens-iso-m", "100", 100.0,
+                       "G10 P below this writes geometry, above it wear (MD20734 "
+                       "EXTERN_FUNCTION_MASK bit 1 = 0: 100; = 1: 10000)")
+                      .range(1, 10000));
+  specs.push_back(Spec("gcode_system", T::String, "fanuc-t", "\"A\"", std::string("A"),
+                       "Lathe G-code system \"A\", \"B\" or \"C\"")
+                      .oneOf({"A", "B", "C"}));
+  specs.push_back(Spec("geometry_number_from_tool_select", T::Bool, "fanuc-t", "false", false,
+                       "Geometry offset number taken from the tool-select digits of T (LGN, "
+                       "No.5002#1)"));
+  specs.push_back(Spec("geometry_offset_method", T::String, "fanuc-t", "\"shift\"",
+                       std::string("shift"),
+                       "How a geometry offset is applied: \"tool_move\" or \"shift\" of the "
+                       "coordinate system (LGT, No.5002#4)")
+                      .oneOf({"tool_move", "shift"}));
+  specs.push_back(Spec("geometry_wear_offsets", T::Bool, "fanuc-t", "true", true,
+                       "Separate geometry and wear offset memories"));
+  specs.push_back(Spec("increment_system", T::String, "fanuc-t, siemens-iso-m", "\"IS-B\"",
+                       std::string("IS-B"),
+                       "\"IS-B\" (0.001 mm / 0.0001 in) or \"IS-C\" (0.0001 mm / 0.00001 in)")
+                      .oneOf({"IS-B", "IS-C"}));
+  specs.push_back(Spec("index_table_1", T::NumberList, "siemens-din", "[] (none)", no_numbers,
+                       "Positions of indexing table 1, mm or degrees (MD10910 "
+                       "INDEX_AX_POS_TAB_1; its length is MD10900 INDEX_AX_LENGTH_POS_TAB_1)")
+                      .atMost(60));
+  specs.push_back(Spec("indexing_axes", T::AxisTable, "siemens-din", "{} (none)",
+                       ParamAxisTable{},
+                       "Indexing axes and the table each uses, e.g. { B = 1 } (MD30500 "
+                       "INDEX_AX_ASSIGN_POS_TAB)")
+                      .range(1, 2)
+                      .integers());
+  specs.push_back(Spec("input_unit_x10", T::Bool, "mazak-m", "false", false,
+                       "Coordinates without a decimal point are in 0.01 mm (F91 bit 0 = 1); "
+                       "H/D offset values are not affected"));
+  specs.push_back(Spec("interference_check", T::Bool, "fanuc-t", "true", true,
+                       "Cutter/nose compensation interference check on (FANUC No.5008#3 = 0)"));
+  specs.push_back(Spec("m_code_macros", T::StringTable, "siemens-iso-m", "{} (none)",
+                       ParamStringTable{},
+                       "M codes that call a subprogram, e.g. { M6 = \"M6_MAKRO\" } "
+                       "($MN_EXTERN_M_NO_MAC_CYCLE, $MN_EXTERN_M_NO_MAC_CYCLE_NAME)"));
+  specs.push_back(Spec("machine_unit", T::String, "siemens-iso-m", "\"mm\"", std::string("mm"),
+                       "The machine's own unit, \"mm\" or \"inch\"")
+                      .oneOf({"mm", "inch"}));
+  specs.push_back(Spec("modulo_axes", T::AxisList, "siemens-din", "[] (none)", no_names,
+                       "Rotary axes that count modulo 360 degrees (MD30310 ROT_IS_MODULO = 1)"));
+  specs.push_back(Spec("offset_applied_at", T::String, "fanuc-t", "\"t_code_block\"",
+                       std::string("t_code_block"),
+                       "When a tool-move offset moves the tool: \"t_code_block\" (in the T "
+                       "block) or \"next_motion\" (with the next axis move) (LWM, No.5002#6)")
+                      .oneOf({"t_code_block", "next_motion"}));
+  specs.push_back(Spec("offset_count", T::Integer, "mazak-m", "128", 128.0,
+                       "Size of the tool offset memory: H1-H<n> / D1-D<n> (128 standard, 512 "
+                       "option)")
+                      .range(1, 9999));
+  specs.push_back(Spec("offset_number_digits", T::Integer, "fanuc-t", "2", 2.0,
+                       "How many low digits of T are the offset number (FANUC No.5028)")
+                      .range(0, 3));
+  specs.push_back(Spec("outer_corner_connection", T::String, "fanuc-t", "\"linear\"",
+                       std::string("linear"),
+                       "Cutter/nose compensation outer-corner connection: \"linear\" "
+                       "(intersection lines) or \"arc\" (FANUC CCC)")
+                      .oneOf({"linear", "arc"}));
+  specs.push_back(Spec("parallel_axes", T::AxisNameTable, "siemens-iso-m", "{} (none)",
+                       ParamStringTable{},
+                       "Parallel axes by geometry axis, e.g. { X = \"U\" } (MD22930 "
+                       "$MC_EXTERN_PARALLEL_GEOAX)"));
+  specs.push_back(Spec("peck_clearance", T::Number, "fanuc-t, siemens-iso-m", "1.0", 1.0,
+                       "G83 peck: how far above the last depth the rapid approach stops, d, mm "
+                       "(FANUC No.5115)")
+                      .range(0, kInf));
+  specs.push_back(Spec("peck_cycle_type", T::String, "fanuc-t", "\"high_speed\"",
+                       std::string("high_speed"),
+                       "Lathe G83/G87: \"high_speed\" (retract d) or \"peck\" (retract to R) "
+                       "(FANUC RTR, No.5101#2)")
+                      .oneOf({"high_speed", "peck"}));
+  specs.push_back(Spec("peck_return", T::Number, "fanuc-m, fanuc-t, mazak-m, siemens-iso-m", "1.0",
+                       1.0,
+                       "G73 (and high-speed peck) retract amount d, mm (FANUC No.5114; Siemens "
+                       "ISO _ZSFR[1], 0 meaning 1 mm)")
+                      .range(0, kInf));
+  specs.push_back(Spec("rapid_type", T::String, kIso, "\"linear\"", std::string("linear"),
+                       "G00 path: \"linear\" (interpolated straight line) or \"per_axis\" (each "
+                       "axis at its own rapid rate, dog-leg) (FANUC No.1401#1 LRP, Mazak F91 "
+                       "bit 6)")
+                      .oneOf({"linear", "per_axis"}));
+  for (int n = 1; n <= 4; ++n) {
+    static const char* const keys[] = {"reference_point_1", "reference_point_2",
+                                       "reference_point_3", "reference_point_4"};
+    static const char* const meanings[] = {
+        "First reference point, machine coordinates (G28); axes not listed are at 0",
+        "2nd reference point, machine coordinates (G30 P2); axes not listed are at 0",
+        "3rd reference point, machine coordinates (G30 P3); axes not listed are at 0",
+        "4th reference point, machine coordinates (G30 P4); axes not listed are at 0"};
+    specs.push_back(Spec(keys[n - 1], T::AxisTable,
+                         n == 4 ? kIso : (n == 2 ? "mazak-m" : "mazak-m, siemens-iso-m"),
+                         "{} (all axes 0)", ParamAxisTable{}, meanings[n - 1]));
+  }
+  specs.push_back(Spec("reset_feed_mode", T::String, "fanuc-t", "\"G99\"", std::string("G99"),
+                       "Feed mode at program start (lathe system A): \"G98\" per minute / "
+                       "\"G99\" per revolution")
+                      .oneOf({"G98", "G99"}));
+  specs.push_back(Spec("reset_motion_mode", T::String, "fanuc-t, siemens-din", "\"G00\"",
+                       std::string("G00"), "Group-01 code active at program start")
+                      .oneOf({"G00", "G01"}));
+  specs.push_back(Spec("reset_plane", T::String, "fanuc-t, siemens-din",
+                       "the dialect's power-on plane (G17 mill, G18 lathe)", std::nullopt,
+                       "Plane at program start")
+                      .oneOf({"G17", "G18", "G19"}));
+  specs.push_back(Spec("reset_unit", T::String, "mazak-m, siemens-iso-m", "\"G21\"",
+                       std::string("G21"), "Unit at program start: \"G20\" inch or \"G21\" mm")
+                      .oneOf({"G20", "G21"}));
+  specs.push_back(Spec("rigid_tap_retract_override", T::Bool, "fanuc-t", "false", false,
+                       "Rigid tapping retract override on (FANUC DOV)"));
+  specs.push_back(Spec("rotary_axes", T::AxisList, "siemens-din, all",
+                       "the axes named A, B or C", std::nullopt,
+                       "Rotary axes (MD30300 IS_ROT_AX = 1); when given, exactly these axes are "
+                       "rotary and all others linear"));
+  specs.push_back(Spec("rotation_angle_incremental", T::Bool, "fanuc-t", "false", false,
+                       "G68/G68.1 angle R is incremental (FANUC RIN)"));
+  specs.push_back(Spec("rough_finish_pass_type1", T::Bool, "fanuc-t", "true", true,
+                       "G71/G72 type I: rough finishing pass along the contour after roughing "
+                       "(FANUC RF1 = 0)"));
+  specs.push_back(Spec("rough_finish_pass_type2", T::Bool, "fanuc-t", "true", true,
+                       "G71/G72 type II: rough finishing pass along the contour after roughing "
+                       "(FANUC RF2 = 0)"));
+  specs.push_back(Spec("same_group_in_block", T::String, kIso, "\"last_wins\"",
+                       std::string("last_wins"),
+                       "Two G codes of one modal group in a block: \"last_wins\" (the last one "
+                       "is effective) or \"error\" (an alarm)")
+                      .oneOf({"error", "last_wins"}));
+  specs.push_back(Spec("scale_factor_unit", T::Number, "siemens-iso-m", "0.001", 0.001,
+                       "Unit of the G51 scale factor P (MD22910 WEIGHTING_FACTOR_FOR_SCALE = 0: "
+                       "0.001, = 1: 0.00001)")
+                      .range(1e-9, 1));
+  specs.push_back(Spec("scale_per_axis", T::Bool, "siemens-iso-m", "false", false,
+                       "G51 scales per axis with I J K; false: one factor from P (MD22914 "
+                       "AXES_SCALE_ENABLE = 0)"));
+  specs.push_back(Spec("second_geometry_axes", T::AxisList, "fanuc-t", "[] (none)", no_names,
+                       "Axes to which the 2nd geometry offset applies"));
+  specs.push_back(Spec("second_geometry_signal_G2SLC", T::Bool, "fanuc-t", "false", false,
+                       "2nd geometry offset selected (signal G2SLC)"));
+  specs.push_back(Spec("software_limits", T::AxisRangeTable, "siemens-din, all", "{} (none)",
+                       ParamAxisRanges{},
+                       "Per-axis travel limits [min, max], machine coordinates; sets the axis's "
+                       "min_travel / max_travel"));
+  specs.push_back(Spec("spindle_encoder", T::Bool, "siemens-din", "true", true,
+                       "The spindle has an encoder (CYCLE97 and tapping need it)"));
+  specs.push_back(Spec("startup_type", T::String, "fanuc-t", "\"A\"", std::string("A"),
+                       "Cutter/nose compensation start-up and cancel type: \"A\", \"B\" or \"C\"")
+                      .oneOf({"A", "B", "C"}));
+  specs.push_back(Spec("t_code_digits", T::Integer, "fanuc-t", "4", 4.0,
+                       "Digits in a T word (FANUC No.3032)")
+                      .range(1, 8));
+  specs.push_back(Spec("tap_retract_percent", T::Number, "siemens-iso-m", "100", 100.0,
+                       "Tapping retract speed in % of the tapping speed (GUD7 _ZSFI[2])")
+                      .range(1, 200));
+  specs.push_back(Spec("tapping_type", T::String, "siemens-iso-m", "\"rigid\"",
+                       std::string("rigid"),
+                       "G84/G74 tapping type (GUD7 _ZSFI[1] = 0, 1, 2, 3): \"rigid\", "
+                       "\"floating\" (compensating chuck), \"high_speed_peck\", \"peck\"")
+                      .oneOf({"rigid", "floating", "high_speed_peck", "peck"}));
+  specs.push_back(Spec("thread_chamfer_signal", T::Bool, "fanuc-t", "false", false,
+                       "Thread chamfering (chamfer-out) at the end of G92/G76 on (signal CDZ)"));
+  specs.push_back(Spec("tnrc_lookahead_blocks", T::Integer, "fanuc-t", "3", 3.0,
+                       "Cutter/nose compensation look-ahead depth in blocks (FANUC No.19625)")
+                      .range(3, 8));
+  specs.push_back(Spec("tool_length_mode", T::String, "siemens-iso-m", "\"A\"", std::string("A"),
+                       "G43/G44 mode (MD20380 TOOL_CORR_MODE_G43G44 = 0, 1, 2): \"A\" H acts on "
+                       "Z, \"B\" on the axis normal to the plane, \"C\" on the axis programmed")
+                      .oneOf({"A", "B", "C"}));
+  specs.push_back(Spec("tool_length_move_mode", T::Bool, "siemens-iso-m", "false", false,
+                       "A length offset moves the tool when selected; false: with the next move "
+                       "of the axis (MD20382 TOOL_CORR_MOVE_MODE)"));
+  specs.push_back(Spec("wear_offset_method", T::String, "fanuc-t", "\"tool_move\"",
+                       std::string("tool_move"),
+                       "How a wear offset is applied: \"tool_move\" or \"shift\" (LWT, "
+                       "No.5002#2)")
+                      .oneOf({"tool_move", "shift"}));
+
+  std::vector<ParamSpec> out;
+  out.reserve(specs.size());
+  for (Spec& spec : specs) out.push_back(std::move(spec.s));
+  std::sort(out.begin(), out.end(),
+            [](const ParamSpec& a, const ParamSpec& b) { return a.key < b.key; });
+  return out;
+}
+
+template <typename V>
+const V* typed(const ParamValue* v) {
+  return v ? std::get_if<V>(v) : nullptr;
+}
+
+}  // namespace
+
+const std::vector<ParamSpec>& parameterRegistry() {
+  static const std::vector<ParamSpec> registry = buildRegistry();
+  return registry;
+}
+
+const ParamSpec* findParameter(std::string_view key) {
+  const auto& reg = parameterRegistry();
+  auto it = std::lower_bound(reg.begin(), reg.end(), key,
+                             [](const ParamSpec& s, std::string_view k) { return s.key < k; });
+  return it != reg.end() && it->key == key ? &*it : nullptr;
+}
+
+const ParamValue* ParameterSet::get(std::string_view key) const {
+  auto it = values_.find(key);
+  return it == values_.end() ? nullptr : &it->second;
+}
+
+const ParamValue* ParameterSet::getOrDefault(std::string_view key) const {
+  if (const ParamValue* v = get(key)) return v;
+  const ParamSpec* spec = findParameter(key);
+  return spec && spec->default_value ? &*spec->default_value : nullptr;
+}
+
+bool ParameterSet::getBool(std::string_view key, bool fallback) const {
+  const bool* v = typed<bool>(get(key));
+  return v ? *v : fallback;
+}
+double ParameterSet::getNumber(std::string_view key, double fallback) const {
+  const double* v = typed<double>(get(key));
+  return v ? *v : fallback;
+}
+std::string ParameterSet::getString(std::string_view key, std::string fallback) const {
+  const std::string* v = typed<std::string>(get(key));
+  return v ? *v : fallback;
+}
+const ParamAxisTable* ParameterSet::getAxisTable(std::string_view key) const {
+  return typed<ParamAxisTable>(get(key));
+}
+
+bool ParameterSet::getBool(std::string_view key) const {
+  const bool* v = typed<bool>(getOrDefault(key));
+  return v ? *v : false;
+}
+double ParameterSet::getNumber(std::string_view key) const {
+  const double* v = typed<double>(getOrDefault(key));
+  return v ? *v : 0.0;
+}
+std::string ParameterSet::getString(std::string_view key) const {
+  const std::string* v = typed<std::string>(getOrDefault(key));
+  return v ? *v : std::string();
+}
+
+const std::vector<double>* ParameterSet::getNumberList(std::string_view key) const {
+  return typed<std::vector<double>>(get(key));
+}
+const std::vector<std::string>* ParameterSet::getStringList(std::string_view key) const {
+  return typed<std::vector<std::string>>(get(key));
+}
+const ParamStringTable* ParameterSet::getStringTable(std::string_view key) const {
+  return typed<ParamStringTable>(get(key));
+}
+const ParamAxisRanges* ParameterSet::getAxisRanges(std::string_view key) const {
+  return typed<ParamAxisRanges>(get(key));
+}
+
+}  // namespace ncc

@@ -1,0 +1,138 @@
+#pragma once
+// The data that makes a dialect: its G-code table (group, power-on default, one-shot or
+// modal, what lowering does with the code, or why it is not supported yet), the alarm number
+// of every diagnostic lowering raises, and the defaults of the controller parameters it reads.
+// Lowering is written against this table only; there is no `if (dialect == ...)` in it.
+// docs/semantics.md documents the three tables.
+#include <cstdint>
+#include <span>
+#include <string>
+#include <string_view>
+
+#include "ncc/machine/dialect.h"
+
+namespace ncc::passes {
+
+// What lowering does with a G code (the semantics, independent of the dialect's numbering).
+enum class GAction : uint8_t {
+  Rapid, Linear, ArcCW, ArcCCW,                 // motion (modal)
+  PlaneXY, PlaneZX, PlaneYZ,                    // G17 G18 G19
+  Absolute, Incremental,                        // G90 G91
+  InverseTime, PerMinute, PerRevolution,        // G93 G94 G95
+  Inch, Metric,                                 // G20 G21
+  LengthPlus, LengthMinus, LengthCancel,        // G43 G44 G49
+  WorkOffset,                                   // G54..G59 (index in `work_index`)
+  WorkOffsetExtended,                           // G54.1 Pn
+  ExactStopMode, CornerOverride, TappingMode, ContinuousMode,  // G61 G62 G63 G64
+  Dwell,                                        // G04
+  ExactStopOneShot,                             // G09
+  DataSet,                                      // G10
+  ReferenceCheck,                               // G27
+  ReferenceReturn,                              // G28
+  ReferenceReturnN,                             // G30
+  LocalShift,                                   // G52
+  MachineCoordinates,                           // G53
+  SetShift,                                     // G92
+  ResetShift,                                   // G92.1
+  CancelNoEffect,  // the cancel/off code of a function ncc never switches on (G40, G80, G50..)
+  LanguageDin, LanguageIso,                     // G290 G291
+  NotSupported,    // a real code of the controller that ncc does not implement yet
+};
+
+// Semantic groups: which codes exclude each other in a block and replace each other modally.
+enum class GGroup : uint8_t {
+  OneShot, Motion, Plane, Distance, FeedMode, Units, CutterComp, LengthComp, Cycle,
+  ReturnLevel, Scaling, MacroModal, Spindle, WorkOffset, PathControl, Rotation, Polar,
+  Mirror, StrokeCheck, PolarInterpolation, Profiling, Language, Other,
+};
+
+struct GCodeEntry {
+  int code10;                 // G code x 10: G54.1 -> 541, G01 -> 10
+  GGroup group;
+  int group_number;           // the group as the dialect's manual numbers it (docs, messages)
+  bool power_on_default;      // '*' in the manual's table
+  GAction action;
+  int work_index;             // WorkOffset: 1..6 for G54..G59
+  std::string_view description;  // "canned drilling cycle", used in diagnostics
+};
+
+// Every diagnostic lowering raises; each dialect maps it to its alarm number or an NCC code.
+enum class Alarm : uint8_t {
+  MacroNotSupported,        // `X#1`, `[..]`, `#1=..`
+  CodeNotSupported,         // a known G/M code ncc does not implement yet
+  UnknownGCode,             // a G code the controller does not have
+  AddressNotSupported,      // Q, E, ,C ... (features not implemented yet)
+  AddressNotAnAxis,         // a letter that is not an axis of the machine
+  AddressWithoutMeaning,    // I/J/K without an arc, L without G10, ...
+  AddressRepeated,          // the same address twice in a block
+  SameGroupInBlock,         // two codes of one group in a block (policy "error")
+  OneShotConflict,          // two one-shot codes that both need the axis words
+  DecimalPointNotAllowed,   // a point at an integer address (policy "error")
+  ValueOutOfRange,          // negative S, T; F < 0; ...
+  TooManyMCodes,
+  FeedMissing,              // G01/G02/G03 (or G93 block) without F
+  ArcRadiusMismatch,        // start and end radius differ by more than the tolerance
+  ArcRadiusTooSmall,        // R arc with |R| < chord / 2
+  ArcCentreMissing,         // G02/G03 without I/J/K or R
+  ArcDegenerate,            // centre at the start point, R arc ending at the start, ...
+  OffsetNumberOutOfRange,   // H / D beyond offset_count
+  ReferenceCheckFailed,     // G27 position is not the reference point
+  ReferencePointNumber,     // G30 P other than 2..4 (where that is an error)
+  DataSetFormat,            // G10 with a bad L or P
+  ExtendedOffsetNumber,     // G54.1 P out of range
+  ExtendedOffsetRequired,   // G10 L20 without P outside G54.1 mode
+  LocalShiftInExtended,     // G52 while G54.1 is active
+  AxisMissing,              // G43 on a machine without the length axis, arc plane axis missing
+  G53Incremental,           // G53 in G91 where the controller ignores it (warning)
+  kCount,
+};
+
+// Where a dialect differs in behaviour; each field says which manual statement it encodes.
+struct DialectBehaviour {
+  // Default of `same_group_in_block`: "error", "last_wins" or "per_word" (G90/G91 switch for
+  // the words that follow them; two codes of another group are an error).
+  std::string_view same_group_default;
+  std::string_view decimal_point_default;  // "standard" | "calculator"
+  std::string_view rapid_type_default;     // "linear" | "per_axis"
+  double arc_radius_tolerance_default;     // mm
+  int offset_count_default;                // H/D numbers 1..n
+  int max_m_codes;                         // M codes per block
+  bool m_overflow_keeps_last;              // more than max: keep the last ones (Mazak)
+  int max_t_words;                         // T words per block (Mazak: tool + next tool)
+  bool duplicate_h_d_last_wins;            // Mazak: "only one H/D per block: the last wins"
+  bool integer_point_is_error;             // FANUC PS0007; others drop the fraction
+  bool dwell_p_point_is_error;             // G04 P12.5: FANUC PS0007, Mazak drops it
+  bool dwell_revolutions_default;          // G04 in G95 counts revolutions by default
+  bool reference_return_cancels_length;    // G28/G30 leave G49 in force after the return
+  bool local_shift_per_work_offset;        // G52 belongs to the work system it was set in
+  bool local_shift_in_extended_is_error;   // Mazak 949: G52 while G54.1 is active
+  bool work_offset_write_on_reselect;      // G10 L2/L20 act when the system is selected again
+  enum class G53InG91 : uint8_t { Incremental, Absolute, Ignored } g53_in_g91;
+  enum class G30P : uint8_t { ErrorOutside2To4, OtherMeansSecond } g30_p;
+  bool g10_l2_p_lenient;                   // Mazak: P outside 0-6 -> 1, P missing -> last P
+  int extended_offset_count;               // G54.1 P1..n (FANUC/Mazak 48) / G54 P1..n (Siemens 93)
+  bool extended_offset_is_g54_p;           // Siemens: `G54 P1` instead of `G54.1 P1`
+  bool inverse_time_arc_per_radius;        // Mazak G93: F = speed / radius on arcs
+  bool length_change_moves_default;        // G43 H / G49 alone moves the length axis
+};
+
+struct DialectTable {
+  Dialect dialect;
+  std::span<const GCodeEntry> gcodes;
+  std::span<const std::string_view> alarm_codes;  // indexed by Alarm
+  DialectBehaviour behaviour;
+
+  const GCodeEntry* findG(int code10) const;
+  std::string_view alarm(Alarm a) const { return alarm_codes[static_cast<size_t>(a)]; }
+  // The power-on code of a group (nullptr if the group has none).
+  const GCodeEntry* powerOnDefault(GGroup group) const;
+};
+
+// The table of an ISO-milling dialect; nullptr for dialects lowering does not handle
+// (fanuc-t, siemens-din).
+const DialectTable* dialectTable(Dialect dialect);
+
+// "G54.1", "G01": the code as written in diagnostics.
+std::string gCodeName(int code10);
+
+}  // namespace ncc::passes

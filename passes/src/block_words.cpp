@@ -1,0 +1,215 @@
+#include "block_words.h"
+
+#include <cmath>
+
+#include "absl/strings/str_cat.h"
+#include "expr_text.h"
+
+namespace ncc::passes {
+
+namespace {
+
+std::string groupLabel(const GCodeEntry& e) {
+  return e.group_number < 10 ? absl::StrCat("0", e.group_number) : absl::StrCat(e.group_number);
+}
+
+// Addresses of features ncc does not implement yet, with what they are for.
+const char* unsupportedAddress(std::string_view a) {
+  if (a == "Q") return "canned cycle data";
+  if (a == "E") return "precise thread lead";
+  if (a == ",C") return "chamfering";
+  if (a == ",R") return "corner rounding";
+  if (a == ",A") return "drawing angle";
+  return nullptr;
+}
+
+class Decoder {
+ public:
+  Decoder(const ast::Block& block, const DecodeContext& ctx) : block_(block), ctx_(ctx) {}
+
+  std::optional<DecodedBlock> run() {
+    for (const ast::Statement& st : block_.statements)
+      fail(Alarm::MacroNotSupported, st.loc,
+           "macro expressions/statements are not supported yet (macro statement)");
+    for (const ast::Word& w : block_.words)
+      if (w.address == "G") gWord(w);
+    initialDistance();
+    for (const ast::Word& w : block_.words) {
+      if (w.address == "G") {
+        trackDistance(w);
+        continue;
+      }
+      otherWord(w);
+    }
+    if (failed_) return std::nullopt;
+    return std::move(out_);
+  }
+
+ private:
+  void fail(Alarm a, SourceLocation loc, std::string message) {
+    ctx_.diags.error(std::string(ctx_.table.alarm(a)), loc, std::move(message));
+    failed_ = true;
+  }
+
+  bool literal(const ast::Word& w, double& v, bool& point) {
+    if (foldLiteral(w.value, v, point)) return true;
+    fail(Alarm::MacroNotSupported, w.loc,
+         absl::StrCat("macro expressions/statements are not supported yet: ", w.address,
+                      exprText(w.value)));
+    return false;
+  }
+
+  void gWord(const ast::Word& w) {
+    double v;
+    bool point;
+    if (!literal(w, v, point)) return;
+    int code10 = static_cast<int>(std::lround(v * 10.0));
+    const GCodeEntry* e = (v >= 0 && std::fabs(v * 10.0 - code10) < 1e-6)
+                              ? ctx_.table.findG(code10) : nullptr;
+    if (!e) {
+      fail(Alarm::UnknownGCode, w.loc,
+           absl::StrCat("G", exprText(w.value), " is not a G code of ",
+                        std::string(dialectName(ctx_.table.dialect))));
+      return;
+    }
+    if (e->action == GAction::NotSupported) {
+      fail(Alarm::CodeNotSupported, w.loc,
+           absl::StrCat(gCodeName(e->code10), " (", std::string(e->description), ") is not supported yet"));
+      return;
+    }
+    GWord g{e, w.loc};
+    if (e->action == GAction::ExactStopOneShot) {
+      out_.exact_stop = g;
+      return;
+    }
+    if (e->group == GGroup::OneShot) {
+      if (out_.one_shot) {
+        fail(Alarm::OneShotConflict, w.loc,
+             absl::StrCat(gCodeName(e->code10), " and ", gCodeName(out_.one_shot->entry->code10),
+                          " cannot be given in one block"));
+        return;
+      }
+      out_.one_shot = g;
+      return;
+    }
+    auto& slot = out_.modal[static_cast<size_t>(e->group)];
+    if (slot && slot->entry != e) {
+      bool per_word_ok = ctx_.policy == SameGroupPolicy::PerWord && e->group == GGroup::Distance;
+      if (ctx_.policy == SameGroupPolicy::Error ||
+          (ctx_.policy == SameGroupPolicy::PerWord && !per_word_ok)) {
+        fail(Alarm::SameGroupInBlock, w.loc,
+             absl::StrCat(gCodeName(e->code10), " and ", gCodeName(slot->entry->code10),
+                          " are both group ", groupLabel(*e), " codes; only one may be given in "
+                          "a block (same_group_in_block = \"error\")"));
+        return;
+      }
+    }
+    slot = g;  // last_wins / per_word: the last written is the block's modal code
+  }
+
+  // Words before the first G90/G91 of the block follow that first code (the block-level
+  // reading); later words follow the most recent one (Mazak's per-word switch).
+  void initialDistance() {
+    distance_ = ctx_.modal_distance;
+    for (const ast::Word& w : block_.words) {
+      double v;
+      bool point;
+      if (w.address != "G" || !foldLiteral(w.value, v, point)) continue;
+      long code10 = std::lround(v * 10.0);
+      if (code10 == 900 || code10 == 910) {
+        distance_ = code10 == 900 ? ir::DistanceMode::Absolute : ir::DistanceMode::Incremental;
+        break;
+      }
+    }
+    if (ctx_.policy != SameGroupPolicy::PerWord) {
+      if (const auto& g = out_.group(GGroup::Distance))
+        distance_ = g->entry->action == GAction::Absolute ? ir::DistanceMode::Absolute
+                                                          : ir::DistanceMode::Incremental;
+    }
+  }
+
+  void trackDistance(const ast::Word& w) {
+    if (ctx_.policy != SameGroupPolicy::PerWord) return;
+    double v;
+    bool point;
+    if (!foldLiteral(w.value, v, point)) return;
+    long code10 = std::lround(v * 10.0);
+    if (code10 == 900) distance_ = ir::DistanceMode::Absolute;
+    if (code10 == 910) distance_ = ir::DistanceMode::Incremental;
+  }
+
+  void store(std::optional<WordValue>& slot, WordValue wv, bool last_wins = false) {
+    if (slot && !last_wins) {
+      fail(Alarm::AddressRepeated, wv.loc,
+           absl::StrCat("address ", wv.address, " is given twice in the block"));
+      return;
+    }
+    slot = std::move(wv);
+  }
+
+  void otherWord(const ast::Word& w) {
+    const std::string& a = w.address;
+    if (const char* what = unsupportedAddress(a)) {
+      fail(Alarm::AddressNotSupported, w.loc,
+           absl::StrCat("address ", a, " (", what, ") is not supported yet"));
+      return;
+    }
+    WordValue wv;
+    if (!literal(w, wv.value, wv.point)) return;
+    wv.loc = w.loc;
+    wv.mode = distance_;
+    wv.address = a;
+    int axis = ctx_.machine.axisIndex(a);
+    if (axis >= 0 && axis < kMaxAxes) {
+      if (!out_.first_axis_loc) out_.first_axis_loc = w.loc;
+      store(out_.axes[axis], std::move(wv));
+      return;
+    }
+    const DialectBehaviour& b = ctx_.table.behaviour;
+    if (a == "I") return store(out_.i, std::move(wv));
+    if (a == "J") return store(out_.j, std::move(wv));
+    if (a == "K") return store(out_.k, std::move(wv));
+    if (a == "R") return store(out_.r, std::move(wv));
+    if (a == "F") return store(out_.f, std::move(wv));
+    if (a == "S") return store(out_.s, std::move(wv));
+    if (a == "P") return store(out_.p, std::move(wv));
+    if (a == "L") return store(out_.l, std::move(wv));
+    if (a == "H") return store(out_.h, std::move(wv), b.duplicate_h_d_last_wins);
+    if (a == "D") return store(out_.d, std::move(wv), b.duplicate_h_d_last_wins);
+    if (a == "M") {
+      out_.m.push_back(std::move(wv));
+      return;
+    }
+    if (a == "T") {
+      if (static_cast<int>(out_.t.size()) >= b.max_t_words) {
+        fail(Alarm::AddressRepeated, w.loc,
+             absl::StrCat("address T is given more than ", b.max_t_words,
+                          b.max_t_words == 1 ? " time" : " times", " in the block"));
+        return;
+      }
+      out_.t.push_back(std::move(wv));
+      return;
+    }
+    if (a.size() == 1 && std::string_view("XYZABCUVW").find(a[0]) != std::string_view::npos) {
+      fail(Alarm::AddressNotAnAxis, w.loc,
+           absl::StrCat("address ", a, ": the machine has no axis ", a));
+      return;
+    }
+    fail(Alarm::AddressNotSupported, w.loc,
+         absl::StrCat("address ", a, " is not supported yet"));
+  }
+
+  const ast::Block& block_;
+  const DecodeContext& ctx_;
+  DecodedBlock out_;
+  ir::DistanceMode distance_ = ir::DistanceMode::Absolute;
+  bool failed_ = false;
+};
+
+}  // namespace
+
+std::optional<DecodedBlock> decodeBlock(const ast::Block& block, const DecodeContext& ctx) {
+  return Decoder(block, ctx).run();
+}
+
+}  // namespace ncc::passes

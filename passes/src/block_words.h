@@ -1,0 +1,63 @@
+#pragma once
+// First step of lowering a block: sort its words by meaning. G codes are looked up in the
+// dialect table and checked against the same-group policy; every other word is classified
+// (axis, centre, feed, ...), checked for repeats and macro expressions, and tagged with the
+// G90/G91 mode that applies to it. Nothing here changes the controller state.
+#include <array>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "ncc/frontend/ast.h"
+#include "ncc/ir/ir.h"
+#include "ncc/machine/machine_config.h"
+#include "ncc/passes/dialect_table.h"
+#include "ncc/support/diagnostics.h"
+
+namespace ncc::passes {
+
+enum class SameGroupPolicy : uint8_t { Error, LastWins, PerWord };
+
+struct WordValue {
+  double value = 0.0;
+  bool point = false;
+  SourceLocation loc;
+  ir::DistanceMode mode = ir::DistanceMode::Absolute;  // G90/G91 in force for this word
+  std::string address;
+};
+
+struct GWord {
+  const GCodeEntry* entry = nullptr;
+  SourceLocation loc;
+};
+
+struct DecodedBlock {
+  // Modal G codes by group (the effective one after the same-group policy), one-shot code.
+  std::array<std::optional<GWord>, static_cast<size_t>(GGroup::Other) + 1> modal;
+  std::optional<GWord> one_shot;  // G04 G10 G27 G28 G30 G52 G53 G92 G92.1
+  std::optional<GWord> exact_stop;  // G09
+  std::array<std::optional<WordValue>, kMaxAxes> axes;
+  std::optional<WordValue> i, j, k, r, f, s, h, d, p, l;
+  std::vector<WordValue> t, m;
+  std::optional<SourceLocation> first_axis_loc;
+
+  const std::optional<GWord>& group(GGroup g) const { return modal[static_cast<size_t>(g)]; }
+  bool anyAxis() const {
+    for (const auto& a : axes)
+      if (a) return true;
+    return false;
+  }
+};
+
+struct DecodeContext {
+  const DialectTable& table;
+  const MachineConfig& machine;
+  SameGroupPolicy policy;
+  ir::DistanceMode modal_distance;  // G90/G91 before the block
+  DiagnosticEngine& diags;
+};
+
+// Returns nullopt (after reporting) when the block has an error.
+std::optional<DecodedBlock> decodeBlock(const ast::Block& block, const DecodeContext& ctx);
+
+}  // namespace ncc::passes

@@ -1,0 +1,62 @@
+#pragma once
+// The state of the controller between blocks: modal codes, position, and the pieces of the
+// frame (work offset, G92 shift, G52 local shift, tool length). Small and copyable: a block
+// is lowered on a copy that replaces the state only when the block has no error. The offset
+// tables written by G10 live apart (OffsetTables) and are written at the commit.
+#include <map>
+#include <string>
+
+#include "ncc/ir/ir.h"
+#include "ncc/machine/axes.h"
+#include "ncc/passes/dialect_table.h"
+
+namespace ncc::passes {
+
+struct ControllerState {
+  ir::Modal modal;
+  GAction motion = GAction::Rapid;     // group 01
+  bool feed_programmed = false;        // an F (or F1-F9) has been given since the start
+  AxisValues position{};               // machine coordinates of the commanded point
+
+  std::string work_name = "G54";
+  AxisValues work_value{};             // the selected work offset, as latched
+  AxisValues external{};               // G10 L2 P0: added to every work offset
+  AxisValues g92{};                    // G92 shift, shared by all work systems
+  AxisValues local{};                  // G52 (dialects where it is shared)
+  std::map<std::string, AxisValues> local_by_work;  // G52 per work system (Mazak)
+
+  int h_selected = 0;                  // H number last programmed (modal even in G49)
+  int d_selected = 0;
+  int tool_length_axis = -1;           // axis carrying the length offset, -1 if none
+  double tool_length = 0.0;            // signed length applied on that axis
+  int last_g10_l2_p = 1;               // Mazak: G10 L2 without P reuses the last P
+};
+
+struct OffsetTables {
+  std::map<std::string, AxisValues> work;   // "G54".., "G54.1P1".., "G54P1"..
+  std::map<int, double> length, length_wear, radius, radius_wear;
+
+  double toolLength(int h) const {
+    double v = 0.0;
+    if (auto it = length.find(h); it != length.end()) v += it->second;
+    if (auto it = length_wear.find(h); it != length_wear.end()) v += it->second;
+    return v;
+  }
+  AxisValues workOffset(const std::string& name) const {
+    auto it = work.find(name);
+    return it == work.end() ? AxisValues{} : it->second;
+  }
+};
+
+// A G10 write, applied to OffsetTables when its block commits.
+struct TableWrite {
+  enum class Target : uint8_t { Work, External, Length, LengthWear, Radius, RadiusWear };
+  Target target = Target::Work;
+  std::string work_name;  // Target::Work
+  int number = 0;         // register targets
+  AxisValues values{};    // Work/External: per axis; registers: values[0]
+  AxisMask axes = 0;
+  bool add = false;       // G91: add to the stored value
+};
+
+}  // namespace ncc::passes

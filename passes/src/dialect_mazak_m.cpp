@@ -1,0 +1,193 @@
+// mazak-m: Mazak MAZATROL FUSION 640M, EIA/ISO mode (mazak-fusion640m-eia-iso.fr.md §3 for the
+// groups, §6 for the alarms).
+#include "dialect_tables.h"
+
+namespace ncc::passes {
+
+namespace {
+using A = GAction;
+using G = GGroup;
+
+constexpr GCodeEntry kCodes[] = {
+    // group 00 (one-shot)
+    {40, G::OneShot, 0, false, A::Dwell, 0, "dwell"},
+    {90, G::OneShot, 0, false, A::ExactStopOneShot, 0, "exact stop check"},
+    {100, G::OneShot, 0, false, A::DataSet, 0, "programmed data setting"},
+    {270, G::OneShot, 0, false, A::ReferenceCheck, 0, "reference point check"},
+    {280, G::OneShot, 0, false, A::ReferenceReturn, 0, "reference point return"},
+    {290, G::OneShot, 0, false, A::NotSupported, 0, "start point return"},
+    {300, G::OneShot, 0, false, A::ReferenceReturnN, 0, "2nd/3rd/4th reference point return"},
+    {310, G::OneShot, 0, false, A::NotSupported, 0, "skip function"},
+    {311, G::OneShot, 0, false, A::NotSupported, 0, "multi-step skip"},
+    {312, G::OneShot, 0, false, A::NotSupported, 0, "multi-step skip"},
+    {313, G::OneShot, 0, false, A::NotSupported, 0, "multi-step skip"},
+    {370, G::OneShot, 0, false, A::NotSupported, 0, "automatic tool length measurement"},
+    {380, G::OneShot, 0, false, A::NotSupported, 0, "tool radius compensation vector selection"},
+    {390, G::OneShot, 0, false, A::NotSupported, 0, "tool radius compensation corner arc"},
+    {450, G::OneShot, 0, false, A::NotSupported, 0, "tool position offset extension"},
+    {460, G::OneShot, 0, false, A::NotSupported, 0, "tool position offset reduction"},
+    {470, G::OneShot, 0, false, A::NotSupported, 0, "tool position offset double extension"},
+    {480, G::OneShot, 0, false, A::NotSupported, 0, "tool position offset double reduction"},
+    {520, G::OneShot, 0, false, A::LocalShift, 0, "local coordinate system setting"},
+    {530, G::OneShot, 0, false, A::MachineCoordinates, 0, "machine coordinate system selection"},
+    {600, G::OneShot, 0, false, A::NotSupported, 0, "one-way positioning"},
+    {650, G::OneShot, 0, false, A::NotSupported, 0, "user macro simple call"},
+    {920, G::OneShot, 0, false, A::SetShift, 0, "coordinate system setting"},
+    {21, G::OneShot, 0, false, A::NotSupported, 0, "spiral interpolation CW"},
+    {31, G::OneShot, 0, false, A::NotSupported, 0, "spiral interpolation CCW"},
+    {50, G::Other, 0, false, A::NotSupported, 0, "high-speed machining mode"},
+    {70, G::Other, 0, false, A::NotSupported, 0, "virtual axis interpolation"},
+    {925, G::Other, 0, false, A::NotSupported, 0, "work coordinate system rotation"},
+    // group 01
+    {0, G::Motion, 1, true, A::Rapid, 0, "positioning"},
+    {10, G::Motion, 1, false, A::Linear, 0, "linear interpolation"},
+    {20, G::Motion, 1, false, A::ArcCW, 0, "circular interpolation CW"},
+    {30, G::Motion, 1, false, A::ArcCCW, 0, "circular interpolation CCW"},
+    {61, G::Motion, 1, false, A::NotSupported, 0, "spline interpolation"},
+    {62, G::Motion, 1, false, A::NotSupported, 0, "NURBS interpolation"},
+    {330, G::Motion, 1, false, A::NotSupported, 0, "thread cutting"},
+    // group 02
+    {170, G::Plane, 2, true, A::PlaneXY, 0, "XY plane"},
+    {180, G::Plane, 2, false, A::PlaneZX, 0, "ZX plane"},
+    {190, G::Plane, 2, false, A::PlaneYZ, 0, "YZ plane"},
+    // group 03
+    {900, G::Distance, 3, true, A::Absolute, 0, "absolute data input"},
+    {910, G::Distance, 3, false, A::Incremental, 0, "incremental data input"},
+    // group 04
+    {220, G::StrokeCheck, 4, false, A::NotSupported, 0, "pre-move stroke check on"},
+    {230, G::StrokeCheck, 4, true, A::CancelNoEffect, 0, "pre-move stroke check off"},
+    // group 05
+    {930, G::FeedMode, 5, false, A::InverseTime, 0, "inverse time feed"},
+    {940, G::FeedMode, 5, true, A::PerMinute, 0, "feed per minute"},
+    {950, G::FeedMode, 5, false, A::PerRevolution, 0, "feed per revolution"},
+    // group 06 (power-on unit: parameter reset_unit, F91 bit 4)
+    {200, G::Units, 6, false, A::Inch, 0, "inch data input"},
+    {210, G::Units, 6, true, A::Metric, 0, "metric data input"},
+    // group 07
+    {400, G::CutterComp, 7, true, A::CancelNoEffect, 0, "tool radius compensation cancel"},
+    {410, G::CutterComp, 7, false, A::NotSupported, 0, "tool radius compensation left"},
+    {420, G::CutterComp, 7, false, A::NotSupported, 0, "tool radius compensation right"},
+    // group 08
+    {430, G::LengthComp, 8, false, A::LengthPlus, 0, "tool length offset +"},
+    {440, G::LengthComp, 8, false, A::LengthMinus, 0, "tool length offset -"},
+    {490, G::LengthComp, 8, true, A::LengthCancel, 0, "tool length offset cancel"},
+    // group 09
+    {711, G::Cycle, 9, false, A::NotSupported, 0, "chamfering cycle"},
+    {721, G::Cycle, 9, false, A::NotSupported, 0, "chamfering cycle"},
+    {730, G::Cycle, 9, false, A::NotSupported, 0, "high-speed deep hole drilling cycle"},
+    {740, G::Cycle, 9, false, A::NotSupported, 0, "reverse tapping cycle"},
+    {750, G::Cycle, 9, false, A::NotSupported, 0, "boring cycle"},
+    {760, G::Cycle, 9, false, A::NotSupported, 0, "fine boring cycle"},
+    {770, G::Cycle, 9, false, A::NotSupported, 0, "back spot facing cycle"},
+    {780, G::Cycle, 9, false, A::NotSupported, 0, "boring cycle"},
+    {790, G::Cycle, 9, false, A::NotSupported, 0, "boring cycle"},
+    {800, G::Cycle, 9, true, A::CancelNoEffect, 0, "fixed cycle cancel"},
+    {810, G::Cycle, 9, false, A::NotSupported, 0, "canned drilling cycle"},
+    {820, G::Cycle, 9, false, A::NotSupported, 0, "canned drilling cycle with dwell"},
+    {830, G::Cycle, 9, false, A::NotSupported, 0, "canned deep hole drilling cycle"},
+    {840, G::Cycle, 9, false, A::NotSupported, 0, "canned tapping cycle"},
+    {842, G::Cycle, 9, false, A::NotSupported, 0, "synchronous tapping cycle"},
+    {843, G::Cycle, 9, false, A::NotSupported, 0, "synchronous reverse tapping cycle"},
+    {850, G::Cycle, 9, false, A::NotSupported, 0, "canned reaming cycle"},
+    {860, G::Cycle, 9, false, A::NotSupported, 0, "canned boring cycle"},
+    {870, G::Cycle, 9, false, A::NotSupported, 0, "canned back boring cycle"},
+    {880, G::Cycle, 9, false, A::NotSupported, 0, "canned boring cycle"},
+    {890, G::Cycle, 9, false, A::NotSupported, 0, "canned boring cycle"},
+    {1300, G::Cycle, 9, false, A::NotSupported, 0, "TORNADO cycle"},
+    // group 10: return level, only meaningful with canned cycles (never active)
+    {980, G::ReturnLevel, 10, true, A::CancelNoEffect, 0, "fixed cycle initial point level return"},
+    {990, G::ReturnLevel, 10, false, A::CancelNoEffect, 0, "fixed cycle R point level return"},
+    // group 11
+    {500, G::Scaling, 11, true, A::CancelNoEffect, 0, "scaling cancel"},
+    {510, G::Scaling, 11, false, A::NotSupported, 0, "scaling"},
+    // group 12
+    {540, G::WorkOffset, 12, true, A::WorkOffset, 1, "work coordinate system 1"},
+    {550, G::WorkOffset, 12, false, A::WorkOffset, 2, "work coordinate system 2"},
+    {560, G::WorkOffset, 12, false, A::WorkOffset, 3, "work coordinate system 3"},
+    {570, G::WorkOffset, 12, false, A::WorkOffset, 4, "work coordinate system 4"},
+    {580, G::WorkOffset, 12, false, A::WorkOffset, 5, "work coordinate system 5"},
+    {590, G::WorkOffset, 12, false, A::WorkOffset, 6, "work coordinate system 6"},
+    {541, G::WorkOffset, 12, false, A::WorkOffsetExtended, 0, "additional work coordinate system"},
+    // group 13
+    {610, G::PathControl, 13, false, A::ExactStopMode, 0, "exact stop mode"},
+    {611, G::PathControl, 13, false, A::NotSupported, 0, "shape correction"},
+    {620, G::PathControl, 13, false, A::CornerOverride, 0, "automatic corner override"},
+    {630, G::PathControl, 13, false, A::TappingMode, 0, "tapping mode"},
+    {640, G::PathControl, 13, true, A::ContinuousMode, 0, "cutting mode"},
+    // group 14
+    {660, G::MacroModal, 14, false, A::NotSupported, 0, "user macro modal call"},
+    {661, G::MacroModal, 14, false, A::NotSupported, 0, "user macro modal call"},
+    {670, G::MacroModal, 14, true, A::CancelNoEffect, 0, "user macro modal call cancel"},
+    // group 15
+    {401, G::Profiling, 15, true, A::CancelNoEffect, 0, "normal line control cancel"},
+    {411, G::Profiling, 15, false, A::NotSupported, 0, "normal line control left"},
+    {421, G::Profiling, 15, false, A::NotSupported, 0, "normal line control right"},
+    // group 16
+    {680, G::Rotation, 16, false, A::NotSupported, 0, "coordinate rotation"},
+    {690, G::Rotation, 16, true, A::CancelNoEffect, 0, "coordinate rotation cancel"},
+    // group 19
+    {501, G::Mirror, 19, true, A::CancelNoEffect, 0, "programmable mirror image cancel"},
+    {511, G::Mirror, 19, false, A::NotSupported, 0, "programmable mirror image"},
+};
+
+// Indexed by Alarm; numbers from the manual's alarm list (notes §6).
+constexpr std::string_view kAlarms[] = {
+    "NCC2001",  // MacroNotSupported
+    "NCC2010",  // CodeNotSupported
+    "NCC2012",  // UnknownGCode (the manual: "unknown codes raise an alarm", no number)
+    "NCC2011",  // AddressNotSupported
+    "NCC2013",  // AddressNotAnAxis
+    "NCC2014",  // AddressWithoutMeaning
+    "NCC2015",  // AddressRepeated
+    "NCC2020",  // SameGroupInBlock
+    "NCC2021",  // OneShotConflict
+    "NCC2030",  // DecimalPointNotAllowed (not raised: fractions are dropped)
+    "NCC2031",  // ValueOutOfRange
+    "NCC2032",  // TooManyMCodes (warning: the last four win)
+    "816",      // FeedMissing: AVANCE D'USINAGE = ZERO
+    "817",      // ArcRadiusMismatch: radius difference above F19
+    "818",      // ArcRadiusTooSmall: IMPOSSIBLE DE CHERCHER CENTRE
+    "NCC2043",  // ArcCentreMissing
+    "NCC2044",  // ArcDegenerate
+    "839",      // OffsetNumberOutOfRange: No. DE CORRECT. NON AUTORISE
+    "NCC2060",  // ReferenceCheckFailed (no number in the notes)
+    "NCC2061",  // ReferencePointNumber (not raised: bad P selects the 2nd point)
+    "903",      // DataSetFormat: G10 L/P
+    "809",      // ExtendedOffsetNumber: G54.1 P
+    "807",      // ExtendedOffsetRequired: G10 L20 without P in G54-G59
+    "949",      // LocalShiftInExtended: G52 in G54.1
+    "NCC2080",  // AxisMissing
+    "NCC2081",  // G53Incremental (not raised: G53 is incremental in G91)
+};
+static_assert(std::size(kAlarms) == static_cast<size_t>(Alarm::kCount));
+
+constexpr DialectBehaviour kBehaviour{
+    .same_group_default = "per_word",       // §5-1: G90X300. G91Y100.
+    .decimal_point_default = "standard",    // F91 bit 5 = 0 (type 1)
+    .rapid_type_default = "linear",         // F91 bit 6 = 0
+    .arc_radius_tolerance_default = 0.01,   // F19
+    .offset_count_default = 128,            // standard offset memory H1-H128
+    .max_m_codes = 4,                       // ch. 3: at most 4 M codes, the last 4 win
+    .m_overflow_keeps_last = true,
+    .max_t_words = 2,                       // `T01 T00 M06`: tool and next tool
+    .duplicate_h_d_last_wins = true,        // "only one H/D per block: the last wins"
+    .integer_point_is_error = false,        // D H L M N O S T ignore fractions
+    .dwell_p_point_is_error = false,        // G04 P12.345 -> 12 ms
+    .dwell_revolutions_default = true,      // F92 bit 2 = 0: G95 dwell in revolutions
+    .reference_return_cancels_length = true,  // §12-2 5.4
+    .local_shift_per_work_offset = true,    // §14-11: set in G54 it does not apply in G55
+    .local_shift_in_extended_is_error = true,
+    .work_offset_write_on_reselect = false, // §12-6 E11: the display changes at once
+    .g53_in_g91 = DialectBehaviour::G53InG91::Incremental,  // §14-3
+    .g30_p = DialectBehaviour::G30P::OtherMeansSecond,        // §14-7
+    .g10_l2_p_lenient = true,               // §12-6: P outside 0-6 -> 1, P missing -> last P
+    .extended_offset_count = 48,
+    .extended_offset_is_g54_p = false,
+    .inverse_time_arc_per_radius = true,    // §7-10: arcs F = speed / radius
+    .length_change_moves_default = true,    // §12-2: move = ±z + (lh1 - lh0)
+};
+}  // namespace
+
+const DialectTable kMazakMTable{Dialect::MazakM, kCodes, kAlarms, kBehaviour};
+
+}  // namespace ncc::passes

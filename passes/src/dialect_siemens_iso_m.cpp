@@ -1,0 +1,177 @@
+// siemens-iso-m: Sinumerik 840Di ISO mode M (siemens-840di-iso-milling-gcode.ja.md §3.1,
+// table A.3; group 18 is the one-shot group).
+#include "dialect_tables.h"
+
+namespace ncc::passes {
+
+namespace {
+using A = GAction;
+using G = GGroup;
+
+constexpr GCodeEntry kCodes[] = {
+    // group 1
+    {0, G::Motion, 1, true, A::Rapid, 0, "positioning"},
+    {10, G::Motion, 1, false, A::Linear, 0, "linear interpolation"},
+    {20, G::Motion, 1, false, A::ArcCW, 0, "circular/helical interpolation CW"},
+    {30, G::Motion, 1, false, A::ArcCCW, 0, "circular/helical interpolation CCW"},
+    // group 2
+    {170, G::Plane, 2, true, A::PlaneXY, 0, "XY plane"},
+    {180, G::Plane, 2, false, A::PlaneZX, 0, "ZX plane"},
+    {190, G::Plane, 2, false, A::PlaneYZ, 0, "YZ plane"},
+    // group 3
+    {900, G::Distance, 3, true, A::Absolute, 0, "absolute command"},
+    {910, G::Distance, 3, false, A::Incremental, 0, "incremental command"},
+    // group 4
+    {220, G::StrokeCheck, 4, false, A::NotSupported, 0, "stored stroke limit on"},
+    {230, G::StrokeCheck, 4, true, A::CancelNoEffect, 0, "stored stroke limit off"},
+    // group 5
+    {940, G::FeedMode, 5, true, A::PerMinute, 0, "feed per minute"},
+    {950, G::FeedMode, 5, false, A::PerRevolution, 0, "feed per revolution"},
+    {930, G::FeedMode, 5, false, A::InverseTime, 0, "inverse time feed"},
+    // group 6 (reset value: parameter reset_unit, MD20154[5])
+    {200, G::Units, 6, false, A::Inch, 0, "inch input"},
+    {210, G::Units, 6, true, A::Metric, 0, "metric input"},
+    // group 7
+    {400, G::CutterComp, 7, true, A::CancelNoEffect, 0, "cutter radius compensation cancel"},
+    {410, G::CutterComp, 7, false, A::NotSupported, 0, "cutter radius compensation left"},
+    {420, G::CutterComp, 7, false, A::NotSupported, 0, "cutter radius compensation right"},
+    // group 8
+    {430, G::LengthComp, 8, false, A::LengthPlus, 0, "tool length compensation +"},
+    {440, G::LengthComp, 8, false, A::LengthMinus, 0, "tool length compensation -"},
+    {490, G::LengthComp, 8, true, A::LengthCancel, 0, "tool length compensation cancel"},
+    // group 9
+    {730, G::Cycle, 9, false, A::NotSupported, 0, "high-speed peck drilling cycle"},
+    {740, G::Cycle, 9, false, A::NotSupported, 0, "counter tapping cycle"},
+    {760, G::Cycle, 9, false, A::NotSupported, 0, "fine boring cycle"},
+    {800, G::Cycle, 9, true, A::CancelNoEffect, 0, "canned cycle cancel"},
+    {810, G::Cycle, 9, false, A::NotSupported, 0, "canned drilling cycle"},
+    {820, G::Cycle, 9, false, A::NotSupported, 0, "canned drilling cycle with dwell"},
+    {830, G::Cycle, 9, false, A::NotSupported, 0, "canned peck drilling cycle"},
+    {840, G::Cycle, 9, false, A::NotSupported, 0, "canned tapping cycle"},
+    {850, G::Cycle, 9, false, A::NotSupported, 0, "canned boring cycle"},
+    {860, G::Cycle, 9, false, A::NotSupported, 0, "canned boring cycle"},
+    {870, G::Cycle, 9, false, A::NotSupported, 0, "canned back boring cycle"},
+    {890, G::Cycle, 9, false, A::NotSupported, 0, "canned boring cycle"},
+    // group 10: return level, only meaningful with canned cycles (never active)
+    {980, G::ReturnLevel, 10, true, A::CancelNoEffect, 0, "canned cycle initial level return"},
+    {990, G::ReturnLevel, 10, false, A::CancelNoEffect, 0, "canned cycle R level return"},
+    // group 11
+    {500, G::Scaling, 11, true, A::CancelNoEffect, 0, "scaling cancel"},
+    {510, G::Scaling, 11, false, A::NotSupported, 0, "scaling"},
+    // group 12
+    {660, G::MacroModal, 12, false, A::NotSupported, 0, "macro modal call"},
+    {670, G::MacroModal, 12, true, A::CancelNoEffect, 0, "macro modal call cancel"},
+    // group 13
+    {960, G::Spindle, 13, false, A::NotSupported, 0, "constant surface speed control"},
+    {970, G::Spindle, 13, true, A::CancelNoEffect, 0, "constant surface speed control cancel"},
+    // group 14 (G54 P1..P93: the extended work offsets)
+    {540, G::WorkOffset, 14, true, A::WorkOffset, 1, "work coordinate system 1"},
+    {550, G::WorkOffset, 14, false, A::WorkOffset, 2, "work coordinate system 2"},
+    {560, G::WorkOffset, 14, false, A::WorkOffset, 3, "work coordinate system 3"},
+    {570, G::WorkOffset, 14, false, A::WorkOffset, 4, "work coordinate system 4"},
+    {580, G::WorkOffset, 14, false, A::WorkOffset, 5, "work coordinate system 5"},
+    {590, G::WorkOffset, 14, false, A::WorkOffset, 6, "work coordinate system 6"},
+    // group 15
+    {610, G::PathControl, 15, false, A::ExactStopMode, 0, "exact stop mode"},
+    {630, G::PathControl, 15, false, A::TappingMode, 0, "tapping mode"},
+    {640, G::PathControl, 15, true, A::ContinuousMode, 0, "continuous path mode"},
+    {620, G::PathControl, 15, false, A::CornerOverride, 0, "automatic corner override"},
+    // group 16
+    {680, G::Rotation, 16, false, A::NotSupported, 0, "coordinate rotation"},
+    {690, G::Rotation, 16, true, A::CancelNoEffect, 0, "coordinate rotation cancel"},
+    // group 17
+    {150, G::Polar, 17, true, A::CancelNoEffect, 0, "polar coordinates cancel"},
+    {160, G::Polar, 17, false, A::NotSupported, 0, "polar coordinates"},
+    // group 18 (one-shot)
+    {40, G::OneShot, 18, false, A::Dwell, 0, "dwell"},
+    {90, G::OneShot, 18, false, A::ExactStopOneShot, 0, "exact stop"},
+    {100, G::OneShot, 18, false, A::DataSet, 0, "data setting"},
+    {280, G::OneShot, 18, false, A::ReferenceReturn, 0, "reference point return"},
+    {300, G::OneShot, 18, false, A::ReferenceReturnN, 0, "2nd/3rd/4th reference point return"},
+    {310, G::OneShot, 18, false, A::NotSupported, 0, "skip function"},
+    {520, G::OneShot, 18, false, A::LocalShift, 0, "local coordinate system"},
+    {530, G::OneShot, 18, false, A::MachineCoordinates, 0, "machine coordinate system"},
+    {650, G::OneShot, 18, false, A::NotSupported, 0, "macro call"},
+    {920, G::OneShot, 18, false, A::SetShift, 0, "work coordinate system setting"},
+    {80, G::OneShot, 18, false, A::NotSupported, 0, "feed-forward control"},
+    {270, G::OneShot, 18, false, A::ReferenceCheck, 0, "reference point check"},
+    {721, G::OneShot, 18, false, A::NotSupported, 0, "figure copy (rotation)"},
+    {722, G::OneShot, 18, false, A::NotSupported, 0, "figure copy (parallel)"},
+    {71, G::OneShot, 18, false, A::NotSupported, 0, "cylindrical interpolation"},
+    {106, G::OneShot, 18, false, A::NotSupported, 0, "retract"},
+    {50, G::OneShot, 18, false, A::NotSupported, 0, "high-speed cycle cutting"},
+    {301, G::OneShot, 18, false, A::NotSupported, 0, "floating reference point return"},
+    {921, G::OneShot, 18, false, A::ResetShift, 0, "work coordinate system reset"},
+    // group 22
+    {501, G::Mirror, 22, true, A::CancelNoEffect, 0, "programmable mirror cancel"},
+    {511, G::Mirror, 22, false, A::NotSupported, 0, "programmable mirror"},
+    // group 25
+    {131, G::PolarInterpolation, 25, true, A::CancelNoEffect, 0, "polar interpolation cancel"},
+    {121, G::PolarInterpolation, 25, false, A::NotSupported, 0, "polar interpolation"},
+    // group 31
+    {2900, G::Language, 31, false, A::LanguageDin, 0, "Siemens DIN mode"},
+    {2910, G::Language, 31, true, A::LanguageIso, 0, "ISO mode"},
+};
+
+// Indexed by Alarm. 10860 (no feedrate programmed), 14040 (error in end point of circle) and
+// 12470 (unknown G function) are Sinumerik NCK alarms.
+constexpr std::string_view kAlarms[] = {
+    "NCC2001",  // MacroNotSupported
+    "NCC2010",  // CodeNotSupported
+    "12470",    // UnknownGCode
+    "NCC2011",  // AddressNotSupported
+    "NCC2013",  // AddressNotAnAxis
+    "NCC2014",  // AddressWithoutMeaning
+    "NCC2015",  // AddressRepeated
+    "NCC2020",  // SameGroupInBlock (not raised by default: the last one wins)
+    "NCC2021",  // OneShotConflict
+    "NCC2030",  // DecimalPointNotAllowed (not raised: fractions are dropped)
+    "NCC2031",  // ValueOutOfRange
+    "NCC2032",  // TooManyMCodes (more than 5)
+    "10860",    // FeedMissing
+    "14040",    // ArcRadiusMismatch
+    "14040",    // ArcRadiusTooSmall
+    "NCC2043",  // ArcCentreMissing
+    "NCC2044",  // ArcDegenerate
+    "NCC2050",  // OffsetNumberOutOfRange
+    "NCC2060",  // ReferenceCheckFailed
+    "NCC2061",  // ReferencePointNumber
+    "NCC2070",  // DataSetFormat
+    "NCC2071",  // ExtendedOffsetNumber
+    "NCC2072",  // ExtendedOffsetRequired
+    "NCC2073",  // LocalShiftInExtended
+    "NCC2080",  // AxisMissing
+    "NCC2081",  // G53Incremental
+};
+static_assert(std::size(kAlarms) == static_cast<size_t>(Alarm::kCount));
+
+constexpr DialectBehaviour kBehaviour{
+    .same_group_default = "last_wins",      // §3.2.1: the one given last is effective
+    .decimal_point_default = "calculator",  // MD10884 EXTERN_FLOATINGPOINT_PROG = 1
+    .rapid_type_default = "linear",         // MD20732 EXTERN_G0_LINEAR_MODE = 1
+    .arc_radius_tolerance_default = 0.01,   // MD21000 CIRCLE_ERROR_CONST
+    .offset_count_default = 9999,           // no limit stated: H names a $TC_DPH entry
+    .max_m_codes = 5,                       // §3.6: at most 5 M codes per block
+    .m_overflow_keeps_last = false,
+    .max_t_words = 1,
+    .duplicate_h_d_last_wins = false,
+    .integer_point_is_error = false,
+    .dwell_p_point_is_error = false,
+    .dwell_revolutions_default = false,     // MD20734 bit 2 = 0
+    .reference_return_cancels_length = false,  // §2.2: TLC stays unless cancelled first
+    .local_shift_per_work_offset = false,
+    .local_shift_in_extended_is_error = false,
+    .work_offset_write_on_reselect = true,  // §3.1.3 example 2: acts when G54 is programmed
+    .g53_in_g91 = DialectBehaviour::G53InG91::Absolute,  // §3.1.1: absolute only
+    .g30_p = DialectBehaviour::G30P::ErrorOutside2To4,
+    .g10_l2_p_lenient = false,
+    .extended_offset_count = 93,            // G54 P1..P93
+    .extended_offset_is_g54_p = true,
+    .inverse_time_arc_per_radius = false,
+    .length_change_moves_default = false,   // MD20382 TOOL_CORR_MOVE_MODE = FALSE
+};
+}  // namespace
+
+const DialectTable kSiemensIsoMTable{Dialect::SiemensIsoM, kCodes, kAlarms, kBehaviour};
+
+}  // namespace ncc::passes

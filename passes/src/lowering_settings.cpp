@@ -1,0 +1,57 @@
+#include "lowering_settings.h"
+
+#include <cmath>
+
+namespace ncc::passes {
+
+LoweringSettings LoweringSettings::resolve(const DialectTable& table,
+                                           const MachineConfig& machine) {
+  const ParameterSet& p = machine.params;
+  const DialectBehaviour& b = table.behaviour;
+  LoweringSettings s;
+  std::string policy = p.getString("same_group_in_block", std::string(b.same_group_default));
+  s.policy = policy == "error"       ? SameGroupPolicy::Error
+             : policy == "per_word"  ? SameGroupPolicy::PerWord
+                                     : SameGroupPolicy::LastWins;
+  s.values = ValueRules::fromParams(p, b.decimal_point_default);
+  s.rapid_type = p.getString("rapid_type", std::string(b.rapid_type_default)) == "per_axis"
+                     ? ir::RapidType::PerAxis
+                     : ir::RapidType::Linear;
+  s.arc_tolerance = p.getNumber("arc_radius_tolerance", b.arc_radius_tolerance_default);
+  s.offset_count = static_cast<int>(p.getNumber("offset_count", b.offset_count_default));
+  // Two manuals, two keys with opposite senses: Mazak's F92 bit 2 forces seconds, Siemens'
+  // MD20734 bit 2 enables revolutions. Either key is honoured in every dialect.
+  s.dwell_revolutions = b.dwell_revolutions_default;
+  if (p.has("dwell_always_seconds")) s.dwell_revolutions = !p.getBool("dwell_always_seconds", false);
+  if (p.has("dwell_in_revolutions_with_g95"))
+    s.dwell_revolutions = p.getBool("dwell_in_revolutions_with_g95", false);
+  s.length_change_moves = p.getBool("tool_length_move_mode", b.length_change_moves_default);
+  s.tool_length_mode = p.getString("tool_length_mode", "A");
+  s.f1_digit = p.getBool("f1_digit_feed", false);
+  if (const auto* list = p.getNumberList("f1_f9_feedrates")) s.f1_feeds = *list;
+  static const char* const kRefKeys[] = {"reference_point_1", "reference_point_2",
+                                         "reference_point_3", "reference_point_4"};
+  for (int n = 0; n < 4; ++n) {
+    if (const ParamAxisTable* t = p.getAxisTable(kRefKeys[n])) {
+      for (const auto& [name, value] : t->by_axis) {
+        int axis = machine.axisIndex(name);
+        if (axis >= 0 && axis < kMaxAxes) s.reference[n][axis] = value;
+      }
+    }
+  }
+  if (const ParamStringTable* t = p.getStringTable("m_code_macros")) {
+    for (const auto& [key, name] : t->by_key) {
+      if (key.size() > 1 && (key[0] == 'M' || key[0] == 'm'))
+        s.macro_m_codes.insert(std::atoi(key.c_str() + 1));
+    }
+  }
+  s.block_skip = p.getBool("block_skip", false);
+  if (const auto* levels = p.getNumberList("block_skip_levels"))
+    for (double l : *levels) s.skip_levels.insert(static_cast<int>(std::lround(l)));
+  s.reset_unit = p.getString("reset_unit", "G21");
+  s.reset_motion = p.getString("reset_motion_mode", "G00");
+  s.reset_plane = p.getString("reset_plane", "G17");
+  return s;
+}
+
+}  // namespace ncc::passes

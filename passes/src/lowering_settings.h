@@ -1,0 +1,38 @@
+#pragma once
+// The controller parameters lowering reads, resolved once per run from the machine's
+// [machine.params] with the dialect's defaults (docs/semantics.md, Parameters).
+#include <array>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "block_words.h"
+#include "ncc/machine/machine_config.h"
+#include "ncc/passes/dialect_table.h"
+#include "value_rules.h"
+
+namespace ncc::passes {
+
+struct LoweringSettings {
+  SameGroupPolicy policy = SameGroupPolicy::Error;
+  ValueRules values;
+  ir::RapidType rapid_type = ir::RapidType::Linear;
+  double arc_tolerance = 0.01;
+  int offset_count = 400;
+  bool dwell_revolutions = false;      // G04 in G95 counts revolutions
+  bool length_change_moves = true;     // G43 H / G49 without the length axis moves it
+  std::string tool_length_mode = "A";  // A: Z; B: axis normal to the plane
+  bool f1_digit = false;
+  std::vector<double> f1_feeds;        // F1..F9, mm/min
+  std::array<AxisValues, 4> reference{};  // reference points 1..4, machine coordinates
+  std::set<int> macro_m_codes;         // Siemens m_code_macros
+  bool block_skip = false;             // Mazak's single block-skip switch
+  std::set<int> skip_levels;           // block_skip_levels
+  std::string reset_unit = "G21";
+  std::string reset_motion = "G00";
+  std::string reset_plane = "G17";
+
+  static LoweringSettings resolve(const DialectTable& table, const MachineConfig& machine);
+};
+
+}  // namespace ncc::passes

@@ -1,0 +1,201 @@
+// IR -> bytes -> load -> verify -> disassemble (golden) and -> re-encode (identical bytes).
+#include <fstream>
+#include <sstream>
+
+#include "gtest/gtest.h"
+#include "ncc/backend/bytecode_writer.h"
+#include "ncc/bytecode/disassembler.h"
+#include "ncc/bytecode/loader.h"
+#include "ncc/bytecode/verifier.h"
+#include "ncc/bytecode/writer.h"
+
+namespace ncc {
+namespace {
+
+using MF = ir::MachineFunction;
+
+std::vector<uint8_t> bytesOf(const std::string& s) { return {s.begin(), s.end()}; }
+
+ir::Block block(uint32_t file, uint32_t line, std::vector<ir::Operation> ops,
+                bool exact_stop = false) {
+  ir::Block b;
+  b.loc = SourceLocation{file, line, 1};
+  b.exact_stop = exact_stop;
+  b.ops = std::move(ops);
+  return b;
+}
+
+ir::Rapid rapid(double x, double y, double z, ir::RapidType type = ir::RapidType::Linear) {
+  return ir::Rapid{{x, y, z}, ir::Space::Machine, type};
+}
+
+ir::Linear line(double x, double y, double z, double feed, bool per_rev = false) {
+  return ir::Linear{{x, y, z}, ir::Space::Machine, feed, per_rev};
+}
+
+// A small program touching every operation kind the IR has.
+std::string compileSample(const MachineConfig& machine, SourceManager& sources) {
+  const uint32_t file = sources.addBuffer("part.nc", "");
+  ir::Arc arc;
+  arc.to = {20.0, 10.0, -2.0};
+  arc.center = {10.0, 10.0, 0.0};
+  arc.space = ir::Space::Machine;
+  arc.clockwise = true;
+  arc.feed = 250.0;
+  ir::Arc arc_zx = arc;
+  arc_zx.plane = ir::Plane::ZX;
+  arc_zx.clockwise = false;
+  arc_zx.to = {30.0, 10.0, -2.0};
+  arc_zx.center = {25.0, 0.0, -2.0};
+  arc_zx.extra_turns = 2;
+  ir::ReferenceCheck check;
+  check.position = {0.0, 0.0, 0.0};
+  check.axes = 0b101;
+  check.reference = 1;
+
+  std::ostringstream out;
+  backend::BytecodeWriter writer(out, machine, Dialect::FanucM, sources);
+  writer.accept(block(file, 1, {MF{MF::Kind::ToolSelect, 5, 0.0}, MF{MF::Kind::ToolChange}}));
+  writer.accept(block(file, 2, {MF{MF::Kind::SpindleSpeed, 0, 1200.0}, MF{MF::Kind::SpindleCW}}));
+  writer.accept(block(file, 3, {rapid(10.0, 10.0, 5.0)}));
+  writer.accept(block(file, 4, {line(10.0, 10.0, -2.0, 100.0)}, /*exact_stop=*/true));
+  writer.accept(block(file, 5, {arc}));
+  writer.accept(block(file, 6, {arc_zx}));
+  writer.accept(block(file, 7, {ir::Dwell{1.5, false}, MF{MF::Kind::CoolantOn}}));
+  writer.accept(block(file, 8, {line(0.0, 0.0, -2.0, 0.2, true)}));
+  writer.accept(block(file, 9, {}));  // no operations: nothing encoded, no line entry
+  writer.accept(block(file, 10, {MF{MF::Kind::OtherM, 123, 0.0}, MF{MF::Kind::ProgramStop},
+                                 MF{MF::Kind::OptionalStop}}));
+  writer.accept(block(file, 11, {rapid(0.0, 0.0, 0.0, ir::RapidType::PerAxis), check}));
+  writer.accept(block(file, 12, {MF{MF::Kind::CoolantOff}, MF{MF::Kind::SpindleStop},
+                                 MF{MF::Kind::SpindleOrient}, MF{MF::Kind::SpindleCCW}}));
+  writer.accept(block(file, 13, {MF{MF::Kind::ProgramEndRewind}}));
+  writer.finish();
+  EXPECT_TRUE(writer.ok());
+  return out.str();
+}
+
+std::string readGolden(const std::string& name) {
+  std::ifstream in(std::string(NCC_BACKEND_GOLDEN_DIR) + "/" + name);
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+TEST(RoundTrip, IrToBytecodeLoadsVerifiesAndDisassemblesToGolden) {
+  MachineConfig machine = defaultMachine();
+  SourceManager sources;
+  const std::string bytes = compileSample(machine, sources);
+
+  bytecode::Program program;
+  std::optional<bytecode::Error> error = bytecode::load(bytesOf(bytes), program);
+  ASSERT_FALSE(error) << error->code << ": " << error->message;
+  bytecode::VerifyOptions options;
+  options.machine = &machine;
+  error = bytecode::verify(program, options);
+  ASSERT_FALSE(error) << error->code << ": " << error->message;
+
+  EXPECT_EQ(program.header.config_hash, machine.configHash());
+  EXPECT_EQ(program.header.dialect, Dialect::FanucM);
+  ASSERT_EQ(program.strings.size(), 2u);
+  EXPECT_EQ(program.strings[1], "part.nc");
+  ASSERT_EQ(program.units.size(), 1u);
+  EXPECT_EQ(program.units[0].name, 1u);
+  EXPECT_EQ(program.lines.size(), 12u);  // one per block with operations
+
+  // The machine hash is not stable across machine-config changes: blank it for the golden.
+  bytecode::Program listed = program;
+  listed.header.config_hash = 0;
+  EXPECT_EQ(bytecode::disassemble(listed), readGolden("round_trip.dis"));
+}
+
+TEST(RoundTrip, ReencodingALoadedProgramGivesIdenticalBytes) {
+  MachineConfig machine = defaultMachine();
+  SourceManager sources;
+  const std::string bytes = compileSample(machine, sources);
+  bytecode::Program program;
+  ASSERT_FALSE(bytecode::load(bytesOf(bytes), program));
+  std::ostringstream again;
+  ASSERT_FALSE(bytecode::write(program, again));
+  EXPECT_EQ(again.str(), bytes);
+}
+
+TEST(BytecodeWriter, WorkSpaceTargetIsAnInternalError) {
+  MachineConfig machine = defaultMachine();
+  SourceManager sources;
+  const uint32_t file = sources.addBuffer("part.nc", "");
+  DiagnosticEngine diags(&sources);
+  std::ostringstream out;
+  backend::BytecodeWriter writer(out, machine, Dialect::FanucM, sources, &diags);
+  ir::Rapid work{{1.0, 2.0, 3.0}, ir::Space::Work, ir::RapidType::Linear};
+  writer.accept(block(file, 4, {work}));
+  writer.finish();
+  EXPECT_FALSE(writer.ok());
+  ASSERT_EQ(diags.diagnostics().size(), 1u);
+  EXPECT_EQ(diags.diagnostics()[0].code, "NCC9001");
+  EXPECT_EQ(diags.diagnostics()[0].location.line, 4u);
+  EXPECT_NE(diags.diagnostics()[0].message.find("work-space"), std::string::npos);
+}
+
+TEST(BytecodeWriter, ArcPlaneNeedsItsAxesOnTheMachine) {
+  MachineConfig machine = defaultMachine();
+  machine.axes.erase(machine.axes.begin() + 1);  // X Z: no Y, so no G17 arc
+  SourceManager sources;
+  const uint32_t file = sources.addBuffer("lathe.nc", "");
+  DiagnosticEngine diags(&sources);
+  std::ostringstream out;
+  backend::BytecodeWriter writer(out, machine, Dialect::FanucT, sources, &diags);
+  ir::Arc arc;
+  arc.space = ir::Space::Machine;
+  arc.feed = 100.0;
+  writer.accept(block(file, 2, {arc}));
+  EXPECT_FALSE(writer.ok());
+  ASSERT_EQ(diags.diagnostics().size(), 1u);
+  EXPECT_EQ(diags.diagnostics()[0].code, "NCC9003");
+}
+
+TEST(BytecodeWriter, ZxArcUsesZAndXAsPlaneAxes) {
+  MachineConfig machine = defaultMachine();
+  SourceManager sources;
+  const uint32_t file = sources.addBuffer("p.nc", "");
+  std::ostringstream out;
+  backend::BytecodeWriter writer(out, machine, Dialect::FanucM, sources);
+  ir::Arc arc;
+  arc.space = ir::Space::Machine;
+  arc.plane = ir::Plane::ZX;
+  arc.feed = 100.0;
+  arc.to = {0.0, 0.0, 0.0};
+  arc.center = {7.0, 99.0, 3.0};
+  writer.accept(block(file, 1, {arc}));
+  writer.finish();
+  const std::string s = out.str();
+  bytecode::Program program;
+  ASSERT_FALSE(bytecode::load(bytesOf(s), program));
+  bytecode::Instruction in;
+  uint32_t size = 0;
+  ASSERT_EQ(bytecode::decode(program.code, 0, 3, in, size), bytecode::DecodeStatus::Ok);
+  EXPECT_EQ(in.op, bytecode::Opcode::Arc);
+  EXPECT_EQ(in.plane, bytecode::ArcPlane::ZX);
+  EXPECT_EQ(in.axis1, 2);  // Z
+  EXPECT_EQ(in.axis2, 0);  // X
+  EXPECT_EQ(in.center1, 3.0);
+  EXPECT_EQ(in.center2, 7.0);
+}
+
+TEST(BytecodeWriter, EmptyProgramIsJustEnd) {
+  MachineConfig machine = defaultMachine();
+  SourceManager sources;
+  std::ostringstream out;
+  backend::BytecodeWriter writer(out, machine, Dialect::MazakM, sources);
+  writer.finish();
+  ASSERT_TRUE(writer.ok());
+  const std::string s = out.str();
+  bytecode::Program program;
+  ASSERT_FALSE(bytecode::load(bytesOf(s), program));
+  ASSERT_FALSE(bytecode::verify(program));
+  EXPECT_EQ(program.code, std::vector<uint8_t>{static_cast<uint8_t>(bytecode::Opcode::End)});
+  EXPECT_EQ(program.header.dialect, Dialect::MazakM);
+}
+
+}  // namespace
+}  // namespace ncc

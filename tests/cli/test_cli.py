@@ -1,0 +1,185 @@
+#!/usr/bin/env python3
+"""End-to-end tests of the `ncc` command line: commands, options, exit codes, output files.
+
+Run by ctest as: test_cli.py NCC_BINARY
+"""
+import json
+import os
+import subprocess
+import sys
+import tempfile
+import unittest
+
+NCC = None
+
+GOOD = "N10 G90 G00 X10. Y5.\nN20 G01 Z-2. F100.\nN30 G02 X20. Y5. R5.\nN40 G04 X1.5\nN50 M30\n"
+BAD = "N10 G90 G00 X10.\nN20 G01 X20. Q@\nN30 G01 Y5.\nN40 M30\n"
+
+
+def ncc(*args, cwd=None):
+    return subprocess.run([NCC, *args], capture_output=True, text=True, timeout=60, cwd=cwd)
+
+
+class CliTest(unittest.TestCase):
+    def setUp(self):
+        self.tmp = tempfile.TemporaryDirectory()
+        self.dir = self.tmp.name
+
+    def tearDown(self):
+        self.tmp.cleanup()
+
+    def write(self, name, text):
+        path = os.path.join(self.dir, name)
+        with open(path, "w") as f:
+            f.write(text)
+        return path
+
+    def test_help_everywhere_exits_zero(self):
+        for args in (["--help"], ["compile", "--help"], ["check", "--help"], ["dis", "--help"], ["run", "--help"]):
+            proc = ncc(*args)
+            self.assertEqual(proc.returncode, 0, args)
+            self.assertIn("--", proc.stdout)
+
+    def test_usage_errors_exit_two(self):
+        self.assertEqual(ncc().returncode, 2)
+        self.assertEqual(ncc("frobnicate").returncode, 2)
+        good = self.write("a.nc", GOOD)
+        self.assertEqual(ncc("run", good, "--emit=bogus").returncode, 2)
+        proc = ncc("check", good, "--dialect", "heidenhain")
+        self.assertEqual(proc.returncode, 2)
+        self.assertIn("unknown dialect 'heidenhain'", proc.stderr)
+        proc = ncc("check", os.path.join(self.dir, "missing.nc"))
+        self.assertEqual(proc.returncode, 2)
+        self.assertIn("no such file", proc.stderr)
+
+    def test_unsupported_dialect_is_reported(self):
+        good = self.write("a.nc", GOOD)
+        proc = ncc("check", good, "--dialect", "fanuc-t")
+        self.assertEqual(proc.returncode, 2)
+        self.assertIn("dialect 'fanuc-t' is not supported yet", proc.stderr)
+        mpf = self.write("a.mpf", "G0 X1\nM30\n")
+        proc = ncc("check", mpf)  # .mpf defaults to siemens-din
+        self.assertIn("siemens-din", proc.stderr)
+
+    def test_check_clean_program(self):
+        proc = ncc("check", self.write("a.nc", GOOD))
+        self.assertEqual(proc.returncode, 0, proc.stderr)
+        self.assertEqual(proc.stderr, "")
+
+    def test_errors_have_location_code_source_line_and_caret(self):
+        bad = self.write("bad.nc", BAD)
+        proc = ncc("check", bad)
+        self.assertEqual(proc.returncode, 1)
+        first = proc.stderr.splitlines()[0]
+        self.assertRegex(first, r"bad\.nc:2:\d+: error\[[A-Z0-9]+\]: ")
+        self.assertIn("  N20 G01 X20. Q@", proc.stderr)
+        self.assertRegex(proc.stderr, r"\n +\^\n")
+
+    def test_compile_writes_bytecode_and_no_partial_file_on_error(self):
+        good = self.write("a.nc", GOOD)
+        out = os.path.join(self.dir, "a.ncb")
+        proc = ncc("compile", good, "-o", out)
+        self.assertEqual(proc.returncode, 0, proc.stderr)
+        with open(out, "rb") as f:
+            self.assertEqual(f.read(4), b"NCCB")
+        bad = self.write("bad.nc", BAD)
+        bad_out = os.path.join(self.dir, "bad.ncb")
+        self.assertEqual(ncc("compile", bad, "-o", bad_out).returncode, 1)
+        self.assertFalse(os.path.exists(bad_out))
+        self.assertFalse(os.path.exists(bad_out + ".tmp"))
+
+    def test_failed_compile_keeps_previous_output(self):
+        good = self.write("a.nc", GOOD)
+        out = os.path.join(self.dir, "a.ncb")
+        self.assertEqual(ncc("compile", good, "-o", out).returncode, 0)
+        before = open(out, "rb").read()
+        self.write("a.nc", BAD)
+        self.assertEqual(ncc("compile", good, "-o", out).returncode, 1)
+        self.assertEqual(open(out, "rb").read(), before)
+
+    def test_emit_ast_and_ir(self):
+        good = self.write("a.nc", GOOD)
+        ast = ncc("compile", good, "--emit=ast")
+        self.assertEqual(ast.returncode, 0, ast.stderr)
+        self.assertEqual(len(ast.stdout.splitlines()), 5)
+        self.assertIn("G2", ast.stdout.replace("G02", "G2"))
+        ir = ncc("compile", good, "--emit=ir")
+        self.assertEqual(ir.returncode, 0, ir.stderr)
+        self.assertIn("arc", ir.stdout.lower())
+
+    def test_run_moves_from_source_and_from_bytecode_agree(self):
+        good = self.write("a.nc", GOOD)
+        from_source = ncc("run", good, "--emit=moves")
+        self.assertEqual(from_source.returncode, 0, from_source.stderr)
+        moves = [json.loads(l) for l in from_source.stdout.splitlines()]
+        self.assertEqual([m["kind"] for m in moves], ["rapid", "line", "arc", "dwell"])
+        self.assertEqual(moves[0], {"line": 1, "file": "a.nc", "kind": "rapid", "to": {"X": 10.0, "Y": 5.0, "Z": 0.0}})
+        self.assertEqual(moves[2]["center"], {"X": 15.0, "Y": 5.0})
+        self.assertIs(moves[2]["cw"], True)
+        self.assertEqual(moves[3]["seconds"], 1.5)
+        out = os.path.join(self.dir, "a.ncb")
+        self.assertEqual(ncc("compile", good, "-o", out).returncode, 0)
+        from_bytecode = ncc("run", out, "--emit=moves")
+        self.assertEqual(from_bytecode.returncode, 0, from_bytecode.stderr)
+        self.assertEqual(from_bytecode.stdout, from_source.stdout)
+
+    def test_run_summary_and_output_file(self):
+        good = self.write("a.nc", GOOD)
+        proc = ncc("run", good)
+        self.assertEqual(proc.returncode, 0, proc.stderr)
+        self.assertIn("program time", proc.stdout)
+        self.assertIn("final position   X20.0 Y5.0 Z-2.0", proc.stdout)
+        out = os.path.join(self.dir, "moves.jsonl")
+        proc = ncc("run", good, "--emit=moves", "-o", out)
+        self.assertEqual(proc.returncode, 0)
+        self.assertEqual(len(open(out).read().splitlines()), 4)
+
+    def test_run_vars_is_a_json_object(self):
+        proc = ncc("run", self.write("a.nc", GOOD), "--emit=vars")
+        self.assertEqual(proc.returncode, 0, proc.stderr)
+        self.assertIsInstance(json.loads(proc.stdout), dict)
+
+    def test_dis_lists_instructions(self):
+        good = self.write("a.nc", GOOD)
+        out = os.path.join(self.dir, "a.ncb")
+        self.assertEqual(ncc("compile", good, "-o", out).returncode, 0)
+        proc = ncc("dis", out)
+        self.assertEqual(proc.returncode, 0, proc.stderr)
+        text = proc.stdout.upper()
+        for mnemonic in ("RAPID", "LINE", "ARC", "DWELL", "END"):
+            self.assertIn(mnemonic, text)
+
+    def test_dis_and_run_reject_corrupt_bytecode(self):
+        good = self.write("a.nc", GOOD)
+        out = os.path.join(self.dir, "a.ncb")
+        self.assertEqual(ncc("compile", good, "-o", out).returncode, 0)
+        data = bytearray(open(out, "rb").read())
+        data[len(data) // 2] ^= 0xFF
+        data = data[: len(data) - 7]
+        with open(out, "wb") as f:
+            f.write(data)
+        for cmd in ("dis", "run"):
+            proc = ncc(cmd, out)
+            self.assertEqual(proc.returncode, 1, (cmd, proc.stderr))
+            self.assertIn("invalid bytecode", proc.stderr)
+
+    def test_bytecode_for_another_machine_is_refused(self):
+        good = self.write("a.nc", GOOD)
+        out = os.path.join(self.dir, "a.ncb")
+        self.assertEqual(ncc("compile", good, "-o", out).returncode, 0)
+        machine = self.write("m.toml", '[machine]\naxes = ["X", "Y", "Z"]\n[machine.work]\nG54 = [100.0, 0.0, 0.0]\n')
+        proc = ncc("run", out, "--machine", machine)
+        self.assertEqual(proc.returncode, 1)
+        self.assertIn("machine", proc.stderr)
+
+    def test_machine_file_errors_name_the_key(self):
+        machine = self.write("m.toml", '[machine]\naxes = ["X", "Y", "Z"]\nbogus = 1\n')
+        proc = ncc("check", self.write("a.nc", GOOD), "--machine", machine)
+        self.assertEqual(proc.returncode, 2)
+        self.assertIn("bogus", proc.stderr)
+        self.assertIn("m.toml:3:", proc.stderr)
+
+
+if __name__ == "__main__":
+    NCC = sys.argv.pop(1)
+    unittest.main(verbosity=2)

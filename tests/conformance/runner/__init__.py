@@ -1,0 +1,1 @@
+"""The conformance runner's library: case loading, TOML emission, ncc invocation, comparison."""

@@ -1,0 +1,118 @@
+#!/usr/bin/env python3
+"""Golden test of one example program.
+
+  run_golden.py --ncc NCC --example examples/NAME.nc --golden-dir tests/golden
+
+Moves: `ncc run` with --emit=moves is compared with NAME.moves.jsonl object by object (same keys,
+same strings and booleans, numbers within 1e-6). Diagnostics: for NAME.diag, `ncc check` must fail
+with exactly the listed `file:line:col: severity[CODE]` prefixes, in order, each followed by the
+listed message when the .diag line carries one after the prefix.
+Extra command-line arguments for ncc (e.g. --dialect mazak-m) come from NAME.args when present;
+a machine file NAME.toml beside the example is passed as --machine.
+"""
+import argparse
+import json
+import os
+import re
+import subprocess
+import sys
+import tempfile
+
+TOLERANCE = 1e-6
+DIAG_RE = re.compile(r"^(?P<file>[^:\s]+):(?P<line>\d+):(?P<col>\d+): (?P<sev>error|warning)\[(?P<code>[^\]]+)\]: (?P<msg>.*)$")
+
+
+def same(expected, actual, path):
+    if isinstance(expected, dict):
+        if not isinstance(actual, dict) or set(expected) != set(actual):
+            return f"{path}: keys {sorted(expected) if isinstance(expected, dict) else expected} != {sorted(actual) if isinstance(actual, dict) else actual}"
+        for key in expected:
+            problem = same(expected[key], actual[key], f"{path}.{key}")
+            if problem:
+                return problem
+        return None
+    if isinstance(expected, bool) or isinstance(actual, bool) or isinstance(expected, str):
+        return None if expected == actual else f"{path}: expected {expected!r}, got {actual!r}"
+    if isinstance(expected, (int, float)) and isinstance(actual, (int, float)):
+        return None if abs(expected - actual) <= TOLERANCE else f"{path}: expected {expected}, got {actual}"
+    return None if expected == actual else f"{path}: expected {expected!r}, got {actual!r}"
+
+
+def ncc_args(example, golden_dir):
+    name = os.path.splitext(os.path.basename(example))[0]
+    args = []
+    args_file = os.path.join(golden_dir, name + ".args")
+    if os.path.exists(args_file):
+        args += open(args_file).read().split()
+    machine = os.path.splitext(example)[0] + ".toml"
+    if os.path.exists(machine):
+        args += ["--machine", machine]
+    return name, args
+
+
+def check_moves(ncc, example, golden, extra):
+    with tempfile.TemporaryDirectory() as tmp:
+        out = os.path.join(tmp, "moves.jsonl")
+        proc = subprocess.run([ncc, "run", example, "--emit=moves", "-o", out] + extra,
+                              capture_output=True, text=True, timeout=120)
+        if proc.returncode != 0:
+            return f"ncc run exited {proc.returncode}:\n{proc.stderr}"
+        actual = [json.loads(l) for l in open(out) if l.strip()]
+    expected = [json.loads(l) for l in open(golden) if l.strip()]
+    for i, (e, a) in enumerate(zip(expected, actual)):
+        problem = same(e, a, f"move {i + 1}")
+        if problem:
+            return f"{problem}\n  expected: {json.dumps(e)}\n  actual:   {json.dumps(a)}"
+    if len(expected) != len(actual):
+        return f"expected {len(expected)} moves, got {len(actual)}"
+    return None
+
+
+def check_diagnostics(ncc, example, golden, extra):
+    proc = subprocess.run([ncc, "check", example] + extra, capture_output=True, text=True, timeout=120)
+    if proc.returncode != 1:
+        return f"ncc check exited {proc.returncode}, expected 1 (errors in the program):\n{proc.stderr}"
+    actual = []
+    for line in proc.stderr.splitlines():
+        m = DIAG_RE.match(line)
+        if m:
+            actual.append((f"{os.path.basename(m['file'])}:{m['line']}:{m['col']}: {m['sev']}[{m['code']}]", m["msg"]))
+    expected = [l.rstrip("\n") for l in open(golden) if l.strip() and not l.startswith("#")]
+    if len(expected) != len(actual):
+        return f"expected {len(expected)} diagnostics, got {len(actual)}:\n{proc.stderr}"
+    for e, (prefix, msg) in zip(expected, actual):
+        want_prefix, _, want_msg = e.partition("]: ")
+        want_prefix += "]" if not want_prefix.endswith("]") else ""
+        if want_prefix != prefix:
+            return f"expected '{want_prefix}', got '{prefix}'\n{proc.stderr}"
+        if want_msg and want_msg != msg:
+            return f"{prefix}: expected message '{want_msg}', got '{msg}'"
+    return None
+
+
+def main():
+    parser = argparse.ArgumentParser()
+    parser.add_argument("--ncc", required=True)
+    parser.add_argument("--example", required=True)
+    parser.add_argument("--golden-dir", required=True)
+    opts = parser.parse_args()
+    name, extra = ncc_args(opts.example, opts.golden_dir)
+    moves = os.path.join(opts.golden_dir, name + ".moves.jsonl")
+    diag = os.path.join(opts.golden_dir, name + ".diag")
+    problems = []
+    if os.path.exists(moves):
+        problems.append(check_moves(opts.ncc, opts.example, moves, extra))
+    if os.path.exists(diag):
+        problems.append(check_diagnostics(opts.ncc, opts.example, diag, extra))
+    if not os.path.exists(moves) and not os.path.exists(diag):
+        problems.append(f"no golden file for {name} (expected {moves} or {diag})")
+    problems = [p for p in problems if p]
+    if problems:
+        print(f"FAIL {name}\n" + "\n".join(problems))
+        return 1
+    print(f"PASS {name}")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

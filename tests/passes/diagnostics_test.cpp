@@ -1,0 +1,113 @@
+// One negative test per diagnostic: code, line, column and message.
+#include "expect_moves.h"
+
+namespace ncc::passes::test {
+namespace {
+
+struct Case {
+  const char* name;
+  Dialect dialect;
+  const char* program;
+  const char* expected;  // "line:col: error[CODE]: message"
+  const char* params = "";
+};
+
+class DiagnosticTest : public testing::TestWithParam<Case> {};
+
+TEST_P(DiagnosticTest, ReportsCodeLocationAndMessage) {
+  const Case& c = GetParam();
+  Lowered r = lower(c.dialect, c.program, c.params[0] ? xyzMachine(c.params) : "");
+  EXPECT_EQ(r.diagText(), std::string(c.expected) + "\n");
+}
+
+const Case kCases[] = {
+    {"MacroExpression", Dialect::FanucM, "G01 X#1 F100.",
+     "1:5: error[NCC2001]: macro expressions/statements are not supported yet: X#1"},
+    {"NotSupportedCycle", Dialect::FanucM, "G81 X1. Z-1. R1. F100.",
+     "1:1: error[NCC2010]: G81 (canned drilling cycle) is not supported yet"},
+    {"NotSupportedCutterComp", Dialect::MazakM, "G41 D1 X1.",
+     "1:1: error[NCC2010]: G41 (tool radius compensation left) is not supported yet"},
+    {"NotSupportedSubprogram", Dialect::FanucM, "M98 P100",
+     "1:1: error[NCC2010]: M98 (subprogram call) is not supported yet"},
+    {"UnknownGFanuc", Dialect::FanucM, "G07 X1.", "1:1: error[PS0010]: G7 is not a G code of fanuc-m"},
+    {"UnknownGSiemens", Dialect::SiemensIsoM, "G54.1 P1",
+     "1:1: error[12470]: G54.1 is not a G code of siemens-iso-m"},
+    {"AddressQ", Dialect::FanucM, "G00 X1. Q2.",
+     "1:9: error[NCC2011]: address Q (canned cycle data) is not supported yet"},
+    {"NotAnAxis", Dialect::FanucM, "G00 B10.", "1:5: error[PS0009]: address B: the machine has no axis B"},
+    {"AddressWithoutMeaning", Dialect::FanucM, "G01 X1. I2. F100.",
+     "1:9: error[NCC2014]: address I has no meaning in this block"},
+    {"AddressRepeated", Dialect::FanucM, "G00 X1. X2.",
+     "1:9: error[NCC2015]: address X is given twice in the block"},
+    {"SameGroupFanuc", Dialect::FanucM, "G90 G91 X1.",
+     "1:5: error[NCC2020]: G91 and G90 are both group 03 codes; only one may be given in a block "
+     "(same_group_in_block = \"error\")"},
+    {"SameGroupMazakOtherThanDistance", Dialect::MazakM, "G00 G01 X1.",
+     "1:5: error[NCC2020]: G01 and G00 are both group 01 codes; only one may be given in a block "
+     "(same_group_in_block = \"error\")"},
+    {"OneShotConflict", Dialect::FanucM, "G28 G53 X0",
+     "1:5: error[NCC2021]: G53 and G28 cannot be given in one block"},
+    {"DecimalPointFanuc", Dialect::FanucM, "S100.",
+     "1:1: error[PS0007]: address S takes an integer; a decimal point is not allowed"},
+    {"DwellPWithPointFanuc", Dialect::FanucM, "G04 P1.5",
+     "1:5: error[PS0007]: G04 P is in milliseconds and takes no decimal point"},
+    {"TooManyM", Dialect::FanucM, "M08 M03 M10 M11",
+     "1:13: error[NCC2032]: at most 3 M codes may be given in a block"},
+    {"FeedMissingFanuc", Dialect::FanucM, "G01 X10.",
+     "1:1: error[PS0011]: no feed rate: a cutting move needs an F word and none has been programmed"},
+    {"FeedMissingSiemens", Dialect::SiemensIsoM, "G02 X10. Y10. R10.",
+     "1:1: error[10860]: no feed rate: a cutting move needs an F word and none has been programmed"},
+    {"FeedMissingInverseTime", Dialect::FanucM, "G01 X1. F100.\nG93 X2.",
+     "2:5: error[PS0011]: no feed rate: in inverse time feed (G93) every cutting block needs its own F"},
+    {"ArcRadiusMismatchMazak", Dialect::MazakM, "G02 X30. I10. F100",
+     "1:1: error[817]: the end point is not on the arc: start radius 10.000, end radius 20.000 "
+     "(difference above arc_radius_tolerance 0.010)"},
+    {"ArcRadiusMismatchSiemens", Dialect::SiemensIsoM, "G02 X30. I10. F100",
+     "1:1: error[14040]: the end point is not on the arc: start radius 10.000, end radius 20.000 "
+     "(difference above arc_radius_tolerance 0.010)"},
+    {"ArcRadiusTooSmallFanuc", Dialect::FanucM, "G02 X100. R40. F100.",
+     "1:11: error[PS0020]: no arc of radius 40.000 joins the start and end points 100.000 apart "
+     "(the radius must be at least half the chord)"},
+    {"ArcCentreMissing", Dialect::FanucM, "G02 X10. F100.",
+     "1:1: error[NCC2043]: G02 needs the centre (I/J/K) or the radius (R)"},
+    {"ArcCentreAtStart", Dialect::FanucM, "G03 X10. I0 J0 F100.",
+     "1:1: error[NCC2044]: the arc centre is at the start point"},
+    {"ArcWrongPlaneWord", Dialect::FanucM, "G02 X10. I5. K1. F100.",
+     "1:14: error[NCC2014]: address K is not a centre word of the XY plane (G17)"},
+    {"OffsetNumberFanuc", Dialect::FanucM, "G43 Z1. H401",
+     "1:9: error[PS0030]: H401 is out of range: offset numbers are 1-400 (offset_count)"},
+    {"ReferenceCheckFanuc", Dialect::FanucM, "G27 X10.",
+     "1:5: error[PS0092]: G27: X reaches machine position 10.000, not reference point 1 (0.000)"},
+    {"ReferencePointNumberFanuc", Dialect::FanucM, "G30 P5 X0",
+     "1:5: error[PS0046]: P5: G30 takes P2, P3 or P4"},
+    {"DataSetWithoutL", Dialect::FanucM, "G10 P1 X0", "1:1: error[PS0031]: G10 needs L2, L10-L13 or L20"},
+    {"DataSetL2PFanuc", Dialect::FanucM, "G10 L2 P7 X0",
+     "1:8: error[PS0031]: P7 is out of range: G10 L2 takes P0-P6"},
+    {"DataSetL5Mazak", Dialect::MazakM, "G10 L5 P1 X0",
+     "1:5: error[903]: G10 L5 is not supported; ncc knows L2, L10-L13 and L20"},
+    {"ExtendedOffsetNumberMazak", Dialect::MazakM, "G54.1 P49",
+     "1:7: error[809]: P49 is out of range: G54.1 takes P1-P48"},
+    {"ExtendedOffsetRequiredMazak", Dialect::MazakM, "G10 L20 X0",
+     "1:1: error[807]: G10 L20 without P needs an additional work system to be selected (G54 is)"},
+    {"LocalShiftInExtendedMazak", Dialect::MazakM, "G54.1 P1\nG52 X1.",
+     "2:1: error[949]: G52 cannot be given while G54.1P1 is selected"},
+    {"G921NonZero", Dialect::FanucM, "G92.1 X5.",
+     "1:7: error[NCC2031]: G92.1 resets an axis with the value 0; X is given another value"},
+    {"NegativeFeed", Dialect::FanucM, "G01 X1. F-5.", "1:9: error[NCC2031]: a feed rate cannot be negative"},
+    {"MacroStatement", Dialect::MazakM, "#101=#4013",
+     "1:1: error[NCC2001]: macro expressions/statements are not supported yet (macro statement)"},
+};
+
+INSTANTIATE_TEST_SUITE_P(Lowering, DiagnosticTest, testing::ValuesIn(kCases),
+                         [](const testing::TestParamInfo<Case>& info) { return info.param.name; });
+
+TEST(Diagnostics, ErroneousBlockProducesNoIrAndLeavesTheStateAlone) {
+  Lowered r = lower(Dialect::FanucM, "G00 X5.\nG91 G81 X1.\nX1.\n");
+  EXPECT_EQ(r.diags.size(), 1u);
+  ASSERT_EQ(r.moves.size(), 2u);
+  EXPECT_EQ(r.moves[1].to[0], 1.0);  // the G91 of the bad block did not take effect
+  EXPECT_EQ(r.blocks.size(), 2u);
+}
+
+}  // namespace
+}  // namespace ncc::passes::test

@@ -1,0 +1,37 @@
+#pragma once
+// The `ncc` command line: options shared by every command and the command entry points.
+// Exit codes (docs/cli.md): 0 ok, 1 errors in the program, 2 usage, 3 alarm at run time.
+#include <filesystem>
+#include <optional>
+#include <string>
+
+#include "CLI/CLI.hpp"
+#include "ncc/driver/session.h"
+
+namespace ncc::cli {
+
+enum ExitCode : int { kOk = 0, kProgramError = 1, kUsage = 2, kRuntimeAlarm = 3 };
+
+// --dialect, --machine, --program-dir: accepted by every command.
+struct CommonOptions {
+  std::string dialect;
+  std::string machine_file;
+  std::string program_dir;
+  void addTo(CLI::App& command);
+  // Converts to session options; an unknown dialect name is a usage error (message returned).
+  std::optional<std::string> toSessionOptions(driver::SessionOptions& out) const;
+};
+
+// Opens a session for `input`, printing setup errors. Returns an exit code on failure.
+std::optional<int> openSession(driver::Session& session, const std::filesystem::path& input,
+                               const CommonOptions& common);
+
+// Prints the session's diagnostics to stderr.
+void printDiagnostics(driver::Session& session);
+
+void addCompileCommand(CLI::App& app, int& exit_code);
+void addCheckCommand(CLI::App& app, int& exit_code);
+void addDisCommand(CLI::App& app, int& exit_code);
+void addRunCommand(CLI::App& app, int& exit_code);
+
+}  // namespace ncc::cli

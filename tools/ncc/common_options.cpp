@@ -1,0 +1,48 @@
+#include <iostream>
+
+#include "absl/strings/str_cat.h"
+#include "cli.h"
+
+namespace ncc::cli {
+
+void CommonOptions::addTo(CLI::App& command) {
+  command.add_option("--dialect", dialect,
+                     "fanuc-m | fanuc-t | mazak-m | siemens-iso-m | siemens-din "
+                     "(default: .mpf/.spf -> siemens-din, else fanuc-m)");
+  command.add_option("--machine", machine_file, "machine file (TOML); default: 3-axis metric mill");
+  command.add_option("--program-dir", program_dir,
+                     "where called subprograms are looked up (default: the program's folder)");
+}
+
+std::optional<std::string> CommonOptions::toSessionOptions(driver::SessionOptions& out) const {
+  if (!dialect.empty()) {
+    std::optional<Dialect> d = parseDialect(dialect);
+    if (!d) {
+      return absl::StrCat("unknown dialect '", dialect,
+                          "' (expected fanuc-m, fanuc-t, mazak-m, siemens-iso-m or siemens-din)");
+    }
+    out.dialect = *d;
+  }
+  if (!machine_file.empty()) out.machine_file = machine_file;
+  if (!program_dir.empty()) out.program_dir = program_dir;
+  return std::nullopt;
+}
+
+void printDiagnostics(driver::Session& session) { session.diagnostics().print(std::cerr); }
+
+std::optional<int> openSession(driver::Session& session, const std::filesystem::path& input,
+                               const CommonOptions& common) {
+  driver::SessionOptions options;
+  if (std::optional<std::string> error = common.toSessionOptions(options)) {
+    std::cerr << "ncc: error: " << *error << '\n';
+    return kUsage;
+  }
+  if (std::optional<driver::SetupError> error = session.open(input, options)) {
+    printDiagnostics(session);
+    std::cerr << "ncc: error: " << error->message << '\n';
+    return kUsage;
+  }
+  return std::nullopt;
+}
+
+}  // namespace ncc::cli

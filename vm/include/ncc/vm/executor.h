@@ -1,0 +1,75 @@
+#pragma once
+// Runs verified bytecode (bytecode::verify) and yields its events one at a time. Pulling
+// events is the seam to the planner: a caller (the CLI, a controller's real-time loop, a later
+// planner stage) asks for the next primitive when it has room for it.
+//
+// Real-time discipline: everything is sized at construction (variable table, value stack);
+// next() allocates nothing and never throws. The executor re-checks what it relies on, so an
+// unverified or corrupted program stops with an alarm instead of crashing.
+#include <array>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "ncc/bytecode/program.h"
+#include "ncc/machine/machine_config.h"
+#include "ncc/vm/events.h"
+
+namespace ncc::vm {
+
+// G27: a position within this distance (mm or deg) of the reference point counts as on it;
+// half the 0.001 least input increment.
+inline constexpr double kReferenceTolerance = 0.0005;
+
+class Executor {
+ public:
+  // `program` must outlive the executor. Starts at machine.start_position.
+  Executor(const bytecode::Program& program, const MachineConfig& machine);
+
+  // Runs to the next event and stores it in `out`. Returns false at the end of the program
+  // (END, or the call after M02/M30 was returned) or on an alarm (see alarm()).
+  bool next(Event& out);
+
+  bool finished() const { return finished_; }
+  const std::optional<Alarm>& alarm() const { return alarm_; }
+  // Commanded machine position after the last motion.
+  const AxisValues& position() const { return position_; }
+
+  // Stops the run with alarm NCC7204 after this many instructions (0: no limit). Guards
+  // callers that must stay bounded (fuzzing, a run without a cycle-time budget).
+  void setStepLimit(uint64_t limit) { step_limit_ = limit; }
+  uint64_t steps() const { return steps_; }
+
+  // Value of #n, or nullopt when vacant or beyond the program's variable table.
+  std::optional<double> variable(uint32_t number) const;
+  // Every non-vacant variable in increasing number: ("#100", 3.0), ...
+  std::vector<std::pair<std::string, double>> variables() const;
+
+ private:
+  struct Value {
+    double number = 0.0;
+    bool vacant = true;
+  };
+
+  bool raise(const char* code, const char* message, uint32_t offset);
+  bool raiseRefCheck(int axis, double reference, uint32_t offset);
+  SourcePosition where(uint32_t offset) const;
+  bool pop(Value& out, uint32_t offset);
+  bool push(Value v, uint32_t offset);
+
+  const bytecode::Program& program_;
+  const int axis_count_;
+  AxisValues position_{};
+  std::vector<Value> variables_;  // sized once: header.variable_count
+  std::array<Value, bytecode::kMaxStackDepth> stack_{};
+  int stack_size_ = 0;
+  uint32_t pc_ = 0;
+  uint64_t steps_ = 0;
+  uint64_t step_limit_ = 0;
+  bool finished_ = false;
+  std::optional<Alarm> alarm_;
+};
+
+}  // namespace ncc::vm

@@ -1,0 +1,305 @@
+#include "ncc/vm/executor.h"
+
+#include <cmath>
+
+#include "absl/strings/str_cat.h"
+#include "ncc/bytecode/disassembler.h"
+#include "ncc/bytecode/instruction.h"
+
+namespace ncc::vm {
+
+namespace {
+
+using bytecode::Instruction;
+using bytecode::Opcode;
+
+bool sameAxes(const AxisValues& a, const AxisValues& b, int count) {
+  for (int i = 0; i < count; ++i)
+    if (a[i] != b[i]) return false;
+  return true;
+}
+
+MachineEvent::Kind eventKind(Opcode op) {
+  using K = MachineEvent::Kind;
+  switch (op) {
+    case Opcode::SpindleSpeed: return K::SpindleSpeed;
+    case Opcode::SpindleCW: return K::SpindleCW;
+    case Opcode::SpindleCCW: return K::SpindleCCW;
+    case Opcode::SpindleStop: return K::SpindleStop;
+    case Opcode::SpindleOrient: return K::SpindleOrient;
+    case Opcode::ToolSelect: return K::ToolSelect;
+    case Opcode::ToolChange: return K::ToolChange;
+    case Opcode::CoolantOn: return K::CoolantOn;
+    case Opcode::CoolantOff: return K::CoolantOff;
+    case Opcode::ProgramStop: return K::ProgramStop;
+    case Opcode::OptionalStop: return K::OptionalStop;
+    case Opcode::ProgramEnd: return K::ProgramEnd;
+    case Opcode::ProgramEndRewind: return K::ProgramEndRewind;
+    default: return K::MCode;
+  }
+}
+
+// The M number a fixed-function opcode stands for (events carry it for printing).
+int64_t eventCode(const Instruction& in) {
+  switch (in.op) {
+    case Opcode::ProgramStop: return 0;
+    case Opcode::OptionalStop: return 1;
+    case Opcode::ProgramEnd: return 2;
+    case Opcode::SpindleCW: return 3;
+    case Opcode::SpindleCCW: return 4;
+    case Opcode::SpindleStop: return 5;
+    case Opcode::ToolChange: return 6;
+    case Opcode::CoolantOn: return 8;
+    case Opcode::CoolantOff: return 9;
+    case Opcode::SpindleOrient: return 19;
+    case Opcode::ProgramEndRewind: return 30;
+    case Opcode::SpindleSpeed: return 0;
+    default: return in.code;  // TOOL_SELECT, M_CODE
+  }
+}
+
+// FANUC Macro B: a vacant operand counts as 0 in arithmetic and ordering; EQ/NE tell a vacant
+// value from 0 (#1 EQ #0 is true only when #1 is vacant).
+double numeric(bool vacant, double v) { return vacant ? 0.0 : v; }
+
+}  // namespace
+
+Executor::Executor(const bytecode::Program& program, const MachineConfig& machine)
+    : program_(program), axis_count_(program.axisCount()) {
+  position_ = machine.start_position;
+  const uint32_t count = program.header.variable_count <= bytecode::kMaxVariableCount
+                             ? program.header.variable_count
+                             : 0;
+  variables_.assign(count, Value{});
+  if (program.units.empty() || axis_count_ < 1 || axis_count_ > kMaxAxes || count == 0) {
+    raise("NCC7205", "malformed program (was it verified?)", 0);
+  } else if (machine.axisCount() != axis_count_) {
+    raise("NCC7206", "the program's axes do not match the machine", 0);
+  } else {
+    pc_ = program.units.front().entry;
+  }
+}
+
+SourcePosition Executor::where(uint32_t offset) const {
+  const bytecode::LineEntry* e = program_.lineFor(offset);
+  return e == nullptr ? SourcePosition{} : SourcePosition{e->file, e->line, e->column};
+}
+
+bool Executor::raise(const char* code, const char* message, uint32_t offset) {
+  finished_ = true;
+  if (!alarm_) alarm_ = Alarm{code, message, where(offset)};
+  return false;
+}
+
+bool Executor::raiseRefCheck(int axis, double reference, uint32_t offset) {
+  raise("NCC7201", "", offset);
+  alarm_->message = absl::StrCat(
+      "G27 reference position check failed: axis ", program_.header.axes[axis].name, " is at ",
+      bytecode::formatNumber(position_[axis]), ", reference point is ",
+      bytecode::formatNumber(reference));
+  return false;
+}
+
+bool Executor::pop(Value& out, uint32_t offset) {
+  if (stack_size_ == 0) return raise("NCC7205", "value stack underflow (unverified code)", offset);
+  out = stack_[--stack_size_];
+  return true;
+}
+
+bool Executor::push(Value v, uint32_t offset) {
+  if (stack_size_ >= bytecode::kMaxStackDepth)
+    return raise("NCC7205", "value stack overflow (unverified code)", offset);
+  stack_[stack_size_++] = v;
+  return true;
+}
+
+bool Executor::next(Event& out) {
+  while (!finished_) {
+    if (step_limit_ != 0 && steps_ >= step_limit_)
+      return raise("NCC7204", "step limit reached", pc_);
+    ++steps_;
+    const uint32_t at = pc_;
+    Instruction in;
+    uint32_t size = 0;
+    if (bytecode::decode(program_.code, at, axis_count_, in, size) != bytecode::DecodeStatus::Ok)
+      return raise("NCC7205", "cannot decode the instruction (unverified code)", at);
+    pc_ = at + size;
+
+    switch (in.op) {
+      case Opcode::End:
+        finished_ = true;
+        return false;
+
+      case Opcode::Rapid:
+      case Opcode::Line:
+      case Opcode::Arc:
+      case Opcode::Dwell: {
+        MotionPrimitive& m = out.motion;
+        m = MotionPrimitive{};
+        m.from = position_;
+        m.to = position_;
+        m.where = where(at);
+        m.exact_stop = (in.flags & bytecode::kFlagExactStop) != 0;
+        m.feed_per_rev = (in.flags & bytecode::kFlagFeedPerRev) != 0;
+        m.feed = in.value;
+        if (in.op == Opcode::Dwell) {
+          m.kind = MotionPrimitive::Kind::Dwell;
+          m.feed = 0.0;
+          m.seconds = in.value;
+          m.revolutions = (in.flags & bytecode::kFlagRevolutions) != 0;
+        } else {
+          for (int i = 0; i < axis_count_; ++i) m.to[i] = in.axes[i];
+          if (in.op == Opcode::Rapid) {
+            m.kind = MotionPrimitive::Kind::Rapid;
+            m.feed = 0.0;
+            m.per_axis = (in.flags & bytecode::kFlagPerAxis) != 0;
+          } else if (in.op == Opcode::Line) {
+            m.kind = MotionPrimitive::Kind::Line;
+          } else {
+            if (in.axis1 >= axis_count_ || in.axis2 >= axis_count_ ||
+                static_cast<uint8_t>(in.plane) > 2)
+              return raise("NCC7205", "arc operands out of range (unverified code)", at);
+            m.kind = MotionPrimitive::Kind::Arc;
+            m.plane = static_cast<Plane>(in.plane);
+            m.axis1 = in.axis1;
+            m.axis2 = in.axis2;
+            m.center[in.axis1] = in.center1;
+            m.center[in.axis2] = in.center2;
+            m.cw = (in.flags & bytecode::kFlagClockwise) != 0;
+            m.extra_turns = in.turns;
+          }
+          // A straight move to where the tool already is moves nothing: no primitive.
+          if (in.op != Opcode::Arc && sameAxes(m.from, m.to, axis_count_)) continue;
+          position_ = m.to;
+        }
+        out.kind = Event::Kind::Motion;
+        return true;
+      }
+
+      case Opcode::SpindleSpeed:
+      case Opcode::SpindleCW:
+      case Opcode::SpindleCCW:
+      case Opcode::SpindleStop:
+      case Opcode::SpindleOrient:
+      case Opcode::ToolSelect:
+      case Opcode::ToolChange:
+      case Opcode::CoolantOn:
+      case Opcode::CoolantOff:
+      case Opcode::ProgramStop:
+      case Opcode::OptionalStop:
+      case Opcode::ProgramEnd:
+      case Opcode::ProgramEndRewind:
+      case Opcode::MCode: {
+        MachineEvent& e = out.machine;
+        e.kind = eventKind(in.op);
+        e.code = eventCode(in);
+        e.value = in.op == Opcode::SpindleSpeed ? in.value : 0.0;
+        e.where = where(at);
+        out.kind = Event::Kind::Machine;
+        if (in.op == Opcode::ProgramEnd || in.op == Opcode::ProgramEndRewind) finished_ = true;
+        return true;
+      }
+
+      case Opcode::RefCheck:
+        for (int i = 0; i < axis_count_; ++i) {
+          if ((in.mask & (1u << i)) == 0) continue;
+          if (!(std::fabs(position_[i] - in.axes[i]) <= kReferenceTolerance))
+            return raiseRefCheck(i, in.axes[i], at);
+        }
+        continue;
+
+      case Opcode::Push:
+        if (!push(Value{in.value, false}, at)) return false;
+        continue;
+      case Opcode::PushVacant:
+        if (!push(Value{}, at)) return false;
+        continue;
+      case Opcode::Load:
+        if (in.variable >= variables_.size())
+          return raise("NCC7205", "variable number out of range (unverified code)", at);
+        if (!push(variables_[in.variable], at)) return false;
+        continue;
+      case Opcode::Store: {
+        Value v;
+        if (in.variable == 0 || in.variable >= variables_.size())
+          return raise("NCC7205", "variable number out of range (unverified code)", at);
+        if (!pop(v, at)) return false;
+        variables_[in.variable] = v;
+        continue;
+      }
+      case Opcode::Pop: {
+        Value v;
+        if (!pop(v, at)) return false;
+        continue;
+      }
+      case Opcode::Neg: {
+        Value v;
+        if (!pop(v, at)) return false;
+        if (!push(Value{0.0 - numeric(v.vacant, v.number), false}, at)) return false;
+        continue;
+      }
+
+      case Opcode::Add:
+      case Opcode::Sub:
+      case Opcode::Mul:
+      case Opcode::Div:
+      case Opcode::CmpEq:
+      case Opcode::CmpNe:
+      case Opcode::CmpLt:
+      case Opcode::CmpLe:
+      case Opcode::CmpGt:
+      case Opcode::CmpGe: {
+        Value rhs, lhs;
+        if (!pop(rhs, at) || !pop(lhs, at)) return false;
+        const double a = numeric(lhs.vacant, lhs.number);
+        const double b = numeric(rhs.vacant, rhs.number);
+        const bool same = lhs.vacant == rhs.vacant && (lhs.vacant || lhs.number == rhs.number);
+        double r = 0.0;
+        switch (in.op) {
+          case Opcode::Add: r = a + b; break;
+          case Opcode::Sub: r = a - b; break;
+          case Opcode::Mul: r = a * b; break;
+          case Opcode::Div:
+            if (b == 0.0) return raise("NCC7202", "division by zero", at);
+            r = a / b;
+            break;
+          case Opcode::CmpEq: r = same ? 1.0 : 0.0; break;
+          case Opcode::CmpNe: r = same ? 0.0 : 1.0; break;
+          case Opcode::CmpLt: r = a < b ? 1.0 : 0.0; break;
+          case Opcode::CmpLe: r = a <= b ? 1.0 : 0.0; break;
+          case Opcode::CmpGt: r = a > b ? 1.0 : 0.0; break;
+          default: r = a >= b ? 1.0 : 0.0; break;
+        }
+        if (!std::isfinite(r)) return raise("NCC7203", "arithmetic overflow", at);
+        if (!push(Value{r, false}, at)) return false;
+        continue;
+      }
+
+      case Opcode::Jump:
+        pc_ = in.target;
+        continue;
+      case Opcode::JumpIfFalse: {
+        Value c;
+        if (!pop(c, at)) return false;
+        if (numeric(c.vacant, c.number) == 0.0) pc_ = in.target;
+        continue;
+      }
+    }
+    return raise("NCC7205", "unknown instruction (unverified code)", at);
+  }
+  return false;
+}
+
+std::optional<double> Executor::variable(uint32_t number) const {
+  if (number >= variables_.size() || variables_[number].vacant) return std::nullopt;
+  return variables_[number].number;
+}
+
+std::vector<std::pair<std::string, double>> Executor::variables() const {
+  std::vector<std::pair<std::string, double>> out;
+  for (uint32_t n = 0; n < variables_.size(); ++n)
+    if (!variables_[n].vacant) out.emplace_back(absl::StrCat("#", n), variables_[n].number);
+  return out;
+}
+
+}  // namespace ncc::vm
