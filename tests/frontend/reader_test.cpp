@@ -79,6 +79,18 @@ long maxRssKb() {
   return usage.ru_maxrss;
 }
 
+#if defined(__SANITIZE_ADDRESS__)
+constexpr bool kAddressSanitizer = true;
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+constexpr bool kAddressSanitizer = true;
+#else
+constexpr bool kAddressSanitizer = false;
+#endif
+#else
+constexpr bool kAddressSanitizer = false;
+#endif
+
 TEST(Reader, StreamsAMillionLineFileInFlatMemory) {
   const std::filesystem::path path =
       std::filesystem::temp_directory_path() / ("ncc_frontend_stream_" + std::to_string(getpid()) + ".nc");
@@ -113,6 +125,8 @@ TEST(Reader, StreamsAMillionLineFileInFlatMemory) {
   EXPECT_EQ(checksum, 1'000'000 * 1500.0);
   EXPECT_FALSE(diags.hasErrors());
   // Holding the file (30+ MB) or its blocks would show; a streaming reader stays small.
+  // AddressSanitizer's quarantine keeps freed memory resident, so RSS says nothing there.
+  if (kAddressSanitizer) GTEST_SKIP() << "RSS bound not checked under AddressSanitizer";
   EXPECT_LT(grown_kb, 8 * 1024) << "max RSS grew by " << grown_kb << " kB";
 }
 

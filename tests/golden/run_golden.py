@@ -7,6 +7,8 @@ Moves: `ncc run` with --emit=moves is compared with NAME.moves.jsonl object by o
 same strings and booleans, numbers within 1e-6). Diagnostics: for NAME.diag, `ncc check` must fail
 with exactly the listed `file:line:col: severity[CODE]` prefixes, in order, each followed by the
 listed message when the .diag line carries one after the prefix.
+Disassembly: NAME.dis is compared line by line with `ncc dis` of the compiled example.
+ncc runs in the example's folder with the file's bare name, so recorded paths are stable.
 Extra command-line arguments for ncc (e.g. --dialect mazak-m) come from NAME.args when present;
 a machine file NAME.toml beside the example is passed as --machine.
 """
@@ -50,11 +52,17 @@ def ncc_args(example, golden_dir):
     return name, args
 
 
+def run_ncc(ncc, args, example):
+    """Runs ncc in the example's folder, naming the example by its bare file name."""
+    args = [os.path.basename(example) if a == example else a for a in args]
+    return subprocess.run([ncc] + args, capture_output=True, text=True, timeout=120,
+                          cwd=os.path.dirname(os.path.abspath(example)))
+
+
 def check_moves(ncc, example, golden, extra):
     with tempfile.TemporaryDirectory() as tmp:
         out = os.path.join(tmp, "moves.jsonl")
-        proc = subprocess.run([ncc, "run", example, "--emit=moves", "-o", out] + extra,
-                              capture_output=True, text=True, timeout=120)
+        proc = run_ncc(ncc, ["run", example, "--emit=moves", "-o", out] + extra, example)
         if proc.returncode != 0:
             return f"ncc run exited {proc.returncode}:\n{proc.stderr}"
         actual = [json.loads(l) for l in open(out) if l.strip()]
@@ -69,7 +77,7 @@ def check_moves(ncc, example, golden, extra):
 
 
 def check_diagnostics(ncc, example, golden, extra):
-    proc = subprocess.run([ncc, "check", example] + extra, capture_output=True, text=True, timeout=120)
+    proc = run_ncc(ncc, ["check", example] + extra, example)
     if proc.returncode != 1:
         return f"ncc check exited {proc.returncode}, expected 1 (errors in the program):\n{proc.stderr}"
     actual = []
@@ -90,6 +98,25 @@ def check_diagnostics(ncc, example, golden, extra):
     return None
 
 
+def check_disassembly(ncc, example, golden, extra):
+    with tempfile.TemporaryDirectory() as tmp:
+        out = os.path.join(tmp, "program.ncb")
+        proc = run_ncc(ncc, ["compile", example, "-o", out] + extra, example)
+        if proc.returncode != 0:
+            return f"ncc compile exited {proc.returncode}:\n{proc.stderr}"
+        proc = run_ncc(ncc, ["dis", out] + extra, example)
+        if proc.returncode != 0:
+            return f"ncc dis exited {proc.returncode}:\n{proc.stderr}"
+    actual = proc.stdout.splitlines()
+    expected = open(golden).read().splitlines()
+    for i, (e, a) in enumerate(zip(expected, actual)):
+        if e != a:
+            return f"disassembly line {i + 1}:\n  expected: {e}\n  actual:   {a}"
+    if len(expected) != len(actual):
+        return f"expected {len(expected)} disassembly lines, got {len(actual)}"
+    return None
+
+
 def main():
     parser = argparse.ArgumentParser()
     parser.add_argument("--ncc", required=True)
@@ -99,13 +126,16 @@ def main():
     name, extra = ncc_args(opts.example, opts.golden_dir)
     moves = os.path.join(opts.golden_dir, name + ".moves.jsonl")
     diag = os.path.join(opts.golden_dir, name + ".diag")
+    dis = os.path.join(opts.golden_dir, name + ".dis")
     problems = []
+    if os.path.exists(dis):
+        problems.append(check_disassembly(opts.ncc, opts.example, dis, extra))
     if os.path.exists(moves):
         problems.append(check_moves(opts.ncc, opts.example, moves, extra))
     if os.path.exists(diag):
         problems.append(check_diagnostics(opts.ncc, opts.example, diag, extra))
-    if not os.path.exists(moves) and not os.path.exists(diag):
-        problems.append(f"no golden file for {name} (expected {moves} or {diag})")
+    if not any(os.path.exists(f) for f in (moves, diag, dis)):
+        problems.append(f"no golden file for {name} (expected {moves}, {diag} or {dis})")
     problems = [p for p in problems if p]
     if problems:
         print(f"FAIL {name}\n" + "\n".join(problems))

@@ -1,0 +1,149 @@
+#pragma once
+// The state lowering shares between its concepts, and the entry points of each concept.
+//
+// Lowering is one modal-state machine, but its semantics fall into independent concepts;
+// each lives in its own file and sees the block only through BlockContext:
+//   lowering.cpp                   block driver: decode, modal groups, dispatch, unused
+//                                  words, commit (and the public Lowering class)
+//   lowering_motion.cpp            G00/G01/G02/G03 and F
+//   lowering_coordinates.cpp       G54.. selection, G52, G53, G92, G92.1, G10 L2/L20
+//   lowering_tool_offsets.cpp      H with G43/G44/G49, D, G10 L10-L13
+//   lowering_reference.cpp         G27, G28, G30
+//   lowering_machine_functions.cpp G04 dwell, S, T, M
+//   lowering_context.cpp           the helpers below, shared by all of them
+//
+// A block is lowered on a copy of the controller state (BlockContext::next); the driver
+// replaces LoweringCore::cs with it only when no concept reported an error.
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "block_words.h"
+#include "controller_state.h"
+#include "lowering_settings.h"
+#include "ncc/passes/lowering.h"
+
+namespace ncc::passes {
+
+inline constexpr double kSamePoint = 1e-9;      // mm: "end equals start"
+inline constexpr double kPositionCheck = 1e-6;  // mm: G27 reference position check
+
+// A length in mm as diagnostics print it.
+std::string mm(double v);
+
+// The frame in force for a controller state (work offset + external, G92 + G52, tool length).
+ir::Frame frameOf(const ControllerState& cs, const DialectBehaviour& b);
+// The G52 shift that applies to the selected work system (shared or per work system).
+AxisValues& localOf(ControllerState& cs, const DialectBehaviour& b);
+
+// Everything lowering keeps between blocks.
+struct LoweringCore {
+  LoweringOptions options;
+  DiagnosticEngine& diags;
+  ir::BlockSink& out;
+  MachineConfig fallback_machine;
+  const MachineConfig* machine = nullptr;
+  const DialectTable* table = nullptr;
+  LoweringSettings settings;
+  ControllerState cs;
+  OffsetTables tables;
+  bool reported_dialect = false;
+
+  LoweringCore(LoweringOptions o, DiagnosticEngine& d, ir::BlockSink& s);
+
+  // The power-on state: the table's '*' codes, overridden by the reset_* parameters.
+  void powerOn();
+};
+
+// One block being lowered: its decoded words, the state it produces, the IR it emits and the
+// offset-table writes it will commit. Also the small helpers every concept needs.
+struct BlockContext {
+  BlockContext(LoweringCore& st, const ast::Block& b)
+      : core(st),
+        block(b),
+        table(*st.table),
+        behaviour(table.behaviour),
+        settings(st.settings),
+        next(st.cs) {}
+
+  LoweringCore& core;
+  const ast::Block& block;
+  const DialectTable& table;
+  const DialectBehaviour& behaviour;
+  const LoweringSettings& settings;
+  ControllerState next;  // the controller state after the block
+  DecodedBlock words;
+  std::vector<ir::Operation> ops;
+  std::vector<TableWrite> table_writes;
+  // A length-offset change that moves the length axis (G43 H alone): axis and amount.
+  int length_delta_axis = -1;
+  double length_delta = 0.0;
+  // Words some code of the block has read; the rest are reported as having no meaning.
+  bool used_ijk = false, used_r = false, used_p = false, used_l = false;
+  bool failed = false;
+
+  // ---- diagnostics and values ----
+  // Reports an error with the dialect's alarm number; the block then produces no IR.
+  void fail(Alarm a, SourceLocation loc, std::string message);
+  // The integer value of an address such as H, D, P, L, M (nullopt after reporting).
+  std::optional<int64_t> integer(const WordValue& w);
+
+  bool isRotary(int axis) const;
+  // An axis word normalised for its axis kind (mm or degrees).
+  double axisValue(int axis, const WordValue& w) const;
+  // A length (R, I/J/K) normalised to mm.
+  double lengthValue(const WordValue& w) const;
+  int axisCount() const;
+  int axisNamed(const char* name) const;
+  AxisMask namedAxes() const;
+  // Where to report a motion error: the G code, else the first axis word, else the block.
+  SourceLocation motionLoc() const;
+  bool samePosition(const AxisValues& a, const AxisValues& b) const;
+  AxisValues toMachine(const AxisValues& work, const ir::Frame& f) const;
+  // The work position of the commanded point under the block's new frame; the length axis
+  // keeps its old work coordinate when a length change is to move it (G43 H alone).
+  AxisValues baseWork() const;
+  // Work-space targets: programmed axes absolute or incremental per word, others unchanged.
+  AxisValues workTargets(const AxisValues& base) const;
+};
+
+// ---- lowering_motion.cpp ----
+// F: feed rate (or F1-digit preset) into the modal state.
+void applyFeed(BlockContext& ctx);
+// The move of a block without a one-shot code, in the group 01 mode in force.
+void lowerMotion(BlockContext& ctx);
+
+// ---- lowering_coordinates.cpp ----
+// G54-G59, G54.1 P / G54 P: selects the work system named by the group's code.
+void selectWorkOffset(BlockContext& ctx, const GWord& w);
+void machineCoordinateMove(BlockContext& ctx, const GWord& g);  // G53
+void localShift(BlockContext& ctx, const GWord& g);             // G52
+void setShift(BlockContext& ctx);                               // G92
+void resetShift(BlockContext& ctx, const GWord& g);             // G92.1
+// G10 L2 / L20: writes a work offset (or the external offset, L2 P0).
+void dataSetWork(BlockContext& ctx, const GWord& g, int l, bool add);
+
+// ---- lowering_tool_offsets.cpp ----
+// H with G43/G44/G49: the tool length applied on the length axis.
+void applyLengthOffset(BlockContext& ctx);
+// D: selects the radius offset number.
+void applyRadiusOffsetNumber(BlockContext& ctx);
+// G10 L10-L13: writes a tool length/radius (wear) register.
+void dataSetRegister(BlockContext& ctx, const GWord& g, int l, bool add);
+
+// ---- lowering_reference.cpp ----
+void referenceCheck(BlockContext& ctx, const GWord& g);  // G27
+// G28 (n = 1) / G30 (the P number).
+void referenceReturn(BlockContext& ctx, const GWord& g, int n);
+// G30 / G27 P: the reference point number, `fallback` without P or after an error.
+int referenceNumber(BlockContext& ctx, const GWord& g, int fallback);
+
+// ---- lowering_machine_functions.cpp ----
+void dwell(BlockContext& ctx, const GWord& g);  // G04
+// S and T: spindle speed and tool number into the modal state.
+void applySpindleAndToolWords(BlockContext& ctx);
+// S, T and M as IR machine functions, ordered around the block's motion.
+void machineFunctions(BlockContext& ctx, LowerResult& result);
+
+}  // namespace ncc::passes

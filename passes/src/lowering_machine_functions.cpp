@@ -1,0 +1,160 @@
+// Dwell and machine functions: G04 (time in X or P, or spindle revolutions in G95), the
+// spindle speed S, the tool number T and the M codes, with their order around the block's
+// motion (spindle, tool and coolant start before it; stops, ends and other M codes after it).
+// None of them moves an axis or changes the frame.
+#include <cmath>
+
+#include "absl/strings/str_cat.h"
+#include "lowering_context.h"
+
+namespace ncc::passes {
+
+void dwell(BlockContext& ctx, const GWord& g) {
+  int x = ctx.axisNamed("X");
+  std::optional<WordValue> xw = x >= 0 ? ctx.words.axes[x] : std::nullopt;
+  for (int i = 0; i < ctx.axisCount(); ++i) {
+    if (ctx.words.axes[i] && i != x) {
+      ctx.fail(Alarm::AddressWithoutMeaning, ctx.words.axes[i]->loc,
+               absl::StrCat("address ", ctx.words.axes[i]->address,
+                            " has no meaning in a dwell (G04) block"));
+      return;
+    }
+  }
+  if (xw && ctx.words.p) {
+    ctx.fail(Alarm::AddressWithoutMeaning, ctx.words.p->loc,
+             "G04 takes the time in X or in P, not both");
+    return;
+  }
+  double value = 0.0;
+  if (ctx.words.p) {
+    ctx.used_p = true;
+    if (ctx.words.p->point && ctx.behaviour.dwell_p_point_is_error) {
+      ctx.fail(Alarm::DecimalPointNotAllowed, ctx.words.p->loc,
+               "G04 P is in milliseconds and takes no decimal point");
+      return;
+    }
+    value = std::trunc(ctx.words.p->value) / 1000.0;  // ms, fraction ignored
+  } else if (xw) {
+    value = ctx.settings.values.dwellX(xw->value, xw->point);
+  } else {
+    return;  // G04 alone: no dwell
+  }
+  if (value < 0) {
+    ctx.fail(Alarm::ValueOutOfRange, g.loc, "a dwell time cannot be negative");
+    return;
+  }
+  bool revs =
+      ctx.settings.dwell_revolutions && ctx.next.modal.feed_mode == ir::FeedMode::PerRevolution;
+  ctx.ops.push_back(ir::Dwell{value, revs});
+}
+
+void applySpindleAndToolWords(BlockContext& ctx) {
+  if (ctx.words.s) {
+    auto n = ctx.integer(*ctx.words.s);
+    if (n && *n < 0)
+      ctx.fail(Alarm::ValueOutOfRange, ctx.words.s->loc, "a spindle speed cannot be negative");
+    else if (n)
+      ctx.next.modal.spindle_speed = static_cast<double>(*n);
+  }
+  for (size_t i = 0; i < ctx.words.t.size(); ++i) {
+    auto n = ctx.integer(ctx.words.t[i]);
+    if (n && *n < 0)
+      ctx.fail(Alarm::ValueOutOfRange, ctx.words.t[i].loc, "a tool number cannot be negative");
+    else if (n && i == 0)
+      ctx.next.modal.tool = static_cast<int>(*n);
+  }
+}
+
+void machineFunctions(BlockContext& ctx, LowerResult& result) {
+  using K = ir::MachineFunction::Kind;
+  std::vector<WordValue> ms = ctx.words.m;
+  if (static_cast<int>(ms.size()) > ctx.behaviour.max_m_codes) {
+    if (ctx.behaviour.m_overflow_keeps_last) {
+      ctx.core.diags.warning(std::string(ctx.table.alarm(Alarm::TooManyMCodes)), ms.front().loc,
+                             absl::StrCat("more than ", ctx.behaviour.max_m_codes,
+                                          " M codes in a block: only the last ",
+                                          ctx.behaviour.max_m_codes, " are effective"));
+      ms.erase(ms.begin(), ms.end() - ctx.behaviour.max_m_codes);
+    } else {
+      ctx.fail(
+          Alarm::TooManyMCodes, ms[ctx.behaviour.max_m_codes].loc,
+          absl::StrCat("at most ", ctx.behaviour.max_m_codes, " M codes may be given in a block"));
+      return;
+    }
+  }
+  std::vector<ir::Operation> before, after;
+  if (ctx.words.s)
+    before.push_back(ir::MachineFunction{K::SpindleSpeed, 0, ctx.next.modal.spindle_speed});
+  for (const WordValue& t : ctx.words.t)
+    before.push_back(
+        ir::MachineFunction{K::ToolSelect, static_cast<int64_t>(std::trunc(t.value)), 0.0});
+  for (const WordValue& w : ms) {
+    auto n = ctx.integer(w);
+    if (!n) return;
+    if (*n < 0) {
+      ctx.fail(Alarm::ValueOutOfRange, w.loc, "an M code cannot be negative");
+      return;
+    }
+    if (ctx.settings.macro_m_codes.count(static_cast<int>(*n))) {
+      ctx.fail(Alarm::CodeNotSupported, w.loc,
+               absl::StrCat("M", *n, " calls a macro (m_code_macros), which is not supported yet"));
+      return;
+    }
+    ir::MachineFunction f{K::OtherM, *n, 0.0};
+    bool pre = false;
+    switch (*n) {
+      case 0: f.kind = K::ProgramStop; break;
+      case 1: f.kind = K::OptionalStop; break;
+      case 2:
+        f.kind = K::ProgramEnd;
+        result.program_end = true;
+        break;
+      case 30:
+        f.kind = K::ProgramEndRewind;
+        result.program_end = true;
+        break;
+      case 3:
+        f.kind = K::SpindleCW;
+        pre = true;
+        break;
+      case 4:
+        f.kind = K::SpindleCCW;
+        pre = true;
+        break;
+      case 5: f.kind = K::SpindleStop; break;
+      case 6:
+        f.kind = K::ToolChange;
+        pre = true;
+        break;
+      case 8:
+        f.kind = K::CoolantOn;
+        pre = true;
+        break;
+      case 9: f.kind = K::CoolantOff; break;
+      case 19:
+        f.kind = K::SpindleOrient;
+        pre = true;
+        break;
+      case 96:
+      case 97:
+        ctx.fail(Alarm::CodeNotSupported, w.loc,
+                 absl::StrCat("M", *n, " (macro interrupt) is not supported yet"));
+        return;
+      case 98:
+        ctx.fail(Alarm::CodeNotSupported, w.loc, "M98 (subprogram call) is not supported yet");
+        return;
+      case 99:
+        ctx.fail(Alarm::CodeNotSupported, w.loc, "M99 (subprogram return) is not supported yet");
+        return;
+      default: break;
+    }
+    (pre ? before : after).push_back(f);
+  }
+  // Spindle, tool and coolant start before the block's motion; stops, ends and the other
+  // (machine-builder) M codes after it.
+  before.insert(before.end(), ctx.ops.begin(), ctx.ops.end());
+  before.insert(before.end(), after.begin(), after.end());
+  ctx.ops = std::move(before);
+}
+
+}  // namespace ncc::passes

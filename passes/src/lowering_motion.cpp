@@ -1,0 +1,224 @@
+// Motion: the group 01 modes G00 (rapid), G01 (linear), G02/G03 (arcs in the selected plane,
+// by centre I/J/K or radius R) and the feed rate F they cut with (per minute, per revolution,
+// inverse time, Siemens F1-digit presets). Kept together because a cutting move's feed check
+// and IR feed depend on the feed mode and on the move's own length.
+#include <cmath>
+#include <numbers>
+
+#include "absl/strings/str_cat.h"
+#include "arc_geometry.h"
+#include "lowering_context.h"
+
+namespace ncc::passes {
+
+void applyFeed(BlockContext& ctx) {
+  if (!ctx.words.f) return;
+  const WordValue& f = *ctx.words.f;
+  ir::Modal& m = ctx.next.modal;
+  if (f.value < 0) {
+    ctx.fail(Alarm::ValueOutOfRange, f.loc, "a feed rate cannot be negative");
+    return;
+  }
+  // F1-digit feed (Siemens MD22920): F1-F9 select presets, F0 selects rapid traverse.
+  if (ctx.settings.f1_digit && !f.point && f.value <= 9 && f.value == std::trunc(f.value)) {
+    int n = static_cast<int>(f.value);
+    if (n == 0) {
+      ctx.next.motion = GAction::Rapid;
+      return;
+    }
+    m.feed =
+        n <= static_cast<int>(ctx.settings.f1_feeds.size()) ? ctx.settings.f1_feeds[n - 1] : 0.0;
+    ctx.next.feed_programmed = m.feed > 0;
+    return;
+  }
+  m.feed = ctx.settings.values.feed(f.value, f.point, m.units, m.feed_mode);
+  ctx.next.feed_programmed = m.feed > 0;
+}
+
+namespace {
+
+bool checkFeed(BlockContext& ctx, bool inverse_time_needs_f) {
+  const ir::Modal& m = ctx.next.modal;
+  if (m.feed_mode == ir::FeedMode::InverseTime) {
+    if (inverse_time_needs_f && (!ctx.words.f || ctx.words.f->value <= 0)) {
+      ctx.fail(Alarm::FeedMissing, ctx.motionLoc(),
+               "no feed rate: in inverse time feed (G93) every cutting block needs its own F");
+      return false;
+    }
+    return true;
+  }
+  if (!ctx.next.feed_programmed) {
+    ctx.fail(Alarm::FeedMissing, ctx.motionLoc(),
+             "no feed rate: a cutting move needs an F word and none has been programmed");
+    return false;
+  }
+  return true;
+}
+
+// Feed of a cutting op in the IR unit: inverse time (1/min) becomes mm/min over `length`.
+double opFeed(const BlockContext& ctx, double length) {
+  const ir::Modal& m = ctx.next.modal;
+  if (m.feed_mode == ir::FeedMode::InverseTime) return m.feed * length;
+  return m.feed;
+}
+
+double pathLength(const BlockContext& ctx, const AxisValues& from, const AxisValues& to) {
+  double s = 0.0;
+  for (int i = 0; i < ctx.axisCount(); ++i) s += (to[i] - from[i]) * (to[i] - from[i]);
+  return std::sqrt(s);
+}
+
+struct PlaneAxes {
+  int a, b;                            // plane axes (first, second)
+  const std::optional<WordValue>* wa;  // centre words on them
+  const std::optional<WordValue>* wb;
+  const std::optional<WordValue>* normal;  // the third centre word
+  const char* names;                       // "XY", "ZX", "YZ"
+  const char* code;                        // "G17"...
+};
+
+PlaneAxes planeAxes(const BlockContext& ctx) {
+  const DecodedBlock& w = ctx.words;
+  switch (ctx.next.modal.plane) {
+    case ir::Plane::ZX:
+      return {ctx.axisNamed("Z"), ctx.axisNamed("X"), &w.k, &w.i, &w.j, "ZX", "G18"};
+    case ir::Plane::YZ:
+      return {ctx.axisNamed("Y"), ctx.axisNamed("Z"), &w.j, &w.k, &w.i, "YZ", "G19"};
+    case ir::Plane::XY: break;
+  }
+  return {ctx.axisNamed("X"), ctx.axisNamed("Y"), &w.i, &w.j, &w.k, "XY", "G17"};
+}
+
+bool arc(BlockContext& ctx, const AxisValues& start, const AxisValues& target,
+         const ir::Frame& frame) {
+  bool cw = ctx.next.motion == GAction::ArcCW;
+  PlaneAxes pl = planeAxes(ctx);
+  if (pl.a < 0 || pl.b < 0) {
+    ctx.fail(Alarm::AxisMissing, ctx.motionLoc(),
+             absl::StrCat("an arc in the ", pl.names, " plane (", pl.code,
+                          ") needs both plane axes, which the machine does not have"));
+    return false;
+  }
+  PlanePoint s{start[pl.a], start[pl.b]}, e{target[pl.a], target[pl.b]};
+  bool end_given = ctx.words.axes[pl.a] || ctx.words.axes[pl.b];
+  bool closed = distance(s, e) <= kSamePoint;
+  bool has_centre = pl.wa->has_value() || pl.wb->has_value();
+  ctx.used_ijk = true;  // centre words are read (or, next to R, ignored by rule) here
+  PlanePoint c;
+  if (ctx.words.r && end_given && !closed) {
+    // R beats I/J/K when an end point is given (Mazak §6-6, FANUC).
+    ctx.used_r = true;
+    double r = ctx.lengthValue(*ctx.words.r);
+    if (r == 0.0) {
+      ctx.fail(Alarm::ArcDegenerate, ctx.words.r->loc, "an arc radius R cannot be 0");
+      return false;
+    }
+    auto centre = centreFromRadius(s, e, r, cw);
+    if (!centre) {
+      ctx.fail(
+          Alarm::ArcRadiusTooSmall, ctx.words.r->loc,
+          absl::StrCat("no arc of radius ", mm(std::fabs(r)), " joins the start and end points ",
+                       mm(distance(s, e)), " apart (the radius must be at least half the chord)"));
+      return false;
+    }
+    c = *centre;
+  } else if (has_centre) {
+    if (pl.normal->has_value()) {
+      ctx.fail(Alarm::AddressWithoutMeaning, (*pl.normal)->loc,
+               absl::StrCat("address ", (*pl.normal)->address, " is not a centre word of the ",
+                            pl.names, " plane (", pl.code, ")"));
+      return false;
+    }
+    ctx.used_r = true;  // an I/J/K full circle ignores R (Mazak §6-6)
+    c = {s.a + (pl.wa->has_value() ? ctx.lengthValue(**pl.wa) : 0.0),
+         s.b + (pl.wb->has_value() ? ctx.lengthValue(**pl.wb) : 0.0)};
+    double rs = distance(s, c), re = distance(e, c);
+    if (rs <= kSamePoint) {
+      ctx.fail(Alarm::ArcDegenerate, ctx.motionLoc(), "the arc centre is at the start point");
+      return false;
+    }
+    if (std::fabs(rs - re) > ctx.settings.arc_tolerance) {
+      ctx.fail(Alarm::ArcRadiusMismatch, ctx.motionLoc(),
+               absl::StrCat("the end point is not on the arc: start radius ", mm(rs),
+                            ", end radius ", mm(re), " (difference above arc_radius_tolerance ",
+                            mm(ctx.settings.arc_tolerance), ")"));
+      return false;
+    }
+  } else if (ctx.words.r) {
+    // R with no end point or end = start: an R full circle does not move (Mazak §6-6).
+    ctx.used_r = true;
+    if (!ctx.samePosition(ctx.toMachine(target, frame), ctx.next.position))
+      ctx.fail(Alarm::ArcDegenerate, ctx.words.r->loc,
+               "an R arc needs an end point in the plane different from the start point");
+    return !ctx.failed;
+  } else {
+    ctx.fail(Alarm::ArcCentreMissing, ctx.motionLoc(),
+             absl::StrCat(cw ? "G02" : "G03", " needs the centre (I/J/K) or the radius (R)"));
+    return false;
+  }
+  if (!checkFeed(ctx, true)) return false;
+  ir::Arc a;
+  a.to = target;
+  a.center = target;
+  a.center[pl.a] = c.a;
+  a.center[pl.b] = c.b;
+  a.space = ir::Space::Work;
+  a.plane = ctx.next.modal.plane;
+  a.clockwise = cw;
+  a.feed_per_rev = ctx.next.modal.feed_mode == ir::FeedMode::PerRevolution;
+  if (ctx.next.modal.feed_mode == ir::FeedMode::InverseTime) {
+    double r = distance(s, c);
+    double sweep = std::atan2(s.b - c.b, s.a - c.a) - std::atan2(e.b - c.b, e.a - c.a);
+    if (!cw) sweep = -sweep;
+    while (sweep <= 0) sweep += 2 * std::numbers::pi;
+    double plane_len = r * sweep;
+    double lin = 0.0;
+    for (int i = 0; i < ctx.axisCount(); ++i)
+      if (i != pl.a && i != pl.b) lin += (target[i] - start[i]) * (target[i] - start[i]);
+    a.feed = ctx.behaviour.inverse_time_arc_per_radius
+                 ? ctx.next.modal.feed * r
+                 : ctx.next.modal.feed * std::sqrt(plane_len * plane_len + lin);
+  } else {
+    a.feed = ctx.next.modal.feed;
+  }
+  ctx.ops.push_back(a);
+  return true;
+}
+
+}  // namespace
+
+void lowerMotion(BlockContext& ctx) {
+  ir::Frame frame = frameOf(ctx.next, ctx.behaviour);
+  AxisValues start = ctx.baseWork();
+  AxisValues target = ctx.workTargets(start);
+  AxisValues to_machine = ctx.toMachine(target, frame);
+  bool moves = !ctx.samePosition(to_machine, ctx.next.position);
+  bool feed_per_rev = ctx.next.modal.feed_mode == ir::FeedMode::PerRevolution;
+  GAction kind = ctx.next.motion;
+  bool arc_mode = kind == GAction::ArcCW || kind == GAction::ArcCCW;
+  // A block with no arc words in an arc mode (G43 H alone) can only move the length axis:
+  // that move is a straight line.
+  if (arc_mode && !ctx.words.anyAxis() && !ctx.words.i && !ctx.words.j && !ctx.words.k &&
+      !ctx.words.r)
+    kind = GAction::Linear;
+  switch (kind) {
+    case GAction::Rapid:
+      if (moves) ctx.ops.push_back(ir::Rapid{target, ir::Space::Work, ctx.settings.rapid_type});
+      break;
+    case GAction::Linear:
+      if (!moves) break;
+      if (!checkFeed(ctx, true)) return;
+      ctx.ops.push_back(ir::Linear{target, ir::Space::Work,
+                                   opFeed(ctx, pathLength(ctx, ctx.next.position, to_machine)),
+                                   feed_per_rev});
+      break;
+    case GAction::ArcCW:
+    case GAction::ArcCCW:
+      if (!arc(ctx, start, target, frame)) return;
+      break;
+    default: break;
+  }
+  ctx.next.position = to_machine;
+}
+
+}  // namespace ncc::passes

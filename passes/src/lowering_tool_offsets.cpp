@@ -1,0 +1,119 @@
+// Tool offsets: tool length compensation (H with G43/G44/G49, on the length axis chosen by
+// tool_length_mode), the radius offset number D, and the G10 L10-L13 writes to the length and
+// radius (wear) registers. A length change can move the length axis in a block of its own;
+// that is recorded here (BlockContext::length_delta*) and carried out by the block's motion.
+#include "absl/strings/str_cat.h"
+#include "lowering_context.h"
+
+namespace ncc::passes {
+
+namespace {
+
+// The axis carrying the length offset: Z (mode A), or the axis normal to the plane (mode B).
+int lengthAxis(const BlockContext& ctx) {
+  if (ctx.settings.tool_length_mode == "B") {
+    switch (ctx.next.modal.plane) {
+      case ir::Plane::XY: return ctx.axisNamed("Z");
+      case ir::Plane::ZX: return ctx.axisNamed("Y");
+      case ir::Plane::YZ: return ctx.axisNamed("X");
+    }
+  }
+  return ctx.axisNamed("Z");
+}
+
+}  // namespace
+
+void applyLengthOffset(BlockContext& ctx) {
+  const auto& g = ctx.words.group(GGroup::LengthComp);
+  if (ctx.words.h) {
+    auto n = ctx.integer(*ctx.words.h);
+    if (!n) return;
+    if (*n < 0 || *n > ctx.settings.offset_count) {
+      ctx.fail(Alarm::OffsetNumberOutOfRange, ctx.words.h->loc,
+               absl::StrCat("H", *n, " is out of range: offset numbers are 1-",
+                            ctx.settings.offset_count, " (offset_count)"));
+      return;
+    }
+    ctx.next.h_selected = static_cast<int>(*n);
+  }
+  if (!g && !ctx.words.h) return;
+  int sign = ctx.next.modal.length_offset_sign;
+  if (g) {
+    GAction a = g->entry->action;
+    sign = a == GAction::LengthPlus ? 1 : a == GAction::LengthMinus ? -1 : 0;
+  }
+  if (sign != 0 && ctx.settings.tool_length_mode == "C") {
+    ctx.fail(Alarm::CodeNotSupported, g ? g->loc : ctx.words.h->loc,
+             "tool length mode C (offset on the axis programmed with H) is not supported yet");
+    return;
+  }
+  int axis = -1;
+  double length = 0.0;
+  if (sign != 0) {
+    axis = lengthAxis(ctx);
+    if (axis < 0) {
+      ctx.fail(Alarm::AxisMissing, g ? g->loc : ctx.words.h->loc,
+               "tool length compensation needs the length axis, which the machine does not have");
+      return;
+    }
+    length = sign * ctx.core.tables.toolLength(ctx.next.h_selected);
+  }
+  double old = ctx.core.cs.tool_length_axis >= 0 ? ctx.core.cs.tool_length : 0.0;
+  int changed_axis = axis >= 0 ? axis : ctx.core.cs.tool_length_axis;
+  if (ctx.settings.length_change_moves && changed_axis >= 0 && length != old) {
+    ctx.length_delta_axis = changed_axis;
+    ctx.length_delta = length - old;
+  }
+  ctx.next.tool_length_axis = axis;
+  ctx.next.tool_length = length;
+  ctx.next.modal.length_offset_sign = sign;
+  ctx.next.modal.length_offset_h = sign != 0 ? ctx.next.h_selected : 0;
+}
+
+void applyRadiusOffsetNumber(BlockContext& ctx) {
+  if (ctx.words.d) {
+    auto n = ctx.integer(*ctx.words.d);
+    if (n && (*n < 0 || *n > ctx.settings.offset_count))
+      ctx.fail(Alarm::OffsetNumberOutOfRange, ctx.words.d->loc,
+               absl::StrCat("D", *n, " is out of range: offset numbers are 1-",
+                            ctx.settings.offset_count, " (offset_count)"));
+    else if (n)
+      ctx.next.d_selected = static_cast<int>(*n);
+  }
+}
+
+void dataSetRegister(BlockContext& ctx, const GWord& g, int l, bool add) {
+  for (int i = 0; i < ctx.axisCount(); ++i) {
+    if (ctx.words.axes[i]) {
+      ctx.fail(Alarm::AddressWithoutMeaning, ctx.words.axes[i]->loc,
+               absl::StrCat("address ", ctx.words.axes[i]->address, " has no meaning in G10 L", l));
+      return;
+    }
+  }
+  if (!ctx.words.p || !ctx.words.r) {
+    ctx.fail(Alarm::DataSetFormat, g.loc,
+             absl::StrCat("G10 L", l, " needs P (offset number) and R (value)"));
+    return;
+  }
+  ctx.used_p = ctx.used_r = true;
+  auto n = ctx.integer(*ctx.words.p);
+  if (!n) return;
+  if (*n < 1 || *n > ctx.settings.offset_count) {
+    ctx.fail(Alarm::OffsetNumberOutOfRange, ctx.words.p->loc,
+             absl::StrCat("P", *n, " is out of range: offset numbers are 1-",
+                          ctx.settings.offset_count, " (offset_count)"));
+    return;
+  }
+  TableWrite w;
+  w.target = l == 10   ? TableWrite::Target::Length
+             : l == 11 ? TableWrite::Target::LengthWear
+             : l == 12 ? TableWrite::Target::Radius
+                       : TableWrite::Target::RadiusWear;
+  w.number = static_cast<int>(*n);
+  w.values[0] =
+      ctx.settings.values.offset(ctx.words.r->value, ctx.words.r->point, ctx.next.modal.units);
+  w.add = add;
+  ctx.table_writes.push_back(std::move(w));
+}
+
+}  // namespace ncc::passes
