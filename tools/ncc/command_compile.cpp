@@ -1,6 +1,6 @@
 // `ncc compile IN -o OUT.ncb [--emit=ast|ir|bytecode]` and `ncc check IN`.
-#include <fstream>
 #include <iostream>
+#include <sstream>
 
 #include "cli.h"
 #include "ncc/driver/compile.h"
@@ -28,18 +28,7 @@ int runCompile(const CompileArgs& args) {
     // Text forms go to -o FILE or stdout; a failed compile leaves no file behind.
     std::ostringstream text;
     ok = args.emit == "ast" ? driver::emitAst(session, text) : driver::emitIr(session, text);
-    if (ok) {
-      if (args.output.empty()) {
-        std::cout << text.str();
-      } else {
-        std::ofstream file(args.output, std::ios::binary | std::ios::trunc);
-        file << text.str();
-        if (!file) {
-          std::cerr << "ncc: error: cannot write '" << args.output << "'\n";
-          return kUsage;
-        }
-      }
-    }
+    if (ok && !writeOutput(args.output, text.str())) return kUsage;
   }
   printDiagnostics(session);
   return ok ? kOk : kProgramError;

@@ -1,6 +1,5 @@
 // `ncc run IN [--emit=moves|vars] [-o FILE]` (IN is a source program or a .ncb file) and
 // `ncc dis FILE.ncb`.
-#include <fstream>
 #include <iostream>
 #include <sstream>
 
@@ -71,17 +70,9 @@ int runRun(const RunArgs& args) {
   if (args.emit == "summary") {
     printSummary(args.output.empty() ? std::cout : emitted, result.summary, program, result.alarm);
   }
-  if (args.output.empty()) {
-    std::cout << emitted.str();
-  } else {
-    std::ofstream file(args.output, std::ios::binary | std::ios::trunc);
-    file << emitted.str();
-    if (!file) {
-      std::cerr << "ncc: error: cannot write '" << args.output << "'\n";
-      return kUsage;
-    }
-    if (args.emit != "summary") printSummary(std::cout, result.summary, program, result.alarm);
-  }
+  if (!writeOutput(args.output, emitted.str())) return kUsage;
+  if (!args.output.empty() && args.emit != "summary")
+    printSummary(std::cout, result.summary, program, result.alarm);
   return kOk;
 }
 
