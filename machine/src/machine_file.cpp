@@ -11,6 +11,7 @@
 
 #include "absl/strings/ascii.h"
 #include "param_reader.h"
+#include "servo_keys.h"
 #include "text.h"
 #include "toml_context.h"
 
@@ -418,6 +419,7 @@ class MachineFileReader {
     return out;
   }
 
+  // Limits and servo parameters (servo_keys.cpp) of each axis.
   void readAxisLimits(const toml::table& t) {
     for (const auto& [key_ptr, node_ptr] : inFileOrder(t)) {
       const toml::key& key = *key_ptr;
@@ -439,7 +441,7 @@ class MachineFileReader {
                         : lkey == "max_jerk"         ? &axis.max_jerk
                                                      : nullptr;
         if (!field) {
-          ctx_.unknownKey(lkey, table_name);
+          if (!readServoKey(lkey, value, axis, ctx_)) ctx_.unknownKey(lkey, table_name);
           continue;
         }
         auto v = ctx_.number(value, lkey.str());

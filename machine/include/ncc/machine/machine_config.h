@@ -12,6 +12,7 @@
 
 #include "ncc/machine/axes.h"
 #include "ncc/machine/params.h"
+#include "ncc/machine/servo_config.h"
 
 namespace ncc {
 
@@ -27,6 +28,7 @@ struct AxisConfig {
   double max_velocity = 30000.0;    // mm/min: cutting feed limit
   double max_acceleration = 2000.0; // mm/s^2
   double max_jerk = 50000.0;        // mm/s^3
+  ServoConfig servo;                // run-time only: not hashed
   friend bool operator==(const AxisConfig&, const AxisConfig&) = default;
 };
 
@@ -61,6 +63,9 @@ struct MachineConfig {
   std::map<std::string, AxisValues> work_offsets;
   AxisValues start_position{};           // machine position before the program starts
   double ipo_cycle_seconds = 0.001;      // interpolation cycle T
+  // Largest distance (mm) between an arc and the chords joining consecutive IPO setpoints; the
+  // planner lowers the feed on small arcs to keep it. Not read from the machine file yet.
+  double chord_tolerance = 0.001;
   ParameterSet params;                   // [machine.params]
 
   int axisIndex(std::string_view name) const;  // -1 if not configured
@@ -68,8 +73,9 @@ struct MachineConfig {
 
   // Stable hash of everything that changes compiled code: axes (names, kinds, diameter,
   // travel limits), offset registers, work offsets, start position and params. Not hashed:
-  // the axes' velocity/acceleration/jerk limits and the IPO cycle (the VM reads them at run
-  // time). FNV-1a 64 over a canonical serialisation: the same on every run and platform.
+  // the axes' velocity/acceleration/jerk limits, servo parameters and the IPO cycle (the VM
+  // reads them at run time). FNV-1a 64 over a canonical serialisation: the same on every run
+  // and platform.
   // Stored in bytecode headers so a program is not run on a machine it was not compiled for.
   uint64_t configHash() const;
 

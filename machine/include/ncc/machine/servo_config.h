@@ -1,0 +1,38 @@
+#pragma once
+// Per-axis servo parameters read by the VM's servo model (docs/servo.md). They change how the
+// simulated axis follows its setpoints, never the compiled code, so they are not in
+// MachineConfig::configHash(). Names follow the Sinumerik machine data they come from
+// (840Di extended functions, K3 / notes §4.1).
+#include <cstdint>
+#include <vector>
+
+namespace ncc {
+
+// MD 32620 FFW_MODE.
+enum class FeedForwardMode : uint8_t { None, Velocity, Torque };
+
+// Values at equidistant support points start, start + step, ...; linear interpolation
+// between them, the end values held outside (as $AA_ENC_COMP / LEC tables). Empty: no table.
+struct PitchTable {
+  double start = 0.0;           // machine position of values[0], mm or deg
+  double step = 1.0;            // distance of the support points, > 0
+  std::vector<double> values;   // mm or deg
+  friend bool operator==(const PitchTable&, const PitchTable&) = default;
+};
+
+struct ServoConfig {
+  double kv = 1.0;                       // MD 32200 POSCTRL_GAIN, (m/min)/mm = 16.67/s
+  FeedForwardMode ffw_mode = FeedForwardMode::Velocity;  // MD 32620
+  double velo_ffw_weight = 1.0;          // MD 32610 VELO_FFW_WEIGHT, 0..1 nominal
+  double equiv_speedctrl_time = 0.004;   // MD 32810 EQUIV_SPEEDCTRL_TIME, s
+  double contour_tol = 1.0;              // MD 36400 CONTOUR_TOL, mm: following-error limit
+  double standstill_pos_tol = 0.2;       // MD 36030 STANDSTILL_POS_TOL, mm
+  double standstill_delay_time = 0.4;    // MD 36040 STANDSTILL_DELAY_TIME, s
+  double backlash = 0.0;                 // mechanical play of the simulated axis, mm
+  double backlash_compensation = 0.0;    // MD 32450 BACKLASH, mm
+  PitchTable pitch_error;                // leadscrew error of the simulated axis
+  PitchTable pitch_compensation;         // LEC table the control corrects with
+  friend bool operator==(const ServoConfig&, const ServoConfig&) = default;
+};
+
+}  // namespace ncc

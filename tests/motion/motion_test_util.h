@@ -1,0 +1,128 @@
+#pragma once
+// Shared helpers for the motion tests: primitive builders, a caller loop that feeds a
+// MotionPlanner like the VM does, a portable seeded random source.
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <vector>
+
+#include "ncc/machine/machine_config.h"
+#include "ncc/vm/events.h"
+#include "ncc/vm/motion/planner.h"
+
+namespace ncc::motion_test {
+
+using vm::MotionPrimitive;
+using Kind = MotionPrimitive::Kind;
+
+inline AxisValues xyz(double x, double y, double z) {
+  AxisValues v{};
+  v[0] = x;
+  v[1] = y;
+  v[2] = z;
+  return v;
+}
+
+inline MotionPrimitive line(const AxisValues& from, const AxisValues& to, double feed,
+                            bool exact_stop = false) {
+  MotionPrimitive m;
+  m.kind = Kind::Line;
+  m.from = from;
+  m.to = to;
+  m.feed = feed;
+  m.exact_stop = exact_stop;
+  return m;
+}
+
+inline MotionPrimitive rapid(const AxisValues& from, const AxisValues& to) {
+  MotionPrimitive m;
+  m.kind = Kind::Rapid;
+  m.from = from;
+  m.to = to;
+  return m;
+}
+
+// Arc in the plane (a1, a2) around (c1, c2).
+inline MotionPrimitive arc(const AxisValues& from, const AxisValues& to, int a1, int a2,
+                           double c1, double c2, bool cw, double feed, uint32_t turns = 0) {
+  MotionPrimitive m;
+  m.kind = Kind::Arc;
+  m.from = from;
+  m.to = to;
+  m.axis1 = static_cast<uint8_t>(a1);
+  m.axis2 = static_cast<uint8_t>(a2);
+  m.center[a1] = c1;
+  m.center[a2] = c2;
+  m.cw = cw;
+  m.feed = feed;
+  m.extra_turns = turns;
+  return m;
+}
+
+inline MotionPrimitive dwell(const AxisValues& at, double seconds) {
+  MotionPrimitive m;
+  m.kind = Kind::Dwell;
+  m.from = at;
+  m.to = at;
+  m.seconds = seconds;
+  return m;
+}
+
+struct Trace {
+  std::vector<AxisValues> points;
+  std::vector<vm::motion::SetpointInfo> infos;
+  uint64_t ticks() const { return points.size(); }
+};
+
+// Runs `program` through a planner the way the VM loop does: before each tick, push while the
+// planner wants more. `max_ticks` guards against a hang.
+inline Trace run(const MachineConfig& machine, const std::vector<MotionPrimitive>& program,
+                 std::size_t capacity = 1024, uint64_t max_ticks = 50'000'000) {
+  vm::motion::MotionPlanner planner(machine, capacity);
+  Trace trace;
+  std::size_t next = 0;
+  AxisValues p{};
+  vm::motion::SetpointInfo info;
+  for (uint64_t k = 0; k < max_ticks; ++k) {
+    while (next < program.size() && planner.canAccept()) planner.push(program[next++]);
+    if (next == program.size()) planner.endOfProgram();
+    if (!planner.setpoint(k, p, info)) break;
+    trace.points.push_back(p);
+    trace.infos.push_back(info);
+  }
+  return trace;
+}
+
+// splitmix64: the same sequence on every platform (std distributions are not portable).
+class Random {
+ public:
+  explicit Random(uint64_t seed) : state_(seed) {}
+  uint64_t next() {
+    uint64_t z = (state_ += 0x9e3779b97f4a7c15ULL);
+    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
+    z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
+    return z ^ (z >> 31);
+  }
+  double uniform(double lo, double hi) {
+    return lo + (hi - lo) * (static_cast<double>(next() >> 11) * 0x1.0p-53);
+  }
+  int below(int n) { return static_cast<int>(next() % static_cast<uint64_t>(n)); }
+
+ private:
+  uint64_t state_;
+};
+
+inline uint64_t fnv1a(const Trace& trace, int axes) {
+  uint64_t h = 0xcbf29ce484222325ULL;
+  for (const AxisValues& p : trace.points) {
+    unsigned char bytes[sizeof(double) * kMaxAxes];
+    std::memcpy(bytes, p.data(), sizeof(double) * static_cast<std::size_t>(axes));
+    for (std::size_t i = 0; i < sizeof(double) * static_cast<std::size_t>(axes); ++i) {
+      h ^= bytes[i];
+      h *= 0x100000001b3ULL;
+    }
+  }
+  return h;
+}
+
+}  // namespace ncc::motion_test

@@ -1,0 +1,133 @@
+// The planner and interpolator on analytic cases: rest-to-rest line time, a circle at
+// constant F, 10 um chains at the programmed F, dwell, feed per revolution, exact stops.
+#include "ncc/vm/motion/planner.h"
+
+#include <cmath>
+#include <numbers>
+
+#include "gtest/gtest.h"
+#include "motion_test_util.h"
+#include "ncc/vm/motion/scurve.h"
+
+namespace ncc::vm::motion {
+namespace {
+
+using namespace motion_test;
+
+TEST(Planner, RestToRestLineTimeMatchesClosedForm) {
+  const MachineConfig m = defaultMachine();  // a = 2000, j = 50000, T = 1 ms
+  const double a = 2000.0, j = kSmoothJerkShare * 50000.0;  // the line's path jerk
+  for (double L : {0.05, 0.5, 5.0, 50.0, 200.0}) {
+    const double v = 100.0;  // F6000 along X
+    const Trace t = run(m, {line(xyz(0, 0, 0), xyz(L, 0, 0), 6000.0)});
+    const double T = planProfile(L, 0.0, 0.0, v, a, j).duration;
+    // Closed form (both limits reached when L is long, docs/planner.md).
+    if (L >= 50.0) { EXPECT_NEAR(T, L / v + v / a + a / j, 1e-12); }
+    if (L == 0.05) { EXPECT_NEAR(T, 4.0 * std::cbrt(L / (2.0 * j)), 1e-12); }
+    // The setpoints: tick k samples t = k ms for k*T <= T_end, then one more tick holds the
+    // end point exactly (the stop sample).
+    const uint64_t expected_ticks = static_cast<uint64_t>(std::floor(T / 0.001)) + 2;
+    EXPECT_EQ(t.ticks(), expected_ticks) << "L=" << L;
+    EXPECT_EQ(t.points.back(), xyz(L, 0, 0));
+  }
+}
+
+TEST(Planner, FullCircleAtConstantFeed) {
+  const MachineConfig m = defaultMachine();
+  const double r = 10.0, F = 600.0, v = F / 60.0;
+  const AxisValues s = xyz(r, 0, 0);
+  const Trace t = run(m, {arc(s, s, 0, 1, 0.0, 0.0, false, F)});
+  ASSERT_GT(t.ticks(), 6000u);  // 62.8 mm at 10 mm/s
+  uint64_t cruise = 0;
+  for (uint64_t k = 0; k < t.ticks(); ++k) {
+    const AxisValues& p = t.points[k];
+    ASSERT_NEAR(std::hypot(p[0], p[1]), r, 1e-9) << k;
+    if (k > 0 && t.infos[k].velocity == v && t.infos[k - 1].velocity == v) {
+      // Path speed from the angle between consecutive setpoints.
+      const double a0 = std::atan2(t.points[k - 1][1], t.points[k - 1][0]);
+      const double a1 = std::atan2(p[1], p[0]);
+      double d = a1 - a0;
+      if (d < 0) d += 2.0 * std::numbers::pi;
+      ASSERT_NEAR(d * r / 0.001, v, 1e-9 * v) << k;
+      ++cruise;
+    }
+  }
+  EXPECT_GT(cruise, 6000u);
+  EXPECT_EQ(t.points.back(), s);
+}
+
+TEST(Planner, CollinearMicroSegmentsReachProgrammedFeed) {
+  // 2000 x 10 um along a fixed diagonal at F3000 (50 mm/s = 5 segments per tick).
+  const MachineConfig m = defaultMachine();
+  std::vector<MotionPrimitive> prog;
+  const AxisValues dir = xyz(1.0 / std::sqrt(5.0), 2.0 / std::sqrt(5.0), 0.0);
+  AxisValues p{};
+  for (int i = 1; i <= 2000; ++i) {
+    AxisValues q = xyz(dir[0] * 0.01 * i, dir[1] * 0.01 * i, 0.0);
+    prog.push_back(line(p, q, 3000.0));
+    p = q;
+  }
+  const Trace t = run(m, prog);
+  double top = 0.0;
+  uint32_t most = 0;
+  uint64_t at_feed = 0;
+  for (const auto& info : t.infos) {
+    top = std::max(top, info.velocity);
+    most = std::max(most, info.segments_finished);
+    if (std::abs(info.velocity - 50.0) < 1e-9) ++at_feed;
+  }
+  EXPECT_NEAR(top, 50.0, 1e-9);
+  EXPECT_GE(most, 5u);
+  EXPECT_GT(at_feed, 300u);  // 20 mm at 50 mm/s = 400 ms, minus the ramps
+  EXPECT_EQ(t.points.back(), p);
+}
+
+TEST(Planner, DwellHoldsPositionAndExactStopIsSampled) {
+  const MachineConfig m = defaultMachine();
+  const AxisValues a = xyz(0, 0, 0), b = xyz(3.3, 1.1, 0), c = xyz(5.0, 1.1, 0.7);
+  const Trace t = run(m, {line(a, b, 1200.0, /*exact_stop=*/true), dwell(b, 0.25),
+                          line(b, c, 1200.0)});
+  uint64_t at_b = 0;
+  for (const AxisValues& p : t.points) at_b += p == b ? 1 : 0;
+  // The dwell: 250 ticks standing exactly on b (plus the stop sample).
+  EXPECT_GE(at_b, 250u);
+  EXPECT_LE(at_b, 252u);
+  EXPECT_EQ(t.points.back(), c);
+}
+
+TEST(Planner, FeedPerRevolutionUsesSpindleSpeed) {
+  const MachineConfig m = defaultMachine();
+  MotionPlanner planner(m, 64);
+  planner.setSpindleSpeed(1000.0);
+  MotionPrimitive mv = line(xyz(0, 0, 0), xyz(100, 0, 0), 0.1);  // 0.1 mm/rev * 1000 rpm
+  mv.feed_per_rev = true;
+  ASSERT_TRUE(planner.push(mv));
+  planner.endOfProgram();
+  AxisValues p;
+  SetpointInfo info;
+  double top = 0.0;
+  for (uint64_t k = 0; planner.setpoint(k, p, info); ++k) top = std::max(top, info.velocity);
+  EXPECT_NEAR(top, 100.0 / 60.0, 1e-12);
+}
+
+TEST(Planner, CornerStopsTangentPasses) {
+  const MachineConfig m = defaultMachine();
+  // 90 degree corner: the path comes to rest there.
+  const Trace corner = run(m, {line(xyz(0, 0, 0), xyz(10, 0, 0), 3000.0),
+                               line(xyz(10, 0, 0), xyz(10, 10, 0), 3000.0)});
+  bool stopped_on_corner = false;
+  for (const AxisValues& p : corner.points) stopped_on_corner |= p == xyz(10, 0, 0);
+  EXPECT_TRUE(stopped_on_corner);
+  // Collinear split: no slowdown at the junction.
+  const Trace straight = run(m, {line(xyz(0, 0, 0), xyz(10, 0, 0), 3000.0),
+                                 line(xyz(10, 0, 0), xyz(20, 0, 0), 3000.0)});
+  double slowest_mid = 1e9;
+  for (std::size_t k = 0; k < straight.ticks(); ++k) {
+    const double x = straight.points[k][0];
+    if (x > 5.0 && x < 15.0) slowest_mid = std::min(slowest_mid, straight.infos[k].velocity);
+  }
+  EXPECT_EQ(slowest_mid, 50.0);
+}
+
+}  // namespace
+}  // namespace ncc::vm::motion

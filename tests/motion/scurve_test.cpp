@@ -1,0 +1,130 @@
+// The 1-D S-curve profile against closed forms (docs/planner.md) and its limit properties.
+#include "ncc/vm/motion/scurve.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "gtest/gtest.h"
+#include "motion_test_util.h"
+
+namespace ncc::vm::motion {
+namespace {
+
+constexpr double kA = 2000.0;   // mm/s^2
+constexpr double kJ = 50000.0;  // mm/s^3; a^2/j = 80 mm/s
+
+// Rest-to-rest time, the four cases (docs/planner.md).
+double restToRestTime(double L, double v, double a, double j) {
+  const double va = a * a / j;  // velocity gained by one full jerk pair
+  const double vp_tri = std::cbrt(L * L * j / 4.0);  // peak with neither limit reached
+  if (vp_tri <= std::min(v, va)) return 4.0 * std::cbrt(L / (2.0 * j));
+  if (v <= va) {  // a_max never reached
+    if (L >= 2.0 * v * std::sqrt(v / j)) return L / v + 2.0 * std::sqrt(v / j);
+    return 4.0 * std::cbrt(L / (2.0 * j));
+  }
+  const double t_no_cruise = a / j + std::sqrt((a / j) * (a / j) + 4.0 * L / a);
+  const double vp = a * (t_no_cruise / 2.0 - a / j);
+  if (vp <= v) return t_no_cruise;  // a_max reached, v_max not
+  return L / v + v / a + a / j;      // both reached
+}
+
+struct Case {
+  double length, v_max;
+  const char* regime;
+};
+
+TEST(SCurve, RestToRestTimeMatchesClosedForm) {
+  const Case cases[] = {
+      {100.0, 200.0, "v and a reached"},      // T = L/v + v/a + a/j = 0.64
+      {100.0, 50.0, "v reached, a not"},      // T = L/v + 2 sqrt(v/j)
+      {10.0, 1000.0, "a reached, v not"},     // T = a/j + sqrt((a/j)^2 + 4L/a)
+      {0.1, 1000.0, "neither reached"},       // T = 4 cbrt(L / 2j)
+      {1.0, 1000.0, "a reached, v not (short)"},
+      {2.0, 30.0, "v reached, a not (short)"},
+  };
+  for (const Case& c : cases) {
+    const SCurveProfile p = planProfile(c.length, 0.0, 0.0, c.v_max, kA, kJ);
+    const double expected = restToRestTime(c.length, c.v_max, kA, kJ);
+    EXPECT_NEAR(p.duration, expected, 1e-12 * expected) << c.regime << " L=" << c.length;
+    EXPECT_EQ(p.at(p.duration).s, c.length) << c.regime;
+    EXPECT_EQ(p.at(p.duration).v, 0.0);
+    EXPECT_TRUE(p.end_reachable);
+  }
+  // The first case by hand.
+  EXPECT_NEAR(planProfile(100.0, 0.0, 0.0, 200.0, kA, kJ).duration, 0.64, 1e-14);
+  EXPECT_NEAR(planProfile(0.1, 0.0, 0.0, 1000.0, kA, kJ).duration, 0.04, 1e-14);
+}
+
+TEST(SCurve, ReachableVelocityInvertsRampDistance) {
+  for (double v : {0.0, 1.0, 30.0, 200.0}) {
+    for (double L : {1e-5, 0.01, 0.3, 5.0, 80.0}) {
+      const double w = reachableVelocity(v, L, kA, kJ);
+      EXPECT_GT(w, v);
+      // w = v + dv is stored as an absolute velocity: dv carries the rounding of w (tiny
+      // segments at high speed), so the tolerance is a few ulps of w through the slope.
+      const double ulp_effect =
+          std::abs(rampDistance(v, std::nextafter(w, 1e300), kA, kJ) - rampDistance(v, w, kA, kJ));
+      EXPECT_NEAR(rampDistance(v, w, kA, kJ), L, 1e-12 * L + 4.0 * ulp_effect) << "v=" << v << " L=" << L;
+    }
+  }
+}
+
+TEST(SCurve, UnreachableEndVelocityIsReported) {
+  // 0 -> 100 mm/s needs more than 1 mm.
+  const SCurveProfile up = planProfile(1.0, 0.0, 100.0, 200.0, kA, kJ);
+  EXPECT_FALSE(up.end_reachable);
+  EXPECT_NEAR(up.v_end, reachableVelocity(0.0, 1.0, kA, kJ), 1e-12);
+  EXPECT_EQ(up.at(up.duration).s, 1.0);
+  // Braking 100 -> 0 in 0.1 mm is impossible: reported, not hidden.
+  const SCurveProfile down = planProfile(0.1, 100.0, 0.0, 200.0, kA, kJ);
+  EXPECT_FALSE(down.end_reachable);
+  EXPECT_GT(down.v_end, 0.0);
+}
+
+// Dense sampling of random profiles: limits hold, s(T) = L, ends match, no cruise is wasted.
+TEST(SCurve, RandomProfilesRespectLimits) {
+  motion_test::Random rng(42);
+  for (int n = 0; n < 2000; ++n) {
+    const double a = rng.uniform(100.0, 5000.0);
+    const double j = rng.uniform(1000.0, 200000.0);
+    const double v_max = rng.uniform(1.0, 500.0);
+    const double L = std::exp(rng.uniform(std::log(1e-5), std::log(200.0)));
+    double v0 = rng.uniform(0.0, v_max), v1 = rng.uniform(0.0, v_max);
+    if (rng.below(4) == 0) v0 = 0.0;
+    if (rng.below(4) == 0) v1 = 0.0;
+    // Make the start brakeable, as the look-ahead guarantees. A peak below v_max leaves no
+    // cruise beyond the solver tolerance (1e-8 mm).
+    v0 = std::min(v0, reachableVelocity(v1, L, a, j));
+    const SCurveProfile p = planProfile(L, v0, v1, v_max, a, j);
+    ASSERT_GE(p.duration, 0.0);
+    EXPECT_EQ(p.at(p.duration).s, L);
+    EXPECT_EQ(p.at(0.0).v, v0);
+    EXPECT_EQ(p.at(p.duration).v, p.v_end);
+    if (p.end_reachable) { EXPECT_EQ(p.v_end, v1); }
+    if (p.v_peak < v_max && p.end_reachable) { EXPECT_LT(p.t_cruise * p.v_peak, 1e-8 * (L + 1.0)); }
+    double prev_s = 0.0;
+    constexpr int kSamples = 400;
+    for (int i = 0; i <= kSamples; ++i) {
+      const double t = p.duration * i / kSamples;
+      const PathState st = p.at(t);
+      ASSERT_LE(st.v, v_max * (1.0 + 1e-12)) << n;
+      ASSERT_GE(st.v, -1e-12 * v_max) << n;
+      ASSERT_LE(std::abs(st.a), a * (1.0 + 1e-9)) << n;
+      ASSERT_LE(std::abs(st.j), j) << n;
+      ASSERT_GE(st.s, prev_s - 1e-12 * L) << n;
+      prev_s = st.s;
+    }
+    // Continuity: s advances by the integral of v (midpoint rule error ~ j h^3).
+    for (int i = 0; i < kSamples; ++i) {
+      const double t0 = p.duration * i / kSamples, t1 = p.duration * (i + 1) / kSamples;
+      const double h = t1 - t0;
+      const double ds = p.at(t1).s - p.at(t0).s;
+      // Tolerance: the midpoint rule (j h^3) plus the rounding of a peak velocity barely above
+      // a high start velocity (relative 1e-8 of the length, see ReachableVelocity...).
+      ASSERT_NEAR(ds, p.at(0.5 * (t0 + t1)).v * h, j * h * h * h + 1e-8 * L + 1e-12) << n;
+    }
+  }
+}
+
+}  // namespace
+}  // namespace ncc::vm::motion

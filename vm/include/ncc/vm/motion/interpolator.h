@@ -1,0 +1,67 @@
+#pragma once
+// The interpolator: the setpoint of IPO tick k at time t = k * T.
+//
+// Time is kept as integers plus a small fraction: the running profile started `phase`
+// seconds after tick `start_tick` (0 <= phase < T), so its local time at tick k is
+// (k - start_tick) * T - phase from the integer tick difference; nothing accumulates t += T
+// and precision does not decay over long programs. A tick walks through as many segments and
+// profiles as end before it (no one-segment-per-cycle cap). A profile that ends at rest hands
+// over on the next tick, so every stop is sampled exactly at its programmed end point.
+//
+// Forward pass, one profile ("piece") at a time over the front run, from the actual velocity:
+//  - a closed run (something follows it, or it stops): one profile to its planned exit;
+//  - the open last run: if the known rest allows accelerating to the run's top speed and
+//    still braking to rest, the piece ends at top speed (a = 0) where braking from top speed
+//    still fits; the next piece continues at top speed with whatever has been queued since.
+//    Otherwise the piece brakes to rest at the end of the window.
+#include <cstddef>
+#include <cstdint>
+
+#include "ncc/machine/axes.h"
+#include "ncc/vm/events.h"
+#include "ncc/vm/motion/lookahead.h"
+#include "ncc/vm/motion/scurve.h"
+
+namespace ncc::vm::motion {
+
+struct SetpointInfo {
+  double velocity = 0.0;      // path velocity, mm/s
+  double acceleration = 0.0;  // path (tangential) acceleration, mm/s^2
+  double jerk = 0.0;          // mm/s^3
+  MotionPrimitive::Kind kind = MotionPrimitive::Kind::Dwell;  // run evaluated
+  SourcePosition where;       // source of the segment evaluated
+  uint32_t segments_finished = 0;  // segments that ended since the previous tick
+  bool idle = true;           // no segment running (waiting for input, or done)
+};
+
+class Interpolator {
+ public:
+  Interpolator(const AxisValues& start, double ipo_cycle) : position_(start), cycle_(ipo_cycle) {}
+
+  // Setpoint of tick k (k increases by one per call). `closed`: no more input will come (the
+  // last run is final). Returns false when nothing is left to run; `out` then holds the last
+  // position. The tick on which the queue runs empty still returns true with the end point.
+  bool setpoint(uint64_t k, LookAhead& queue, bool closed, AxisValues& out, SetpointInfo& info);
+
+  const AxisValues& position() const { return position_; }
+
+ private:
+  void startPiece(LookAhead& queue, bool closed);
+
+  AxisValues position_;  // end of the last finished segment
+  double cycle_;
+  // The running piece.
+  bool running_ = false;
+  SCurveProfile profile_;
+  double duration_ = 0.0;
+  double piece_start_ = 0.0;  // run offset where the piece starts
+  double piece_end_ = 0.0;    // run offset where it ends
+  bool piece_ends_run_ = false;
+  // Its clock.
+  uint64_t start_tick_ = 0;
+  double phase_ = 0.0;
+  double exit_velocity_ = 0.0;  // of the last finished piece
+  bool resync_ = true;          // the next piece starts on the tick it is first evaluated
+};
+
+}  // namespace ncc::vm::motion

@@ -1,0 +1,100 @@
+#pragma once
+// Look-ahead over queued segments, grouped into runs.
+//
+// A run is a chain of consecutive segments of the same kind with (nearly) equal path limits
+// whose junctions do not bind (tangent or collinear, junction limit >= the run's velocity
+// limit): a 10 um G01 chain along a line, an arc split into pieces. The S-curve is planned
+// over a run as one 1-D path, so a chain of tiny segments accelerates like one long segment;
+// profiles start and end at zero acceleration only at run boundaries. A junction between runs
+// passes at a velocity limit (0 at corners and exact stops).
+//
+// Backward pass (on every push): each run's entry velocity is the highest from which it and
+// every later known run can still brake to v = 0 at the end of the window (the future is
+// unknown, so the window always ends at rest). New input only raises these velocities and the
+// pass stops at the first entry that does not change (earlier ones depend only on it).
+//
+// Forward pass: the interpolator plans one profile ("piece") at a time from the actual
+// velocity (see Interpolator). Two fixed-capacity rings hold segments and runs, allocated in
+// the constructor; nothing allocates or throws afterwards.
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "ncc/vm/events.h"
+#include "ncc/vm/motion/limits.h"
+#include "ncc/vm/motion/path.h"
+
+namespace ncc::vm::motion {
+
+struct QueuedSegment {
+  PathSegment path;
+  SourcePosition where;
+  double run_offset = 0.0;  // path length of its run before it
+};
+
+struct Run {
+  SegmentLimits limits;
+  MotionPrimitive::Kind kind = MotionPrimitive::Kind::Line;
+  double length = 0.0;         // sum of its segments' lengths
+  uint32_t segments = 0;       // its segments still queued
+  double dwell_seconds = 0.0;  // Dwell runs: one segment of length 0
+  double entry_limit = 0.0;    // junction velocity limit at its start (0: from rest)
+  double entry_planned = 0.0;  // backward pass result
+  bool stop_after = false;     // ends at rest whatever follows (G09/G61, M00, dwell...)
+};
+
+class LookAhead {
+ public:
+  // `window_length`: queued path length beyond the running segment after which more input
+  // cannot change the plan (canAccept turns false).
+  LookAhead(std::size_t capacity, double window_length);
+
+  bool empty() const { return segment_count_ == 0; }
+  bool full() const { return segment_count_ == segments_.size(); }
+  std::size_t size() const { return segment_count_; }
+  bool wantsMore() const { return !full() && queued_length_ < window_length_; }
+
+  // Appends a segment (caller checks !full()). `entry_limit` is the junction limit with the
+  // previous segment; the segment joins the last run when the junction does not bind and
+  // the limits match, else starts a run. Runs the backward pass.
+  void push(const QueuedSegment& segment, MotionPrimitive::Kind kind, const SegmentLimits& limits,
+            double entry_limit, bool stop_after, double dwell_seconds);
+  // The last queued segment ends at rest.
+  void stopAfterLast();
+  // Last queued segment, or nullptr.
+  const QueuedSegment* lastSegment() const;
+  MotionPrimitive::Kind lastKind() const { return runAt(run_count_ - 1).kind; }
+  bool lastStops() const { return runAt(run_count_ - 1).stop_after; }
+  const SegmentLimits& lastLimits() const { return runAt(run_count_ - 1).limits; }
+
+  Run& frontRun() { return runAt(0); }
+  QueuedSegment& frontSegment() { return segmentAt(0); }
+  bool frontRunIsLast() const { return run_count_ == 1; }
+  // Planned entry velocity of the run after the front run (0 when there is none or the front
+  // run stops).
+  double frontRunExit() const;
+  // Drop the front segment / the (empty) front run.
+  void popSegment();
+  void popRun();
+  // The front run is running: the backward pass leaves it alone.
+  void setFrontRunStarted(bool started) { front_started_ = started; }
+
+ private:
+  QueuedSegment& segmentAt(std::size_t i) { return segments_[(seg_head_ + i) % segments_.size()]; }
+  const QueuedSegment& segmentAt(std::size_t i) const {
+    return segments_[(seg_head_ + i) % segments_.size()];
+  }
+  Run& runAt(std::size_t i) { return runs_[(run_head_ + i) % runs_.size()]; }
+  const Run& runAt(std::size_t i) const { return runs_[(run_head_ + i) % runs_.size()]; }
+  void backwardPass();
+
+  std::vector<QueuedSegment> segments_;
+  std::vector<Run> runs_;
+  std::size_t seg_head_ = 0, segment_count_ = 0;
+  std::size_t run_head_ = 0, run_count_ = 0;
+  bool front_started_ = false;
+  double window_length_ = 0.0;
+  double queued_length_ = 0.0;  // lengths of the segments behind the front one
+};
+
+}  // namespace ncc::vm::motion

@@ -1,0 +1,63 @@
+#pragma once
+// Path geometry of one motion segment, parametrised by path length s in [0, length].
+//
+// A line moves every axis in proportion. An arc moves the two plane axes on a circle around
+// the centre (a spiral when the end radius differs slightly from the start radius, so the end
+// point is met exactly) while every other axis moves linearly with the angle: a helix. The
+// parametrisation is exact for circles and helices (constant speed in s).
+#include <cstdint>
+
+#include "ncc/machine/axes.h"
+
+namespace ncc::vm::motion {
+
+class PathSegment {
+ public:
+  enum class Shape : uint8_t { Line, Arc, Dwell };
+
+  // Straight move over the first `axis_count` axes.
+  static PathSegment line(const AxisValues& from, const AxisValues& to, int axis_count);
+  // Arc/helix in the plane (axis1, axis2) around (cx, cy); counter-clockwise unless `cw`;
+  // start == end on the plane axes is a full turn. Plus `extra_turns` full turns.
+  static PathSegment arc(const AxisValues& from, const AxisValues& to, int axis_count,
+                         int axis1, int axis2, double cx, double cy, bool cw,
+                         uint32_t extra_turns);
+  // Standing still at `at` (a dwell).
+  static PathSegment dwell(const AxisValues& at, int axis_count);
+
+  Shape shape() const { return shape_; }
+  double length() const { return length_; }
+  int axisCount() const { return axis_count_; }
+  const AxisValues& from() const { return from_; }
+  const AxisValues& to() const { return to_; }
+
+  // Position at path length s; s <= 0 gives `from` and s >= length gives `to` bit-for-bit.
+  void position(double s, AxisValues& out) const;
+  // Unit tangent dx/ds at s.
+  void tangent(double s, AxisValues& out) const;
+  // Curvature vector d2x/ds2 at s (zero on lines).
+  void curvature(double s, AxisValues& out) const;
+
+  // Upper bound of |dx_i/ds| over the whole segment, per axis: what projects the path
+  // velocity, acceleration and jerk onto axis i.
+  void maxTangent(AxisValues& out) const;
+  // Arcs: radius (start), and the share of the path speed in the plane (r * sweep / length;
+  // 1 for a plain arc, < 1 for a helix). Lines: 0.
+  double radius() const { return r0_; }
+  double planeShare() const { return plane_share_; }
+
+ private:
+  Shape shape_ = Shape::Dwell;
+  int axis_count_ = 0;
+  AxisValues from_{};
+  AxisValues to_{};
+  AxisValues delta_{};  // to - from (arcs: the non-plane axes only)
+  double length_ = 0.0;
+  int axis1_ = 0, axis2_ = 1;
+  double cx_ = 0.0, cy_ = 0.0;
+  double r0_ = 0.0, r1_ = 0.0;
+  double theta0_ = 0.0, sweep_ = 0.0;  // radians, signed (negative: clockwise)
+  double plane_share_ = 0.0;
+};
+
+}  // namespace ncc::vm::motion

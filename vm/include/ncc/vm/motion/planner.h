@@ -1,0 +1,75 @@
+#pragma once
+// MotionPlanner: the executor's motion primitives in, one setpoint per IPO tick out.
+//
+//   MotionPlanner planner(machine, 1024);
+//   for (uint64_t k = 0;; ++k) {
+//     while (planner.canAccept() && executor.next(event)) planner.accept(event);
+//     if (executor finished) planner.endOfProgram();
+//     if (!planner.setpoint(k, position, info)) break;   // program done
+//   }
+//
+// Real-time discipline: everything is allocated in the constructor; push/accept/setpoint
+// allocate nothing, never throw, and do bounded work (a push: the backward pass over the
+// segments whose plan changes; a tick: at most the queued segments). Deterministic: the same
+// pushes at the same ticks give bit-identical setpoints.
+//
+// Not done in this version (docs/planner.md): G64 corner blending (corners stop), feed
+// overrides, per-axis (non-linear) rapids (run as linear rapids), the in-position check.
+#include <cstddef>
+#include <cstdint>
+
+#include "ncc/machine/axes.h"
+#include "ncc/machine/machine_config.h"
+#include "ncc/vm/events.h"
+#include "ncc/vm/motion/interpolator.h"
+#include "ncc/vm/motion/limits.h"
+#include "ncc/vm/motion/lookahead.h"
+
+namespace ncc::vm::motion {
+
+class MotionPlanner {
+ public:
+  // `window_capacity`: most segments held by the look-ahead (the ring is allocated here).
+  MotionPlanner(const MachineConfig& machine, std::size_t window_capacity);
+
+  // True while pushing more would still change the plan: the ring has room and the queued
+  // path is shorter than the braking distance from top speed.
+  bool canAccept() const { return queue_.wantsMore(); }
+  // True while the ring has room (push succeeds).
+  bool hasRoom() const { return !queue_.full(); }
+
+  // Queues one primitive (its `from` must be where the previous one ended). False when the
+  // ring is full; nothing is queued then.
+  bool push(const MotionPrimitive& motion);
+  // Routes an executor event: motion to push(), S to the spindle speed (feed per rev, dwell
+  // in revolutions), M00/M01/M02/M30 to an exact stop. False only when the ring is full.
+  bool accept(const Event& event);
+  void setSpindleSpeed(double rpm) { spindle_rpm_ = rpm; }
+  // The path comes to rest at the end of the last queued segment (M00/M01).
+  void stop();
+  // No more input: setpoint() returns false once everything queued has run.
+  void endOfProgram() { ended_ = true; }
+
+  // Setpoint of tick k (k increasing by one per call, t = k * ipo_cycle_seconds). Returns
+  // false when the program is done; while waiting for input it holds position and returns
+  // true.
+  bool setpoint(uint64_t k, AxisValues& out, SetpointInfo& info);
+
+  bool finished() const { return ended_ && queue_.empty(); }
+  const AxisLimits& limits() const { return limits_; }
+  std::size_t queued() const { return queue_.size(); }
+
+ private:
+  AxisLimits limits_;
+  LookAhead queue_;
+  Interpolator interpolator_;
+  double spindle_rpm_ = 0.0;
+  bool ended_ = false;
+};
+
+// The look-ahead window length: twice the braking distance from the machine's top path speed
+// (rapid on every axis at once) with the weakest axis' acceleration and jerk, plus a few
+// cycles of travel. Longer windows cannot change the plan.
+double windowLength(const AxisLimits& limits);
+
+}  // namespace ncc::vm::motion

@@ -1,0 +1,55 @@
+#pragma once
+// The VM's servo model (DESIGN.md "Servo model", issue 3, docs/servo.md): per axis a position
+// loop with gain Kv, velocity/torque feed-forward, a speed loop with its equivalent time
+// constant, backlash and pitch-error compensation and mechanics, following-error monitoring
+// and limit counts. Feed it one setpoint per IPO cycle (machine coordinates); it returns the
+// simulated actual positions.
+//
+// Real-time: everything is sized in the constructor; reset() and step() allocate nothing,
+// throw nothing and do a fixed amount of work per configured axis. Deterministic: the same
+// setpoints give bit-identical samples.
+#include <array>
+#include <cstdint>
+
+#include "ncc/machine/machine_config.h"
+#include "ncc/vm/servo/axis_servo.h"
+#include "ncc/vm/servo/servo_monitor.h"
+
+namespace ncc::vm {
+
+struct ServoSample {
+  int64_t tick = 0;              // ticks since reset
+  AxisValues setpoint{};         // what step() was given
+  AxisValues actual{};           // table positions
+  AxisValues following_error{};  // position controller error per axis, mm
+  AxisValues velocity{};         // motor speed, mm/s (deg/s)
+  AxisValues acceleration{};     // mm/s^2 (deg/s^2)
+};
+
+class ServoModel {
+ public:
+  explicit ServoModel(const MachineConfig& machine);
+
+  // At rest at `position` (setpoint = actual, following error 0); clears alarm and counts.
+  void reset(const AxisValues& position);
+  // One IPO cycle. Axes beyond the machine's are ignored (their sample entries stay 0).
+  const ServoSample& step(const AxisValues& setpoint);
+
+  const ServoSample& sample() const { return sample_; }
+  int axisCount() const { return axis_count_; }
+  // The first alarm since reset (code 0: none). The model keeps running after it: stopping
+  // is the VM's decision.
+  const ServoAlarm& alarm() const { return alarm_; }
+  const LimitViolations& violations(int axis) const { return violations_[axis]; }
+
+ private:
+  int axis_count_ = 0;
+  std::array<AxisServo, kMaxAxes> axes_{};
+  std::array<AxisMonitor, kMaxAxes> monitors_{};
+  std::array<LimitViolations, kMaxAxes> violations_{};
+  ServoSample sample_;
+  ServoAlarm alarm_;
+  int64_t next_tick_ = 0;
+};
+
+}  // namespace ncc::vm

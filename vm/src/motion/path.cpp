@@ -1,0 +1,135 @@
+#include "ncc/vm/motion/path.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+namespace ncc::vm::motion {
+
+PathSegment PathSegment::line(const AxisValues& from, const AxisValues& to, int axis_count) {
+  PathSegment p;
+  p.shape_ = Shape::Line;
+  p.axis_count_ = axis_count;
+  p.from_ = from;
+  p.to_ = to;
+  double sum = 0.0;
+  for (int i = 0; i < axis_count; ++i) {
+    p.delta_[i] = to[i] - from[i];
+    sum += p.delta_[i] * p.delta_[i];
+  }
+  p.length_ = std::sqrt(sum);
+  return p;
+}
+
+PathSegment PathSegment::arc(const AxisValues& from, const AxisValues& to, int axis_count,
+                             int axis1, int axis2, double cx, double cy, bool cw,
+                             uint32_t extra_turns) {
+  PathSegment p;
+  p.shape_ = Shape::Arc;
+  p.axis_count_ = axis_count;
+  p.from_ = from;
+  p.to_ = to;
+  p.axis1_ = axis1;
+  p.axis2_ = axis2;
+  p.cx_ = cx;
+  p.cy_ = cy;
+  const double x0 = from[axis1] - cx, y0 = from[axis2] - cy;
+  const double x1 = to[axis1] - cx, y1 = to[axis2] - cy;
+  p.r0_ = std::hypot(x0, y0);
+  p.r1_ = std::hypot(x1, y1);
+  if (p.r0_ == 0.0 || p.r1_ == 0.0) return line(from, to, axis_count);  // degenerate: no circle
+  p.theta0_ = std::atan2(y0, x0);
+  constexpr double kTwoPi = 2.0 * std::numbers::pi;
+  double sweep = std::atan2(y1, x1) - p.theta0_;
+  // Counter-clockwise sweeps are in (0, 2pi], clockwise in [-2pi, 0): equal angles are a turn.
+  if (cw) {
+    if (sweep >= 0.0) sweep -= kTwoPi;
+  } else {
+    if (sweep <= 0.0) sweep += kTwoPi;
+  }
+  sweep += (cw ? -kTwoPi : kTwoPi) * static_cast<double>(extra_turns);
+  p.sweep_ = sweep;
+  double sum = 0.0;
+  for (int i = 0; i < axis_count; ++i) {
+    if (i == axis1 || i == axis2) continue;
+    p.delta_[i] = to[i] - from[i];
+    sum += p.delta_[i] * p.delta_[i];
+  }
+  const double plane = 0.5 * (p.r0_ + p.r1_) * std::abs(sweep);
+  p.length_ = std::sqrt(plane * plane + sum);
+  p.plane_share_ = plane / p.length_;
+  return p;
+}
+
+PathSegment PathSegment::dwell(const AxisValues& at, int axis_count) {
+  PathSegment p;
+  p.shape_ = Shape::Dwell;
+  p.axis_count_ = axis_count;
+  p.from_ = at;
+  p.to_ = at;
+  return p;
+}
+
+void PathSegment::position(double s, AxisValues& out) const {
+  if (shape_ == Shape::Dwell || s <= 0.0) {
+    out = from_;
+    return;
+  }
+  if (s >= length_) {
+    out = to_;
+    return;
+  }
+  const double f = s / length_;
+  out = from_;
+  for (int i = 0; i < axis_count_; ++i) out[i] = from_[i] + delta_[i] * f;
+  if (shape_ == Shape::Arc) {
+    const double theta = theta0_ + sweep_ * f;
+    const double r = r0_ + (r1_ - r0_) * f;
+    out[axis1_] = cx_ + r * std::cos(theta);
+    out[axis2_] = cy_ + r * std::sin(theta);
+  }
+}
+
+void PathSegment::tangent(double s, AxisValues& out) const {
+  out = AxisValues{};
+  if (shape_ == Shape::Dwell || length_ == 0.0) return;
+  for (int i = 0; i < axis_count_; ++i) out[i] = delta_[i] / length_;
+  if (shape_ == Shape::Arc) {
+    const double f = std::clamp(s / length_, 0.0, 1.0);
+    const double theta = theta0_ + sweep_ * f;
+    const double r = r0_ + (r1_ - r0_) * f;
+    const double dr = (r1_ - r0_) / length_, dtheta = sweep_ / length_;
+    out[axis1_] = dr * std::cos(theta) - r * std::sin(theta) * dtheta;
+    out[axis2_] = dr * std::sin(theta) + r * std::cos(theta) * dtheta;
+    double n = 0.0;
+    for (int i = 0; i < axis_count_; ++i) n += out[i] * out[i];
+    n = std::sqrt(n);
+    for (int i = 0; i < axis_count_; ++i) out[i] /= n;
+  }
+}
+
+void PathSegment::curvature(double s, AxisValues& out) const {
+  out = AxisValues{};
+  if (shape_ != Shape::Arc) return;
+  const double f = std::clamp(s / length_, 0.0, 1.0);
+  const double theta = theta0_ + sweep_ * f;
+  const double r = r0_ + (r1_ - r0_) * f;
+  const double w = sweep_ / length_;
+  out[axis1_] = -r * w * w * std::cos(theta);
+  out[axis2_] = -r * w * w * std::sin(theta);
+}
+
+void PathSegment::maxTangent(AxisValues& out) const {
+  out = AxisValues{};
+  if (shape_ == Shape::Dwell || length_ == 0.0) return;
+  for (int i = 0; i < axis_count_; ++i) out[i] = std::abs(delta_[i]) / length_;
+  if (shape_ == Shape::Arc) {
+    // The plane tangent turns: bound each plane axis by the whole plane speed share (plus the
+    // spiral's radial part).
+    const double bound = plane_share_ + std::abs(r1_ - r0_) / length_;
+    out[axis1_] = std::min(bound, 1.0);
+    out[axis2_] = std::min(bound, 1.0);
+  }
+}
+
+}  // namespace ncc::vm::motion

@@ -1,0 +1,222 @@
+#include "ncc/vm/motion/scurve.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace ncc::vm::motion {
+namespace {
+
+// Velocity gained by one jerk-up/jerk-down pair that just touches a_max: a_max^2 / j_max.
+// Below it a ramp is triangular in acceleration (a_max not reached).
+double fullJerkVelocity(double a_max, double j_max) { return a_max * a_max / j_max; }
+
+}  // namespace
+
+VelocityRamp VelocityRamp::make(double v_from, double v_to, double a_max, double j_max) {
+  return fromGain(v_from, v_to - v_from, a_max, j_max);
+}
+
+VelocityRamp VelocityRamp::fromGain(double v_from, double dv, double a_max, double j_max) {
+  VelocityRamp r;
+  r.v_from = v_from;
+  r.v_to = v_from;
+  if (!(dv > 0.0)) return r;
+  r.v_to = v_from + dv;
+  r.jerk = j_max;
+  if (dv >= fullJerkVelocity(a_max, j_max)) {
+    r.t_jerk = a_max / j_max;
+    r.t_accel = dv / a_max - r.t_jerk;
+  } else {
+    r.t_jerk = std::sqrt(dv / j_max);
+  }
+  r.duration = 2.0 * r.t_jerk + r.t_accel;
+  // (v_from + v_to) / 2 * duration, with the gain kept exact.
+  r.distance = (v_from + 0.5 * dv) * r.duration;
+  return r;
+}
+
+PathState VelocityRamp::at(double tau) const {
+  tau = std::clamp(tau, 0.0, duration);
+  const double j = jerk;
+  const double peak_a = j * t_jerk;
+  if (tau <= t_jerk) {  // jerk +j from rest acceleration
+    return {v_from * tau + j * tau * tau * tau / 6.0, v_from + 0.5 * j * tau * tau, j * tau, j};
+  }
+  if (tau <= t_jerk + t_accel) {  // constant acceleration
+    const double u = tau - t_jerk;
+    const double v1 = v_from + 0.5 * j * t_jerk * t_jerk;
+    const double s1 = v_from * t_jerk + j * t_jerk * t_jerk * t_jerk / 6.0;
+    return {s1 + v1 * u + 0.5 * peak_a * u * u, v1 + peak_a * u, peak_a, 0.0};
+  }
+  // Jerk -j down to zero acceleration: mirror of the first phase about the ramp end, so the
+  // end state (distance, v_to, a = 0) is exact.
+  const double r = duration - tau;
+  return {distance - (v_to * r - j * r * r * r / 6.0), v_to - 0.5 * j * r * r, j * r, -j};
+}
+
+double rampDistance(double v1, double v2, double a_max, double j_max) {
+  return VelocityRamp::make(std::min(v1, v2), std::max(v1, v2), a_max, j_max).distance;
+}
+
+double reachableGain(double v, double length, double a_max, double j_max) {
+  if (length <= 0.0) return 0.0;
+  const double b = fullJerkVelocity(a_max, j_max);
+  // Distance of the ramp v -> v + b (the largest triangular one): (2v + b) * b / a.
+  const double d_full = (2.0 * v + b) * b / a_max;
+  if (length <= d_full) {
+    // Triangular: (2v + x^2) x = L sqrt(j) with x = sqrt(w - v), i.e. x^3 + p x + q = 0,
+    // p = 2v >= 0, q = -L sqrt(j) < 0: one real root. Cardano with u^3 = -q/2 + sqrt(D),
+    // w = p / (3u); x = u - w = -q / (u^2 + u w + w^2) avoids cancellation.
+    const double p = 2.0 * v;
+    const double q = -length * std::sqrt(j_max);
+    const double disc = 0.25 * q * q + p * p * p / 27.0;
+    const double u = std::cbrt(-0.5 * q + std::sqrt(disc));
+    const double w = p / (3.0 * u);
+    const double x = -q / (u * u + u * w + w * w);
+    return x * x;
+  }
+  // Trapezoidal: (w^2 - v^2) / (2a) + (v + w) a / (2j) = L, i.e. w^2 + b w + c = 0 with
+  // c = v b - v^2 - 2 a L < 0. Positive root in the cancellation-free form.
+  const double c = v * b - v * v - 2.0 * a_max * length;
+  return -2.0 * c / (b + std::sqrt(b * b - 4.0 * c)) - v;
+}
+
+double reachableVelocity(double v, double length, double a_max, double j_max) {
+  return v + reachableGain(v, length, a_max, j_max);
+}
+
+namespace {
+
+// Distance of v0 -> vp -> v1 without cruise; increasing in vp for vp >= max(v0, v1).
+double peakDistance(double vp, double v0, double v1, double a_max, double j_max) {
+  return rampDistance(v0, vp, a_max, j_max) + rampDistance(v1, vp, a_max, j_max);
+}
+
+// d/dw of rampDistance(v, w) for w > v.
+double rampDistanceSlope(double v, double w, double a_max, double j_max) {
+  const double dv = w - v;
+  if (dv >= fullJerkVelocity(a_max, j_max)) return w / a_max + 0.5 * a_max / j_max;
+  if (dv <= 0.0) return INFINITY;
+  const double root = std::sqrt(dv / j_max);
+  return root + (v + w) / (2.0 * j_max * root);
+}
+
+// The peak velocity vp in [lo, hi] with peakDistance(vp) = L, given
+// peakDistance(lo) <= L < peakDistance(hi). Returns a vp with peakDistance(vp) <= L (the
+// remainder becomes a short cruise).
+double solvePeak(double length, double v0, double v1, double lo, double hi, double a_max,
+                 double j_max) {
+  const double b = fullJerkVelocity(a_max, j_max);
+  auto fits = [&](double vp) {
+    return vp >= lo && vp <= hi && peakDistance(vp, v0, v1, a_max, j_max) <= length;
+  };
+  // Equal end velocities: the profile is symmetric, each half covers L/2.
+  if (v0 == v1) {
+    const double vp = std::min(reachableVelocity(v0, 0.5 * length, a_max, j_max), hi);
+    if (fits(vp)) return vp;
+  }
+  // Both ramps reach a_max: vp^2 + b vp + a * C = 0 (quadratic, docs/planner.md).
+  {
+    const double c = a_max * (-(v0 * v0 + v1 * v1) / (2.0 * a_max) +
+                              (v0 + v1) * a_max / (2.0 * j_max) - length);
+    if (c < 0.0) {
+      const double vp = -2.0 * c / (b + std::sqrt(b * b - 4.0 * c));
+      if (vp >= std::max(v0, v1) + b && fits(vp)) return vp;
+    }
+  }
+  // Mixed cases: Newton on a monotone function, safeguarded by bisection; bounded steps.
+  double x = 0.5 * (lo + hi);
+  for (int i = 0; i < 100 && hi - lo > 1e-13 * hi; ++i) {
+    const double f = peakDistance(x, v0, v1, a_max, j_max) - length;
+    if (f <= 0.0) lo = x; else hi = x;
+    if (f == 0.0) break;
+    const double slope = rampDistanceSlope(v0, x, a_max, j_max) + rampDistanceSlope(v1, x, a_max, j_max);
+    double next = x - f / slope;
+    if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
+    x = next;
+  }
+  return lo;
+}
+
+// Lowest velocity reachable braking from v0 within length (only for the error report).
+double lowestReachable(double v0, double length, double a_max, double j_max) {
+  double lo = 0.0, hi = v0;
+  for (int i = 0; i < 100; ++i) {
+    const double mid = 0.5 * (lo + hi);
+    if (rampDistance(mid, v0, a_max, j_max) <= length) hi = mid; else lo = mid;
+  }
+  return hi;
+}
+
+}  // namespace
+
+SCurveProfile planProfile(double length, double v_start, double v_end, double v_max,
+                          double a_max, double j_max) {
+  SCurveProfile p;
+  v_start = std::max(v_start, 0.0);
+  v_end = std::max(v_end, 0.0);
+  if (!(length > 0.0)) {
+    p.v_start = p.v_peak = p.v_end = v_start;
+    p.end_reachable = v_end == v_start;
+    return p;
+  }
+  p.length = length;
+  double up_gain = -1.0;  // set when v_end is the reachable maximum: ramp from the exact gain
+  if (v_end > v_start) {
+    const double gain = reachableGain(v_start, length, a_max, j_max);
+    if (v_end - v_start > gain) {
+      v_end = v_start + gain;
+      up_gain = gain;
+      p.end_reachable = false;
+    }
+  } else if (v_end < v_start) {
+    if (reachableVelocity(v_end, length, a_max, j_max) < v_start) {
+      v_end = lowestReachable(v_start, length, a_max, j_max);
+      p.end_reachable = false;
+    }
+  }
+  const double lo = std::max(v_start, v_end);
+  const double hi = std::max(v_max, lo);
+  double vp = hi;
+  if (peakDistance(hi, v_start, v_end, a_max, j_max) > length) {
+    vp = peakDistance(lo, v_start, v_end, a_max, j_max) >= length
+             ? lo
+             : solvePeak(length, v_start, v_end, lo, hi, a_max, j_max);
+  }
+  p.v_start = v_start;
+  p.v_end = v_end;
+  p.v_peak = vp;
+  p.accel = (up_gain >= 0.0 && vp == v_end) ? VelocityRamp::fromGain(v_start, up_gain, a_max, j_max)
+                                             : VelocityRamp::make(v_start, vp, a_max, j_max);
+  p.decel = VelocityRamp::make(v_end, vp, a_max, j_max);
+  if (p.accel.distance + p.decel.distance > length) {
+    // A velocity gain far below the velocities themselves carries their rounding, so the
+    // ramps may overshoot L slightly. Rebuild the longer ramp from the distance left for it:
+    // s stays continuous and the velocity absorbs the rounding (an ulp of v).
+    if (p.decel.distance >= p.accel.distance) {
+      p.decel = VelocityRamp::fromGain(
+          v_end, reachableGain(v_end, length - p.accel.distance, a_max, j_max), a_max, j_max);
+    } else {
+      p.accel = VelocityRamp::fromGain(
+          v_start, reachableGain(v_start, length - p.decel.distance, a_max, j_max), a_max, j_max);
+    }
+  }
+  const double rest = length - p.accel.distance - p.decel.distance;
+  p.t_cruise = (vp > 0.0 && rest > 0.0) ? rest / vp : 0.0;
+  p.duration = p.accel.duration + p.t_cruise + p.decel.duration;
+  return p;
+}
+
+PathState SCurveProfile::at(double t) const {
+  if (t <= 0.0) return {0.0, v_start, 0.0, accel.duration > 0.0 ? accel.jerk : 0.0};
+  if (t >= duration) return {length, v_end, 0.0, 0.0};
+  if (t < accel.duration) return accel.at(t);
+  const double t_decel = accel.duration + t_cruise;
+  if (t < t_decel) return {accel.distance + v_peak * (t - accel.duration), v_peak, 0.0, 0.0};
+  // Braking: the decel ramp backwards in time from the end. s = L - S(r), v = S'(r),
+  // a = -S''(r), j = S'''(r) with r = duration - t.
+  const PathState back = decel.at(duration - t);
+  return {length - back.s, back.v, -back.a, back.j};
+}
+
+}  // namespace ncc::vm::motion
