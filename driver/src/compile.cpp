@@ -28,7 +28,10 @@ ir::AxisNames axisNames(const MachineConfig& machine) {
   return names;
 }
 
-// Reads blocks and lowers them until the end of input or of the program (M02/M30).
+// Reads blocks and lowers them until the end of the program. After M02/M30 the rest of the file
+// is still read, so its syntax errors are reported (a FANUC file often carries subprograms
+// there), but nothing more is lowered. A '%' after the program's first block is the end of the
+// record (the tape ends there): nothing after it is read, and text there draws a warning.
 void lowerProgram(Session& session, ir::BlockSink& entry) {
   frontend::BlockReader reader(session.sources(), session.mainFile(), session.diagnostics(),
                                readerOptionsFor(session.dialect()));
@@ -37,10 +40,25 @@ void lowerProgram(Session& session, ir::BlockSink& entry) {
   options.machine = &session.machine();
   options.program_dir = session.programDir();
   passes::Lowering lowering(options, session.diagnostics(), entry);
+  bool program_ended = false;
+  bool seen_content = false;
   while (std::optional<ast::Block> block = reader.next()) {
+    if (block->percent && seen_content) {
+      while (std::optional<ast::Block> after = reader.next()) {
+        if (!after->empty()) {
+          session.diagnostics().warning(
+              "NCC0020", after->loc,
+              "text after the closing '%' is not part of the program and is ignored");
+          break;
+        }
+      }
+      break;
+    }
+    seen_content = seen_content || !block->empty();
+    if (program_ended) continue;
     passes::LowerResult result = lowering.lower(*block);
     if (result.switch_language) reader.setLanguage(*result.switch_language);
-    if (result.program_end) break;
+    program_ended = result.program_end;
   }
   lowering.finish();
 }
@@ -83,35 +101,35 @@ bool emitBytecode(Session& session, std::ostream& out) {
   return ok && writer.ok() && !session.diagnostics().hasErrors();
 }
 
-bool compileToFile(Session& session, const std::filesystem::path& out) {
+CompileFileResult compileToFile(Session& session, const std::filesystem::path& out) {
+  std::error_code ec;
+  if (std::filesystem::equivalent(out, session.input(), ec)) {
+    return {CompileFileResult::OutputError,
+            absl::StrCat("refusing to write the bytecode over its own source '", out.string(), "'")};
+  }
   std::filesystem::path temp = out;
   temp += ".tmp";
   bool ok = false;
   {
     std::ofstream file(temp, std::ios::binary | std::ios::trunc);
-    if (!file) {
-      session.diagnostics().error("NCC0010", {}, absl::StrCat("cannot write '", temp.string(), "'"));
-      return false;
-    }
+    if (!file) return {CompileFileResult::OutputError, absl::StrCat("cannot write '", temp.string(), "'")};
     ok = emitBytecode(session, file);
     file.flush();
     if (ok && !file) {
-      session.diagnostics().error("NCC0010", {}, absl::StrCat("write error on '", temp.string(), "'"));
-      ok = false;
+      std::filesystem::remove(temp, ec);
+      return {CompileFileResult::OutputError, absl::StrCat("write error on '", temp.string(), "'")};
     }
   }
-  std::error_code ec;
   if (!ok) {
     std::filesystem::remove(temp, ec);
-    return false;
+    return {CompileFileResult::ProgramErrors, {}};
   }
   std::filesystem::rename(temp, out, ec);
   if (ec) {
     std::filesystem::remove(temp, ec);
-    session.diagnostics().error("NCC0010", {}, absl::StrCat("cannot create '", out.string(), "'"));
-    return false;
+    return {CompileFileResult::OutputError, absl::StrCat("cannot create '", out.string(), "'")};
   }
-  return true;
+  return {CompileFileResult::Ok, {}};
 }
 
 }  // namespace ncc::driver

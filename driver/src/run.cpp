@@ -120,10 +120,11 @@ void account(RunSummary& s, const vm::MotionPrimitive& m, const MachineConfig& m
 }  // namespace
 
 RunResult runProgram(const bytecode::Program& program, const MachineConfig& machine,
-                     const EventHandler& on_event) {
+                     const EventHandler& on_event, uint64_t max_steps) {
   RunResult result;
   result.summary.final_position = machine.start_position;
   vm::Executor executor(program, machine);
+  executor.setStepLimit(max_steps);
   vm::Event event;
   double spindle_rpm = 0.0;
   while (executor.next(event)) {

@@ -14,8 +14,10 @@ bool dialectSupported(Dialect d) {
 std::optional<SetupError> Session::open(const std::filesystem::path& input,
                                         const SessionOptions& options) {
   std::error_code ec;
-  if (!std::filesystem::is_regular_file(input, ec))
+  if (!std::filesystem::exists(input, ec))
     return SetupError{absl::StrCat("cannot read '", input.string(), "': no such file")};
+  if (!std::filesystem::is_regular_file(input, ec))
+    return SetupError{absl::StrCat("cannot read '", input.string(), "': not a regular file")};
   input_ = input;
   dialect_ = options.dialect.value_or(dialectFromFileName(input.filename().string()));
   if (!dialectSupported(dialect_)) {

@@ -48,6 +48,10 @@ void DiagnosticEngine::print(std::ostream& out) const {
     if (!sources_ || d.location.file == 0 || d.location.line == 0) continue;
     std::string line = sources_->lineText(d.location.file, d.location.line);
     if (line.empty()) continue;
+    // Control bytes (NUL, CR, ESC ...) would garble the terminal; one '?' each keeps the caret
+    // in place. Tabs stay, and bytes >= 0x80 stay for UTF-8 comments.
+    for (char& c : line)
+      if ((static_cast<unsigned char>(c) < 0x20 && c != '\t') || c == 0x7F) c = '?';
     out << "  " << line << '\n';
     if (d.location.column >= 1) {
       std::string caret(d.location.column - 1, ' ');

@@ -16,6 +16,11 @@ GOOD = "N10 G90 G00 X10. Y5.\nN20 G01 Z-2. F100.\nN30 G02 X20. Y5. R5.\nN40 G04 
 BAD = "N10 G90 G00 X10.\nN20 G01 X20. Q@\nN30 G01 Y5.\nN40 M30\n"
 
 
+def slurp(path, mode="r"):
+    with open(path, mode) as f:
+        return f.read()
+
+
 def ncc(*args, cwd=None):
     return subprocess.run([NCC, *args], capture_output=True, text=True, timeout=60, cwd=cwd)
 
@@ -80,8 +85,7 @@ class CliTest(unittest.TestCase):
         out = os.path.join(self.dir, "a.ncb")
         proc = ncc("compile", good, "-o", out)
         self.assertEqual(proc.returncode, 0, proc.stderr)
-        with open(out, "rb") as f:
-            self.assertEqual(f.read(4), b"NCCB")
+        self.assertEqual(slurp(out, "rb")[:4], b"NCCB")
         bad = self.write("bad.nc", BAD)
         bad_out = os.path.join(self.dir, "bad.ncb")
         self.assertEqual(ncc("compile", bad, "-o", bad_out).returncode, 1)
@@ -92,10 +96,10 @@ class CliTest(unittest.TestCase):
         good = self.write("a.nc", GOOD)
         out = os.path.join(self.dir, "a.ncb")
         self.assertEqual(ncc("compile", good, "-o", out).returncode, 0)
-        before = open(out, "rb").read()
+        before = slurp(out, "rb")
         self.write("a.nc", BAD)
         self.assertEqual(ncc("compile", good, "-o", out).returncode, 1)
-        self.assertEqual(open(out, "rb").read(), before)
+        self.assertEqual(slurp(out, "rb"), before)
 
     def test_emit_ast_and_ir(self):
         good = self.write("a.nc", GOOD)
@@ -132,7 +136,7 @@ class CliTest(unittest.TestCase):
         out = os.path.join(self.dir, "moves.jsonl")
         proc = ncc("run", good, "--emit=moves", "-o", out)
         self.assertEqual(proc.returncode, 0)
-        self.assertEqual(len(open(out).read().splitlines()), 4)
+        self.assertEqual(len(slurp(out).splitlines()), 4)
 
     def test_run_vars_is_a_json_object(self):
         proc = ncc("run", self.write("a.nc", GOOD), "--emit=vars")
@@ -153,7 +157,7 @@ class CliTest(unittest.TestCase):
         good = self.write("a.nc", GOOD)
         out = os.path.join(self.dir, "a.ncb")
         self.assertEqual(ncc("compile", good, "-o", out).returncode, 0)
-        data = bytearray(open(out, "rb").read())
+        data = bytearray(slurp(out, "rb"))
         data[len(data) // 2] ^= 0xFF
         data = data[: len(data) - 7]
         with open(out, "wb") as f:
@@ -178,6 +182,61 @@ class CliTest(unittest.TestCase):
         self.assertEqual(proc.returncode, 2)
         self.assertIn("bogus", proc.stderr)
         self.assertIn("m.toml:3:", proc.stderr)
+
+    def test_closing_percent_ends_the_program_and_warns_about_what_follows(self):
+        prog = self.write("p.nc", "%\nO0001\nG00 X1.\n%\nG00 X50.\nM30\n")
+        proc = ncc("run", prog, "--emit=moves")
+        self.assertEqual(proc.returncode, 0, proc.stderr)
+        moves = [json.loads(l) for l in proc.stdout.splitlines()]
+        self.assertEqual([m["to"]["X"] for m in moves], [1.0])
+        self.assertRegex(proc.stderr, r"p\.nc:5:1: warning\[NCC0020\]: text after the closing '%'")
+
+    def test_syntax_after_program_end_is_still_checked(self):
+        prog = self.write("after.nc", "G00 X1.\nM30\nG00 X@@@\n")
+        proc = ncc("check", prog)
+        self.assertEqual(proc.returncode, 1)
+        self.assertRegex(proc.stderr, r"after\.nc:3:\d+: error\[NCC1001\]")
+
+    def test_compile_refuses_to_overwrite_its_source(self):
+        good = self.write("same.nc", GOOD)
+        proc = ncc("compile", good, "-o", good)
+        self.assertEqual(proc.returncode, 2)
+        self.assertIn("its own source", proc.stderr)
+        self.assertEqual(slurp(good), GOOD)
+
+    def test_unwritable_output_is_a_usage_error_everywhere(self):
+        good = self.write("a.nc", GOOD)
+        missing = os.path.join(self.dir, "no-such-dir", "out")
+        for args in (["compile", good, "-o", missing], ["compile", good, "--emit=ir", "-o", missing],
+                     ["run", good, "--emit=moves", "-o", missing]):
+            proc = ncc(*args)
+            self.assertEqual(proc.returncode, 2, (args, proc.stderr))
+            self.assertIn("cannot write", proc.stderr)
+
+    def test_directory_input_is_not_a_regular_file(self):
+        proc = ncc("check", self.dir)
+        self.assertEqual(proc.returncode, 2)
+        self.assertIn("not a regular file", proc.stderr)
+
+    def test_control_bytes_in_echoed_source_lines_are_replaced(self):
+        path = os.path.join(self.dir, "ctl.nc")
+        with open(path, "wb") as f:
+            f.write(b"G00 X1.\x1b[2J Y\x00\n")
+        proc = ncc("check", path)
+        self.assertEqual(proc.returncode, 1)
+        self.assertNotIn("\x1b", proc.stderr)
+        self.assertNotIn("\x00", proc.stderr)
+        self.assertIn("  G00 X1.?[2J Y?", proc.stderr)
+
+    def test_instruction_budget_stops_a_run_with_an_alarm_and_no_file(self):
+        good = self.write("a.nc", GOOD)
+        out = os.path.join(self.dir, "moves.jsonl")
+        proc = ncc("run", good, "--emit=moves", "-o", out, "--max-steps", "2")
+        self.assertEqual(proc.returncode, 3, proc.stderr)
+        self.assertIn("error[NCC7204]", proc.stderr)
+        self.assertFalse(os.path.exists(out))
+        self.assertFalse(os.path.exists(out + ".tmp"))
+        self.assertEqual(ncc("run", good, "--emit=moves", "-o", out, "--max-steps", "0").returncode, 0)
 
 
 if __name__ == "__main__":

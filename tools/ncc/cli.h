@@ -26,11 +26,6 @@ struct CommonOptions {
 std::optional<int> openSession(driver::Session& session, const std::filesystem::path& input,
                                const CommonOptions& common);
 
-// Writes finished text output to `path`, or to stdout when `path` is empty. Output is only
-// written once complete, so a failed command never leaves a partial file. Returns false (after
-// printing why) when the file cannot be written.
-bool writeOutput(const std::string& path, const std::string& text);
-
 // Prints the session's diagnostics to stderr.
 void printDiagnostics(driver::Session& session);
 

@@ -1,8 +1,8 @@
 // `ncc compile IN -o OUT.ncb [--emit=ast|ir|bytecode]` and `ncc check IN`.
 #include <iostream>
-#include <sstream>
 
 #include "cli.h"
+#include "pending_output.h"
 #include "ncc/driver/compile.h"
 
 namespace ncc::cli {
@@ -23,12 +23,20 @@ int runCompile(const CompileArgs& args) {
   if (args.emit == "bytecode") {
     std::filesystem::path out = args.output;
     if (out.empty()) out = std::filesystem::path(args.input).replace_extension(".ncb");
-    ok = driver::compileToFile(session, out);
+    driver::CompileFileResult result = driver::compileToFile(session, out);
+    if (result.status == driver::CompileFileResult::OutputError) {
+      printDiagnostics(session);
+      std::cerr << "ncc: error: " << result.output_error << '\n';
+      return kUsage;
+    }
+    ok = result.status == driver::CompileFileResult::Ok;
   } else {
-    // Text forms go to -o FILE or stdout; a failed compile leaves no file behind.
-    std::ostringstream text;
-    ok = args.emit == "ast" ? driver::emitAst(session, text) : driver::emitIr(session, text);
-    if (ok && !writeOutput(args.output, text.str())) return kUsage;
+    // Text forms stream to -o FILE or stdout; a failed compile leaves no file behind.
+    PendingOutput output;
+    if (!output.open(args.output)) return kUsage;
+    ok = args.emit == "ast" ? driver::emitAst(session, output.stream())
+                            : driver::emitIr(session, output.stream());
+    if (ok && !output.commit()) return kUsage;
   }
   printDiagnostics(session);
   return ok ? kOk : kProgramError;

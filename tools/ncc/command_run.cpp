@@ -1,10 +1,10 @@
 // `ncc run IN [--emit=moves|vars] [-o FILE]` (IN is a source program or a .ncb file) and
 // `ncc dis FILE.ncb`.
 #include <iostream>
-#include <sstream>
 
 #include "absl/strings/str_format.h"
 #include "cli.h"
+#include "pending_output.h"
 #include "ncc/bytecode/disassembler.h"
 #include "ncc/driver/json_output.h"
 #include "ncc/driver/run.h"
@@ -18,6 +18,7 @@ struct RunArgs {
   std::string input;
   std::string output;
   std::string emit = "summary";
+  uint64_t max_steps = driver::kDefaultMaxSteps;
 };
 
 void printSummary(std::ostream& out, const driver::RunSummary& s, const bytecode::Program& program,
@@ -51,26 +52,26 @@ int runRun(const RunArgs& args) {
   printDiagnostics(session);  // warnings of the compile
   session.diagnostics().clear();
 
-  // Output is assembled in memory and written only after the run, so a failed run leaves no
-  // partial file behind.
-  std::ostringstream emitted;
+  // Moves stream out as the VM produces them (memory stays flat on long programs); a file
+  // appears only when the run completes.
+  PendingOutput output;
+  if (!output.open(args.output)) return kUsage;
   driver::EventHandler on_event;
   if (args.emit == "moves") {
     on_event = [&](const vm::Event& e) {
-      if (e.kind == vm::Event::Kind::Motion) driver::writeMoveJson(emitted, e.motion, program);
+      if (e.kind == vm::Event::Kind::Motion) driver::writeMoveJson(output.stream(), e.motion, program);
     };
   }
-  driver::RunResult result = driver::runProgram(program, session.machine(), on_event);
-  if (args.emit == "vars") driver::writeVariablesJson(emitted, result.variables);
+  driver::RunResult result = driver::runProgram(program, session.machine(), on_event, args.max_steps);
   if (result.alarm) {
+    output.discard();
     reportAlarm(session, program, *result.alarm);
     printDiagnostics(session);
     return kRuntimeAlarm;
   }
-  if (args.emit == "summary") {
-    printSummary(args.output.empty() ? std::cout : emitted, result.summary, program, result.alarm);
-  }
-  if (!writeOutput(args.output, emitted.str())) return kUsage;
+  if (args.emit == "vars") driver::writeVariablesJson(output.stream(), result.variables);
+  if (args.emit == "summary") printSummary(output.stream(), result.summary, program, result.alarm);
+  if (!output.commit()) return kUsage;
   if (!args.output.empty() && args.emit != "summary")
     printSummary(std::cout, result.summary, program, result.alarm);
   return kOk;
@@ -103,6 +104,10 @@ void addRunCommand(CLI::App& app, int& exit_code) {
                   "line; vars: JSON object of every non-vacant variable at the end")
       ->check(CLI::IsMember({"summary", "moves", "vars"}));
   cmd->add_option("-o,--output", args->output, "write the emitted output here (default: stdout)");
+  cmd->add_option("--max-steps", args->max_steps,
+                  "stop with alarm NCC7204 after this many VM instructions (0: no limit); guards "
+                  "against programs that loop forever")
+      ->capture_default_str();
   args->common.addTo(*cmd);
   cmd->callback([args, &exit_code] { exit_code = runRun(*args); });
 }

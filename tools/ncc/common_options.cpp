@@ -1,4 +1,3 @@
-#include <fstream>
 #include <iostream>
 
 #include "absl/strings/str_cat.h"
@@ -27,20 +26,6 @@ std::optional<std::string> CommonOptions::toSessionOptions(driver::SessionOption
   if (!machine_file.empty()) out.machine_file = machine_file;
   if (!program_dir.empty()) out.program_dir = program_dir;
   return std::nullopt;
-}
-
-bool writeOutput(const std::string& path, const std::string& text) {
-  if (path.empty()) {
-    std::cout << text;
-    return true;
-  }
-  std::ofstream file(path, std::ios::binary | std::ios::trunc);
-  file << text;
-  if (!file) {
-    std::cerr << "ncc: error: cannot write '" << path << "'\n";
-    return false;
-  }
-  return true;
 }
 
 void printDiagnostics(driver::Session& session) { session.diagnostics().print(std::cerr); }

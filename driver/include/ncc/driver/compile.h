@@ -3,6 +3,7 @@
 // Everything streams: memory does not grow with program length.
 #include <filesystem>
 #include <ostream>
+#include <string>
 
 #include "ncc/driver/session.h"
 #include "ncc/ir/ir.h"
@@ -25,6 +26,12 @@ bool emitBytecode(Session& session, std::ostream& out);
 
 // Bytecode into a file. Writes `out.tmp` and renames it over `out` only on success, so a
 // failed compile never leaves a partial output file (an existing `out` is left untouched).
-bool compileToFile(Session& session, const std::filesystem::path& out);
+// An output that is the input itself, or cannot be written, is an OutputError (a usage
+// problem, with its message), not a program error.
+struct CompileFileResult {
+  enum Status { Ok, ProgramErrors, OutputError } status = Ok;
+  std::string output_error;
+};
+CompileFileResult compileToFile(Session& session, const std::filesystem::path& out);
 
 }  // namespace ncc::driver

@@ -41,8 +41,13 @@ struct RunResult {
 
 using EventHandler = std::function<void(const vm::Event&)>;
 
+// A run stops with alarm NCC7204 after this many VM instructions unless told otherwise: a
+// program that loops forever must not hang the command line. 100 million instructions are far
+// more than a 1,000,000-block program executes.
+inline constexpr uint64_t kDefaultMaxSteps = 100'000'000;
+
 RunResult runProgram(const bytecode::Program& program, const MachineConfig& machine,
-                     const EventHandler& on_event);
+                     const EventHandler& on_event, uint64_t max_steps = kDefaultMaxSteps);
 
 // Path length of one motion primitive (arcs and helices exactly).
 double motionLength(const vm::MotionPrimitive& motion, int axis_count);
