@@ -4,6 +4,7 @@
 Run by ctest as: test_cli.py NCC_BINARY
 """
 import json
+import re
 import os
 import subprocess
 import sys
@@ -131,8 +132,12 @@ class CliTest(unittest.TestCase):
         good = self.write("a.nc", GOOD)
         proc = ncc("run", good)
         self.assertEqual(proc.returncode, 0, proc.stderr)
-        self.assertIn("program time", proc.stdout)
-        self.assertIn("final position   X20.0 Y5.0 Z-2.0", proc.stdout)
+        self.assertRegex(proc.stdout, r"program time +\d+\.\d{3} s \(\d+ ticks of 1 ms\)")
+        self.assertIn("max following error  X ", proc.stdout)
+        self.assertIn("max contour error", proc.stdout)
+        self.assertIn("limit violations", proc.stdout)
+        self.assertIn("final position     X20.0 Y5.0 Z-2.0", proc.stdout)
+        self.assertIn("status             completed", proc.stdout)
         out = os.path.join(self.dir, "moves.jsonl")
         proc = ncc("run", good, "--emit=moves", "-o", out)
         self.assertEqual(proc.returncode, 0)
@@ -237,6 +242,33 @@ class CliTest(unittest.TestCase):
         self.assertFalse(os.path.exists(out))
         self.assertFalse(os.path.exists(out + ".tmp"))
         self.assertEqual(ncc("run", good, "--emit=moves", "-o", out, "--max-steps", "0").returncode, 0)
+
+    def test_trace_csv_and_binary_agree_and_end_on_the_program_end(self):
+        good = self.write("a.nc", GOOD)
+        csv_path = os.path.join(self.dir, "t.csv")
+        proc = ncc("run", good, "--emit=trace", "-o", csv_path)
+        self.assertEqual(proc.returncode, 0, proc.stderr)
+        rows = slurp(csv_path).splitlines()
+        self.assertEqual(rows[0], "t,X_cmd,Y_cmd,Z_cmd,X_act,Y_act,Z_act")
+        ticks = re.search(r"\((\d+) ticks", proc.stdout)
+        self.assertIsNotNone(ticks, proc.stdout)
+        self.assertEqual(len(rows) - 1, int(ticks.group(1)))
+        self.assertEqual(rows[1].split(",")[0], "0.000000")
+        last = rows[-1].split(",")
+        self.assertEqual(last[1:4], ["20.000000", "5.000000", "-2.000000"])
+        nct = os.path.join(self.dir, "t.nct")
+        self.assertEqual(ncc("run", good, "--emit=trace", "-o", nct).returncode, 0)
+        data = slurp(nct, "rb")
+        self.assertEqual(data[:4], b"NCCT")
+        self.assertLess(len(data), len(slurp(csv_path, "rb")) // 3)
+
+    def test_simulation_is_deterministic(self):
+        good = self.write("a.nc", GOOD)
+        a = os.path.join(self.dir, "a.csv")
+        b = os.path.join(self.dir, "b.csv")
+        self.assertEqual(ncc("run", good, "--emit=trace", "-o", a).returncode, 0)
+        self.assertEqual(ncc("run", good, "--emit=trace", "-o", b).returncode, 0)
+        self.assertEqual(slurp(a, "rb"), slurp(b, "rb"))
 
 
 if __name__ == "__main__":

@@ -2,12 +2,15 @@
 // `ncc dis FILE.ncb`.
 #include <iostream>
 
+#include "absl/strings/match.h"
 #include "absl/strings/str_format.h"
 #include "cli.h"
 #include "pending_output.h"
 #include "ncc/bytecode/disassembler.h"
 #include "ncc/driver/json_output.h"
 #include "ncc/driver/run.h"
+#include "ncc/driver/simulate.h"
+#include "ncc/driver/trace.h"
 
 namespace ncc::cli {
 
@@ -21,16 +24,23 @@ struct RunArgs {
   uint64_t max_steps = driver::kDefaultMaxSteps;
 };
 
-void printSummary(std::ostream& out, const driver::RunSummary& s, const bytecode::Program& program,
-                  const std::optional<vm::Alarm>& alarm) {
-  out << "program time     " << absl::StrFormat("%.3f s (feed-rate estimate, no acceleration)", s.estimated_seconds) << '\n'
-      << "path length      " << absl::StrFormat("%.3f mm cutting, %.3f mm rapid", s.cutting_length, s.rapid_length) << '\n'
-      << "motions          " << absl::StrFormat("%d rapid, %d line, %d arc, %d dwell", s.rapids, s.lines, s.arcs, s.dwells) << '\n'
-      << "machine functions " << s.machine_events << '\n'
-      << "final position  ";
+void printSummary(std::ostream& out, const driver::SimulationResult& sim,
+                  const bytecode::Program& program, double tick_seconds) {
+  const vm::RunStatistics& s = sim.statistics;
+  out << absl::StrFormat("program time       %.3f s (%d ticks of %g ms)\n", s.program_time, s.ticks,
+                         tick_seconds * 1000.0)
+      << absl::StrFormat("path length        %.3f mm feed, %.3f mm rapid\n", s.feed_length, s.rapid_length)
+      << "max following error";
   for (int i = 0; i < program.axisCount(); ++i)
-    out << ' ' << program.header.axes[i].name << driver::jsonNumber(s.final_position[i]);
-  out << '\n' << "status           " << (alarm ? "alarm " + alarm->code : std::string("completed")) << '\n';
+    out << absl::StrFormat("  %s %.4f", program.header.axes[i].name, s.max_following_error[i]);
+  out << " mm\n"
+      << absl::StrFormat("max contour error  %.4f mm (t = %.3f s)\n", s.max_contour_error,
+                         static_cast<double>(s.max_contour_error_tick) * tick_seconds)
+      << "limit violations   " << s.limit_violations << '\n'
+      << "final position    ";
+  for (int i = 0; i < program.axisCount(); ++i)
+    out << ' ' << program.header.axes[i].name << driver::jsonNumber(sim.final_commanded[i]);
+  out << '\n' << "status             " << (sim.alarm ? "alarm " + sim.alarm->code : std::string("completed")) << '\n';
 }
 
 // Reports a run-time alarm like a compile diagnostic: file:line:col: error[CODE]: message.
@@ -41,17 +51,40 @@ void reportAlarm(driver::Session& session, const bytecode::Program& program, con
   session.diagnostics().error(alarm.code, where, alarm.message);
 }
 
-int runRun(const RunArgs& args) {
-  driver::Session session;
-  if (std::optional<int> failed = openSession(session, args.input, args.common)) return *failed;
-  bytecode::Program program;
-  if (!driver::loadProgram(session, program)) {
-    printDiagnostics(session);
+// --emit=summary and --emit=trace: the program through the planner, interpolator and servo.
+int runSimulation(driver::Session& session, const bytecode::Program& program, const RunArgs& args) {
+  PendingOutput output;
+  if (!output.open(args.output)) return kUsage;
+  std::unique_ptr<driver::TraceWriter> trace;
+  if (args.emit == "trace") {
+    driver::TraceHeader header;
+    for (const bytecode::AxisInfo& axis : program.header.axes) header.axes.push_back(axis.name);
+    header.tick_seconds = session.machine().ipo_cycle_seconds;
+    bool binary = !args.output.empty() && !absl::EndsWithIgnoreCase(args.output, ".csv");
+    trace = binary ? driver::makeBinaryTraceWriter(output.stream(), header)
+                   : driver::makeCsvTraceWriter(output.stream(), header);
+  }
+  driver::SimulationResult sim = driver::simulate(program, session.machine(), trace.get(), args.max_steps);
+  if (!sim.error.empty()) {
+    std::cerr << "ncc: error: " << sim.error << '\n';
     return kProgramError;
   }
-  printDiagnostics(session);  // warnings of the compile
-  session.diagnostics().clear();
+  if (sim.alarm) {
+    output.discard();
+    reportAlarm(session, program, *sim.alarm);
+    printDiagnostics(session);
+    if (args.emit == "summary") printSummary(std::cerr, sim, program, session.machine().ipo_cycle_seconds);
+    return kRuntimeAlarm;
+  }
+  if (args.emit == "summary") printSummary(output.stream(), sim, program, session.machine().ipo_cycle_seconds);
+  if (!output.commit()) return kUsage;
+  if (!args.output.empty() && args.emit != "summary")
+    printSummary(std::cout, sim, program, session.machine().ipo_cycle_seconds);
+  return kOk;
+}
 
+// --emit=moves and --emit=vars: the executor's motion primitives and variables.
+int runExecutor(driver::Session& session, const bytecode::Program& program, const RunArgs& args) {
   // Moves stream out as the VM produces them (memory stays flat on long programs); a file
   // appears only when the run completes.
   PendingOutput output;
@@ -70,11 +103,21 @@ int runRun(const RunArgs& args) {
     return kRuntimeAlarm;
   }
   if (args.emit == "vars") driver::writeVariablesJson(output.stream(), result.variables);
-  if (args.emit == "summary") printSummary(output.stream(), result.summary, program, result.alarm);
-  if (!output.commit()) return kUsage;
-  if (!args.output.empty() && args.emit != "summary")
-    printSummary(std::cout, result.summary, program, result.alarm);
-  return kOk;
+  return output.commit() ? kOk : kUsage;
+}
+
+int runRun(const RunArgs& args) {
+  driver::Session session;
+  if (std::optional<int> failed = openSession(session, args.input, args.common)) return *failed;
+  bytecode::Program program;
+  if (!driver::loadProgram(session, program)) {
+    printDiagnostics(session);
+    return kProgramError;
+  }
+  printDiagnostics(session);  // warnings of the compile
+  session.diagnostics().clear();
+  if (args.emit == "summary" || args.emit == "trace") return runSimulation(session, program, args);
+  return runExecutor(session, program, args);
 }
 
 int runDis(const std::string& input, const CommonOptions& common) {
@@ -100,9 +143,11 @@ void addRunCommand(CLI::App& app, int& exit_code) {
   CLI::App* cmd = app.add_subcommand("run", "compile (or load a .ncb) and run a program in the VM");
   cmd->add_option("input", args->input, "program source or .ncb file")->required();
   cmd->add_option("--emit", args->emit,
-                  "summary (default): run figures; moves: JSON Lines, one motion primitive per "
-                  "line; vars: JSON object of every non-vacant variable at the end")
-      ->check(CLI::IsMember({"summary", "moves", "vars"}));
+                  "summary (default): the simulated run's figures; trace: setpoint and actual "
+                  "position of every axis per IPO tick (-o FILE.csv, or a compact binary trace "
+                  "for any other extension); moves: JSON Lines, one motion primitive per line; "
+                  "vars: JSON object of every non-vacant variable at the end")
+      ->check(CLI::IsMember({"summary", "trace", "moves", "vars"}));
   cmd->add_option("-o,--output", args->output, "write the emitted output here (default: stdout)");
   cmd->add_option("--max-steps", args->max_steps,
                   "stop with alarm NCC7204 after this many VM instructions (0: no limit); guards "

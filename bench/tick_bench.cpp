@@ -1,0 +1,142 @@
+// Controller::tick() for a 6-axis machine with the servo model (torque feed-forward, backlash,
+// pitch tables): ns per tick, the worst single tick (issue 3's target: <= 1 us), and how long
+// one hour of program time takes to simulate. Figures, not pass/fail (docs/testing.md).
+#include <benchmark/benchmark.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <memory>
+#include <vector>
+
+#include "ncc/bytecode/assembler.h"
+#include "ncc/vm/controller.h"
+
+namespace {
+
+ncc::MachineConfig sixAxes() {
+  ncc::MachineConfig m = ncc::defaultMachine();
+  for (const char* name : {"A", "B", "C"}) {
+    ncc::AxisConfig a;
+    a.name = name;
+    a.kind = ncc::AxisKind::Rotary;
+    m.axes.push_back(a);
+  }
+  for (ncc::AxisConfig& a : m.axes) {
+    a.servo.ffw_mode = ncc::FeedForwardMode::Torque;
+    a.servo.backlash = 0.01;
+    a.servo.backlash_compensation = 0.01;
+    a.servo.pitch_error = ncc::PitchTable{-500.0, 10.0, std::vector<double>(101, 0.001)};
+    a.servo.pitch_compensation = a.servo.pitch_error;
+  }
+  return m;
+}
+
+ncc::AxisValues point(double x, double y, double z, double a, double b, double c) {
+  ncc::AxisValues v{};
+  v[0] = x, v[1] = y, v[2] = z, v[3] = a, v[4] = b, v[5] = c;
+  return v;
+}
+
+// A mixed 6-axis program repeated `loops` times: a 0.05 mm chain moving all six axes, an arc,
+// a helix, a corner with exact stop, a rapid back. About 5 s of program time per loop.
+ncc::bytecode::Program program(const ncc::MachineConfig& m, int loops) {
+  ncc::bytecode::Header header;
+  for (const ncc::AxisConfig& a : m.axes) header.axes.push_back({a.name, a.kind});
+  header.config_hash = m.configHash();
+  ncc::bytecode::Assembler as(header);
+  for (int l = 0; l < loops; ++l) {
+    as.at(1, 1).rapid(point(0, 0, 5, 0, 0, 0));
+    for (int i = 1; i <= 400; ++i) {
+      const double s = 0.05 * i;
+      as.at(1, 2).line(point(s, 0.5 * std::sin(0.1 * i), 5, 0.2 * s, -0.1 * s, 0.05 * s), 3000.0);
+    }
+    as.at(1, 3).arc(point(40, 0, 5, 4, -2, 1), 0, 1, 30.0, 0.0, 2400.0, 0);
+    as.at(1, 4).arc(point(40, 0, 0, 4, -2, 1), 0, 1, 30.0, 0.0, 2400.0, 0,
+                    ncc::bytecode::ArcPlane::XY, 1);
+    as.at(1, 5).line(point(40, 20, 0, 4, -2, 1), 2000.0, ncc::bytecode::kFlagExactStop);
+    as.at(1, 6).line(point(20, 20, 0, 4, -2, 1), 2000.0);
+  }
+  as.op(ncc::bytecode::Opcode::ProgramEnd).op(ncc::bytecode::Opcode::End);
+  return as.finish();
+}
+
+std::unique_ptr<ncc::vm::Controller> controller(const ncc::MachineConfig& m, int loops) {
+  ncc::bytecode::Error error;
+  return ncc::vm::Controller::create(program(m, loops), m, error);
+}
+
+// Mean cost of a tick, restarting the program whenever it ends (restart not timed).
+void BM_Tick6Axes(benchmark::State& state) {
+  const ncc::MachineConfig m = sixAxes();
+  std::unique_ptr<ncc::vm::Controller> ctl = controller(m, 4);
+  ncc::vm::TickOutput out;
+  for (auto _ : state) {
+    if (ctl->tick(out) != ncc::vm::TickStatus::Running) {
+      state.PauseTiming();
+      ctl = controller(m, 4);
+      state.ResumeTiming();
+    }
+    benchmark::DoNotOptimize(out.actual[0]);
+  }
+  state.SetItemsProcessed(state.iterations());
+}
+BENCHMARK(BM_Tick6Axes);
+
+// Every tick of a whole program timed on its own with a steady clock: mean, worst, the
+// 99.99th percentile (the worst tick on shared cores is usually preemption, not the VM), and
+// the first tick, which fills the look-ahead window. The clock's own cost is included.
+void BM_WorstTick6Axes(benchmark::State& state) {
+  const ncc::MachineConfig m = sixAxes();
+  using Clock = std::chrono::steady_clock;
+  std::vector<double> ns;
+  ns.reserve(1 << 20);
+  double first_ns = 0.0;
+  for (auto _ : state) {
+    state.PauseTiming();
+    std::unique_ptr<ncc::vm::Controller> ctl = controller(m, 20);
+    state.ResumeTiming();
+    ncc::vm::TickOutput out;
+    for (bool first = true;; first = false) {
+      const auto t0 = Clock::now();
+      const ncc::vm::TickStatus st = ctl->tick(out);
+      const auto t1 = Clock::now();
+      if (st != ncc::vm::TickStatus::Running) break;
+      const double t = std::chrono::duration<double, std::nano>(t1 - t0).count();
+      if (first) first_ns = std::max(first_ns, t);
+      else ns.push_back(t);
+    }
+  }
+  double total = 0.0;
+  for (double t : ns) total += t;
+  std::sort(ns.begin(), ns.end());
+  state.counters["mean_tick_ns"] = total / static_cast<double>(ns.size());
+  state.counters["p9999_tick_ns"] = ns[ns.size() * 9999 / 10000];
+  state.counters["worst_tick_ns"] = ns.back();
+  state.counters["first_tick_ns"] = first_ns;
+  state.counters["ticks"] = static_cast<double>(ns.size()) / static_cast<double>(state.iterations());
+}
+BENCHMARK(BM_WorstTick6Axes)->Unit(benchmark::kMillisecond)->Iterations(3);
+
+// Simulating a long program: ticks per second of wall time, and what one hour of program
+// time (3.6e6 ticks at T = 1 ms) costs.
+void BM_SimulateProgram(benchmark::State& state) {
+  const ncc::MachineConfig m = sixAxes();
+  double ticks = 0.0;
+  for (auto _ : state) {
+    state.PauseTiming();
+    std::unique_ptr<ncc::vm::Controller> ctl = controller(m, 100);
+    state.ResumeTiming();
+    ncc::vm::TickOutput out;
+    while (ctl->tick(out) == ncc::vm::TickStatus::Running) ticks += 1.0;
+    benchmark::DoNotOptimize(out.actual[0]);
+  }
+  state.counters["ticks_per_s"] = benchmark::Counter(ticks, benchmark::Counter::kIsRate);
+  state.counters["program_s_per_iter"] =
+      ticks * m.ipo_cycle_seconds / static_cast<double>(state.iterations());
+}
+BENCHMARK(BM_SimulateProgram)->Unit(benchmark::kMillisecond);
+
+}  // namespace
+
+BENCHMARK_MAIN();

@@ -1,0 +1,79 @@
+// After construction, tick() allocates nothing (real-time discipline), through a whole
+// program and through a servo alarm: a replaced global operator new counts every allocation
+// of this binary.
+#include <cstdlib>
+#include <new>
+
+#include "controller_test_util.h"
+
+namespace {
+long g_allocations = 0;
+}  // namespace
+
+void* operator new(std::size_t size) {
+  ++g_allocations;
+  if (void* p = std::malloc(size == 0 ? 1 : size)) return p;
+  throw std::bad_alloc();
+}
+void operator delete(void* p) noexcept { std::free(p); }
+void operator delete(void* p, std::size_t) noexcept { std::free(p); }
+
+namespace ncc {
+namespace {
+
+using namespace controller_test;
+
+bytecode::Program program(const MachineConfig& m) {
+  bytecode::Assembler a = assemblerFor(m);
+  a.at(1, 1).rapid(xyz(10, 5, 2));
+  for (int i = 1; i <= 2000; ++i)  // more segments than the window holds
+    a.at(1, 2).line(xyz(10 + 0.01 * i, 5 + 0.005 * i, 2), 2000.0);
+  a.at(1, 3).arc(xyz(30, 15, 2), 0, 1, 30.0, 10.0, 1500.0, 0, bytecode::ArcPlane::XY, 1);
+  a.at(1, 4).dwell(0.1).spindleSpeed(1000.0).mCode(8);
+  a.at(1, 5).line(xyz(0, 0, 0), 0.5, bytecode::kFlagFeedPerRev);
+  a.at(1, 6).op(bytecode::Opcode::ProgramStop).rapid(xyz(0, 0, 50));
+  a.op(bytecode::Opcode::ProgramEndRewind).op(bytecode::Opcode::End);
+  return a.finish();
+}
+
+TEST(ControllerAllocation, TickAllocatesNothing) {
+  MachineConfig m = defaultMachine();
+  for (AxisConfig& a : m.axes) {
+    a.servo.backlash = 0.01;
+    a.servo.backlash_compensation = 0.01;
+    a.servo.pitch_error = PitchTable{-100.0, 10.0, std::vector<double>(21, 0.001)};
+    a.servo.pitch_compensation = a.servo.pitch_error;
+  }
+  vm::ControllerOptions options;
+  options.window_capacity = 256;
+  std::unique_ptr<vm::Controller> ctl = make(program(m), m, options);
+  const long before = g_allocations;
+  vm::TickOutput out;
+  uint64_t ticks = 0;
+  while (ctl->tick(out) == vm::TickStatus::Running) ++ticks;
+  const vm::RunStatistics stats = ctl->statistics();
+  EXPECT_EQ(g_allocations - before, 0);
+  EXPECT_EQ(ctl->status(), vm::TickStatus::Finished);
+  EXPECT_GT(ticks, 5000u);
+  EXPECT_GT(stats.path_length, 100.0);
+}
+
+TEST(ControllerAllocation, ServoAlarmAllocatesNothing) {
+  ServoConfig servo;
+  servo.ffw_mode = FeedForwardMode::None;
+  servo.contour_tol = 0.5;
+  const MachineConfig m = machineWith(servo);
+  bytecode::Assembler a = assemblerFor(m);
+  a.line(xyz(100, 0, 0), 6000.0).op(bytecode::Opcode::End);
+  std::unique_ptr<vm::Controller> ctl = make(a.finish(), m);
+  const long before = g_allocations;
+  vm::TickOutput out;
+  while (ctl->tick(out) == vm::TickStatus::Running) {
+  }
+  EXPECT_EQ(g_allocations - before, 0);
+  ASSERT_NE(ctl->alarm(), nullptr);
+  EXPECT_EQ(ctl->alarm()->code, "25050");
+}
+
+}  // namespace
+}  // namespace ncc

@@ -1,0 +1,175 @@
+// vm::Controller end to end: loading errors, the tick loop, source positions, stops, feed per
+// revolution, and alarms from the executor (G27) and the servo model (25050).
+#include "ncc/vm/controller.h"
+
+#include <algorithm>
+#include <sstream>
+#include <vector>
+
+#include "controller_test_util.h"
+#include "ncc/bytecode/writer.h"
+
+namespace ncc {
+namespace {
+
+using namespace controller_test;
+using vm::TickOutput;
+using vm::TickStatus;
+
+std::vector<TickOutput> runAll(vm::Controller& ctl, uint64_t max_ticks = 10'000'000) {
+  std::vector<TickOutput> ticks;
+  TickOutput out;
+  while (ticks.size() < max_ticks && ctl.tick(out) == TickStatus::Running) ticks.push_back(out);
+  return ticks;
+}
+
+TEST(Controller, LoadReportsBadBytesInsteadOfThrowing) {
+  const std::vector<uint8_t> junk = {'N', 'C', 'C', 'X', 1, 2, 3};
+  bytecode::Error error;
+  EXPECT_EQ(vm::Controller::load(junk, defaultMachine(), error), nullptr);
+  EXPECT_EQ(error.code.substr(0, 5), "NCC70");
+}
+
+TEST(Controller, CreateVerifiesAgainstTheMachine) {
+  MachineConfig m = defaultMachine();
+  bytecode::Assembler a = assemblerFor(m);
+  a.line(xyz(1, 0, 0), 600.0).op(bytecode::Opcode::End);
+  bytecode::Program p = a.finish();
+  p.header.config_hash ^= 1;  // compiled for another machine
+  bytecode::Error error;
+  EXPECT_EQ(vm::Controller::create(p, m, error), nullptr);
+  EXPECT_EQ(error.code.substr(0, 5), "NCC71");
+}
+
+TEST(Controller, LoadsWrittenBytesAndRunsToTheEnd) {
+  MachineConfig m = defaultMachine();
+  bytecode::Assembler a = assemblerFor(m);
+  a.at(1, 1).rapid(xyz(10, 0, 5));
+  a.at(1, 2).line(xyz(10, 20, 5), 1200.0);
+  a.at(1, 3).op(bytecode::Opcode::ProgramEndRewind).op(bytecode::Opcode::End);
+  std::ostringstream written;
+  ASSERT_FALSE(bytecode::write(a.finish(), written));
+  const std::string text = written.str();
+  const std::vector<uint8_t> bytes(text.begin(), text.end());
+  bytecode::Error error;
+  std::unique_ptr<vm::Controller> ctl = vm::Controller::load(bytes, m, error);
+  ASSERT_TRUE(ctl) << error.message;
+
+  std::vector<TickOutput> ticks = runAll(*ctl);
+  ASSERT_GT(ticks.size(), 1000u);
+  for (std::size_t k = 0; k < ticks.size(); ++k) {
+    ASSERT_EQ(ticks[k].tick, k);
+    ASSERT_EQ(ticks[k].time, static_cast<double>(k) * 0.001);
+  }
+  EXPECT_EQ(ticks.back().commanded, xyz(10, 20, 5));
+  EXPECT_EQ(ctl->status(), TickStatus::Finished);
+  EXPECT_EQ(ctl->alarm(), nullptr);
+  // Source of the active block: the rapid, then the line.
+  EXPECT_EQ(ticks[10].where.line, 1u);
+  EXPECT_EQ(ticks[10].file, "test.nc");
+  EXPECT_EQ(ticks[ticks.size() - 10].where.line, 2u);
+
+  // Once finished, tick() repeats the last tick.
+  TickOutput again;
+  EXPECT_EQ(ctl->tick(again), TickStatus::Finished);
+  EXPECT_EQ(again.tick, ticks.back().tick);
+  EXPECT_EQ(again.commanded, ticks.back().commanded);
+  EXPECT_EQ(again.status, TickStatus::Finished);
+}
+
+TEST(Controller, ProgramStopBringsThePathToRest) {
+  // Two collinear lines pass at full speed; with M00 between them the path stops.
+  MachineConfig m = defaultMachine();
+  auto minimumInterior = [&](bool with_stop) {
+    bytecode::Assembler a = assemblerFor(m);
+    a.line(xyz(10, 0, 0), 3000.0);
+    if (with_stop) a.op(bytecode::Opcode::ProgramStop);
+    a.line(xyz(20, 0, 0), 3000.0).op(bytecode::Opcode::End);
+    std::unique_ptr<vm::Controller> ctl = make(a.finish(), m);
+    double lowest = 1e9;
+    for (const TickOutput& t : runAll(*ctl))
+      if (t.commanded[0] > 5.0 && t.commanded[0] < 15.0) lowest = std::min(lowest, t.path_velocity);
+    return lowest;
+  };
+  EXPECT_NEAR(minimumInterior(false), 50.0, 1e-9);
+  EXPECT_EQ(minimumInterior(true), 0.0);
+}
+
+TEST(Controller, FeedPerRevolutionUsesTheSpindleSpeed) {
+  MachineConfig m = defaultMachine();
+  bytecode::Assembler a = assemblerFor(m);
+  a.spindleSpeed(1000.0).line(xyz(50, 0, 0), 0.12, bytecode::kFlagFeedPerRev);
+  a.op(bytecode::Opcode::End);
+  std::unique_ptr<vm::Controller> ctl = make(a.finish(), m);
+  double top = 0.0;
+  for (const TickOutput& t : runAll(*ctl)) top = std::max(top, t.path_velocity);
+  EXPECT_NEAR(top, 0.12 * 1000.0 / 60.0, 1e-12);  // 2 mm/s
+}
+
+TEST(Controller, ReferenceCheckAlarmStopsTheRunWhenTheBlockIsReached) {
+  MachineConfig m = defaultMachine();
+  bytecode::Assembler a = assemblerFor(m);
+  a.at(1, 1).rapid(xyz(0, 0, 10));
+  a.at(1, 2, 4).refCheck(0b111, 1, xyz(0, 0, 0));
+  a.at(1, 3).rapid(xyz(5, 5, 5)).op(bytecode::Opcode::End);
+  std::unique_ptr<vm::Controller> ctl = make(a.finish(), m);
+
+  std::vector<TickOutput> ticks = runAll(*ctl);
+  ASSERT_FALSE(ticks.empty());
+  EXPECT_EQ(ctl->status(), TickStatus::Alarm);
+  ASSERT_NE(ctl->alarm(), nullptr);
+  EXPECT_EQ(ctl->alarm()->code, "NCC7201");
+  EXPECT_EQ(ctl->alarm()->where, (SourceLocation{1, 2, 4}));
+  EXPECT_EQ(ctl->alarm()->message,
+            "G27 reference position check failed: axis Z is at 10, reference point is 0");
+  // The rapid before the check ran to its end; the one after it never started.
+  EXPECT_EQ(ticks.back().commanded, xyz(0, 0, 10));
+  TickOutput again;
+  EXPECT_EQ(ctl->tick(again), TickStatus::Alarm);
+  EXPECT_EQ(again.tick, ticks.back().tick);
+}
+
+TEST(Controller, FollowingErrorAlarmStopsTheRunOnTheTickThatTripsIt) {
+  // No feed-forward, Kv 1: 6 mm of following error at F6000, over a 0.5 mm CONTOUR_TOL.
+  ServoConfig servo;
+  servo.ffw_mode = FeedForwardMode::None;
+  servo.contour_tol = 0.5;
+  MachineConfig m = machineWith(servo);
+  bytecode::Assembler a = assemblerFor(m);
+  a.at(1, 7).line(xyz(0, 100, 0), 6000.0).op(bytecode::Opcode::End);
+  std::unique_ptr<vm::Controller> ctl = make(a.finish(), m);
+
+  TickOutput out;
+  TickStatus status = TickStatus::Running;
+  uint64_t produced = 0;
+  while ((status = ctl->tick(out)) == TickStatus::Running) ++produced;
+  ASSERT_EQ(status, TickStatus::Alarm);
+  ASSERT_NE(ctl->alarm(), nullptr);
+  EXPECT_EQ(ctl->alarm()->code, "25050");
+  EXPECT_EQ(ctl->alarm()->where.line, 7u);
+  EXPECT_NE(ctl->alarm()->message.find("axis Y"), std::string::npos) << ctl->alarm()->message;
+  // `out` is the tick that tripped it: just over the tolerance, far from the line's end.
+  EXPECT_EQ(out.tick, produced);
+  EXPECT_EQ(out.status, TickStatus::Alarm);
+  EXPECT_GT(std::abs(out.following_error[1]), 0.5);
+  EXPECT_LT(std::abs(out.following_error[1]), 0.6);
+  EXPECT_LT(out.commanded[1], 10.0);
+}
+
+TEST(Controller, StepLimitStopsAMacroLoopWithoutMotion) {
+  MachineConfig m = defaultMachine();
+  bytecode::Assembler a = assemblerFor(m);
+  bytecode::Assembler::Label top = a.newLabel();
+  bytecode::Assembler::Label end = a.newLabel();
+  a.bind(top).push(1.0).jump(bytecode::Opcode::JumpIfFalse, end).jump(bytecode::Opcode::Jump, top);
+  a.bind(end).op(bytecode::Opcode::End);
+  vm::ControllerOptions options;
+  options.step_limit = 100000;
+  std::unique_ptr<vm::Controller> ctl = make(a.finish(), m, options);
+  TickOutput out;
+  EXPECT_EQ(ctl->tick(out), TickStatus::Alarm);
+  EXPECT_EQ(ctl->alarm()->code, "NCC7204");
+}
+
+}  // namespace
+}  // namespace ncc

@@ -1,0 +1,137 @@
+#pragma once
+// The embedding API (issue 3, docs/embedding.md): verified bytecode + a machine configuration
+// in, one setpoint and one simulated actual position per IPO tick out.
+//
+//   bytecode::Error error;
+//   std::unique_ptr<vm::Controller> ctl = vm::Controller::load(bytes, machine, error);
+//   if (!ctl) { report(error); return; }
+//   vm::TickOutput out;
+//   while (ctl->tick(out) == vm::TickStatus::Running) drive(out.commanded);
+//   if (const vm::Alarm* alarm = ctl->alarm()) report(*alarm);
+//
+// It ties together the executor (bytecode -> events), the motion planner (events ->
+// setpoints) and the servo model (setpoints -> actual positions).
+//
+// Real-time discipline: everything is allocated in the constructor; tick() allocates nothing
+// (the alarm strings are reserved up front), never throws and does bounded work (at most
+// ControllerOptions::max_events_per_tick executor events, the planner's bounded tick, a fixed
+// servo step). Deterministic: no clocks, no threads; the same program and machine give
+// bit-identical outputs (tests/controller pins a hash).
+//
+// Links with ncc_vm, ncc_bytecode, ncc_machine and ncc_support only: never the frontend.
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <filesystem>
+#include <memory>
+#include <span>
+#include <string_view>
+
+#include "ncc/bytecode/error.h"
+#include "ncc/bytecode/program.h"
+#include "ncc/machine/machine_config.h"
+#include "ncc/vm/controller_stats.h"
+#include "ncc/vm/events.h"
+#include "ncc/vm/executor.h"
+#include "ncc/vm/motion/planner.h"
+#include "ncc/vm/servo/servo_model.h"
+
+namespace ncc::vm {
+
+enum class TickStatus : uint8_t {
+  Running,   // `out` holds a new tick
+  Finished,  // the program ended; `out` repeats the last tick
+  Alarm,     // the run stopped with alarm(); `out` is the last tick (a servo alarm: the one
+             // that tripped it)
+};
+
+struct TickOutput {
+  uint64_t tick = 0;                 // k
+  double time = 0.0;                 // k * T, s
+  AxisValues commanded{};            // interpolator setpoint, machine coordinates
+  AxisValues actual{};               // servo model's table position
+  AxisValues following_error{};      // per axis, mm (deg)
+  double path_velocity = 0.0;        // commanded, mm/s
+  SourcePosition where;              // source of the block being interpolated
+  std::string_view file;             // program.strings[where.file]; "" when unknown
+  TickStatus status = TickStatus::Running;
+};
+
+struct ControllerOptions {
+  // Most motion segments the planner's look-ahead holds (allocated once).
+  std::size_t window_capacity = 1024;
+  // Most executor events pulled in one tick: bounds a tick's work when the program emits many
+  // events that do not fill the window (M codes, zero-length moves). A lower bound can only
+  // make the planner see less ahead (it then plans to brake at the end of what it has).
+  uint32_t max_events_per_tick = 1024;
+  // Executor instruction budget for the whole run (0: unlimited), alarm NCC7204 when hit.
+  // Guards against a macro loop without motion, which would otherwise keep one tick busy.
+  uint64_t step_limit = 0;
+};
+
+class Controller {
+ public:
+  // Loads and verifies `bytes` against `machine` (including the configuration hash); on
+  // failure returns nullptr and fills `error`. Never throws.
+  static std::unique_ptr<Controller> load(std::span<const uint8_t> bytes,
+                                          const MachineConfig& machine, bytecode::Error& error,
+                                          const ControllerOptions& options = {});
+  static std::unique_ptr<Controller> loadFile(const std::filesystem::path& path,
+                                              const MachineConfig& machine,
+                                              bytecode::Error& error,
+                                              const ControllerOptions& options = {});
+  // Verifies `program` first (as load() does).
+  static std::unique_ptr<Controller> create(bytecode::Program program,
+                                            const MachineConfig& machine, bytecode::Error& error,
+                                            const ControllerOptions& options = {});
+
+  // `program` must have passed bytecode::verify() for `machine`. (If it has not, the executor
+  // still stops with an alarm instead of crashing.) Keeps its own copies of both.
+  Controller(bytecode::Program program, const MachineConfig& machine,
+             const ControllerOptions& options = {});
+  // The executor and planner hold references into the controller: not copyable or movable.
+  Controller(const Controller&) = delete;
+  Controller& operator=(const Controller&) = delete;
+
+  // One IPO cycle. See TickStatus for what `out` holds.
+  TickStatus tick(TickOutput& out) noexcept;
+
+  TickStatus status() const { return status_; }
+  // The alarm that stopped the run, or nullptr. Executor alarms (NCC72xx) are raised when the
+  // motion queued before them has run, i.e. when the block is reached; servo alarms (25050
+  // contour, 25040 standstill) on the tick that trips them.
+  const Alarm* alarm() const { return has_alarm_ ? &alarm_ : nullptr; }
+  // Run statistics so far (final once status() != Running).
+  RunStatistics statistics() const;
+
+  const bytecode::Program& program() const { return program_; }
+  const MachineConfig& machine() const { return machine_; }
+  double cycleSeconds() const { return machine_.ipo_cycle_seconds; }
+  int axisCount() const { return machine_.axisCount(); }
+
+ private:
+  void pullEvents();
+  void raiseServoAlarm(const ServoAlarm& servo_alarm, SourcePosition where);
+  void raiseExecutorAlarm();
+  std::string_view fileName(uint32_t file) const;
+
+  // Declaration order matters: the executor refers to program_.
+  const MachineConfig machine_;
+  const bytecode::Program program_;
+  const ControllerOptions options_;
+  Executor executor_;
+  motion::MotionPlanner planner_;
+  ServoModel servo_;
+  StatisticsAccumulator stats_;
+
+  Event event_;                   // the executor's output slot (reused)
+  bool event_pending_ = false;    // event_ was pulled but the planner had no room
+  bool input_done_ = false;       // the executor finished (end of program or alarm)
+  uint64_t next_tick_ = 0;
+  TickOutput last_;               // the last tick produced
+  TickStatus status_ = TickStatus::Running;
+  Alarm alarm_;                   // strings reserved in the constructor
+  bool has_alarm_ = false;
+};
+
+}  // namespace ncc::vm

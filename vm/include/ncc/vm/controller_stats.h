@@ -1,0 +1,66 @@
+#pragma once
+// Run statistics of a Controller (what `ncc run` summarises), accumulated tick by tick with a
+// fixed amount of work and no allocation. Definitions (docs/embedding.md, "Statistics"):
+//
+//  - program time: time of the last tick produced, k_last * T. The interpolator samples the
+//    program's end point on the first tick at or after the planned end (docs/planner.md), so
+//    this is the planned time rounded up to the IPO grid (plus one tick for the stop sample).
+//  - path length: sum over ticks of |commanded_k - commanded_{k-1}| (all axes, as F counts
+//    them), split by the run kind being interpolated (rapid / feed). Exact for lines up to
+//    rounding; arcs are short by the chord/arc difference, relative (phi^2)/24 for an angle
+//    phi per tick.
+//  - max |following error| per axis: the servo model's position controller error.
+//  - contour error: |e - (e.u)u|, e = actual - commanded (all axes), u the unit commanded
+//    path direction at tick k from the backward difference 3c_k - 4c_{k-1} + c_{k-2} (exact
+//    for a path sampled on a parabola, so arcs are not biased by the half-tick chord angle).
+//    While the setpoint stands still the previous direction is kept. It is a local measure:
+//    with a lag l along an arc of radius r it also contains the sagitta l^2/(2r), and at a
+//    corner stop the lag still left along the previous segment counts once the next segment
+//    starts.
+//  - limit violations: the servo model's counts of samples beyond travel, velocity and
+//    acceleration limits (docs/servo.md, "Monitoring").
+#include <array>
+#include <cstdint>
+
+#include "ncc/machine/axes.h"
+#include "ncc/vm/events.h"
+#include "ncc/vm/servo/servo_monitor.h"
+
+namespace ncc::vm {
+
+struct RunStatistics {
+  uint64_t ticks = 0;                  // ticks produced
+  double program_time = 0.0;           // s
+  double path_length = 0.0;            // mm, commanded: rapid + feed
+  double rapid_length = 0.0;
+  double feed_length = 0.0;
+  AxisValues max_following_error{};    // |.|, per axis
+  double max_contour_error = 0.0;      // mm
+  uint64_t max_contour_error_tick = 0;
+  std::array<LimitViolations, kMaxAxes> violations{};  // per axis
+  int64_t limit_violations = 0;        // sum over axes and kinds
+};
+
+class StatisticsAccumulator {
+ public:
+  explicit StatisticsAccumulator(int axis_count) : axis_count_(axis_count) {}
+
+  // Tick k (k increases by one per call). `rapid`: the run being interpolated is a rapid;
+  // `path_velocity` 0 marks a tick where a run starts or stops, whose chord still belongs to
+  // the previous tick's run.
+  void add(uint64_t k, double time, const AxisValues& commanded, const AxisValues& actual,
+           const AxisValues& following_error, bool rapid, double path_velocity);
+
+  const RunStatistics& statistics() const { return stats_; }
+
+ private:
+  int axis_count_;
+  RunStatistics stats_;
+  bool started_ = false;
+  bool previous_rapid_ = false;
+  AxisValues previous_{};        // c_{k-1}
+  AxisValues before_previous_{}; // c_{k-2}
+  AxisValues direction_{};       // unit commanded direction (zero before the first move)
+};
+
+}  // namespace ncc::vm

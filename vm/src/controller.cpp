@@ -1,0 +1,185 @@
+#include "ncc/vm/controller.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <utility>
+
+#include "ncc/bytecode/loader.h"
+#include "ncc/bytecode/verifier.h"
+
+namespace ncc::vm {
+namespace {
+
+// Capacity reserved for the alarm strings, so that raising an alarm inside tick() does not
+// allocate; longer executor messages are cut to it.
+constexpr std::size_t kAlarmCodeCapacity = 32;
+constexpr std::size_t kAlarmMessageCapacity = 256;
+
+// Copies `from` into `to` without growing it past its reserved capacity.
+void assignBounded(std::string& to, const std::string& from) {
+  to.assign(from.data(), std::min(from.size(), to.capacity()));
+}
+
+}  // namespace
+
+std::unique_ptr<Controller> Controller::load(std::span<const uint8_t> bytes,
+                                             const MachineConfig& machine,
+                                             bytecode::Error& error,
+                                             const ControllerOptions& options) {
+  bytecode::Program program;
+  if (std::optional<bytecode::Error> e = bytecode::load(bytes, program)) {
+    error = std::move(*e);
+    return nullptr;
+  }
+  return create(std::move(program), machine, error, options);
+}
+
+std::unique_ptr<Controller> Controller::loadFile(const std::filesystem::path& path,
+                                                 const MachineConfig& machine,
+                                                 bytecode::Error& error,
+                                                 const ControllerOptions& options) {
+  bytecode::Program program;
+  if (std::optional<bytecode::Error> e = bytecode::loadFile(path, program)) {
+    error = std::move(*e);
+    return nullptr;
+  }
+  return create(std::move(program), machine, error, options);
+}
+
+std::unique_ptr<Controller> Controller::create(bytecode::Program program,
+                                               const MachineConfig& machine,
+                                               bytecode::Error& error,
+                                               const ControllerOptions& options) {
+  bytecode::VerifyOptions verify_options;
+  verify_options.machine = &machine;
+  if (std::optional<bytecode::Error> e = bytecode::verify(program, verify_options)) {
+    error = std::move(*e);
+    return nullptr;
+  }
+  return std::make_unique<Controller>(std::move(program), machine, options);
+}
+
+Controller::Controller(bytecode::Program program, const MachineConfig& machine,
+                       const ControllerOptions& options)
+    : machine_(machine),
+      program_(std::move(program)),
+      options_(options),
+      executor_(program_, machine_),
+      planner_(machine_, options.window_capacity),
+      servo_(machine_),
+      stats_(machine_.axisCount()) {
+  executor_.setStepLimit(options_.step_limit);
+  servo_.reset(machine_.start_position);
+  last_.commanded = machine_.start_position;
+  last_.actual = machine_.start_position;
+  alarm_.code.reserve(kAlarmCodeCapacity);
+  alarm_.message.reserve(kAlarmMessageCapacity);
+}
+
+std::string_view Controller::fileName(uint32_t file) const {
+  return file < program_.strings.size() ? std::string_view(program_.strings[file])
+                                        : std::string_view();
+}
+
+// Feeds the planner while it wants more: motion, S (feed per revolution, dwell in
+// revolutions), M00/M01/M02/M30 (stops) all go through MotionPlanner::accept().
+void Controller::pullEvents() {
+  uint32_t budget = options_.max_events_per_tick;  // 0: unlimited
+  while (!input_done_ && planner_.canAccept()) {
+    if (!event_pending_) {
+      if (options_.max_events_per_tick != 0 && budget-- == 0) return;
+      if (!executor_.next(event_)) {  // end of program, or an alarm (kept until reached)
+        input_done_ = true;
+        planner_.endOfProgram();
+        return;
+      }
+      event_pending_ = true;
+    }
+    if (!planner_.accept(event_)) return;  // ring full: retried next tick
+    event_pending_ = false;
+  }
+}
+
+TickStatus Controller::tick(TickOutput& out) noexcept {
+  if (status_ != TickStatus::Running) {
+    out = last_;
+    return status_;
+  }
+  pullEvents();
+
+  const uint64_t k = next_tick_;
+  AxisValues setpoint{};
+  motion::SetpointInfo info;
+  if (!planner_.setpoint(k, setpoint, info)) {
+    // Everything queued has run: the program's end, or the block that raised an alarm.
+    if (executor_.alarm()) {
+      raiseExecutorAlarm();
+    } else {
+      status_ = TickStatus::Finished;
+    }
+    last_.status = status_;
+    out = last_;
+    return status_;
+  }
+
+  const ServoSample& sample = servo_.step(setpoint);
+  ++next_tick_;
+  last_.tick = k;
+  last_.time = static_cast<double>(k) * machine_.ipo_cycle_seconds;
+  last_.commanded = setpoint;
+  last_.actual = sample.actual;
+  last_.following_error = sample.following_error;
+  last_.path_velocity = info.velocity;
+  last_.where = info.where;
+  last_.file = fileName(info.where.file);
+  stats_.add(k, last_.time, setpoint, sample.actual, sample.following_error,
+             !info.idle && info.kind == MotionPrimitive::Kind::Rapid, info.velocity);
+  if (servo_.alarm().code != 0) raiseServoAlarm(servo_.alarm(), info.where);
+
+  last_.status = status_;
+  out = last_;
+  return status_;
+}
+
+void Controller::raiseExecutorAlarm() {
+  const Alarm& from = *executor_.alarm();
+  assignBounded(alarm_.code, from.code);
+  assignBounded(alarm_.message, from.message);
+  alarm_.where = from.where;
+  has_alarm_ = true;
+  status_ = TickStatus::Alarm;
+}
+
+void Controller::raiseServoAlarm(const ServoAlarm& a, SourcePosition where) {
+  const AxisConfig& axis = machine_.axes[static_cast<std::size_t>(a.axis)];
+  const bool contour = a.code == kAlarmContour;
+  const double limit = contour ? axis.servo.contour_tol : axis.servo.standstill_pos_tol;
+  // snprintf into fixed buffers, then copies within the reserved capacity: no allocation.
+  char code[kAlarmCodeCapacity];
+  char message[kAlarmMessageCapacity];
+  std::snprintf(code, sizeof code, "%d", a.code);
+  std::snprintf(message, sizeof message,
+                "%s monitoring: axis %.14s following error %.6f mm exceeds %s %.6f mm at tick "
+                "%lld",
+                contour ? "contour" : "standstill", axis.name.c_str(), a.value,
+                contour ? "CONTOUR_TOL" : "STANDSTILL_POS_TOL", limit,
+                static_cast<long long>(a.tick));
+  alarm_.code.assign(code);
+  alarm_.message.assign(message);
+  alarm_.where = where;
+  has_alarm_ = true;
+  status_ = TickStatus::Alarm;
+}
+
+RunStatistics Controller::statistics() const {
+  RunStatistics s = stats_.statistics();
+  s.limit_violations = 0;
+  for (int i = 0; i < servo_.axisCount(); ++i) {
+    s.violations[i] = servo_.violations(i);
+    s.limit_violations += s.violations[i].travel + s.violations[i].velocity +
+                          s.violations[i].acceleration;
+  }
+  return s;
+}
+
+}  // namespace ncc::vm

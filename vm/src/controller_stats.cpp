@@ -1,0 +1,76 @@
+#include "ncc/vm/controller_stats.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace ncc::vm {
+namespace {
+
+// Below this the backward difference is rounding noise: keep the previous direction.
+constexpr double kMinDirectionNorm = 1e-12;  // mm
+
+}  // namespace
+
+void StatisticsAccumulator::add(uint64_t k, double time, const AxisValues& commanded,
+                                const AxisValues& actual, const AxisValues& following_error,
+                                bool rapid, double path_velocity) {
+  const int n = axis_count_;
+  if (!started_) {  // the first tick: no previous setpoint, so no motion yet
+    previous_ = commanded;
+    before_previous_ = commanded;
+    started_ = true;
+  }
+
+  // Path length: the chord from the previous setpoint.
+  double chord2 = 0.0;
+  for (int i = 0; i < n; ++i) {
+    const double d = commanded[i] - previous_[i];
+    chord2 += d * d;
+  }
+  const double chord = std::sqrt(chord2);
+  stats_.path_length += chord;
+  // At rest on this tick (a stop sample, or the first sample of the next run): the chord is
+  // the end of the previous tick's run.
+  const bool chord_rapid = path_velocity == 0.0 ? previous_rapid_ : rapid;
+  (chord_rapid ? stats_.rapid_length : stats_.feed_length) += chord;
+  previous_rapid_ = rapid;
+
+  // Commanded direction: second-order backward difference of the setpoints.
+  AxisValues d{};
+  double norm2 = 0.0;
+  for (int i = 0; i < n; ++i) {
+    d[i] = 3.0 * commanded[i] - 4.0 * previous_[i] + before_previous_[i];
+    norm2 += d[i] * d[i];
+  }
+  const double norm = std::sqrt(norm2);
+  if (chord > 0.0 && norm > kMinDirectionNorm) {
+    for (int i = 0; i < n; ++i) direction_[i] = d[i] / norm;
+  }
+
+  // Following and contour error.
+  AxisValues e{};
+  double along = 0.0;
+  for (int i = 0; i < n; ++i) {
+    stats_.max_following_error[i] =
+        std::max(stats_.max_following_error[i], std::abs(following_error[i]));
+    e[i] = actual[i] - commanded[i];
+    along += e[i] * direction_[i];
+  }
+  double perpendicular2 = 0.0;
+  for (int i = 0; i < n; ++i) {
+    const double p = e[i] - along * direction_[i];
+    perpendicular2 += p * p;
+  }
+  const double contour = std::sqrt(perpendicular2);
+  if (contour > stats_.max_contour_error) {
+    stats_.max_contour_error = contour;
+    stats_.max_contour_error_tick = k;
+  }
+
+  stats_.ticks = k + 1;
+  stats_.program_time = time;
+  before_previous_ = previous_;
+  previous_ = commanded;
+}
+
+}  // namespace ncc::vm
