@@ -123,7 +123,8 @@ class MachineFileReader {
   // Returns false when the axes are unusable (then nothing that names an axis is read).
   bool readMachine(const toml::table& t) {
     static constexpr std::string_view kKeys[] = {"axes",   "diameter_axes", "offsets",  "work",
-                                                 "params", "axis",          "ipo_cycle"};
+                                                 "params", "axis",          "ipo_cycle",
+                                                 "chord_tolerance"};
     for (const auto& [key, node] : t)
       if (std::find(std::begin(kKeys), std::end(kKeys), key.str()) == std::end(kKeys))
         ctx_.unknownKey(key, "[machine]");
@@ -151,6 +152,15 @@ class MachineFileReader {
                      cat("'ipo_cycle' must be above 0 and at most 0.1 s, not ", *v));
         else
           m_.ipo_cycle_seconds = *v;
+      }
+    }
+    if (const toml::node* n = t.get("chord_tolerance")) {
+      if (auto v = ctx_.number(*n, "chord_tolerance")) {
+        if (*v <= 0.0 || *v > 1.0)
+          ctx_.error(kBadValue, ctx_.at(*n),
+                     cat("'chord_tolerance' must be above 0 and at most 1 mm, not ", *v));
+        else
+          m_.chord_tolerance = *v;
       }
     }
     return true;

@@ -64,7 +64,7 @@ struct MachineConfig {
   AxisValues start_position{};           // machine position before the program starts
   double ipo_cycle_seconds = 0.001;      // interpolation cycle T
   // Largest distance (mm) between an arc and the chords joining consecutive IPO setpoints; the
-  // planner lowers the feed on small arcs to keep it. Not read from the machine file yet.
+  // planner lowers the feed on small arcs to keep it. Machine file: [machine] chord_tolerance.
   double chord_tolerance = 0.001;
   ParameterSet params;                   // [machine.params]
 
