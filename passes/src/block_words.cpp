@@ -9,6 +9,8 @@ namespace ncc::passes {
 
 namespace {
 
+constexpr double kMaxGCode = 10000.0;  // no G code of any table reaches G10000
+
 std::string groupLabel(const GCodeEntry& e) {
   return e.group_number < 10 ? absl::StrCat("0", e.group_number) : absl::StrCat(e.group_number);
 }
@@ -63,9 +65,11 @@ class Decoder {
     double v;
     bool point;
     if (!literal(w, v, point)) return;
-    int code10 = static_cast<int>(std::lround(v * 10.0));
-    const GCodeEntry* e = (v >= 0 && std::fabs(v * 10.0 - code10) < 1e-6)
-                              ? ctx_.table.findG(code10) : nullptr;
+    const GCodeEntry* e = nullptr;
+    if (v >= 0 && v < kMaxGCode) {  // also keeps lround in range
+      int code10 = static_cast<int>(std::lround(v * 10.0));
+      if (std::fabs(v * 10.0 - code10) < 1e-6) e = ctx_.table.findG(code10);
+    }
     if (!e) {
       fail(Alarm::UnknownGCode, w.loc,
            absl::StrCat("G", exprText(w.value), " is not a G code of ",
@@ -107,17 +111,25 @@ class Decoder {
     slot = g;  // last_wins / per_word: the last written is the block's modal code
   }
 
+  // The G90/G91 a G word selects, looked up in the dialect table (nullopt for other codes).
+  std::optional<ir::DistanceMode> distanceOf(const ast::Word& w) const {
+    double v;
+    bool point;
+    if (w.address != "G" || !foldLiteral(w.value, v, point) || !(v >= 0 && v < kMaxGCode))
+      return std::nullopt;
+    const GCodeEntry* e = ctx_.table.findG(static_cast<int>(std::lround(v * 10.0)));
+    if (!e || e->group != GGroup::Distance) return std::nullopt;
+    return e->action == GAction::Incremental ? ir::DistanceMode::Incremental
+                                             : ir::DistanceMode::Absolute;
+  }
+
   // Words before the first G90/G91 of the block follow that first code (the block-level
   // reading); later words follow the most recent one (Mazak's per-word switch).
   void initialDistance() {
     distance_ = ctx_.modal_distance;
     for (const ast::Word& w : block_.words) {
-      double v;
-      bool point;
-      if (w.address != "G" || !foldLiteral(w.value, v, point)) continue;
-      long code10 = std::lround(v * 10.0);
-      if (code10 == 900 || code10 == 910) {
-        distance_ = code10 == 900 ? ir::DistanceMode::Absolute : ir::DistanceMode::Incremental;
+      if (auto d = distanceOf(w)) {
+        distance_ = *d;
         break;
       }
     }
@@ -130,12 +142,7 @@ class Decoder {
 
   void trackDistance(const ast::Word& w) {
     if (ctx_.policy != SameGroupPolicy::PerWord) return;
-    double v;
-    bool point;
-    if (!foldLiteral(w.value, v, point)) return;
-    long code10 = std::lround(v * 10.0);
-    if (code10 == 900) distance_ = ir::DistanceMode::Absolute;
-    if (code10 == 910) distance_ = ir::DistanceMode::Incremental;
+    if (auto d = distanceOf(w)) distance_ = *d;
   }
 
   void store(std::optional<WordValue>& slot, WordValue wv, bool last_wins = false) {

@@ -29,6 +29,11 @@ struct ControllerState {
   int d_selected = 0;
   int tool_length_axis = -1;           // axis carrying the length offset, -1 if none
   double tool_length = 0.0;            // signed length applied on that axis
+  // A length change not yet traversed (length_change_moves = false, Siemens MD20382): the
+  // frame holds the new length, the position does not; taken up when the axis is programmed.
+  int length_pending_axis = -1;
+  double length_pending = 0.0;
+  bool feed_after_inverse_time = false;  // G94/G95 after G93 without a new F yet
   int last_g10_l2_p = 1;               // Mazak: G10 L2 without P reuses the last P
 };
 

@@ -146,6 +146,8 @@ constexpr std::string_view kAlarms[] = {
     "NCC2073",  // LocalShiftInExtended
     "NCC2080",  // AxisMissing
     "NCC2081",  // G53Incremental
+    "PS0003",   // TooManyDigits: too many digits
+    "NCC2045",  // LengthCompInArc (not raised)
 };
 static_assert(std::size(kAlarms) == static_cast<size_t>(Alarm::kCount));
 
@@ -173,6 +175,8 @@ constexpr DialectBehaviour kBehaviour{
     .extended_offset_is_g54_p = false,
     .inverse_time_arc_per_radius = false,
     .length_change_moves_default = true,
+    .format_digits = 8,                     // FANUC: 8-digit address format (PS0003)
+    .length_comp_in_arc_is_error = false,  // kept: a straight line at the modal F
 };
 }  // namespace
 

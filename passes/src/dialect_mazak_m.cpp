@@ -158,6 +158,8 @@ constexpr std::string_view kAlarms[] = {
     "949",      // LocalShiftInExtended: G52 in G54.1
     "NCC2080",  // AxisMissing
     "NCC2081",  // G53Incremental (not raised: G53 is incremental in G91)
+    "809",      // TooManyDigits: number of more than 8 digits
+    "NCC2045",  // LengthCompInArc (not raised)
 };
 static_assert(std::size(kAlarms) == static_cast<size_t>(Alarm::kCount));
 
@@ -185,6 +187,8 @@ constexpr DialectBehaviour kBehaviour{
     .extended_offset_is_g54_p = false,
     .inverse_time_arc_per_radius = true,    // §7-10: arcs F = speed / radius
     .length_change_moves_default = true,    // §12-2: move = ±z + (lh1 - lh0)
+    .format_digits = 8,                     // §5: "5+3 digits with a point, or 8 digits without" (809)
+    .length_comp_in_arc_is_error = false,  // the notes do not forbid it
 };
 }  // namespace
 

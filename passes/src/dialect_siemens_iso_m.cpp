@@ -142,6 +142,8 @@ constexpr std::string_view kAlarms[] = {
     "NCC2073",  // LocalShiftInExtended
     "NCC2080",  // AxisMissing
     "NCC2081",  // G53Incremental
+    "NCC2033",  // TooManyDigits (no number in the notes)
+    "NCC2045",  // LengthCompInArc
 };
 static_assert(std::size(kAlarms) == static_cast<size_t>(Alarm::kCount));
 
@@ -169,6 +171,8 @@ constexpr DialectBehaviour kBehaviour{
     .extended_offset_is_g54_p = true,
     .inverse_time_arc_per_radius = false,
     .length_change_moves_default = false,   // MD20382 TOOL_CORR_MOVE_MODE = FALSE
+    .format_digits = 8,                     // ISO mode takes the FANUC 8-digit format
+    .length_comp_in_arc_is_error = true,  // §3.5.2: "only in G00/G01 mode; in G02/G03 an error"
 };
 }  // namespace
 

@@ -146,6 +146,8 @@ LowerResult lowerBlock(LoweringCore& core, const ast::Block& block) {
   ctx.words = std::move(*decoded);
 
   applyModalCodes(ctx, result);
+  ctx.checkFormats();
+  if (ctx.failed) return LowerResult{};
   applyFeed(ctx);
   applyLengthOffset(ctx);
   applyRadiusOffsetNumber(ctx);

@@ -46,11 +46,9 @@ LoweringCore::LoweringCore(LoweringOptions o, DiagnosticEngine& d, ir::BlockSink
 
 void LoweringCore::powerOn() {
   ir::Modal& m = cs.modal;
-  m.units = settings.reset_unit == "G20" ? ir::Units::Inch : ir::Units::Millimetre;
-  m.plane = settings.reset_plane == "G18"   ? ir::Plane::ZX
-            : settings.reset_plane == "G19" ? ir::Plane::YZ
-                                            : ir::Plane::XY;
-  cs.motion = settings.reset_motion == "G01" ? GAction::Linear : GAction::Rapid;
+  m.units = settings.reset_unit;
+  m.plane = settings.reset_plane;
+  cs.motion = settings.reset_motion;
   if (const GCodeEntry* e = table->powerOnDefault(GGroup::Distance))
     m.distance = e->action == GAction::Incremental ? ir::DistanceMode::Incremental
                                                    : ir::DistanceMode::Absolute;
@@ -76,7 +74,55 @@ std::optional<int64_t> BlockContext::integer(const WordValue& w) {
          absl::StrCat("address ", w.address, " takes an integer; a decimal point is not allowed"));
     return std::nullopt;
   }
+  if (!integerFits(w)) return std::nullopt;
   return static_cast<int64_t>(std::trunc(w.value));
+}
+
+bool BlockContext::integerFits(const WordValue& w) {
+  const ValueRules& v = settings.values;
+  if (std::fabs(std::trunc(w.value)) <= v.maxCount()) return true;  // also rejects NaN
+  fail(Alarm::TooManyDigits, w.loc,
+       absl::StrCat("address ", w.address, " has more than ", v.digits, " digits (at most ",
+                    absl::StrFormat("%.0f", v.maxCount()), ")"));
+  return false;
+}
+
+void BlockContext::checkFormats() {
+  const ValueRules& v = settings.values;
+  ir::Units units = next.modal.units;
+  GAction one_shot = words.one_shot ? words.one_shot->entry->action : GAction::NotSupported;
+  // A value word: the number as written counts least increments (standard notation without
+  // a point) or is a value whose least increment is `increment`.
+  auto value = [&](const std::optional<WordValue>& w, double increment, const char* unit) {
+    if (!w || failed) return;
+    double count = (v.standard && !w->point) ? std::fabs(w->value) : std::fabs(w->value) / increment;
+    if (count <= v.maxCount() + 0.5) return;  // also rejects NaN
+    int decimals = std::max(0, static_cast<int>(std::lround(-std::log10(increment))));
+    fail(Alarm::TooManyDigits, w->loc,
+         absl::StrCat("address ", w->address, ": the value exceeds the ", v.digits,
+                      "-digit format (at most ±",
+                      absl::StrFormat("%.*f", decimals, v.maxCount() * increment), " ", unit, ")"));
+  };
+  const char* length_unit = units == ir::Units::Inch ? "in" : "mm";
+  double length = v.lengthIncrement(units);
+  int x = axisNamed("X");
+  for (int i = 0; i < axisCount(); ++i) {
+    if (one_shot == GAction::Dwell && i == x)
+      value(words.axes[i], v.time_increment, "s");
+    else if (isRotary(i))
+      value(words.axes[i], v.deg_increment * v.x10, "deg");
+    else
+      value(words.axes[i], length * v.x10, length_unit);
+  }
+  for (const auto* w : {&words.i, &words.j, &words.k}) value(*w, length * v.x10, length_unit);
+  // G10 L10-L13 R is an offset value: no x10 input unit (ValueRules::offset).
+  value(words.r, one_shot == GAction::DataSet ? length : length * v.x10, length_unit);
+  for (const auto* w : {&words.h, &words.d, &words.p, &words.l, &words.s})
+    if (*w && !failed) integerFits(**w);
+  for (const auto& w : words.t)
+    if (!failed) integerFits(w);
+  for (const auto& w : words.m)
+    if (!failed) integerFits(w);
 }
 
 bool BlockContext::isRotary(int axis) const {
@@ -126,9 +172,20 @@ AxisValues BlockContext::toMachine(const AxisValues& work, const ir::Frame& f) c
 AxisValues BlockContext::baseWork() const {
   AxisValues t = frameOf(next, behaviour).total(), w{};
   for (int i = 0; i < axisCount(); ++i) w[i] = next.position[i] - t[i];
-  if (length_delta_axis >= 0 && !words.axes[length_delta_axis])
-    w[length_delta_axis] += length_delta;
+  if (length_delta_axis >= 0 && length_delta_axis < axisCount()) {
+    const auto& word = words.axes[length_delta_axis];
+    bool incremental = word && word->mode == ir::DistanceMode::Incremental;
+    if (incremental || (!word && !length_delta_deferred)) w[length_delta_axis] += length_delta;
+  }
   return w;
+}
+
+void BlockContext::lengthChangeTraversed() {
+  if (next.length_pending_axis >= 0 && next.length_pending_axis < axisCount() &&
+      words.axes[next.length_pending_axis]) {
+    next.length_pending_axis = -1;
+    next.length_pending = 0.0;
+  }
 }
 
 AxisValues BlockContext::workTargets(const AxisValues& base) const {

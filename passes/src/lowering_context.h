@@ -76,9 +76,12 @@ struct BlockContext {
   DecodedBlock words;
   std::vector<ir::Operation> ops;
   std::vector<TableWrite> table_writes;
-  // A length-offset change that moves the length axis (G43 H alone): axis and amount.
+  // A length-offset change not yet traversed on the length axis: axis and amount. It moves
+  // the axis when the axis is programmed incrementally or, unless `length_delta_deferred`
+  // (Siemens: only when the axis is programmed), when it is not programmed at all.
   int length_delta_axis = -1;
   double length_delta = 0.0;
+  bool length_delta_deferred = false;
   // Words some code of the block has read; the rest are reported as having no meaning.
   bool used_ijk = false, used_r = false, used_p = false, used_l = false;
   bool failed = false;
@@ -88,6 +91,11 @@ struct BlockContext {
   void fail(Alarm a, SourceLocation loc, std::string message);
   // The integer value of an address such as H, D, P, L, M (nullopt after reporting).
   std::optional<int64_t> integer(const WordValue& w);
+  // Every word of the block against its format (format_digits): integer addresses by their
+  // digits, values by their least input increments. F is checked by applyFeed.
+  void checkFormats();
+  // Reports (TooManyDigits) an integer word with more digits than the format allows.
+  bool integerFits(const WordValue& w);
 
   bool isRotary(int axis) const;
   // An axis word normalised for its axis kind (mm or degrees).
@@ -101,9 +109,13 @@ struct BlockContext {
   SourceLocation motionLoc() const;
   bool samePosition(const AxisValues& a, const AxisValues& b) const;
   AxisValues toMachine(const AxisValues& work, const ir::Frame& f) const;
-  // The work position of the commanded point under the block's new frame; the length axis
-  // keeps its old work coordinate when a length change is to move it (G43 H alone).
+  // The work position the block's axis words start from, under the block's new frame. On the
+  // length axis an untraversed length change is added (the start point in the old frame)
+  // when the change moves now: the axis not programmed (G43 H alone) or programmed
+  // incrementally (Mazak §12-2: move = ±z + (new length − old length)).
   AxisValues baseWork() const;
+  // The block programs the length axis of a pending length change: it is taken up.
+  void lengthChangeTraversed();
   // Work-space targets: programmed axes absolute or incremental per word, others unchanged.
   AxisValues workTargets(const AxisValues& base) const;
 };

@@ -105,6 +105,7 @@ void setShift(BlockContext& ctx) {
     double others = without.total()[i] - ctx.next.g92[i];
     ctx.next.g92[i] = ctx.next.position[i] - others - w;
   }
+  ctx.lengthChangeTraversed();  // the new shift makes the current point what is programmed
 }
 
 // G92.1: the named axes' G92 and G52 shifts back to 0.

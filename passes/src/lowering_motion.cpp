@@ -6,12 +6,41 @@
 #include <numbers>
 
 #include "absl/strings/str_cat.h"
+#include "absl/strings/str_format.h"
 #include "arc_geometry.h"
 #include "lowering_context.h"
 
 namespace ncc::passes {
 
+namespace {
+
+const char* feedUnit(const ir::Modal& m) {
+  bool inch = m.units == ir::Units::Inch;
+  switch (m.feed_mode) {
+    case ir::FeedMode::PerRevolution: return inch ? "in/rev" : "mm/rev";
+    case ir::FeedMode::InverseTime: return "1/min";
+    case ir::FeedMode::PerMinute: break;
+  }
+  return inch ? "in/min" : "mm/min";
+}
+
+// G94/G95 after G93: the inverse-time F means nothing per minute or per revolution; the
+// block (or a later one) must give a new F (Mazak §7-10; FANUC and Siemens alike). Between
+// G94 and G95 the F is kept (docs/semantics.md, Feed).
+void leaveInverseTime(BlockContext& ctx) {
+  ir::Modal& m = ctx.next.modal;
+  if (ctx.core.cs.modal.feed_mode != ir::FeedMode::InverseTime ||
+      m.feed_mode == ir::FeedMode::InverseTime)
+    return;
+  m.feed = 0.0;
+  ctx.next.feed_programmed = false;
+  ctx.next.feed_after_inverse_time = true;
+}
+
+}  // namespace
+
 void applyFeed(BlockContext& ctx) {
+  leaveInverseTime(ctx);
   if (!ctx.words.f) return;
   const WordValue& f = *ctx.words.f;
   ir::Modal& m = ctx.next.modal;
@@ -29,10 +58,24 @@ void applyFeed(BlockContext& ctx) {
     m.feed =
         n <= static_cast<int>(ctx.settings.f1_feeds.size()) ? ctx.settings.f1_feeds[n - 1] : 0.0;
     ctx.next.feed_programmed = m.feed > 0;
+    ctx.next.feed_after_inverse_time = false;
     return;
   }
-  m.feed = ctx.settings.values.feed(f.value, f.point, m.units, m.feed_mode);
+  const ValueRules& v = ctx.settings.values;
+  double increment = v.lengthIncrement(m.units);
+  double count = v.feedInput(f.value, f.point, m.units, m.feed_mode) / increment;
+  if (!(count <= v.maxCount() + 0.5)) {
+    int decimals = static_cast<int>(std::lround(-std::log10(increment)));
+    ctx.fail(Alarm::TooManyDigits, f.loc,
+             absl::StrCat("address F: the value exceeds the ", v.digits, "-digit format (at most ",
+                          absl::StrFormat("%.*f", decimals, v.maxCount() * increment), " ",
+                          feedUnit(m), ")"));
+    return;
+  }
+  // A feed below half the least increment is F0: no feed.
+  m.feed = count < 0.5 ? 0.0 : v.feed(f.value, f.point, m.units, m.feed_mode);
   ctx.next.feed_programmed = m.feed > 0;
+  ctx.next.feed_after_inverse_time = false;
 }
 
 namespace {
@@ -40,7 +83,7 @@ namespace {
 bool checkFeed(BlockContext& ctx, bool inverse_time_needs_f) {
   const ir::Modal& m = ctx.next.modal;
   if (m.feed_mode == ir::FeedMode::InverseTime) {
-    if (inverse_time_needs_f && (!ctx.words.f || ctx.words.f->value <= 0)) {
+    if (inverse_time_needs_f && (!ctx.words.f || m.feed <= 0)) {
       ctx.fail(Alarm::FeedMissing, ctx.motionLoc(),
                "no feed rate: in inverse time feed (G93) every cutting block needs its own F");
       return false;
@@ -48,8 +91,18 @@ bool checkFeed(BlockContext& ctx, bool inverse_time_needs_f) {
     return true;
   }
   if (!ctx.next.feed_programmed) {
-    ctx.fail(Alarm::FeedMissing, ctx.motionLoc(),
-             "no feed rate: a cutting move needs an F word and none has been programmed");
+    const char* mode = m.feed_mode == ir::FeedMode::PerRevolution ? "G95" : "G94";
+    if (ctx.words.f && ctx.words.f->value > 0)
+      ctx.fail(Alarm::FeedMissing, ctx.words.f->loc,
+               absl::StrCat("no feed rate: F is below half the least input increment and counts "
+                            "as F0"));
+    else if (ctx.next.feed_after_inverse_time)
+      ctx.fail(Alarm::FeedMissing, ctx.motionLoc(),
+               absl::StrCat("no feed rate: after inverse time feed (G93), ", mode,
+                            " needs a new F word"));
+    else
+      ctx.fail(Alarm::FeedMissing, ctx.motionLoc(),
+               "no feed rate: a cutting move needs an F word and none has been programmed");
     return false;
   }
   return true;
@@ -219,6 +272,7 @@ void lowerMotion(BlockContext& ctx) {
     default: break;
   }
   ctx.next.position = to_machine;
+  ctx.lengthChangeTraversed();
 }
 
 }  // namespace ncc::passes

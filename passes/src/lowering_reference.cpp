@@ -36,8 +36,12 @@ void referenceReturn(BlockContext& ctx, const GWord&, int n) {
   if (!ctx.samePosition(home, via))
     ctx.ops.push_back(ir::Rapid{home, ir::Space::Machine, ir::RapidType::PerAxis});
   ctx.next.position = home;
-  if (ctx.behaviour.reference_return_cancels_length && ctx.namedAxes() != 0 &&
-      ctx.next.modal.length_offset_sign != 0) {
+  ctx.lengthChangeTraversed();
+  // The length offset is cancelled in the axis returned (Mazak §14: "length offset cancelled
+  // in that axis"): only when the length axis is among the named axes.
+  int axis = ctx.next.tool_length_axis;
+  if (ctx.behaviour.reference_return_cancels_length && axis >= 0 && axis < ctx.axisCount() &&
+      ctx.words.axes[axis] && ctx.next.modal.length_offset_sign != 0) {
     ctx.next.modal.length_offset_sign = 0;
     ctx.next.modal.length_offset_h = 0;
     ctx.next.tool_length_axis = -1;
@@ -65,6 +69,7 @@ void referenceCheck(BlockContext& ctx, const GWord& g) {
     ctx.ops.push_back(ir::Rapid{target, ir::Space::Work, ctx.settings.rapid_type});
   ctx.ops.push_back(ir::ReferenceCheck{reached, ctx.namedAxes(), n});
   ctx.next.position = reached;
+  ctx.lengthChangeTraversed();
 }
 
 }  // namespace ncc::passes

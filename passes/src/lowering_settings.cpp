@@ -14,6 +14,7 @@ LoweringSettings LoweringSettings::resolve(const DialectTable& table,
              : policy == "per_word"  ? SameGroupPolicy::PerWord
                                      : SameGroupPolicy::LastWins;
   s.values = ValueRules::fromParams(p, b.decimal_point_default);
+  s.values.digits = b.format_digits;
   s.rapid_type = p.getString("rapid_type", std::string(b.rapid_type_default)) == "per_axis"
                      ? ir::RapidType::PerAxis
                      : ir::RapidType::Linear;
@@ -26,7 +27,10 @@ LoweringSettings LoweringSettings::resolve(const DialectTable& table,
   if (p.has("dwell_in_revolutions_with_g95"))
     s.dwell_revolutions = p.getBool("dwell_in_revolutions_with_g95", false);
   s.length_change_moves = p.getBool("tool_length_move_mode", b.length_change_moves_default);
-  s.tool_length_mode = p.getString("tool_length_mode", "A");
+  std::string mode = p.getString("tool_length_mode", "A");
+  s.tool_length_mode = mode == "B"   ? ToolLengthMode::B
+                       : mode == "C" ? ToolLengthMode::C
+                                     : ToolLengthMode::A;
   s.f1_digit = p.getBool("f1_digit_feed", false);
   if (const auto* list = p.getNumberList("f1_f9_feedrates")) s.f1_feeds = *list;
   static const char* const kRefKeys[] = {"reference_point_1", "reference_point_2",
@@ -48,9 +52,14 @@ LoweringSettings LoweringSettings::resolve(const DialectTable& table,
   s.block_skip = p.getBool("block_skip", false);
   if (const auto* levels = p.getNumberList("block_skip_levels"))
     for (double l : *levels) s.skip_levels.insert(static_cast<int>(std::lround(l)));
-  s.reset_unit = p.getString("reset_unit", "G21");
-  s.reset_motion = p.getString("reset_motion_mode", "G00");
-  s.reset_plane = p.getString("reset_plane", "G17");
+  s.reset_unit =
+      p.getString("reset_unit", "G21") == "G20" ? ir::Units::Inch : ir::Units::Millimetre;
+  s.reset_motion =
+      p.getString("reset_motion_mode", "G00") == "G01" ? GAction::Linear : GAction::Rapid;
+  std::string plane = p.getString("reset_plane", "G17");
+  s.reset_plane = plane == "G18"   ? ir::Plane::ZX
+                  : plane == "G19" ? ir::Plane::YZ
+                                   : ir::Plane::XY;
   return s;
 }
 

@@ -13,6 +13,10 @@
 
 namespace ncc::passes {
 
+// Where the tool length applies (tool_length_mode, Siemens MD20380): A = Z, B = the axis
+// normal to the plane, C = the axis programmed with H (not supported yet).
+enum class ToolLengthMode : uint8_t { A, B, C };
+
 struct LoweringSettings {
   SameGroupPolicy policy = SameGroupPolicy::Error;
   ValueRules values;
@@ -21,16 +25,17 @@ struct LoweringSettings {
   int offset_count = 400;
   bool dwell_revolutions = false;      // G04 in G95 counts revolutions
   bool length_change_moves = true;     // G43 H / G49 without the length axis moves it
-  std::string tool_length_mode = "A";  // A: Z; B: axis normal to the plane
+  ToolLengthMode tool_length_mode = ToolLengthMode::A;
   bool f1_digit = false;
   std::vector<double> f1_feeds;        // F1..F9, mm/min
   std::array<AxisValues, 4> reference{};  // reference points 1..4, machine coordinates
   std::set<int> macro_m_codes;         // Siemens m_code_macros
   bool block_skip = false;             // Mazak's single block-skip switch
   std::set<int> skip_levels;           // block_skip_levels
-  std::string reset_unit = "G21";
-  std::string reset_motion = "G00";
-  std::string reset_plane = "G17";
+  // Power-on state (reset_unit, reset_motion_mode, reset_plane), resolved from the strings.
+  ir::Units reset_unit = ir::Units::Millimetre;
+  GAction reset_motion = GAction::Rapid;
+  ir::Plane reset_plane = ir::Plane::XY;
 
   static LoweringSettings resolve(const DialectTable& table, const MachineConfig& machine);
 };

@@ -2,6 +2,8 @@
 // tool_length_mode), the radius offset number D, and the G10 L10-L13 writes to the length and
 // radius (wear) registers. A length change can move the length axis in a block of its own;
 // that is recorded here (BlockContext::length_delta*) and carried out by the block's motion.
+#include <cmath>
+
 #include "absl/strings/str_cat.h"
 #include "lowering_context.h"
 
@@ -11,7 +13,7 @@ namespace {
 
 // The axis carrying the length offset: Z (mode A), or the axis normal to the plane (mode B).
 int lengthAxis(const BlockContext& ctx) {
-  if (ctx.settings.tool_length_mode == "B") {
+  if (ctx.settings.tool_length_mode == ToolLengthMode::B) {
     switch (ctx.next.modal.plane) {
       case ir::Plane::XY: return ctx.axisNamed("Z");
       case ir::Plane::ZX: return ctx.axisNamed("Y");
@@ -21,9 +23,22 @@ int lengthAxis(const BlockContext& ctx) {
   return ctx.axisNamed("Z");
 }
 
-}  // namespace
+// Siemens §3.5.2: G43/G44/G49 (and a new H in G43/G44) only in G00/G01 mode.
+bool lengthChangeAllowed(BlockContext& ctx, const std::optional<GWord>& g, int sign) {
+  bool arc = ctx.next.motion == GAction::ArcCW || ctx.next.motion == GAction::ArcCCW;
+  if (!ctx.behaviour.length_comp_in_arc_is_error || !arc) return true;
+  if (!g && (!ctx.words.h || sign == 0)) return true;
+  std::string what = g ? gCodeName(g->entry->code10)
+                       : absl::StrCat("H", static_cast<int64_t>(std::trunc(ctx.words.h->value)));
+  ctx.fail(Alarm::LengthCompInArc, g ? g->loc : ctx.words.h->loc,
+           absl::StrCat(what, " is not allowed while ",
+                        ctx.next.motion == GAction::ArcCW ? "G02" : "G03",
+                        " is in force: tool length compensation changes only in G00/G01 mode"));
+  return false;
+}
 
-void applyLengthOffset(BlockContext& ctx) {
+// H with G43/G44/G49: the new length, and the change it makes on the length axis.
+void changeLengthOffset(BlockContext& ctx) {
   const auto& g = ctx.words.group(GGroup::LengthComp);
   if (ctx.words.h) {
     auto n = ctx.integer(*ctx.words.h);
@@ -42,7 +57,8 @@ void applyLengthOffset(BlockContext& ctx) {
     GAction a = g->entry->action;
     sign = a == GAction::LengthPlus ? 1 : a == GAction::LengthMinus ? -1 : 0;
   }
-  if (sign != 0 && ctx.settings.tool_length_mode == "C") {
+  if (!lengthChangeAllowed(ctx, g, sign)) return;
+  if (sign != 0 && ctx.settings.tool_length_mode == ToolLengthMode::C) {
     ctx.fail(Alarm::CodeNotSupported, g ? g->loc : ctx.words.h->loc,
              "tool length mode C (offset on the axis programmed with H) is not supported yet");
     return;
@@ -60,14 +76,32 @@ void applyLengthOffset(BlockContext& ctx) {
   }
   double old = ctx.core.cs.tool_length_axis >= 0 ? ctx.core.cs.tool_length : 0.0;
   int changed_axis = axis >= 0 ? axis : ctx.core.cs.tool_length_axis;
-  if (ctx.settings.length_change_moves && changed_axis >= 0 && length != old) {
-    ctx.length_delta_axis = changed_axis;
-    ctx.length_delta = length - old;
+  if (changed_axis >= 0 && length != old) {
+    if (ctx.settings.length_change_moves) {
+      ctx.length_delta_axis = changed_axis;
+      ctx.length_delta = length - old;
+    } else {
+      // Traversed when the axis is next programmed (Siemens MD20382 = FALSE).
+      ControllerState& n = ctx.next;
+      if (n.length_pending_axis != changed_axis) n.length_pending = 0.0;
+      n.length_pending_axis = changed_axis;
+      n.length_pending += length - old;
+    }
   }
   ctx.next.tool_length_axis = axis;
   ctx.next.tool_length = length;
   ctx.next.modal.length_offset_sign = sign;
   ctx.next.modal.length_offset_h = sign != 0 ? ctx.next.h_selected : 0;
+}
+
+}  // namespace
+
+void applyLengthOffset(BlockContext& ctx) {
+  changeLengthOffset(ctx);
+  if (ctx.failed || ctx.next.length_pending_axis < 0) return;
+  ctx.length_delta_axis = ctx.next.length_pending_axis;
+  ctx.length_delta = ctx.next.length_pending;
+  ctx.length_delta_deferred = true;
 }
 
 void applyRadiusOffsetNumber(BlockContext& ctx) {

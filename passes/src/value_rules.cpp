@@ -1,5 +1,7 @@
 #include "value_rules.h"
 
+#include <cmath>
+
 namespace ncc::passes {
 
 namespace {
@@ -39,14 +41,25 @@ double ValueRules::dwellX(double v, bool point) const {
   return (standard && !point) ? v * time_increment : v;
 }
 
-double ValueRules::feed(double v, bool point, ir::Units units, ir::FeedMode mode) const {
+double ValueRules::maxCount() const { return std::pow(10.0, digits) - 1.0; }
+
+double ValueRules::lengthIncrement(ir::Units units) const {
+  return units == ir::Units::Inch ? inch_increment : mm_increment;
+}
+
+double ValueRules::feedInput(double v, bool point, ir::Units units, ir::FeedMode mode) const {
   bool inch = units == ir::Units::Inch;
   if (standard && !point) {
     if (mode == ir::FeedMode::PerRevolution) v *= inch ? 0.0001 : 0.01;
     else if (mode == ir::FeedMode::PerMinute && inch) v *= 0.01;
   }
+  return v;
+}
+
+double ValueRules::feed(double v, bool point, ir::Units units, ir::FeedMode mode) const {
+  v = feedInput(v, point, units, mode);
   if (mode == ir::FeedMode::InverseTime) return v;
-  return inch ? v * kMmPerInch : v;
+  return units == ir::Units::Inch ? v * kMmPerInch : v;
 }
 
 }  // namespace ncc::passes

@@ -14,6 +14,15 @@ struct ValueRules {
   double deg_increment = 0.001;
   double time_increment = 0.001;  // G04 X without a point
   double x10 = 1.0;              // Mazak input_unit_x10: coordinates x10 (not offsets)
+  int digits = 8;                // the dialect's format_digits
+
+  // The largest number of least increments (or integer) a word can hold: 10^digits - 1.
+  double maxCount() const;
+  // The least input increment of a length (mm or inch) and of a feed in its input unit.
+  double lengthIncrement(ir::Units units) const;
+  // F in its input unit (mm or inch per minute/revolution, 1/min): notation applied, inch not
+  // converted. `feed` is this value converted to mm.
+  double feedInput(double v, bool point, ir::Units units, ir::FeedMode mode) const;
 
   // Reads decimal_point, increment_system and input_unit_x10 with the dialect's default
   // decimal-point mode.

@@ -84,5 +84,81 @@ TEST(Coordinates, G27ChecksTheReferencePosition) {
   EXPECT_EQ(check.position[0], 0.0);
 }
 
+// The reviewer's machine: G54 = [-100, -50, -200], H1 = 100, H2 = 50, start at 0.
+std::string lengthMachine(const std::string& params = "") {
+  return "[machine]\naxes = [\"X\", \"Y\", \"Z\"]\n[machine.offsets]\nH1 = 100.0\nH2 = 50.0\n"
+         "[machine.work]\nG54 = [-100.0, -50.0, -200.0]\n[machine.params]\n" + params +
+         "\n[start]\nposition = { X = 0.0, Y = 0.0, Z = 0.0 }\n";
+}
+
+// Mazak §12-2: an incremental move with a length change is ±z + (new length - old length).
+TEST(ToolLength, IncrementalMoveCarriesTheLengthChangeMazak) {
+  Lowered r = lower(Dialect::MazakM, "G90 G54 G00 Z10.\nG91 G43 H1 Z-5.\n", lengthMachine());
+  expectMoves(r, kXYZ, {{"rapid", {{"Z", -190}}}, {"rapid", {{"Z", -95}}}});
+}
+
+TEST(ToolLength, IncrementalMoveCarriesTheLengthChangeFanuc) {
+  Lowered r = lower(Dialect::FanucM, "G90 G54 G00 Z10.\nG91 G43 H1 Z-5.\nG43 H2 Z0\n",
+                    lengthMachine());
+  // H1 -> H2 with G91 Z0: the axis moves by the change, 50 - 100.
+  expectMoves(r, kXYZ, {{"rapid", {{"Z", -190}}}, {"rapid", {{"Z", -95}}}, {"rapid", {{"Z", -145}}}});
+}
+
+TEST(ToolLength, IncrementalZeroMoveWithLengthChangeFanuc) {
+  Lowered r = lower(Dialect::FanucM, "G43 H2 G91 Z0\n", lengthMachine());
+  expectMoves(r, kXYZ, {{"rapid", {{"Z", 50}}}});
+}
+
+TEST(ToolLength, SiemensPendingLengthIsTakenUpByTheNextIncrementalMove) {
+  Lowered r = lower(Dialect::SiemensIsoM, "G90 G54 G00 Z10.\nG43 H1\nX5.\nG91 Z-5.\nZ-5.\n",
+                    lengthMachine());
+  // G43 H1 does not move (MD20382 = FALSE); nor does X5.; G91 Z-5. takes up the +100 once.
+  expectMoves(r, kXYZ, {{"rapid", {{"Z", -190}}}, {"rapid", {{"X", -95}, {"Z", -190}}},
+                        {"rapid", {{"Z", -95}}}, {"rapid", {{"Z", -100}}}});
+}
+
+TEST(ToolLength, SiemensPendingLengthWithAbsoluteMove) {
+  Lowered r = lower(Dialect::SiemensIsoM, "G90 G54 G00 Z10.\nG43 H1\nZ10.\nG91 Z-5.\n",
+                    lengthMachine());
+  expectMoves(r, kXYZ, {{"rapid", {{"Z", -190}}}, {"rapid", {{"Z", -90}}}, {"rapid", {{"Z", -95}}}});
+}
+
+// G28/G30 cancel the length offset only when the length axis is returned.
+TEST(ToolLength, ReferenceReturnOfAnotherAxisKeepsTheLengthOffset) {
+  for (Dialect d : {Dialect::FanucM, Dialect::MazakM}) {
+    SCOPED_TRACE(static_cast<int>(d));
+    Lowered r = lower(d, "G90 G54 G43 H1 X0 Y0 Z50.\nG91 G28 X0\nG90 G00 Z50.\nG91 G30 Y0\nG90 Z50.\n",
+                      lengthMachine());
+    expectMoves(r, kXYZ, {{"rapid", {{"X", -100}, {"Y", -50}, {"Z", -50}}}, {"rapid", {{"X", 0}, {"Z", -50}}},
+                          {"rapid", {{"Y", 0}, {"Z", -50}}}});
+    EXPECT_EQ(r.blocks[2].modal.length_offset_sign, 1);
+    EXPECT_EQ(r.blocks.back().modal.length_offset_sign, 1);
+  }
+}
+
+TEST(ToolLength, ReferenceReturnOfTheLengthAxisCancelsIt) {
+  Lowered r = lower(Dialect::MazakM, "G90 G54 G43 H1 Z50.\nG91 G28 X0 Z0\nG90 G00 Z50.\n",
+                    lengthMachine());
+  expectMoves(r, kXYZ, {{"rapid", {{"Z", -50}}}, {"rapid", {{"X", 0}, {"Z", 0}}},
+                        {"rapid", {{"Z", -150}}}});
+  EXPECT_EQ(r.blocks[1].modal.length_offset_sign, 0);
+}
+
+TEST(ToolLength, FanucLengthChangeInArcModeIsAStraightLine) {
+  Lowered r = lower(Dialect::FanucM, "G02 I5. F100.\nG43 H1\n", lengthMachine());
+  ASSERT_EQ(r.diagText(), "");
+  ASSERT_EQ(r.moves.size(), 2u);
+  EXPECT_EQ(r.moves[1].kind, "line");
+  EXPECT_NEAR(r.moves[1].feed, 100.0, 1e-9);
+}
+
+TEST(ToolLength, SiemensLengthChangeInArcModeIsAnError) {
+  Lowered r = lower(Dialect::SiemensIsoM, "G02 I5. F100.\nG43 H1\nG01 G43 H1\n",
+                    lengthMachine());
+  EXPECT_EQ(r.diagText(),
+            "2:1: error[NCC2045]: G43 is not allowed while G02 is in force: tool length "
+            "compensation changes only in G00/G01 mode\n");
+}
+
 }  // namespace
 }  // namespace ncc::passes::test

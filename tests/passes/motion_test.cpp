@@ -1,4 +1,5 @@
 // G00/G01/G02/G03 on fanuc-m (default machine: X Y Z, standard decimal point, IS-B).
+#include "absl/strings/str_cat.h"
 #include "expect_moves.h"
 #include "ncc/ir/ir.h"
 
@@ -71,6 +72,50 @@ TEST(Motion, InchFeedIsConverted) {
   Lowered r = lower(Dialect::FanucM, "G20 G01 X1. F10.\n");
   expectMoves(r, kXYZ, {{"line", {{"X", 25.4}}, {}, false, 254}});
   EXPECT_EQ(r.blocks[0].modal.units, ir::Units::Inch);
+}
+
+// G94/G95 after G93 need a new F: the inverse-time F is not a feed per minute.
+TEST(Motion, FeedPerMinuteAfterInverseTimeNeedsANewF) {
+  struct Case {
+    Dialect d;
+    const char* code;
+  };
+  for (Case c : {Case{Dialect::FanucM, "PS0011"}, Case{Dialect::MazakM, "816"},
+                 Case{Dialect::SiemensIsoM, "10860"}}) {
+    Lowered r = lower(c.d, "G93 G01 X30. F2.\nG94 G01 X50.\n");
+    EXPECT_EQ(r.diagText(), absl::StrCat("2:5: error[", c.code,
+                                         "]: no feed rate: after inverse time feed (G93), G94 "
+                                         "needs a new F word\n"));
+  }
+  Lowered rev = lower(Dialect::FanucM, "G93 G01 X30. F2.\nG95\nG00 X0\nG01 X10.\n");
+  EXPECT_EQ(rev.diagText(),
+            "4:1: error[PS0011]: no feed rate: after inverse time feed (G93), G95 needs a new F "
+            "word\n");
+  Lowered ok = lower(Dialect::FanucM, "G93 G01 X30. F2.\nG94 G01 X50. F100.\nX60.\n");
+  expectMoves(ok, kXYZ, {{"line", {{"X", 30}}, {}, false, 60}, {"line", {{"X", 50}}, {}, false, 100},
+                         {"line", {{"X", 60}}, {}, false, 100}});
+  EXPECT_EQ(ok.blocks[1].modal.feed, 100.0);
+}
+
+// Between G94 and G95 the F is kept, reread in the new mode (docs/semantics.md, Feed).
+TEST(Motion, FeedIsKeptBetweenG94AndG95) {
+  Lowered r = lower(Dialect::FanucM, "G94 G01 X1. F100.\nG95 X2.\n");
+  expectMoves(r, kXYZ, {{"line", {{"X", 1}}, {}, false, 100}, {"line", {{"X", 2}}, {}, false, 100}});
+}
+
+TEST(Motion, ValuesAtTheFormatLimitAreAccepted) {
+  Lowered r = lower(Dialect::FanucM, "G01 X99999.999 F99999.999\nG04 P99999999\nT99999999 M99999999\n");
+  EXPECT_EQ(r.diagText(), "");
+  Lowered c = lower(Dialect::FanucM, "G00 X9999.9999\n", xyzMachine("increment_system = \"IS-C\""));
+  EXPECT_EQ(c.diagText(), "");
+}
+
+TEST(Motion, PowerOnStateFromTheResetParameters) {
+  Lowered r = lower(Dialect::FanucM, "X1. F10.\n",
+                    xyzMachine("reset_unit = \"G20\"\nreset_motion_mode = \"G01\"\n"
+                               "reset_plane = \"G18\""));
+  expectMoves(r, kXYZ, {{"line", {{"X", 25.4}}, {}, false, 254}});
+  EXPECT_EQ(r.blocks[0].modal.plane, ir::Plane::ZX);
 }
 
 }  // namespace

@@ -84,6 +84,8 @@ enum class Alarm : uint8_t {
   LocalShiftInExtended,     // G52 while G54.1 is active
   AxisMissing,              // G43 on a machine without the length axis, arc plane axis missing
   G53Incremental,           // G53 in G91 where the controller ignores it (warning)
+  TooManyDigits,            // a number longer than its address's format (format_digits)
+  LengthCompInArc,          // G43/G44/G49 (or a new H) while G02/G03 is in force
   kCount,
 };
 
@@ -114,6 +116,10 @@ struct DialectBehaviour {
   bool extended_offset_is_g54_p;           // Siemens: `G54 P1` instead of `G54.1 P1`
   bool inverse_time_arc_per_radius;        // Mazak G93: F = speed / radius on arcs
   bool length_change_moves_default;        // G43 H / G49 alone moves the length axis
+  // Digits of a number: an integer address (H D P L S T M) has at most this many, a value
+  // (axes, I J K R, F, G04 X, G10 R) at most this many least input increments.
+  int format_digits;
+  bool length_comp_in_arc_is_error;        // G43/G44/G49 only in G00/G01 mode (Siemens)
 };
 
 struct DialectTable {
