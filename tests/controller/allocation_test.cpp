@@ -1,22 +1,9 @@
 // After construction, tick() allocates nothing (real-time discipline), through a whole
 // program and through a servo alarm: a replaced global operator new counts every allocation
 // of this binary.
-#include <cstdlib>
-#include <new>
+#include "allocation_counter.h"
 
 #include "controller_test_util.h"
-
-namespace {
-long g_allocations = 0;
-}  // namespace
-
-void* operator new(std::size_t size) {
-  ++g_allocations;
-  if (void* p = std::malloc(size == 0 ? 1 : size)) return p;
-  throw std::bad_alloc();
-}
-void operator delete(void* p) noexcept { std::free(p); }
-void operator delete(void* p, std::size_t) noexcept { std::free(p); }
 
 namespace ncc {
 namespace {
@@ -47,12 +34,12 @@ TEST(ControllerAllocation, TickAllocatesNothing) {
   vm::ControllerOptions options;
   options.window_capacity = 256;
   std::unique_ptr<vm::Controller> ctl = make(program(m), m, options);
-  const long before = g_allocations;
+  const long before = test::allocationCount();
   vm::TickOutput out;
   uint64_t ticks = 0;
   while (ctl->tick(out) == vm::TickStatus::Running) ++ticks;
   const vm::RunStatistics stats = ctl->statistics();
-  EXPECT_EQ(g_allocations - before, 0);
+  EXPECT_EQ(test::allocationCount() - before, 0);
   EXPECT_EQ(ctl->status(), vm::TickStatus::Finished);
   EXPECT_GT(ticks, 5000u);
   EXPECT_GT(stats.path_length, 100.0);
@@ -66,11 +53,11 @@ TEST(ControllerAllocation, ServoAlarmAllocatesNothing) {
   bytecode::Assembler a = assemblerFor(m);
   a.line(xyz(100, 0, 0), 6000.0).op(bytecode::Opcode::End);
   std::unique_ptr<vm::Controller> ctl = make(a.finish(), m);
-  const long before = g_allocations;
+  const long before = test::allocationCount();
   vm::TickOutput out;
   while (ctl->tick(out) == vm::TickStatus::Running) {
   }
-  EXPECT_EQ(g_allocations - before, 0);
+  EXPECT_EQ(test::allocationCount() - before, 0);
   ASSERT_NE(ctl->alarm(), nullptr);
   EXPECT_EQ(ctl->alarm()->code, "25050");
 }

@@ -1,21 +1,8 @@
 // After construction, pushing primitives and evaluating ticks allocates nothing.
-#include <cstdlib>
-#include <new>
+#include "allocation_counter.h"
 
 #include "gtest/gtest.h"
 #include "motion_test_util.h"
-
-namespace {
-long g_allocations = 0;
-}  // namespace
-
-void* operator new(std::size_t size) {
-  ++g_allocations;
-  if (void* p = std::malloc(size == 0 ? 1 : size)) return p;
-  throw std::bad_alloc();
-}
-void operator delete(void* p) noexcept { std::free(p); }
-void operator delete(void* p, std::size_t) noexcept { std::free(p); }
 
 namespace ncc::motion_test {
 namespace {
@@ -38,14 +25,14 @@ TEST(MotionAllocation, TickPathAllocatesNothing) {
   vm::motion::SetpointInfo info;
   std::size_t next = 0;
   uint64_t ticks = 0;
-  const long before = g_allocations;
+  const long before = test::allocationCount();
   for (uint64_t k = 0;; ++k) {
     while (next < prog.size() && planner.canAccept()) planner.push(prog[next++]);
     if (next == prog.size()) planner.endOfProgram();
     if (!planner.setpoint(k, out, info)) break;
     ++ticks;
   }
-  EXPECT_EQ(g_allocations - before, 0);
+  EXPECT_EQ(test::allocationCount() - before, 0);
   EXPECT_GT(ticks, 100u);
   EXPECT_EQ(out, xyz(0, 0, 0));
 }

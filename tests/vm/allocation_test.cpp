@@ -1,21 +1,8 @@
 // After construction, running the program allocates nothing (real-time discipline).
-#include <cstdlib>
-#include <new>
+#include "allocation_counter.h"
 
 #include "gtest/gtest.h"
 #include "run.h"
-
-namespace {
-long g_allocations = 0;
-}  // namespace
-
-void* operator new(std::size_t size) {
-  ++g_allocations;
-  if (void* p = std::malloc(size == 0 ? 1 : size)) return p;
-  throw std::bad_alloc();
-}
-void operator delete(void* p) noexcept { std::free(p); }
-void operator delete(void* p, std::size_t) noexcept { std::free(p); }
 
 namespace ncc {
 namespace {
@@ -40,9 +27,9 @@ TEST(Allocation, NextAllocatesNothing) {
   vm::Executor executor(p, machine);
   vm::Event event;
   long events = 0;
-  const long before = g_allocations;
+  const long before = test::allocationCount();
   while (executor.next(event)) ++events;
-  const long during = g_allocations - before;
+  const long during = test::allocationCount() - before;
   EXPECT_EQ(during, 0);
   EXPECT_EQ(events, 100 * 5 + 1);
   EXPECT_FALSE(executor.alarm());
