@@ -24,6 +24,19 @@ struct RunArgs {
   uint64_t max_steps = driver::kDefaultMaxSteps;
 };
 
+// Samples of the servo model's actual motion beyond the machine's limits, by kind. (The
+// planner keeps the commanded setpoints within them; what the servo adds shows here.)
+std::string limitViolationsLine(const vm::RunStatistics& s, int axis_count) {
+  int64_t travel = 0, velocity = 0, acceleration = 0;
+  for (int i = 0; i < axis_count; ++i) {
+    travel += s.violations[i].travel;
+    velocity += s.violations[i].velocity;
+    acceleration += s.violations[i].acceleration;
+  }
+  return absl::StrFormat("limit violations   %d (servo actual: %d travel, %d velocity, %d acceleration ticks)",
+                         s.limit_violations, travel, velocity, acceleration);
+}
+
 void printSummary(std::ostream& out, const driver::SimulationResult& sim,
                   const bytecode::Program& program, double tick_seconds) {
   const vm::RunStatistics& s = sim.statistics;
@@ -36,7 +49,7 @@ void printSummary(std::ostream& out, const driver::SimulationResult& sim,
   out << " mm\n"
       << absl::StrFormat("max contour error  %.4f mm (t = %.3f s)\n", s.max_contour_error,
                          static_cast<double>(s.max_contour_error_tick) * tick_seconds)
-      << "limit violations   " << s.limit_violations << '\n'
+      << limitViolationsLine(s, program.axisCount()) << '\n'
       << "final position    ";
   for (int i = 0; i < program.axisCount(); ++i)
     out << ' ' << program.header.axes[i].name << driver::jsonNumber(sim.final_commanded[i]);
