@@ -7,26 +7,10 @@
 #include <cmath>
 #include <vector>
 
+#include "six_axis_machine.h"
 #include "ncc/vm/servo/servo_model.h"
 
 namespace {
-
-ncc::MachineConfig sixAxes() {
-  ncc::MachineConfig m = ncc::defaultMachine();
-  for (const char* name : {"A", "B", "C"}) {
-    ncc::AxisConfig a;
-    a.name = name;
-    m.axes.push_back(a);
-  }
-  for (ncc::AxisConfig& a : m.axes) {
-    a.servo.ffw_mode = ncc::FeedForwardMode::Torque;
-    a.servo.backlash = 0.01;
-    a.servo.backlash_compensation = 0.01;
-    a.servo.pitch_error = ncc::PitchTable{-500.0, 10.0, std::vector<double>(101, 0.001)};
-    a.servo.pitch_compensation = a.servo.pitch_error;
-  }
-  return m;
-}
 
 // Setpoints of a circle in XY with the other axes oscillating, precomputed.
 std::vector<ncc::AxisValues> setpoints(long n) {
@@ -39,7 +23,7 @@ std::vector<ncc::AxisValues> setpoints(long n) {
 }
 
 void BM_ServoStep6Axes(benchmark::State& state) {
-  ncc::vm::ServoModel model(sixAxes());
+  ncc::vm::ServoModel model(ncc::bench::sixAxes());
   const std::vector<ncc::AxisValues> sp = setpoints(4096);
   size_t k = 0;
   for (auto _ : state) {
@@ -52,7 +36,7 @@ BENCHMARK(BM_ServoStep6Axes);
 
 // Worst single tick over 1e6 ticks, timed one by one (includes the clock's own cost).
 void BM_ServoWorstTick6Axes(benchmark::State& state) {
-  ncc::vm::ServoModel model(sixAxes());
+  ncc::vm::ServoModel model(ncc::bench::sixAxes());
   const std::vector<ncc::AxisValues> sp = setpoints(4096);
   using Clock = std::chrono::steady_clock;
   double worst_ns = 0.0;

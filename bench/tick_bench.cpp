@@ -10,27 +10,10 @@
 #include <vector>
 
 #include "ncc/bytecode/assembler.h"
+#include "six_axis_machine.h"
 #include "ncc/vm/controller.h"
 
 namespace {
-
-ncc::MachineConfig sixAxes() {
-  ncc::MachineConfig m = ncc::defaultMachine();
-  for (const char* name : {"A", "B", "C"}) {
-    ncc::AxisConfig a;
-    a.name = name;
-    a.kind = ncc::AxisKind::Rotary;
-    m.axes.push_back(a);
-  }
-  for (ncc::AxisConfig& a : m.axes) {
-    a.servo.ffw_mode = ncc::FeedForwardMode::Torque;
-    a.servo.backlash = 0.01;
-    a.servo.backlash_compensation = 0.01;
-    a.servo.pitch_error = ncc::PitchTable{-500.0, 10.0, std::vector<double>(101, 0.001)};
-    a.servo.pitch_compensation = a.servo.pitch_error;
-  }
-  return m;
-}
 
 ncc::AxisValues point(double x, double y, double z, double a, double b, double c) {
   ncc::AxisValues v{};
@@ -68,7 +51,7 @@ std::unique_ptr<ncc::vm::Controller> controller(const ncc::MachineConfig& m, int
 
 // Mean cost of a tick, restarting the program whenever it ends (restart not timed).
 void BM_Tick6Axes(benchmark::State& state) {
-  const ncc::MachineConfig m = sixAxes();
+  const ncc::MachineConfig m = ncc::bench::sixAxes();
   std::unique_ptr<ncc::vm::Controller> ctl = controller(m, 4);
   ncc::vm::TickOutput out;
   for (auto _ : state) {
@@ -87,7 +70,7 @@ BENCHMARK(BM_Tick6Axes);
 // 99.99th percentile (the worst tick on shared cores is usually preemption, not the VM), and
 // the first tick, which fills the look-ahead window. The clock's own cost is included.
 void BM_WorstTick6Axes(benchmark::State& state) {
-  const ncc::MachineConfig m = sixAxes();
+  const ncc::MachineConfig m = ncc::bench::sixAxes();
   using Clock = std::chrono::steady_clock;
   std::vector<double> ns;
   ns.reserve(1 << 20);
@@ -121,7 +104,7 @@ BENCHMARK(BM_WorstTick6Axes)->Unit(benchmark::kMillisecond)->Iterations(3);
 // Simulating a long program: ticks per second of wall time, and what one hour of program
 // time (3.6e6 ticks at T = 1 ms) costs.
 void BM_SimulateProgram(benchmark::State& state) {
-  const ncc::MachineConfig m = sixAxes();
+  const ncc::MachineConfig m = ncc::bench::sixAxes();
   double ticks = 0.0;
   for (auto _ : state) {
     state.PauseTiming();
