@@ -124,7 +124,7 @@ class MachineFileReader {
   bool readMachine(const toml::table& t) {
     static constexpr std::string_view kKeys[] = {"axes",   "diameter_axes", "offsets",  "work",
                                                  "params", "axis",          "ipo_cycle",
-                                                 "chord_tolerance"};
+                                                 "chord_tolerance", "corner_tolerance"};
     for (const auto& [key, node] : t)
       if (std::find(std::begin(kKeys), std::end(kKeys), key.str()) == std::end(kKeys))
         ctx_.unknownKey(key, "[machine]");
@@ -161,6 +161,15 @@ class MachineFileReader {
                      cat("'chord_tolerance' must be above 0 and at most 1 mm, not ", *v));
         else
           m_.chord_tolerance = *v;
+      }
+    }
+    if (const toml::node* n = t.get("corner_tolerance")) {
+      if (auto v = ctx_.number(*n, "corner_tolerance")) {
+        if (*v < 0.0 || *v > 10.0)
+          ctx_.error(kBadValue, ctx_.at(*n),
+                     cat("'corner_tolerance' must be at least 0 and at most 10 mm, not ", *v));
+        else
+          m_.corner_tolerance = *v;
       }
     }
     return true;

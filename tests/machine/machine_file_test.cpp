@@ -43,6 +43,7 @@ TEST(MachineFile, ReadsEveryTableBack) {
 axes = ["X", "Y", "Z", "B"]
 ipo_cycle = 0.002
 chord_tolerance = 0.0005
+corner_tolerance = 0.05
 [machine.offsets]
 H1 = 100.5
 D1 = 5.0
@@ -89,6 +90,7 @@ position = { X = 1.0, Z = 200.0 }
   EXPECT_EQ(m.axisIndex("Q"), -1);
   EXPECT_DOUBLE_EQ(m.ipo_cycle_seconds, 0.002);
   EXPECT_DOUBLE_EQ(m.chord_tolerance, 0.0005);
+  EXPECT_DOUBLE_EQ(m.corner_tolerance, 0.05);
 
   EXPECT_EQ(m.tool_offsets.length, (std::map<int, double>{{1, 100.5}, {12, -3.25}}));
   EXPECT_EQ(m.tool_offsets.radius, (std::map<int, double>{{1, 5.0}}));
@@ -357,6 +359,9 @@ TEST(MachineFile, AxisLimitErrors) {
   EXPECT_EQ(onlyError("[machine]\nipo_cycle = 0.0\n"),
             "machine.toml:2:13: error[NCC0306]: 'ipo_cycle' must be above 0 and at most 0.1 s, "
             "not 0");
+  EXPECT_EQ(onlyError("[machine]\ncorner_tolerance = -0.1\n"),
+            "machine.toml:2:20: error[NCC0306]: 'corner_tolerance' must be at least 0 and at most 10 mm, "
+            "not -0.1");
   EXPECT_EQ(onlyError("[machine]\nchord_tolerance = -0.001\n"),
             "machine.toml:2:19: error[NCC0306]: 'chord_tolerance' must be above 0 and at most 1 mm, "
             "not -0.001");

@@ -1,6 +1,7 @@
 #pragma once
 // Shared helpers for the motion tests: primitive builders, a caller loop that feeds a
 // MotionPlanner like the VM does, a portable seeded random source.
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -124,5 +125,38 @@ inline uint64_t fnv1a(const Trace& trace, int axes) {
   }
   return h;
 }
+
+struct Worst {
+  double velocity = 0, acceleration = 0, jerk = 0;  // largest ratio to the axis limit
+};
+
+// Finite differences of the setpoints against the axis limits. The velocity limit is the
+// rapid speed when either tick is on a rapid, else the feed limit.
+inline Worst check(const MachineConfig& m, const Trace& t) {
+  Worst w;
+  const double T = m.ipo_cycle_seconds;
+  const auto& p = t.points;
+  for (std::size_t k = 1; k < p.size(); ++k) {
+    const bool rapid = t.infos[k].kind == Kind::Rapid || t.infos[k - 1].kind == Kind::Rapid;
+    for (int i = 0; i < m.axisCount(); ++i) {
+      const AxisConfig& ax = m.axes[i];
+      const double v = (p[k][i] - p[k - 1][i]) / T;
+      w.velocity = std::max(w.velocity, std::abs(v) / ((rapid ? ax.rapid_velocity : ax.max_velocity) / 60.0));
+      if (k >= 2) {
+        const double a = (p[k][i] - 2 * p[k - 1][i] + p[k - 2][i]) / (T * T);
+        w.acceleration = std::max(w.acceleration, std::abs(a) / ax.max_acceleration);
+      }
+      if (k >= 3) {
+        const double j = (p[k][i] - 3 * p[k - 1][i] + 3 * p[k - 2][i] - p[k - 3][i]) / (T * T * T);
+        w.jerk = std::max(w.jerk, std::abs(j) / ax.max_jerk);
+      }
+    }
+  }
+  return w;
+}
+
+// Numerical tolerance of the finite-difference check: positions are exact to ~1e-13 mm,
+// which reads as 8e-13 / T^3 = 8e-4 mm/s^3 of jerk; 1e-6 relative covers it with margin.
+constexpr double kTolerance = 1e-6;
 
 }  // namespace ncc::motion_test

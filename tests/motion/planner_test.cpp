@@ -110,23 +110,27 @@ TEST(Planner, FeedPerRevolutionUsesSpindleSpeed) {
   EXPECT_NEAR(top, 100.0 / 60.0, 1e-12);
 }
 
-TEST(Planner, CornerStopsTangentPasses) {
+TEST(Planner, NonLinearRapidMovesEachAxisOnItsOwn) {
+  // X100 Y10 with equal limits: Y arrives first, X continues alone (a dog-leg), and the move
+  // takes X's rest-to-rest time at the rapid speed (500 mm/s, 2000 mm/s^2, 0.9 * 50000).
   const MachineConfig m = defaultMachine();
-  // 90 degree corner: the path comes to rest there.
-  const Trace corner = run(m, {line(xyz(0, 0, 0), xyz(10, 0, 0), 3000.0),
-                               line(xyz(10, 0, 0), xyz(10, 10, 0), 3000.0)});
-  bool stopped_on_corner = false;
-  for (const AxisValues& p : corner.points) stopped_on_corner |= p == xyz(10, 0, 0);
-  EXPECT_TRUE(stopped_on_corner);
-  // Collinear split: no slowdown at the junction.
-  const Trace straight = run(m, {line(xyz(0, 0, 0), xyz(10, 0, 0), 3000.0),
-                                 line(xyz(10, 0, 0), xyz(20, 0, 0), 3000.0)});
-  double slowest_mid = 1e9;
-  for (std::size_t k = 0; k < straight.ticks(); ++k) {
-    const double x = straight.points[k][0];
-    if (x > 5.0 && x < 15.0) slowest_mid = std::min(slowest_mid, straight.infos[k].velocity);
-  }
-  EXPECT_EQ(slowest_mid, 50.0);
+  MotionPrimitive g00 = rapid(xyz(0, 0, 0), xyz(100, 10, 0));
+  g00.per_axis = true;
+  const Trace t = run(m, {g00});
+  const double v = 500.0, a = 2000.0, j = 0.9 * 50000.0;
+  const double expected = 100.0 / v + v / a + a / j;  // v_max and a_max reached
+  EXPECT_NEAR(static_cast<double>(t.ticks() - 1) * 0.001, expected, 0.0011);
+  EXPECT_EQ(t.points.back(), xyz(100, 10, 0));
+  bool dog_leg = false;
+  for (const AxisValues& p : t.points) dog_leg |= p[1] == 10.0 && p[0] < 90.0;
+  EXPECT_TRUE(dog_leg);
+  const Worst w = check(m, t);
+  EXPECT_LE(w.velocity, 1.0 + kTolerance);
+  EXPECT_LE(w.acceleration, 1.0 + kTolerance);
+  EXPECT_LE(w.jerk, 1.0 + kTolerance);
+  // The linear rapid keeps Y in proportion.
+  const Trace linear = run(m, {rapid(xyz(0, 0, 0), xyz(100, 10, 0))});
+  for (const AxisValues& p : linear.points) EXPECT_NEAR(p[1], p[0] / 10.0, 1e-9);
 }
 
 }  // namespace

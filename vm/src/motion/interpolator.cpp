@@ -9,10 +9,21 @@ void Interpolator::startPiece(LookAhead& queue, bool closed) {
   Run& run = queue.frontRun();
   queue.setFrontRunStarted(true);
   running_ = true;
+  per_axis_ = false;
   if (run.kind == MotionPrimitive::Kind::Dwell) {
     profile_ = SCurveProfile{};
     duration_ = run.dwell_seconds;
     piece_start_ = piece_end_ = 0.0;
+    piece_ends_run_ = true;
+    return;
+  }
+  per_axis_ = queue.frontSegment().per_axis;
+  if (per_axis_) {
+    const QueuedSegment& seg = queue.frontSegment();
+    rapid_ = AxisRapid::make(seg.path.from(), seg.path.to(), limits_);
+    profile_ = SCurveProfile{};
+    duration_ = rapid_.duration();
+    piece_end_ = run.length;
     piece_ends_run_ = true;
     return;
   }
@@ -59,9 +70,11 @@ bool Interpolator::setpoint(uint64_t k, LookAhead& queue, bool closed, AxisValue
     const double tau = static_cast<double>(k - start_tick_) * cycle_ - phase_;
     const bool piece_done = tau > duration_;
     const PathState st = profile_.at(piece_done ? duration_ : tau);
-    // Run offset reached; the end of a piece that ends its run is the run's end exactly.
-    const bool at_run_end = piece_ends_run_ && st.s >= profile_.length;
-    const double s = at_run_end ? run.length : piece_start_ + st.s;
+    // Run offset reached: the piece's end exactly at its end. (The open last run may have
+    // grown since the piece was planned, so its end is piece_end_, not the run's length.)
+    const bool at_piece_end = st.s >= profile_.length;
+    const double s = at_piece_end ? piece_end_ : piece_start_ + st.s;
+    const bool at_run_end = at_piece_end && piece_end_ == run.length;
     // Walk past finished segments of this run.
     while (run.segments > 1) {
       const QueuedSegment& seg = queue.frontSegment();
@@ -70,9 +83,20 @@ bool Interpolator::setpoint(uint64_t k, LookAhead& queue, bool closed, AxisValue
       queue.popSegment();
       ++info.segments_finished;
     }
+    if (per_axis_ && !piece_done) {
+      rapid_.position(tau, out);
+      const AxisRapidMotion motion = rapid_.pathMotion(tau);
+      info.velocity = motion.velocity;
+      info.acceleration = motion.acceleration;
+      info.jerk = motion.jerk;
+      info.kind = run.kind;
+      info.where = queue.frontSegment().where;
+      info.idle = false;
+      return true;
+    }
     if (!piece_done) {
       const QueuedSegment& seg = queue.frontSegment();
-      if (at_run_end) out = seg.path.to();
+      if (at_run_end && run.segments == 1) out = seg.path.to();
       else seg.path.position(s - seg.run_offset, out);
       info.velocity = st.v;
       info.acceleration = st.a;

@@ -8,11 +8,6 @@ namespace ncc::vm::motion {
 namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
-// Arc budgets (see limits.h): acceleration split between tangential and centripetal, smooth
-// jerk split in three.
-constexpr double kArcAccelShare = 0.5;
-constexpr double kArcJerkShare = kSmoothJerkShare / 3.0;
-constexpr double kJunctionJerkShare = 0.5 * (1.0 - kSmoothJerkShare);
 
 }  // namespace
 
@@ -28,47 +23,75 @@ AxisLimits AxisLimits::from(const MachineConfig& machine) {
   }
   l.ipo_cycle = machine.ipo_cycle_seconds;
   l.chord_tolerance = machine.chord_tolerance;
+  l.corner_tolerance = machine.corner_tolerance;
   return l;
 }
 
 SegmentLimits segmentLimits(const PathSegment& path, const AxisLimits& axes, bool rapid,
-                            double feed) {
+                            double feed, const ChainShape& chain) {
   SegmentLimits lim{rapid ? kInf : feed, kInf, kInf};
-  AxisValues t;
+  AxisValues t, q;
   path.maxTangent(t);
-  const bool arc = path.shape() == PathSegment::Shape::Arc;
-  const double accel_share = arc ? kArcAccelShare : 1.0;
-  const double jerk_share = arc ? kArcJerkShare : kSmoothJerkShare;
-  for (int i = 0; i < axes.count; ++i) {
-    if (t[i] == 0.0) continue;
-    const double v_axis = rapid ? axes.rapid_velocity[i] : axes.feed_velocity[i];
-    lim.velocity = std::min(lim.velocity, v_axis / t[i]);
-    lim.acceleration = std::min(lim.acceleration, accel_share * axes.acceleration[i] / t[i]);
-    lim.jerk = std::min(lim.jerk, jerk_share * axes.jerk[i] / t[i]);
-  }
-  if (arc) {
-    // Per plane axis: |d2x/ds2| <= p^2 / r (centripetal), |d3x/ds3| <= p^3 / r^2, with p the
-    // plane share of the path speed (a helix turns slower than its path speed).
-    const double r = path.radius();
-    const double p = path.planeShare();
-    const double k1 = p * p / r;
-    const double k2 = p * p * p / (r * r);
-    double a_plane = kInf, j_plane = kInf;
+  const bool in_chain = chain.curvature > 0.0;
+  double kappa = path.maxCurvature();  // curvature bound
+  double rate = path.maxCurvatureRate();
+  path.normalShare(q);
+  if (in_chain) {
+    // The chain's curve turns around the line's direction by at most `turn` each side.
+    kappa = chain.curvature;
+    rate = kappa * kappa;
+    // The curve's tangent turns around the line's direction: bound it by 1 on every axis
+    // involved, which also makes the limits of neighbouring lines equal (they join one run).
     for (int i = 0; i < axes.count; ++i) {
-      if (t[i] == 0.0) continue;
-      a_plane = std::min(a_plane, axes.acceleration[i]);
-      j_plane = std::min(j_plane, axes.jerk[i]);
+      q[i] = chain.involved[i];
+      t[i] = std::max(t[i], q[i]);
     }
-    lim.velocity = std::min(lim.velocity, std::sqrt(kArcAccelShare * a_plane / k1));
-    lim.velocity = std::min(lim.velocity, std::cbrt(kArcJerkShare * j_plane / k2));
-    // Chord error: a chord of length c on radius r deviates by e when c = 2 sqrt(2 r e - e^2).
+  }
+  const bool curved = kappa > 0.0;
+  const double T = axes.ipo_cycle;
+  const double wiggle_jerk = in_chain ? 4.0 * chain.sagitta / (T * T * T) : 0.0;
+  const double wiggle_acc = in_chain ? 2.0 * chain.sagitta / (T * T) : 0.0;
+  // The share of the smooth jerk the curvature's rotation (v^3 r) may take at top speed. A
+  // blend is short and passed near constant speed, so it gives the rotation more.
+  const double rotation_share = path.shape() == PathSegment::Shape::Blend ? 2.0 / 3.0 : 1.0 / 3.0;
+
+  // Path speed: programmed feed, axis speeds, and on curves the centripetal, curvature-rate
+  // and chord-error caps.
+  for (int i = 0; i < axes.count; ++i) {
+    if (t[i] > 0.0)
+      lim.velocity = std::min(lim.velocity, (rapid ? axes.rapid_velocity[i] : axes.feed_velocity[i]) / t[i]);
+    if (!curved || q[i] == 0.0) continue;
+    lim.velocity = std::min(lim.velocity, std::sqrt(kCentripetalShare * axes.acceleration[i] / (kappa * q[i])));
+    const double smooth = kSmoothJerkShare * axes.jerk[i] - q[i] * wiggle_jerk;
+    lim.velocity = std::min(lim.velocity, std::cbrt(rotation_share * smooth / (rate * q[i])));
+  }
+  if (curved && axes.chord_tolerance > 0.0) {
+    // Chord error of the setpoint polygon: a chord c on curvature k deviates by about
+    // k c^2 / 8 (exact for small chords on an arc: c = 2 sqrt(2 r e - e^2)).
     const double e = axes.chord_tolerance;
-    if (e > 0.0 && e < r) {
-      const double chord = 2.0 * std::sqrt(2.0 * r * e - e * e);
-      lim.velocity = std::min(lim.velocity, chord / (p * axes.ipo_cycle));
+    double chord = std::sqrt(8.0 * e / kappa);
+    if (path.shape() == PathSegment::Shape::Arc && !in_chain) {
+      // Exact on the circle; a helix turns at the plane share p of the path speed.
+      const double r = path.radius();
+      chord = e < r ? 2.0 * std::sqrt(2.0 * r * e - e * e) / path.planeShare() : kInf;
     }
-    // Cross term 3 v a_t k1 of the axis jerk.
-    lim.acceleration = std::min(lim.acceleration, kArcJerkShare * j_plane / (3.0 * lim.velocity * k1));
+    lim.velocity = std::min(lim.velocity, chord / axes.ipo_cycle);
+  }
+  const double v = lim.velocity;
+
+  // Tangential acceleration and jerk: what the axis limits leave at that speed.
+  for (int i = 0; i < axes.count; ++i) {
+    if (t[i] == 0.0 && (!curved || q[i] == 0.0)) continue;
+    const double centripetal = curved ? v * v * kappa * q[i] : 0.0;
+    const double rotation = curved ? v * v * v * rate * q[i] : 0.0;
+    const double acc_left = axes.acceleration[i] - q[i] * wiggle_acc - centripetal;
+    const double jerk_left = kSmoothJerkShare * axes.jerk[i] - q[i] * wiggle_jerk - rotation;
+    if (t[i] > 0.0) {
+      lim.acceleration = std::min(lim.acceleration, acc_left / t[i]);
+      lim.jerk = std::min(lim.jerk, (curved ? 0.5 : 1.0) * jerk_left / t[i]);
+    }
+    if (curved && q[i] > 0.0 && v > 0.0)  // the cross term 3 v a_t k_i
+      lim.acceleration = std::min(lim.acceleration, 0.5 * jerk_left / (3.0 * v * kappa * q[i]));
   }
   return lim;
 }

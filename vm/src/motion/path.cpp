@@ -61,6 +61,18 @@ PathSegment PathSegment::arc(const AxisValues& from, const AxisValues& to, int a
   return p;
 }
 
+PathSegment PathSegment::blend(const AxisValues& from, const AxisValues& to,
+                               const CornerBlend& curve, int axis_count) {
+  PathSegment p;
+  p.shape_ = Shape::Blend;
+  p.axis_count_ = axis_count;
+  p.from_ = from;
+  p.to_ = to;
+  p.blend_ = curve;
+  p.length_ = curve.length();
+  return p;
+}
+
 PathSegment PathSegment::dwell(const AxisValues& at, int axis_count) {
   PathSegment p;
   p.shape_ = Shape::Dwell;
@@ -79,6 +91,10 @@ void PathSegment::position(double s, AxisValues& out) const {
     out = to_;
     return;
   }
+  if (shape_ == Shape::Blend) {
+    blend_.position(s, out);
+    return;
+  }
   const double f = s / length_;
   out = from_;
   for (int i = 0; i < axis_count_; ++i) out[i] = from_[i] + delta_[i] * f;
@@ -93,6 +109,10 @@ void PathSegment::position(double s, AxisValues& out) const {
 void PathSegment::tangent(double s, AxisValues& out) const {
   out = AxisValues{};
   if (shape_ == Shape::Dwell || length_ == 0.0) return;
+  if (shape_ == Shape::Blend) {
+    blend_.tangent(std::clamp(s, 0.0, length_), out);
+    return;
+  }
   for (int i = 0; i < axis_count_; ++i) out[i] = delta_[i] / length_;
   if (shape_ == Shape::Arc) {
     const double f = std::clamp(s / length_, 0.0, 1.0);
@@ -110,6 +130,10 @@ void PathSegment::tangent(double s, AxisValues& out) const {
 
 void PathSegment::curvature(double s, AxisValues& out) const {
   out = AxisValues{};
+  if (shape_ == Shape::Blend) {
+    blend_.curvature(std::clamp(s, 0.0, length_), out);
+    return;
+  }
   if (shape_ != Shape::Arc) return;
   const double f = std::clamp(s / length_, 0.0, 1.0);
   const double theta = theta0_ + sweep_ * f;
@@ -122,6 +146,10 @@ void PathSegment::curvature(double s, AxisValues& out) const {
 void PathSegment::maxTangent(AxisValues& out) const {
   out = AxisValues{};
   if (shape_ == Shape::Dwell || length_ == 0.0) return;
+  if (shape_ == Shape::Blend) {  // the tangent turns in the blend's plane
+    for (int i = 0; i < axis_count_; ++i) out[i] = blend_.planeShare(i);
+    return;
+  }
   for (int i = 0; i < axis_count_; ++i) out[i] = std::abs(delta_[i]) / length_;
   if (shape_ == Shape::Arc) {
     // The plane tangent turns: bound each plane axis by the whole plane speed share (plus the
@@ -129,6 +157,29 @@ void PathSegment::maxTangent(AxisValues& out) const {
     const double bound = plane_share_ + std::abs(r1_ - r0_) / length_;
     out[axis1_] = std::min(bound, 1.0);
     out[axis2_] = std::min(bound, 1.0);
+  }
+}
+
+double PathSegment::maxCurvature() const {
+  if (shape_ == Shape::Blend) return blend_.maxCurvature();
+  if (shape_ != Shape::Arc) return 0.0;
+  return plane_share_ * plane_share_ / std::min(r0_, r1_);
+}
+
+double PathSegment::maxCurvatureRate() const {
+  if (shape_ == Shape::Blend) return blend_.maxCurvatureRate();
+  if (shape_ != Shape::Arc) return 0.0;
+  const double r = std::min(r0_, r1_);
+  return plane_share_ * plane_share_ * plane_share_ / (r * r);
+}
+
+void PathSegment::normalShare(AxisValues& out) const {
+  out = AxisValues{};
+  if (shape_ == Shape::Blend) {
+    for (int i = 0; i < axis_count_; ++i) out[i] = blend_.planeShare(i);
+  } else if (shape_ == Shape::Arc) {
+    out[axis1_] = 1.0;
+    out[axis2_] = 1.0;
   }
 }
 

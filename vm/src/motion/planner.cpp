@@ -11,10 +11,6 @@ namespace {
 // zero speed would never end. 1 mm/min.
 constexpr double kMinFeed = 1.0 / 60.0;
 
-bool isFeed(MotionPrimitive::Kind k) {
-  return k == MotionPrimitive::Kind::Line || k == MotionPrimitive::Kind::Arc;
-}
-
 }  // namespace
 
 double windowLength(const AxisLimits& l) {
@@ -35,15 +31,18 @@ double windowLength(const AxisLimits& l) {
 
 MotionPlanner::MotionPlanner(const MachineConfig& machine, std::size_t window_capacity)
     : limits_(AxisLimits::from(machine)),
-      queue_(window_capacity, windowLength(limits_)),
-      interpolator_(machine.start_position, machine.ipo_cycle_seconds) {}
+      queue_(std::max<std::size_t>(window_capacity, 2 * ContinuousPath::kSlotsPerLine),
+             windowLength(limits_)),
+      path_(limits_, queue_),
+      interpolator_(machine.start_position, limits_) {}
 
 bool MotionPlanner::push(const MotionPrimitive& m) {
-  if (queue_.full()) return false;
+  if (!hasRoom()) return false;
   const int n = limits_.count;
-  QueuedSegment seg;
-  seg.where = m.where;
   if (m.kind == MotionPrimitive::Kind::Dwell) {
+    path_.flush();
+    QueuedSegment seg;
+    seg.where = m.where;
     seg.path = PathSegment::dwell(m.from, n);
     const double rev_per_s = spindle_rpm_ / 60.0;
     double seconds = m.revolutions ? (rev_per_s > 0.0 ? m.seconds / rev_per_s : 0.0) : m.seconds;
@@ -51,6 +50,20 @@ bool MotionPlanner::push(const MotionPrimitive& m) {
     queue_.push(seg, m.kind, SegmentLimits{}, 0.0, true, std::max(seconds, 0.0));
     return true;
   }
+  const bool rapid = m.kind == MotionPrimitive::Kind::Rapid;
+  double feed = m.feed_per_rev ? m.feed * spindle_rpm_ / 60.0 : m.feed / 60.0;
+  if (!rapid) feed = std::max(feed, kMinFeed);
+  if (m.kind == MotionPrimitive::Kind::Line) {
+    if (PathSegment::line(m.from, m.to, n).length() > 0.0) {
+      path_.line(m.from, m.to, feed, m.exact_stop, m.where);
+    } else if (m.exact_stop) {  // nothing moves: only its exact stop counts
+      stop();
+    }
+    return true;
+  }
+  path_.flush();
+  QueuedSegment seg;
+  seg.where = m.where;
   if (m.kind == MotionPrimitive::Kind::Arc) {
     seg.path = PathSegment::arc(m.from, m.to, n, m.axis1, m.axis2, m.center[m.axis1],
                                 m.center[m.axis2], m.cw, m.extra_turns);
@@ -61,21 +74,18 @@ bool MotionPlanner::push(const MotionPrimitive& m) {
     if (m.exact_stop) stop();
     return true;
   }
-  const bool rapid = m.kind == MotionPrimitive::Kind::Rapid;
-  double feed = m.feed_per_rev ? m.feed * spindle_rpm_ / 60.0 : m.feed / 60.0;
-  if (!rapid) feed = std::max(feed, kMinFeed);
+  if (rapid && m.per_axis && AxisRapid::make(m.from, m.to, limits_).valid()) {
+    // Non-linear positioning: its own piece, from rest to rest (interpolator.h).
+    seg.per_axis = true;
+    queue_.stopAfterLast();
+    queue_.push(seg, m.kind, segmentLimits(seg.path, limits_, true, feed), 0.0, true, 0.0);
+    return true;
+  }
   SegmentLimits limits = segmentLimits(seg.path, limits_, rapid, feed);
   limits.velocity = std::max(limits.velocity, kMinFeed);
-
-  // Junction with the previous queued segment (none queued: it ended at rest).
-  double entry_limit = 0.0;
   const QueuedSegment* prev = queue_.lastSegment();
-  if (prev != nullptr && !queue_.lastStops() && queue_.lastKind() != MotionPrimitive::Kind::Dwell &&
-      isFeed(queue_.lastKind()) == isFeed(m.kind)) {
-    entry_limit = std::min({queue_.lastLimits().velocity, limits.velocity,
-                            junctionVelocity(prev->path, seg.path, limits_)});
-  }
-  queue_.push(seg, m.kind, limits, entry_limit, m.exact_stop, 0.0);
+  const double vertex = prev != nullptr ? junctionVelocity(prev->path, seg.path, limits_) : 0.0;
+  path_.enqueue(seg, m.kind, limits, vertex, m.exact_stop);
   return true;
 }
 
@@ -89,6 +99,7 @@ bool MotionPlanner::accept(const Event& event) {
     case MachineEvent::Kind::OptionalStop:
     case MachineEvent::Kind::ProgramEnd:
     case MachineEvent::Kind::ProgramEndRewind:
+      if (!hasRoom()) return false;
       stop();
       break;
     default:
@@ -97,11 +108,21 @@ bool MotionPlanner::accept(const Event& event) {
   return true;
 }
 
-void MotionPlanner::stop() { queue_.stopAfterLast(); }
+void MotionPlanner::stop() {
+  path_.flush();
+  queue_.stopAfterLast();
+}
+
+void MotionPlanner::endOfProgram() {
+  ended_ = true;
+  if (queue_.room() > 0) path_.flush();  // else on a later tick, when there is room
+}
 
 bool MotionPlanner::setpoint(uint64_t k, AxisValues& out, SetpointInfo& info) {
-  if (interpolator_.setpoint(k, queue_, ended_, out, info)) return true;
-  return !ended_;
+  if (ended_ && path_.holding() && queue_.room() > 0) path_.flush();
+  const bool closed = ended_ && !path_.holding();
+  if (interpolator_.setpoint(k, queue_, closed, out, info)) return true;
+  return !closed;
 }
 
 }  // namespace ncc::vm::motion

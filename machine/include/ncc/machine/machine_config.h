@@ -66,6 +66,10 @@ struct MachineConfig {
   // Largest distance (mm) between an arc and the chords joining consecutive IPO setpoints; the
   // planner lowers the feed on small arcs to keep it. Machine file: [machine] chord_tolerance.
   double chord_tolerance = 0.001;
+  // G64 continuous path: largest distance (mm) between the path and the programmed corner of
+  // two lines; the planner replaces the corner by a curvature-continuous blend within it.
+  // 0: corners stop. Machine file: [machine] corner_tolerance.
+  double corner_tolerance = 0.01;
   ParameterSet params;                   // [machine.params]
 
   int axisIndex(std::string_view name) const;  // -1 if not configured

@@ -14,11 +14,15 @@
 //    still braking to rest, the piece ends at top speed (a = 0) where braking from top speed
 //    still fits; the next piece continues at top speed with whatever has been queued since.
 //    Otherwise the piece brakes to rest at the end of the window.
+//  - a non-linear rapid (QueuedSegment::per_axis) is one piece from rest to rest in which
+//    every axis follows its own profile (axis_rapid.h).
 #include <cstddef>
 #include <cstdint>
 
 #include "ncc/machine/axes.h"
 #include "ncc/vm/events.h"
+#include "ncc/vm/motion/axis_rapid.h"
+#include "ncc/vm/motion/limits.h"
 #include "ncc/vm/motion/lookahead.h"
 #include "ncc/vm/motion/scurve.h"
 
@@ -36,7 +40,9 @@ struct SetpointInfo {
 
 class Interpolator {
  public:
-  Interpolator(const AxisValues& start, double ipo_cycle) : position_(start), cycle_(ipo_cycle) {}
+  // `limits` (kept by reference) are the axis limits non-linear rapids run with.
+  Interpolator(const AxisValues& start, const AxisLimits& limits)
+      : position_(start), cycle_(limits.ipo_cycle), limits_(limits) {}
 
   // Setpoint of tick k (k increases by one per call). `closed`: no more input will come (the
   // last run is final). Returns false when nothing is left to run; `out` then holds the last
@@ -50,6 +56,7 @@ class Interpolator {
 
   AxisValues position_;  // end of the last finished segment
   double cycle_;
+  const AxisLimits& limits_;
   // The running piece.
   bool running_ = false;
   SCurveProfile profile_;
@@ -57,6 +64,8 @@ class Interpolator {
   double piece_start_ = 0.0;  // run offset where the piece starts
   double piece_end_ = 0.0;    // run offset where it ends
   bool piece_ends_run_ = false;
+  bool per_axis_ = false;  // the piece is a non-linear rapid: axes evaluated by rapid_
+  AxisRapid rapid_;
   // Its clock.
   uint64_t start_tick_ = 0;
   double phase_ = 0.0;

@@ -3,11 +3,17 @@
 // the axis limits of the machine (docs/planner.md, "Limits").
 //
 // Budgets. The interpolator's setpoints are checked per axis by finite differences, so the
-// path limits must keep every axis within its limit including what the path geometry adds:
-//  - lines: the path jerk uses kSmoothJerkShare of each axis' jerk; the rest is for the
-//    velocity kink and acceleration step a junction may cause within one IPO cycle;
-//  - arcs: the axis acceleration is a_t * t_i + v^2 * k_i (tangential + centripetal) and the
-//    jerk j_t * t_i + 3 v a_t k_i + v^3 k'_i; each term gets a fixed share.
+// path limits must keep every axis within its limit including what the path geometry adds.
+// On a curve the axis acceleration is a_t t_i + v^2 k_i (tangential + centripetal) and the
+// axis jerk j_t t_i + 3 v a_t k_i + v^3 r_i (r: the rate of the curvature vector):
+//  - the path speed is capped so that v^2 k uses at most kCentripetalShare of the axis
+//    acceleration and v^3 r a third of the smooth jerk share; a_t and j_t get what is left at
+//    that speed, so a slow feed on a curve still accelerates at nearly the full limit;
+//  - lines use kSmoothJerkShare of each axis' jerk; the rest is for the velocity kink and
+//    acceleration step a junction may cause within one IPO cycle;
+//  - a line in a smooth chain (continuous_path.h) is planned as a curve of the chain's
+//    curvature; the polygon's deviation from that curve (at most kWiggleJerkShare of the
+//    jerk, see ChainShape) is taken off the budgets.
 #include <array>
 
 #include "ncc/machine/axes.h"
@@ -19,9 +25,18 @@ namespace ncc::vm::motion {
 // Share of each axis' jerk the smooth part of the motion may use; the remainder covers
 // junction steps (half each for the velocity kink and the curvature step).
 inline constexpr double kSmoothJerkShare = 0.9;
-// Direction change (radians) above which a junction is a corner: the path stops there (no G64
-// blending in this version).
+// Direction change (radians) above which an unblended junction is a corner: the path stops
+// there (G64 corners are blended first, continuous_path.h).
 inline constexpr double kCornerAngle = 0.01;
+// Share of the axis acceleration the centripetal part may take at the top speed of a curve.
+inline constexpr double kCentripetalShare = 0.75;
+// Largest share of the axis jerk and acceleration a chain's polygon wiggle may take: a
+// deviation between 0 and delta from the smooth curve reads, centred, as +-delta/2 of noise,
+// at most 2 delta / T^2 in a sampled acceleration and 4 delta / T^3 in a sampled jerk.
+inline constexpr double kWiggleJerkShare = 0.2;
+inline constexpr double kWiggleAccelerationShare = 0.01;
+// Share of the axis jerk a junction's velocity kink, and its curvature step, may each use.
+inline constexpr double kJunctionJerkShare = 0.5 * (1.0 - kSmoothJerkShare);
 
 // The machine's axis limits in path units: mm/s, mm/s^2, mm/s^3 (deg for rotary axes).
 struct AxisLimits {
@@ -32,6 +47,7 @@ struct AxisLimits {
   std::array<double, kMaxAxes> jerk{};
   double ipo_cycle = 0.001;      // s
   double chord_tolerance = 0.001;  // mm
+  double corner_tolerance = 0.0;   // mm, G64 blends (0: corners stop)
 
   static AxisLimits from(const MachineConfig& machine);
 };
@@ -43,10 +59,20 @@ struct SegmentLimits {
   double jerk = 0.0;          // mm/s^3, tangential
 };
 
+// A line that is part of a smooth chain of short lines (continuous_path.h): the curvature of
+// the curve the chain follows near it, the polygon's largest distance from that curve (its
+// sagitta, mm), and per axis 1 if the axis moves on it or on a neighbour (the curve's tangent
+// and normal may point along it), else 0.
+struct ChainShape {
+  double curvature = 0.0;
+  double sagitta = 0.0;
+  AxisValues involved{};
+};
+
 // `feed` is the programmed path speed in mm/s (ignored for rapids, which run at the axes'
-// rapid speeds).
+// rapid speeds). `chain`: set for a line in a smooth chain.
 SegmentLimits segmentLimits(const PathSegment& path, const AxisLimits& axes, bool rapid,
-                            double feed);
+                            double feed, const ChainShape& chain = {});
 
 // Highest velocity at which the path may pass from the end of `a` into the start of `b`
 // (both moving segments of the same kind): 0 at a corner (direction change above

@@ -30,6 +30,7 @@ struct QueuedSegment {
   PathSegment path;
   SourcePosition where;
   double run_offset = 0.0;  // path length of its run before it
+  bool per_axis = false;    // a non-linear rapid (axis_rapid.h): its own run, at rest both ends
 };
 
 struct Run {
@@ -51,6 +52,7 @@ class LookAhead {
 
   bool empty() const { return segment_count_ == 0; }
   bool full() const { return segment_count_ == segments_.size(); }
+  std::size_t room() const { return segments_.size() - segment_count_; }
   std::size_t size() const { return segment_count_; }
   bool wantsMore() const { return !full() && queued_length_ < window_length_; }
 

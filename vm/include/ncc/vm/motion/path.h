@@ -4,16 +4,18 @@
 // A line moves every axis in proportion. An arc moves the two plane axes on a circle around
 // the centre (a spiral when the end radius differs slightly from the start radius, so the end
 // point is met exactly) while every other axis moves linearly with the angle: a helix. The
-// parametrisation is exact for circles and helices (constant speed in s).
+// parametrisation is exact for circles and helices (constant speed in s). A blend is the
+// G64 corner blend between two lines (corner_blend.h).
 #include <cstdint>
 
 #include "ncc/machine/axes.h"
+#include "ncc/vm/motion/corner_blend.h"
 
 namespace ncc::vm::motion {
 
 class PathSegment {
  public:
-  enum class Shape : uint8_t { Line, Arc, Dwell };
+  enum class Shape : uint8_t { Line, Arc, Blend, Dwell };
 
   // Straight move over the first `axis_count` axes.
   static PathSegment line(const AxisValues& from, const AxisValues& to, int axis_count);
@@ -22,6 +24,10 @@ class PathSegment {
   static PathSegment arc(const AxisValues& from, const AxisValues& to, int axis_count,
                          int axis1, int axis2, double cx, double cy, bool cw,
                          uint32_t extra_turns);
+  // The corner blend `curve`, from `from` to `to` (its end points, exactly where the trimmed
+  // lines end and start).
+  static PathSegment blend(const AxisValues& from, const AxisValues& to, const CornerBlend& curve,
+                           int axis_count);
   // Standing still at `at` (a dwell).
   static PathSegment dwell(const AxisValues& at, int axis_count);
 
@@ -41,6 +47,13 @@ class PathSegment {
   // Upper bound of |dx_i/ds| over the whole segment, per axis: what projects the path
   // velocity, acceleration and jerk onto axis i.
   void maxTangent(AxisValues& out) const;
+  // The largest curvature |d2x/ds2| on the segment and the largest |d3x/ds3| of the path
+  // geometry (the curvature vector's rate of change); 0 on lines.
+  double maxCurvature() const;
+  double maxCurvatureRate() const;
+  // Per axis: bound of the axis' component of the unit normal (0 for axes that only move
+  // linearly, or do not move).
+  void normalShare(AxisValues& out) const;
   // Arcs: radius (start), and the share of the path speed in the plane (r * sweep / length;
   // 1 for a plain arc, < 1 for a helix). Lines: 0.
   double radius() const { return r0_; }
@@ -58,6 +71,7 @@ class PathSegment {
   double r0_ = 0.0, r1_ = 0.0;
   double theta0_ = 0.0, sweep_ = 0.0;  // radians, signed (negative: clockwise)
   double plane_share_ = 0.0;
+  CornerBlend blend_;  // Blend only
 };
 
 }  // namespace ncc::vm::motion

@@ -13,14 +13,17 @@
 // segments whose plan changes; a tick: at most the queued segments). Deterministic: the same
 // pushes at the same ticks give bit-identical setpoints.
 //
-// Not done in this version (docs/planner.md): G64 corner blending (corners stop), feed
-// overrides, per-axis (non-linear) rapids (run as linear rapids), the in-position check.
+// G64 (continuous_path.h): feed lines are held back one primitive so that their end vertex
+// can be blended within the corner tolerance or passed as part of a smooth chain.
+//
+// Not done in this version (docs/planner.md): feed overrides, the in-position check.
 #include <cstddef>
 #include <cstdint>
 
 #include "ncc/machine/axes.h"
 #include "ncc/machine/machine_config.h"
 #include "ncc/vm/events.h"
+#include "ncc/vm/motion/continuous_path.h"
 #include "ncc/vm/motion/interpolator.h"
 #include "ncc/vm/motion/limits.h"
 #include "ncc/vm/motion/lookahead.h"
@@ -34,12 +37,12 @@ class MotionPlanner {
 
   // True while pushing more would still change the plan: the ring has room and the queued
   // path is shorter than the braking distance from top speed.
-  bool canAccept() const { return queue_.wantsMore(); }
-  // True while the ring has room (push succeeds).
-  bool hasRoom() const { return !queue_.full(); }
+  bool canAccept() const { return hasRoom() && queue_.wantsMore(); }
+  // True while the ring has room for any primitive (push succeeds).
+  bool hasRoom() const { return queue_.room() >= ContinuousPath::kSlotsPerLine; }
 
-  // Queues one primitive (its `from` must be where the previous one ended). False when the
-  // ring is full; nothing is queued then.
+  // Takes one primitive (its `from` must be where the previous one ended). False when the
+  // ring is too full; nothing is taken then.
   bool push(const MotionPrimitive& motion);
   // Routes an executor event: motion to push(), S to the spindle speed (feed per rev, dwell
   // in revolutions), M00/M01/M02/M30 to an exact stop. False only when the ring is full.
@@ -48,20 +51,21 @@ class MotionPlanner {
   // The path comes to rest at the end of the last queued segment (M00/M01).
   void stop();
   // No more input: setpoint() returns false once everything queued has run.
-  void endOfProgram() { ended_ = true; }
+  void endOfProgram();
 
   // Setpoint of tick k (k increasing by one per call, t = k * ipo_cycle_seconds). Returns
   // false when the program is done; while waiting for input it holds position and returns
   // true.
   bool setpoint(uint64_t k, AxisValues& out, SetpointInfo& info);
 
-  bool finished() const { return ended_ && queue_.empty(); }
+  bool finished() const { return ended_ && !path_.holding() && queue_.empty(); }
   const AxisLimits& limits() const { return limits_; }
   std::size_t queued() const { return queue_.size(); }
 
  private:
   AxisLimits limits_;
   LookAhead queue_;
+  ContinuousPath path_;
   Interpolator interpolator_;
   double spindle_rpm_ = 0.0;
   bool ended_ = false;

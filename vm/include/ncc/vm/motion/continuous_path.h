@@ -1,0 +1,87 @@
+#pragma once
+// G64 continuous-path mode: how consecutive feed lines meet (docs/planner.md, "Corners").
+//
+// A feed line is held back until the next primitive shows what happens at its end vertex
+// (turning angle theta between the two lines):
+//  - chain: both lines are short enough that the polygon stays within a few nanometres of a
+//    smooth curve through its vertices (a CAM-tessellated circle or spline). The vertex is
+//    passed as is and the lines are planned as that curve (curvature from the circle through
+//    the vertices, limits.h ChainShape); the rest of the polygon's deviation is budgeted as
+//    "wiggle" in the sampled acceleration and jerk.
+//  - blend: the corner is replaced by a curvature-continuous CornerBlend that stays within
+//    the machine's corner tolerance, trimming at most half of each line, when passing the
+//    blend is faster than stopping (with a small tolerance and a low jerk limit a blend is
+//    passed at a crawl, and a jerk-limited stop is quicker);
+//  - kink: a small turn (<= kCornerAngle) passed at the junction velocity of limits.h, when
+//    that is faster than a blend (long lines, tiny turn);
+//  - stop: reversals, a zero corner tolerance, or a turn too large to blend.
+// Held lines never reach the look-ahead half-decided: each one is queued exactly once, when
+// its end vertex is known or nothing can follow (flush).
+#include <cstddef>
+
+#include "ncc/vm/events.h"
+#include "ncc/vm/motion/limits.h"
+#include "ncc/vm/motion/lookahead.h"
+#include "ncc/vm/motion/path.h"
+
+namespace ncc::vm::motion {
+
+class ContinuousPath {
+ public:
+  // Queue slots one line() may fill: the held line, a blend, and the new line if it stops.
+  static constexpr std::size_t kSlotsPerLine = 3;
+
+  ContinuousPath(const AxisLimits& limits, LookAhead& queue) : limits_(limits), queue_(queue) {}
+
+  // A feed line from `from` to `to` at `feed` mm/s (caller checks the queue has
+  // kSlotsPerLine free slots).
+  void line(const AxisValues& from, const AxisValues& to, double feed, bool exact_stop,
+            const SourcePosition& where);
+  // Something other than a feed line follows (or nothing will): queue the held line up to its
+  // programmed end point.
+  void flush();
+  bool holding() const { return held_.active; }
+
+  // Queues any segment behind what is queued, with the junction rule: from rest after a stop,
+  // a dwell or a change between feed and rapid; else at most both segments' speed limits and
+  // `vertex_limit`.
+  void enqueue(const QueuedSegment& segment, MotionPrimitive::Kind kind,
+               const SegmentLimits& limits, double vertex_limit, bool stop_after);
+
+ private:
+  struct HeldLine {
+    bool active = false;
+    AxisValues start{};      // where its queued part starts (after a blend: the blend's end)
+    AxisValues end{};        // programmed end point
+    AxisValues direction{};  // unit
+    double length = 0.0;     // programmed length
+    double feed = 0.0;       // mm/s
+    SourcePosition where;
+    double start_limit = 0.0;      // junction velocity limit at `start`
+    double start_curvature = 0.0;  // chain curvature at its start vertex (0: not a chain vertex)
+    double start_sagitta = 0.0;    // the polygon's deviation from the chain's curve there
+    AxisValues previous_direction{};  // of the line before it (zero if none)
+  };
+
+  // Queues the held line from its start to `end`, planned with the chain curvature of its two
+  // vertices (end_curvature: 0 when its end is not a chain vertex).
+  void queueHeld(const AxisValues& end, double end_curvature, double end_sagitta,
+                 const AxisValues& next_direction, bool stop_after);
+  // Highest speed at which the curvature may change by `step` (1/mm) within one cycle: the
+  // acceleration step v^2 step reads as a jerk v^2 step / T on the axes in `involved`.
+  double curvatureStepLimit(double step, const AxisValues& involved) const;
+  // Time a corner costs against passing it at `speed` (path acceleration `accel`, jerk
+  // `jerk`): stopping there, or slowing to `blend_speed` for a blend of `blend_length` that
+  // replaces 2 * `trim` of the lines. Decides between the two.
+  static double stopCost(double speed, double accel, double jerk);
+  static double blendCost(double speed, double accel, double jerk, double blend_speed,
+                          double blend_length, double trim);
+  // Largest polygon deviation (mm) a chain may have on the axes in `involved`.
+  double wiggleAllowance(const AxisValues& involved) const;
+
+  const AxisLimits& limits_;
+  LookAhead& queue_;
+  HeldLine held_;
+};
+
+}  // namespace ncc::vm::motion

@@ -1,0 +1,74 @@
+#pragma once
+// The G64 corner blend: a curvature-continuous (G2) curve that replaces a corner between two
+// lines, parametrised by its own path length.
+//
+// A quintic Bezier in the plane of the two lines. Its control points sit on the lines at
+// distances d, 0.6 d and 0.2 d from the corner P (three on the incoming line, three on the
+// outgoing one), so at both ends the tangent is the line's direction and the curvature is 0:
+// position, tangent and curvature are continuous where the blend meets the lines. By symmetry
+// the curve comes closest to P at its middle, at distance kDeviationFactor * d * sin(theta/2)
+// (theta: the turning angle); that is the largest distance between the blend and the
+// programmed lines, so choosing d from the corner tolerance bounds the contour error
+// (tests/motion/corner_blend_test.cpp checks it on samples). The control point spacing was
+// chosen for the lowest peak curvature and curvature rate at a given deviation
+// (docs/planner.md, "Corner blending").
+//
+// Arc length: a table of s at 32 equal steps of the Bezier parameter (5-point Gauss-Legendre
+// per step), inverted by Newton's method; exact to rounding. Everything is a pure function of
+// the construction arguments: no allocation, no throw.
+#include <array>
+
+#include "ncc/machine/axes.h"
+
+namespace ncc::vm::motion {
+
+class CornerBlend {
+ public:
+  // Distance of the blend's middle from the corner per unit of d, divided by sin(theta/2).
+  static constexpr double kDeviationFactor = 0.375;
+  // Control points on each line, as fractions of d from the corner.
+  static constexpr double kOuter = 1.0, kMiddle = 0.6, kInner = 0.2;
+  static constexpr int kTableSteps = 32;
+
+  // The blend of the corner `corner` between unit directions `u_in` and `u_out` (not
+  // opposite), trimming `d` > 0 off both lines. Starts at corner - d u_in, ends at
+  // corner + d u_out.
+  static CornerBlend make(const AxisValues& corner, const AxisValues& u_in,
+                          const AxisValues& u_out, double d, int axis_count);
+
+  double length() const { return s_table_[kTableSteps]; }
+  // At path length s in (0, length): position, unit tangent, curvature vector d2x/ds2.
+  void position(double s, AxisValues& out) const;
+  void tangent(double s, AxisValues& out) const;
+  void curvature(double s, AxisValues& out) const;
+
+  // Bounds over the whole blend (sampled densely, with a small margin): the largest curvature
+  // |d2x/ds2| and the largest |d3x/ds3| (the rate of the curvature vector: sqrt(k'^2 + k^4)).
+  double maxCurvature() const { return max_curvature_; }
+  double maxCurvatureRate() const { return max_curvature_rate_; }
+  // Per axis: the length of the axis' projection onto the blend's plane, which bounds that
+  // axis' share of any in-plane vector (tangent, curvature).
+  double planeShare(int axis) const { return plane_share_[axis]; }
+
+ private:
+  // Bezier parameter t at path length s.
+  double parameterAt(double s) const;
+  // Derivative of the plane curve at t, and its norm.
+  void derivative(double t, double& dx, double& dy) const;
+  double speed(double t) const;
+  // Integral of the speed over [t0, t1] (5-point Gauss-Legendre).
+  double arcLength(double t0, double t1) const;
+
+  int axis_count_ = 0;
+  AxisValues corner_{};
+  AxisValues e1_{};  // the incoming direction
+  AxisValues e2_{};  // in the plane, orthogonal to e1, towards the outgoing direction
+  std::array<double, kMaxAxes> plane_share_{};
+  std::array<double, 6> x_{}, y_{};  // control points in the (e1, e2) plane, origin at the corner
+  std::array<double, 6> dx_{}, dy_{};  // of the derivative (degree 4; the last entry unused)
+  std::array<double, kTableSteps + 1> s_table_{};
+  double max_curvature_ = 0.0;
+  double max_curvature_rate_ = 0.0;
+};
+
+}  // namespace ncc::vm::motion

@@ -1,0 +1,244 @@
+#include "ncc/vm/motion/continuous_path.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numbers>
+
+#include "ncc/vm/motion/corner_blend.h"
+#include "ncc/vm/motion/scurve.h"
+
+namespace ncc::vm::motion {
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+// Turns above this are never chain vertices (the chain model's small-angle bounds).
+constexpr double kChainMaxTurn = 0.1;
+// Turns above 150 degrees are not blended: the path stops. A blend there is a tight loop
+// passed at a crawl (no time won), and its arc-length table would need finer steps.
+constexpr double kMaxBlendTurn = 150.0 * std::numbers::pi / 180.0;
+// Slowest planned path speed (1 mm/min): a zero speed would never end.
+constexpr double kMinVelocity = 1.0 / 60.0;
+// What is left of a trimmed line below this length (mm) is not queued: the blends meet.
+constexpr double kNegligibleLength = 1e-9;
+
+bool isFeed(MotionPrimitive::Kind k) {
+  return k == MotionPrimitive::Kind::Line || k == MotionPrimitive::Kind::Arc;
+}
+
+// Rounds a positive limit down to the grid 2^(k/16) (steps of 4.4 %).
+double roundDown(double x) {
+  if (!(x > 0.0) || !std::isfinite(x)) return x;
+  return std::min(x, std::exp2(std::floor(16.0 * std::log2(x)) / 16.0));
+}
+
+double dot(const AxisValues& a, const AxisValues& b, int n) {
+  double s = 0.0;
+  for (int i = 0; i < n; ++i) s += a[i] * b[i];
+  return s;
+}
+
+// Turning angle between unit directions, accurate for tiny and for large angles.
+double turnAngle(const AxisValues& u1, const AxisValues& u2, int n) {
+  const double c = dot(u1, u2, n);
+  double s2 = 0.0;
+  for (int i = 0; i < n; ++i) {
+    const double d = u2[i] - c * u1[i];
+    s2 += d * d;
+  }
+  return std::atan2(std::sqrt(s2), c);
+}
+
+}  // namespace
+
+void ContinuousPath::enqueue(const QueuedSegment& segment, MotionPrimitive::Kind kind,
+                             const SegmentLimits& limits, double vertex_limit, bool stop_after) {
+  double entry = 0.0;
+  const QueuedSegment* prev = queue_.lastSegment();
+  if (prev != nullptr && !queue_.lastStops() && queue_.lastKind() != MotionPrimitive::Kind::Dwell &&
+      isFeed(queue_.lastKind()) == isFeed(kind)) {
+    entry = std::min({queue_.lastLimits().velocity, limits.velocity, vertex_limit});
+  }
+  queue_.push(segment, kind, limits, entry, stop_after, 0.0);
+}
+
+// A ramp between v and V takes t and covers (v + V) / 2 * t: against cruising at V it loses
+// t * (V - v) / (2V). A stop has two such ramps from v = 0.
+double ContinuousPath::stopCost(double speed, double accel, double jerk) {
+  return VelocityRamp::make(0.0, speed, accel, jerk).duration;
+}
+
+double ContinuousPath::blendCost(double speed, double accel, double jerk, double blend_speed,
+                                 double blend_length, double trim) {
+  const double v = std::min(blend_speed, speed);
+  const double ramps = VelocityRamp::make(v, speed, accel, jerk).duration * (speed - v) / speed;
+  return ramps + blend_length / v - 2.0 * trim / speed;
+}
+
+double ContinuousPath::curvatureStepLimit(double step, const AxisValues& involved) const {
+  double v = kInf;
+  if (!(step > 0.0)) return v;
+  for (int i = 0; i < limits_.count; ++i) {
+    if (involved[i] == 0.0) continue;
+    v = std::min(v, std::sqrt(kJunctionJerkShare * limits_.jerk[i] * limits_.ipo_cycle / step));
+  }
+  return v;
+}
+
+double ContinuousPath::wiggleAllowance(const AxisValues& involved) const {
+  // limits.h: 2 delta / T^2 of acceleration and 4 delta / T^3 of jerk.
+  const double T = limits_.ipo_cycle;
+  double delta = kInf;
+  for (int i = 0; i < limits_.count; ++i) {
+    if (involved[i] == 0.0) continue;
+    delta = std::min(delta, kWiggleJerkShare * limits_.jerk[i] * T * T * T / 4.0);
+    delta = std::min(delta, kWiggleAccelerationShare * limits_.acceleration[i] * T * T / 2.0);
+  }
+  return delta == kInf ? 0.0 : delta;
+}
+
+void ContinuousPath::queueHeld(const AxisValues& end, double end_curvature,
+                               double end_sagitta, const AxisValues& next_direction,
+                               bool stop_after) {
+  const int n = limits_.count;
+  QueuedSegment seg;
+  seg.where = held_.where;
+  seg.path = PathSegment::line(held_.start, end, n);
+  if (!(seg.path.length() > kNegligibleLength)) {
+    // Trimmed away by the blends at both ends (they meet tangentially with zero curvature).
+    if (stop_after) queue_.stopAfterLast();
+    return;
+  }
+  ChainShape chain;
+  chain.curvature = std::max(held_.start_curvature, end_curvature);
+  chain.sagitta = std::max(held_.start_sagitta, end_sagitta);
+  for (int i = 0; i < n; ++i) {
+    const bool moves = held_.direction[i] != 0.0 || held_.previous_direction[i] != 0.0 ||
+                       next_direction[i] != 0.0;
+    chain.involved[i] = moves ? 1.0 : 0.0;
+  }
+  SegmentLimits limits = segmentLimits(seg.path, limits_, false, held_.feed, chain);
+  // The chain's curvature changes from one vertex to the next along this line: an
+  // acceleration step v^2 dk within at most one cycle reads as a jerk v^2 dk / T.
+  if (chain.curvature > 0.0) {
+    limits.velocity = std::min(
+        limits.velocity,
+        curvatureStepLimit(std::abs(end_curvature - held_.start_curvature), chain.involved));
+    // Neighbouring lines of a chain differ slightly in curvature; rounded down to a common
+    // grid, their limits are equal and they join one run (one S-curve, not one per 10 um).
+    if (limits.velocity < held_.feed) limits.velocity = roundDown(limits.velocity);
+    limits.acceleration = roundDown(limits.acceleration);
+    limits.jerk = roundDown(limits.jerk);
+  }
+  limits.velocity = std::max(limits.velocity, kMinVelocity);
+  enqueue(seg, MotionPrimitive::Kind::Line, limits, held_.start_limit, stop_after);
+}
+
+void ContinuousPath::flush() {
+  if (!held_.active) return;
+  queueHeld(held_.end, 0.0, 0.0, AxisValues{}, false);
+  held_.active = false;
+}
+
+void ContinuousPath::line(const AxisValues& from, const AxisValues& to, double feed,
+                          bool exact_stop, const SourcePosition& where) {
+  const int n = limits_.count;
+  HeldLine next;
+  next.active = true;
+  next.start = from;
+  next.end = to;
+  next.feed = feed;
+  next.where = where;
+  const PathSegment programmed = PathSegment::line(from, to, n);
+  next.length = programmed.length();
+  programmed.tangent(0.0, next.direction);
+
+  if (!held_.active) {
+    // The junction with whatever is queued (an arc, or nothing): the plain rule.
+    const QueuedSegment* prev = queue_.lastSegment();
+    next.start_limit = prev != nullptr ? junctionVelocity(prev->path, programmed, limits_) : 0.0;
+  } else {
+    const HeldLine& a = held_;
+    const double theta = turnAngle(a.direction, next.direction, n);
+    AxisValues involved{};
+    for (int i = 0; i < n; ++i)
+      involved[i] = (a.direction[i] != 0.0 || next.direction[i] != 0.0) ? 1.0 : 0.0;
+    const double kappa = 2.0 * std::sin(0.5 * theta) / (0.5 * (a.length + next.length));
+    const double longest = std::max(a.length, next.length);
+    const double sagitta = longest * longest * kappa / 8.0;
+    const double tolerance = limits_.corner_tolerance;
+
+    // A turn the kink rule passes at full speed needs nothing else (collinear lines, and
+    // tiny turns between long lines).
+    const PathSegment held_line = PathSegment::line(a.start, a.end, n);
+    const double kink = theta <= kCornerAngle ? junctionVelocity(held_line, programmed, limits_) : 0.0;
+    const bool kink_free = a.start_curvature == 0.0 && kink >= std::max(a.feed, feed);
+    if (kink_free) {
+      queueHeld(a.end, 0.0, 0.0, next.direction, false);
+      next.start_limit = kink;
+    } else if (theta <= kChainMaxTurn && sagitta <= wiggleAllowance(involved)) {
+      // Chain vertex: passed as is, both lines planned as the curve through it.
+      queueHeld(a.end, kappa, sagitta, next.direction, false);
+      next.start_limit = kInf;
+      next.start_curvature = kappa;
+      next.start_sagitta = sagitta;
+    } else {
+      // Candidates that keep the geometry: the kink rule (small turns), else a stop; both
+      // with the curvature step where a chain ends here.
+      const double chain_end = curvatureStepLimit(a.start_curvature, involved);
+      const double unblended = std::min(kink, chain_end);
+      // The blend candidate: d from the tolerance, at most half of each line.
+      bool blended = false;
+      if (tolerance > 0.0 && theta > 0.0 && theta <= kMaxBlendTurn) {
+        const double d = std::min({tolerance / (CornerBlend::kDeviationFactor * std::sin(0.5 * theta)),
+                                   0.5 * a.length, 0.5 * next.length});
+        AxisValues b_from = a.end, b_to = a.end;
+        for (int i = 0; i < n; ++i) {
+          b_from[i] = a.end[i] - d * a.direction[i];
+          b_to[i] = a.end[i] + d * next.direction[i];
+        }
+        const CornerBlend curve = CornerBlend::make(a.end, a.direction, next.direction, d, n);
+        QueuedSegment blend;
+        blend.where = where;
+        blend.path = PathSegment::blend(b_from, b_to, curve, n);
+        SegmentLimits bl = segmentLimits(blend.path, limits_, false, std::min(a.feed, feed));
+        bl.velocity = std::max(bl.velocity, kMinVelocity);
+        // Worth it if faster than the alternative: the kink's speed, or a stop.
+        double path_accel = kInf, path_jerk = kInf;
+        for (int i = 0; i < n; ++i) {
+          if (involved[i] == 0.0) continue;
+          path_accel = std::min(path_accel, limits_.acceleration[i]);
+          path_jerk = std::min(path_jerk, kSmoothJerkShare * limits_.jerk[i]);
+        }
+        const double speed = std::min(a.feed, feed);
+        const bool beats_stop =
+            blendCost(speed, path_accel, path_jerk, bl.velocity, blend.path.length(), d) <
+            stopCost(speed, path_accel, path_jerk);
+        if (bl.velocity > unblended && (unblended > 0.0 || beats_stop)) {
+          queueHeld(b_from, 0.0, 0.0, next.direction, false);
+          // The blend starts exactly where the trimmed line ended (also when the blends on
+          // both sides left nothing of the line).
+          const QueuedSegment* last = queue_.lastSegment();
+          if (last != nullptr) blend.path = PathSegment::blend(last->path.to(), b_to, curve, n);
+          enqueue(blend, MotionPrimitive::Kind::Line, bl, chain_end, false);
+          next.start = b_to;
+          next.start_limit = kInf;  // G2 junction: same tangent, zero curvature
+          blended = true;
+        }
+      }
+      if (!blended) {
+        const bool stop = unblended <= 0.0;
+        queueHeld(a.end, 0.0, 0.0, next.direction, stop);
+        next.start_limit = unblended;
+      }
+    }
+    next.previous_direction = a.direction;
+  }
+  held_ = next;
+  if (exact_stop) {
+    queueHeld(held_.end, 0.0, 0.0, AxisValues{}, true);
+    held_.active = false;
+  }
+}
+
+}  // namespace ncc::vm::motion
