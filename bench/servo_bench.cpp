@@ -1,5 +1,6 @@
 // ServoModel::step() for 6 axes with every feature on (torque feed-forward, backlash and
-// pitch tables): ns per tick, and the worst tick seen (DESIGN.md: report the worst tick).
+// pitch tables): ns per tick, and the worst tick seen (DESIGN.md: report the worst tick); and
+// for the built-in 3-axis mill (velocity feed-forward, no tables), the common case.
 #include <benchmark/benchmark.h>
 
 #include <algorithm>
@@ -22,8 +23,9 @@ std::vector<ncc::AxisValues> setpoints(long n) {
   return out;
 }
 
-void BM_ServoStep6Axes(benchmark::State& state) {
-  ncc::vm::ServoModel model(ncc::bench::sixAxes());
+// ServoModel::step() on `machine`, cycling through the precomputed setpoints.
+void stepLoop(benchmark::State& state, const ncc::MachineConfig& machine) {
+  ncc::vm::ServoModel model(machine);
   const std::vector<ncc::AxisValues> sp = setpoints(4096);
   size_t k = 0;
   for (auto _ : state) {
@@ -32,7 +34,12 @@ void BM_ServoStep6Axes(benchmark::State& state) {
   }
   state.SetItemsProcessed(state.iterations());
 }
+
+void BM_ServoStep6Axes(benchmark::State& state) { stepLoop(state, ncc::bench::sixAxes()); }
 BENCHMARK(BM_ServoStep6Axes);
+
+void BM_ServoStepDefaultMill(benchmark::State& state) { stepLoop(state, ncc::defaultMachine()); }
+BENCHMARK(BM_ServoStepDefaultMill);
 
 // Worst single tick over 1e6 ticks, timed one by one (includes the clock's own cost).
 void BM_ServoWorstTick6Axes(benchmark::State& state) {

@@ -1,11 +1,14 @@
 // A circle at constant F through the servo model: the steady-state radius of the actual path
 // against the continuous-time formula of docs/servo.md,
-//   r_act / r = |G(jw)| = sqrt((Kv - u T w^2)^2 + (v w)^2) / sqrt((Kv - T w^2)^2 + w^2)
+//   r_act / r = |G(jw)|,  G(s) = (Kv F(s) + v s + u T s^2) / (T s^2 + s + Kv)
 // (Kv in 1/s, T the speed loop's equivalent time constant, v the velocity feed-forward weight,
-// u = 1 with torque feed-forward). Without feed-forward and T = 0 this is the classic
-// 1 / sqrt(1 + (w/Kv)^2). The discrete model's own steady state is |H(e^(jwT))| (docs/servo.md):
-//   H(z) = P(z) (Kv + z F(z)) / (z - 1 + Kv P(z)),
+// u = 1 with torque feed-forward, F(s) = 1 / (1 + T s) the symmetrisation of the setpoint with
+// velocity feed-forward, else 1). Without feed-forward and T = 0 this is the classic
+// 1 / sqrt(1 + (w/Kv)^2); with ideal velocity feed-forward G = 1 / (1 + T s), whatever Kv.
+// The discrete model's own steady state is |H(e^(jwT_c))| (docs/servo.md):
+//   H(z) = P(z) (Kv S(z) + z F(z)) / (z - 1 + Kv P(z)),
 //   P(z) = (T_c - L) + L (1 - b) / (z - b),  b = exp(-T_c/T), L = T (1 - b),
+//   S(z) = P(z) / T_c with velocity feed-forward (and T > 0), else 1,
 //   F(z) = v (1 - 1/z) / T_c + u T (1 - 1/z)^2 / T_c^2      (T_c: the IPO cycle).
 #include <algorithm>
 #include <cmath>
@@ -26,13 +29,20 @@ using test::servoParams;
 constexpr double kCycle = 0.001;
 constexpr double kRadius = 10.0;  // mm
 
+// Velocity feed-forward delays the setpoint by the speed loop's lag (symmetrisation).
+bool symmetrised(const ServoConfig& s) {
+  return s.ffw_mode == FeedForwardMode::Velocity && s.equiv_speedctrl_time > 0.0;
+}
+
 double analyticRatio(const ServoConfig& s, double omega) {
+  using C = std::complex<double>;
   const double kv = kvPerSecond(s.kv);
   const double t = s.equiv_speedctrl_time;
   const double w = s.ffw_mode == FeedForwardMode::None ? 0.0 : s.velo_ffw_weight;
   const double u = s.ffw_mode == FeedForwardMode::Torque ? 1.0 : 0.0;
-  const double w2 = omega * omega;
-  return std::hypot(kv - u * t * w2, w * omega) / std::hypot(kv - t * w2, omega);
+  const C jw(0.0, omega);
+  const C filter = symmetrised(s) ? 1.0 / (1.0 + t * jw) : C(1.0);
+  return std::abs((kv * filter + w * jw + u * t * jw * jw) / (t * jw * jw + jw + kv));
 }
 
 double discreteRatio(const ServoConfig& s, double omega) {
@@ -45,9 +55,10 @@ double discreteRatio(const ServoConfig& s, double omega) {
   const double lag = t * (1.0 - b);
   const C z = std::polar(1.0, omega * kCycle);
   const C p = (kCycle - lag) + lag * (1.0 - b) / (z - b);
+  const C filter = symmetrised(s) ? p / kCycle : C(1.0);
   const C d = 1.0 - 1.0 / z;
   const C f = w * d / kCycle + u * t * d * d / (kCycle * kCycle);
-  return std::abs(p * (kv + z * f) / (z - 1.0 + kv * p));
+  return std::abs(p * (kv * filter + z * f) / (z - 1.0 + kv * p));
 }
 
 struct RadiusRange {
@@ -80,15 +91,23 @@ struct Case {
 
 TEST(ServoCircle, RadiusErrorMatchesTheAnalyticFormula) {
   // Continuous tolerances: 10 % of the radius error (the cycle is 1.7-5 % of 1/Kv; the
-  // sampled loop acts about half a cycle late), 0.02 mm for torque FFW at 11 m/s^2.
+  // sampled loop acts about half a cycle late), 0.02 mm for torque FFW at 11 m/s^2; with the
+  // symmetrised velocity FFW the actual path is the setpoint polygon through the lag, which
+  // cuts the circle by about r (w T_c)^2 / 12 (8e-5 mm at F6000, 9e-4 mm at F20000).
+  ServoConfig half_weight = servoParams(1.0, FeedForwardMode::Velocity, 0.004);
+  half_weight.velo_ffw_weight = 0.5;
   const Case cases[] = {
       {"no FFW, T=0, F6000", servoParams(1.0, FeedForwardMode::None, 0.0), 6000.0, 0.15},
       {"no FFW, T=4ms, F6000", servoParams(1.0, FeedForwardMode::None, 0.004), 6000.0, 0.13},
       {"no FFW, Kv3, F3000", servoParams(3.0, FeedForwardMode::None, 0.004), 3000.0, 0.003},
       {"vel FFW, T=4ms, F6000", servoParams(1.0, FeedForwardMode::Velocity, 0.004), 6000.0,
-       0.018},
+       1.5e-4},
       {"vel FFW, T=4ms, F20000", servoParams(1.0, FeedForwardMode::Velocity, 0.004), 20000.0,
-       0.05},
+       1e-3},
+      {"vel FFW, Kv3, F20000", servoParams(3.0, FeedForwardMode::Velocity, 0.004), 20000.0,
+       1e-3},
+      {"vel FFW 0.5, F6000", half_weight, 6000.0, 0.02},
+      {"vel FFW, T=0, F6000", servoParams(1.0, FeedForwardMode::Velocity, 0.0), 6000.0, 1e-9},
       {"torque FFW, T=4ms, F20000", servoParams(1.0, FeedForwardMode::Torque, 0.004), 20000.0,
        0.02},
   };
@@ -107,6 +126,20 @@ TEST(ServoCircle, RadiusErrorMatchesTheAnalyticFormula) {
     EXPECT_NEAR(error_min, continuous, c.tolerance) << c.name;
     EXPECT_NEAR(error_max, continuous, c.tolerance) << c.name;
   }
+}
+
+// Manual (K3, "influence on the servo gain"): with feed-forward set correctly the response to
+// setpoint changes is as dynamic as the speed loop's, and Kv barely affects the radius error.
+// In this model it is exactly the speed loop's: the same radius for any Kv.
+TEST(ServoCircle, WithVelocityFeedForwardKvDoesNotChangeTheRadius) {
+  const double omega = 20000.0 / 60.0 / kRadius;
+  const RadiusRange slow = actualRadius(servoParams(0.5, FeedForwardMode::Velocity, 0.004), omega);
+  const RadiusRange fast = actualRadius(servoParams(5.0, FeedForwardMode::Velocity, 0.004), omega);
+  const double lag = kRadius * (1.0 - 1.0 / std::hypot(1.0, omega * 0.004));
+  std::printf("velocity FFW at F20000: radius error %.9f mm (Kv 0.5), %.9f mm (Kv 5), speed "
+              "loop alone %.9f mm\n", kRadius - slow.max, kRadius - fast.max, lag);
+  EXPECT_NEAR(slow.min, fast.min, 1e-12);
+  EXPECT_NEAR(slow.max, fast.max, 1e-12);
 }
 
 // The brief's closed form for a first-order position loop (no FFW, no speed-loop lag).

@@ -36,6 +36,32 @@ TEST(PitchTable, EndValuesHeldOutside) {
   EXPECT_EQ(vm::pitchValue(PitchTable{0.0, 1.0, {0.5}}, 3.0), 0.5);
 }
 
+// The servo model's per-cycle path (all axes' divisions side by side, then the interpolation)
+// gives pitchValue() bit for bit: inside, between and outside the support points, and NaN.
+TEST(PitchTable, ServoLookupIsPitchValue) {
+  vm::PitchTables tables;
+  tables.add(1, table());
+  tables.add(3, PitchTable{0.0, 0.1, {0.0, -0.001, 0.0005}});
+  const PitchTable* by_axis[4] = {nullptr, nullptr, nullptr, nullptr};
+  const PitchTable t1 = table(), t3{0.0, 0.1, {0.0, -0.001, 0.0005}};
+  by_axis[1] = &t1;
+  by_axis[3] = &t3;
+  vm::PitchTables::Values position{}, parameter{}, value{};
+  for (double x = -40.0; x <= 40.0; x += 0.0625) {
+    for (int i = 0; i < 4; ++i) position[i] = i == 3 ? x / 100.0 : x;
+    value.fill(0.0);
+    tables.lookUp(4, position, parameter, value);
+    for (int i = 0; i < 4; ++i) {
+      const double expected = by_axis[i] ? vm::pitchValue(*by_axis[i], position[i]) : 0.0;
+      EXPECT_EQ(value[i], expected) << "axis " << i << " at " << position[i];
+      EXPECT_EQ(tables.valueAt(i, position[i]), expected) << "axis " << i;
+    }
+  }
+  position[1] = std::nan("");
+  tables.lookUp(4, position, parameter, value);
+  EXPECT_EQ(value[1], 0.0);  // the first value
+}
+
 // At rest at x, the table is at x + e(x) without compensation; with the same table as LEC
 // compensation it is at x up to the second-order term e(x) * e'(x).
 TEST(PitchTable, ServoModelAppliesAndCompensatesTheError) {

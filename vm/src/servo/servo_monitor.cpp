@@ -9,29 +9,60 @@ namespace ncc::vm {
 // limit must not count as a violation because of rounding.
 constexpr double kLimitSlack = 1e-9;
 
-AxisMonitor::AxisMonitor(const AxisConfig& axis, double cycle_seconds)
-    : contour_tol_(axis.servo.contour_tol),
-      standstill_tol_(axis.servo.standstill_pos_tol),
-      standstill_delay_ticks_(
-          static_cast<int64_t>(std::ceil(axis.servo.standstill_delay_time / cycle_seconds))),
-      min_travel_(axis.min_travel),
-      max_travel_(axis.max_travel),
-      max_velocity_(std::max(axis.rapid_velocity, axis.max_velocity) / 60.0 * (1.0 + kLimitSlack)),
-      max_acceleration_(axis.max_acceleration * (1.0 + kLimitSlack)) {}
+ServoMonitors::ServoMonitors(const MachineConfig& machine, int axis_count)
+    : count_(axis_count) {
+  const double cycle = machine.ipo_cycle_seconds;
+  for (int i = 0; i < count_; ++i) {
+    const AxisConfig& axis = machine.axes[i];
+    contour_tol_[i] = axis.servo.contour_tol;
+    standstill_tol_[i] = axis.servo.standstill_pos_tol;
+    standstill_delay_ticks_[i] = std::ceil(axis.servo.standstill_delay_time / cycle);
+    min_travel_[i] = axis.min_travel;
+    max_travel_[i] = axis.max_travel;
+    max_velocity_[i] =
+        std::max(axis.rapid_velocity, axis.max_velocity) / 60.0 * (1.0 + kLimitSlack);
+    max_acceleration_[i] = axis.max_acceleration * (1.0 + kLimitSlack);
+  }
+}
 
-int AxisMonitor::check(double setpoint_delta, double actual, double following_error,
-                       double velocity, double acceleration, LimitViolations& violations) {
-  if (actual < min_travel_ || actual > max_travel_) ++violations.travel;
-  if (std::fabs(velocity) > max_velocity_) ++violations.velocity;
-  if (std::fabs(acceleration) > max_acceleration_) ++violations.acceleration;
+void ServoMonitors::reset() {
+  still_ticks_ = {};
+  code_ = {};
+  travel_count_ = {};
+  velocity_count_ = {};
+  acceleration_count_ = {};
+}
 
-  const double abs_error = std::fabs(following_error);
-  still_ticks_ = setpoint_delta == 0.0 ? still_ticks_ + 1 : 0;
-  // Standstill monitoring starts once the setpoint has rested for STANDSTILL_DELAY_TIME.
-  if (still_ticks_ > standstill_delay_ticks_ && abs_error > standstill_tol_)
-    return kAlarmStandstill;
-  if (abs_error > contour_tol_) return kAlarmContour;
-  return 0;
+void ServoMonitors::check(const AxisValues& __restrict setpoint_delta,
+                          const ServoSample& __restrict sample) {
+  // Written as selects, arithmetic and int | and & rather than branches, ||, && (GCC will not
+  // if-convert a conditional floating-point add), so that the loop vectorises.
+  for (int i = 0; i < count_; ++i) {
+    // Limits, counted per sample.
+    const double actual = sample.actual[i];
+    const bool outside = int{actual < min_travel_[i]} | int{actual > max_travel_[i]};
+    travel_count_[i] += outside ? 1.0 : 0.0;
+    velocity_count_[i] += std::fabs(sample.velocity[i]) > max_velocity_[i] ? 1.0 : 0.0;
+    acceleration_count_[i] +=
+        std::fabs(sample.acceleration[i]) > max_acceleration_[i] ? 1.0 : 0.0;
+
+    // Standstill monitoring starts once the setpoint has rested for STANDSTILL_DELAY_TIME;
+    // contour monitoring always applies. The rest counter restarts at 0 when it moves.
+    const double resting = setpoint_delta[i] == 0.0 ? 1.0 : 0.0;
+    const double still = (still_ticks_[i] + 1.0) * resting;
+    still_ticks_[i] = still;
+    const double abs_error = std::fabs(sample.following_error[i]);
+    const double contour = abs_error > contour_tol_[i] ? kAlarmContour : 0.0;
+    const bool standstill =
+        int{still > standstill_delay_ticks_[i]} & int{abs_error > standstill_tol_[i]};
+    code_[i] = standstill ? kAlarmStandstill : contour;
+  }
+}
+
+bool ServoMonitors::anyAlarm() const {
+  bool any = false;
+  for (int i = 0; i < count_; ++i) any |= code_[i] != 0.0;
+  return any;
 }
 
 }  // namespace ncc::vm

@@ -8,23 +8,14 @@
 // Real-time: everything is sized in the constructor; reset() and step() allocate nothing,
 // throw nothing and do a fixed amount of work per configured axis. Deterministic: the same
 // setpoints give bit-identical samples.
-#include <array>
 #include <cstdint>
 
 #include "ncc/machine/machine_config.h"
-#include "ncc/vm/servo/axis_servo.h"
+#include "ncc/vm/servo/servo_axes.h"
 #include "ncc/vm/servo/servo_monitor.h"
+#include "ncc/vm/servo/servo_sample.h"
 
 namespace ncc::vm {
-
-struct ServoSample {
-  int64_t tick = 0;              // ticks since reset
-  AxisValues setpoint{};         // what step() was given
-  AxisValues actual{};           // table positions
-  AxisValues following_error{};  // position controller error per axis, mm
-  AxisValues velocity{};         // motor speed, mm/s (deg/s)
-  AxisValues acceleration{};     // mm/s^2 (deg/s^2)
-};
 
 class ServoModel {
  public:
@@ -40,13 +31,12 @@ class ServoModel {
   // The first alarm since reset (code 0: none). The model keeps running after it: stopping
   // is the VM's decision.
   const ServoAlarm& alarm() const { return alarm_; }
-  const LimitViolations& violations(int axis) const { return violations_[axis]; }
+  LimitViolations violations(int axis) const { return monitors_.violations(axis); }
 
  private:
   int axis_count_ = 0;
-  std::array<AxisServo, kMaxAxes> axes_{};
-  std::array<AxisMonitor, kMaxAxes> monitors_{};
-  std::array<LimitViolations, kMaxAxes> violations_{};
+  ServoAxes axes_;
+  ServoMonitors monitors_;
   ServoSample sample_;
   ServoAlarm alarm_;
   int64_t next_tick_ = 0;

@@ -1,9 +1,11 @@
 #pragma once
 // Axis monitoring of the servo model (notes §4.1; Sinumerik A3): following-error ("contour")
 // monitoring, standstill monitoring, and counts of limit violations of the actual motion.
+#include <array>
 #include <cstdint>
 
 #include "ncc/machine/machine_config.h"
+#include "ncc/vm/servo/servo_sample.h"
 
 namespace ncc::vm {
 
@@ -27,24 +29,46 @@ struct LimitViolations {
   friend bool operator==(const LimitViolations&, const LimitViolations&) = default;
 };
 
-class AxisMonitor {
+// The monitoring of all axes, stored by quantity like ServoAxes (one array per limit or state,
+// indexed by axis) so that check() is a loop the compiler vectorises. Counts and alarm codes
+// are kept as doubles for that (SSE2 compares doubles into double-wide masks); they are whole
+// numbers, exact far beyond any run's length (2^53 ticks).
+class ServoMonitors {
  public:
-  AxisMonitor() = default;
-  AxisMonitor(const AxisConfig& axis, double cycle_seconds);
-  void reset() { still_ticks_ = 0; }
+  ServoMonitors() = default;
+  // The first `axis_count` axes of `machine` (at most kMaxAxes).
+  ServoMonitors(const MachineConfig& machine, int axis_count);
+  // Clears the counts and the standstill timers.
+  void reset();
 
-  // Returns the alarm code this sample trips (0: none) and counts limit violations.
-  int check(double setpoint_delta, double actual, double following_error, double velocity,
-            double acceleration, LimitViolations& violations);
+  // One sample: `setpoint_delta` is each axis's setpoint change this cycle. Counts limit
+  // violations and sets alarmCode(axis) to the alarm the sample trips there (0: none).
+  // (Neither argument overlaps this object: __restrict spares the vectorised loop run-time
+  // overlap checks.)
+  void check(const AxisValues& __restrict setpoint_delta, const ServoSample& __restrict sample);
+  int alarmCode(int axis) const { return static_cast<int>(code_[axis]); }
+  // Whether any axis tripped an alarm in the last check().
+  bool anyAlarm() const;
+  LimitViolations violations(int axis) const {
+    return {static_cast<int64_t>(travel_count_[axis]),
+            static_cast<int64_t>(velocity_count_[axis]),
+            static_cast<int64_t>(acceleration_count_[axis])};
+  }
 
  private:
-  double contour_tol_ = 1.0;
-  double standstill_tol_ = 0.2;
-  int64_t standstill_delay_ticks_ = 0;
-  double min_travel_ = 0.0, max_travel_ = 0.0;
-  double max_velocity_ = 0.0;      // mm/s
-  double max_acceleration_ = 0.0;  // mm/s^2
-  int64_t still_ticks_ = 0;        // ticks the setpoint has not moved
+  using Values = std::array<double, kMaxAxes>;
+
+  int count_ = 0;
+  Values contour_tol_{};
+  Values standstill_tol_{};
+  Values standstill_delay_ticks_{};
+  Values min_travel_{}, max_travel_{};
+  Values max_velocity_{};      // mm/s
+  Values max_acceleration_{};  // mm/s^2
+
+  Values still_ticks_{};  // ticks the setpoint has not moved
+  Values code_{};         // alarm of the last check per axis, 0: none
+  Values travel_count_{}, velocity_count_{}, acceleration_count_{};
 };
 
 }  // namespace ncc::vm

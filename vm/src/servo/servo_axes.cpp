@@ -1,0 +1,109 @@
+#include "ncc/vm/servo/servo_axes.h"
+
+#include "ncc/vm/servo/backlash.h"
+#include "ncc/vm/servo/speed_loop.h"
+
+namespace ncc::vm {
+
+// Siemens gives Kv in (m/min)/mm: 1 (m/min)/mm = 1000/60 1/s.
+constexpr double kKvToPerSecond = 1000.0 / 60.0;
+
+ServoAxes::ServoAxes(const MachineConfig& machine, int axis_count)
+    : count_(axis_count), cycle_(machine.ipo_cycle_seconds) {
+  for (int i = 0; i < count_; ++i) {
+    const ServoConfig& s = machine.axes[i].servo;
+    kv_[i] = s.kv * kKvToPerSecond;
+    velocity_ffw_[i] = s.ffw_mode == FeedForwardMode::None ? 0.0 : s.velo_ffw_weight;
+    // q T_eq, the weight of the setpoint's acceleration (q = 1 with torque feed-forward).
+    torque_ffw_[i] = (s.ffw_mode == FeedForwardMode::Torque ? 1.0 : 0.0) * s.equiv_speedctrl_time;
+    const SpeedLoopLag lag = SpeedLoopLag::of(s.equiv_speedctrl_time, cycle_);
+    decay_[i] = lag.decay;
+    lag_distance_[i] = lag.lag_distance;
+    // Velocity feed-forward reaches the motor through the speed loop's lag, so the position
+    // setpoint is delayed by the same lag before the comparison. Torque feed-forward cancels
+    // that lag (the current loop, MD 32800, is not modelled: its delay is 0): nothing to delay.
+    const bool symmetrise =
+        s.ffw_mode == FeedForwardMode::Velocity && s.equiv_speedctrl_time > 0.0;
+    symmetrise_[i] = symmetrise ? 1.0 : 0.0;
+    backlash_half_[i] = 0.5 * s.backlash_compensation;
+    play_half_[i] = 0.5 * (s.backlash < 0.0 ? -s.backlash : s.backlash);
+    play_sign_[i] = s.backlash < 0.0 ? -1.0 : 1.0;
+    compensation_tables_.add(i, s.pitch_compensation);
+    pitch_error_tables_.add(i, s.pitch_error);
+  }
+}
+
+void ServoAxes::reset(const AxisValues& position) {
+  for (int i = 0; i < count_; ++i) {
+    setpoint_[i] = position[i];
+    setpoint_delta_[i] = 0.0;
+    compensation_[i] = compensation_tables_.valueAt(i, position[i]);
+    const double command = position[i] - compensation_[i];
+    command_[i] = command;
+    target_[i] = command;
+    ffw_velocity_[i] = 0.0;
+    backlash_[i] = 0.0;
+    reference_[i] = command;
+    reference_speed_[i] = 0.0;
+    motor_[i] = command;
+    speed_[i] = 0.0;
+    last_speed_[i] = 0.0;
+    pitch_error_value_[i] = pitch_error_tables_.valueAt(i, command);
+    play_lag_[i] = 0.0;
+    last_nut_[i] = command + pitch_error_value_[i];
+  }
+}
+
+void ServoAxes::step(const AxisValues& __restrict setpoint, ServoSample& __restrict out) {
+  const int n = count_;
+  const double cycle = cycle_;
+
+  // 1. Compensation (notes §4.1). LEC: the table holds the error it corrects (a positive value
+  // moves the axis negative). Backlash: the step acts on the position loop only, as Siemens
+  // corrects the actual value, so it is neither differentiated into the feed-forward nor
+  // symmetrised.
+  compensation_tables_.lookUp(n, setpoint, table_parameter_, compensation_);
+  for (int i = 0; i < n; ++i) {
+    const double delta = setpoint[i] - setpoint_[i];
+    setpoint_delta_[i] = delta;
+    backlash_[i] = backlashCompensation(backlash_[i], delta, backlash_half_[i]);
+    setpoint_[i] = setpoint[i];
+    out.setpoint[i] = setpoint[i];
+  }
+
+  // 2. Control. The command is where the axis should be at the end of this cycle. The
+  // position loop acts on the error at the cycle's start (against the previous target); the
+  // feed-forward is the speed (and the speed change) this cycle's move needs.
+  for (int i = 0; i < n; ++i) {
+    const double command = setpoint_[i] - compensation_[i];
+    const double ffw_velocity = (command - command_[i]) / cycle;
+    const double ffw_acceleration = (ffw_velocity - ffw_velocity_[i]) / cycle;
+    const double speed_setpoint = kv_[i] * (target_[i] - motor_[i]) +
+                                  velocity_ffw_[i] * ffw_velocity +
+                                  torque_ffw_[i] * ffw_acceleration;
+    command_[i] = command;
+    ffw_velocity_[i] = ffw_velocity;
+    // Symmetrisation: the command through the same lag the feed-forward speed goes through,
+    // driven by the same speed, so that with weight 1 it is where the motor is. (Run for every
+    // axis, used where enabled: the loop stays branch-free.)
+    advanceSpeedLoop(reference_[i], reference_speed_[i], ffw_velocity, cycle, decay_[i],
+                     lag_distance_[i]);
+    target_[i] = (symmetrise_[i] != 0.0 ? reference_[i] : command) + backlash_[i];
+    last_speed_[i] = speed_[i];
+    advanceSpeedLoop(motor_[i], speed_[i], speed_setpoint, cycle, decay_[i], lag_distance_[i]);
+  }
+
+  // 3. Mechanics between the motor and the table, and the sample at the cycle's end.
+  pitch_error_tables_.lookUp(n, motor_, table_parameter_, pitch_error_value_);
+  for (int i = 0; i < n; ++i) {
+    const double nut = motor_[i] + pitch_error_value_[i];
+    play_lag_[i] = takeUpPlay(play_lag_[i], nut - last_nut_[i], play_half_[i]);
+    last_nut_[i] = nut;
+    out.actual[i] = nut - play_sign_[i] * play_lag_[i];
+    out.following_error[i] = target_[i] - motor_[i];
+    out.velocity[i] = speed_[i];
+    out.acceleration[i] = (speed_[i] - last_speed_[i]) / cycle;
+  }
+}
+
+}  // namespace ncc::vm
