@@ -106,6 +106,34 @@ TEST(Controller, FeedPerRevolutionUsesTheSpindleSpeed) {
   EXPECT_NEAR(top, 0.12 * 1000.0 / 60.0, 1e-12);  // 2 mm/s
 }
 
+TEST(Controller, FeedPerRevolutionWithTheSpindleStoppedIsAnAlarm) {
+  // No S at all, and S1000 then M05: the G95 block raises NCC7207 once the motion queued
+  // before it has run; nothing after it moves.
+  const MachineConfig m = defaultMachine();
+  for (bool with_m05 : {false, true}) {
+    bytecode::Assembler a = assemblerFor(m);
+    a.at(1, 1).line(xyz(5, 0, 0), 600.0);
+    if (with_m05) a.spindleSpeed(1000.0).op(bytecode::Opcode::SpindleCW).op(bytecode::Opcode::SpindleStop);
+    a.at(1, 3, 1).line(xyz(10, 0, 0), 0.1, bytecode::kFlagFeedPerRev);
+    a.at(1, 4).line(xyz(20, 0, 0), 600.0).op(bytecode::Opcode::End);
+    std::unique_ptr<vm::Controller> ctl = make(a.finish(), m);
+    const std::vector<TickOutput> ticks = runAll(*ctl);
+    EXPECT_EQ(ctl->status(), TickStatus::Alarm) << with_m05;
+    ASSERT_NE(ctl->alarm(), nullptr);
+    EXPECT_EQ(ctl->alarm()->code, "NCC7207");
+    EXPECT_EQ(ctl->alarm()->where, (SourceLocation{1, 3, 1}));
+    ASSERT_FALSE(ticks.empty());
+    EXPECT_EQ(ticks.back().commanded, xyz(5, 0, 0));
+  }
+  // M03 after M05 runs it again.
+  bytecode::Assembler a = assemblerFor(m);
+  a.spindleSpeed(1000.0).op(bytecode::Opcode::SpindleStop).op(bytecode::Opcode::SpindleCW);
+  a.line(xyz(1, 0, 0), 0.1, bytecode::kFlagFeedPerRev).op(bytecode::Opcode::End);
+  std::unique_ptr<vm::Controller> ctl = make(a.finish(), m);
+  runAll(*ctl);
+  EXPECT_EQ(ctl->status(), TickStatus::Finished);
+}
+
 TEST(Controller, ReferenceCheckAlarmStopsTheRunWhenTheBlockIsReached) {
   MachineConfig m = defaultMachine();
   bytecode::Assembler a = assemblerFor(m);

@@ -97,6 +97,10 @@ void Controller::pullEvents() {
     }
     if (!planner_.accept(event_)) return;  // ring full: retried next tick
     event_pending_ = false;
+    if (planner_.spindleAlarm()) {  // the planner takes nothing after it
+      input_done_ = true;
+      return;
+    }
   }
 }
 
@@ -114,6 +118,8 @@ TickStatus Controller::tick(TickOutput& out) noexcept {
     // Everything queued has run: the program's end, or the block that raised an alarm.
     if (executor_.alarm()) {
       raiseExecutorAlarm();
+    } else if (planner_.spindleAlarm()) {
+      raiseSpindleAlarm();
     } else {
       status_ = TickStatus::Finished;
     }
@@ -146,6 +152,15 @@ void Controller::raiseExecutorAlarm() {
   assignBounded(alarm_.code, from.code);
   assignBounded(alarm_.message, from.message);
   alarm_.where = from.where;
+  has_alarm_ = true;
+  status_ = TickStatus::Alarm;
+}
+
+void Controller::raiseSpindleAlarm() {
+  alarm_.code.assign("NCC7207");
+  alarm_.message.assign(
+      "feed per revolution with the spindle stopped: S is 0 (or not given) or M05 is active");
+  alarm_.where = planner_.spindleAlarmWhere();
   has_alarm_ = true;
   status_ = TickStatus::Alarm;
 }

@@ -7,8 +7,8 @@
 namespace ncc::vm::motion {
 namespace {
 
-// Slowest path speed a feed move is planned with (F0, or G95 with the spindle stopped): a
-// zero speed would never end. 1 mm/min.
+// Slowest path speed a feed move is planned with (F0): a zero speed would never end.
+// 1 mm/min.
 constexpr double kMinFeed = 1.0 / 60.0;
 
 }  // namespace
@@ -37,15 +37,25 @@ MotionPlanner::MotionPlanner(const MachineConfig& machine, std::size_t window_ca
       interpolator_(machine.start_position, limits_) {}
 
 bool MotionPlanner::push(const MotionPrimitive& m) {
+  if (spindle_alarm_) return true;  // input ends at the alarm
   if (!hasRoom()) return false;
   const int n = limits_.count;
+  const bool per_rev = (m.kind == MotionPrimitive::Kind::Dwell && m.revolutions) ||
+                       ((m.kind == MotionPrimitive::Kind::Line || m.kind == MotionPrimitive::Kind::Arc) &&
+                        m.feed_per_rev);
+  if (per_rev && (!(spindle_rpm_ > 0.0) || spindle_stopped_)) {
+    spindle_alarm_ = true;
+    spindle_alarm_where_ = m.where;
+    endOfProgram();
+    return true;
+  }
   if (m.kind == MotionPrimitive::Kind::Dwell) {
     path_.flush();
     QueuedSegment seg;
     seg.where = m.where;
     seg.path = PathSegment::dwell(m.from, n);
     const double rev_per_s = spindle_rpm_ / 60.0;
-    double seconds = m.revolutions ? (rev_per_s > 0.0 ? m.seconds / rev_per_s : 0.0) : m.seconds;
+    const double seconds = m.revolutions ? m.seconds / rev_per_s : m.seconds;
     queue_.stopAfterLast();
     queue_.push(seg, m.kind, SegmentLimits{}, 0.0, true, std::max(seconds, 0.0));
     return true;
@@ -94,6 +104,13 @@ bool MotionPlanner::accept(const Event& event) {
   switch (event.machine.kind) {
     case MachineEvent::Kind::SpindleSpeed:
       spindle_rpm_ = event.machine.value;
+      break;
+    case MachineEvent::Kind::SpindleCW:
+    case MachineEvent::Kind::SpindleCCW:
+      spindle_stopped_ = false;
+      break;
+    case MachineEvent::Kind::SpindleStop:
+      spindle_stopped_ = true;
       break;
     case MachineEvent::Kind::ProgramStop:
     case MachineEvent::Kind::OptionalStop:

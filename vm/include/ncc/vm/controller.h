@@ -113,6 +113,7 @@ class Controller {
   void pullEvents();
   void raiseServoAlarm(const ServoAlarm& servo_alarm, SourcePosition where);
   void raiseExecutorAlarm();
+  void raiseSpindleAlarm();
   std::string_view fileName(uint32_t file) const;
 
   // Declaration order matters: the executor refers to program_.

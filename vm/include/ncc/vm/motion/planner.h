@@ -44,8 +44,9 @@ class MotionPlanner {
   // Takes one primitive (its `from` must be where the previous one ended). False when the
   // ring is too full; nothing is taken then.
   bool push(const MotionPrimitive& motion);
-  // Routes an executor event: motion to push(), S to the spindle speed (feed per rev, dwell
-  // in revolutions), M00/M01/M02/M30 to an exact stop. False only when the ring is full.
+  // Routes an executor event: motion to push(), S/M03/M04/M05 to the spindle state (feed per
+  // rev, dwell in revolutions), M00/M01/M02/M30 to an exact stop. False only when the ring is
+  // full.
   bool accept(const Event& event);
   void setSpindleSpeed(double rpm) { spindle_rpm_ = rpm; }
   // The path comes to rest at the end of the last queued segment (M00/M01).
@@ -59,6 +60,12 @@ class MotionPlanner {
   bool setpoint(uint64_t k, AxisValues& out, SetpointInfo& info);
 
   bool finished() const { return ended_ && !path_.holding() && queue_.empty(); }
+  // Feed per revolution (G95 move, or a dwell in revolutions) with the spindle stopped: S is 0
+  // (or was never given) or M05 is active. The planner then takes no more input (as if the
+  // program ended there) and reports the block; the caller raises alarm NCC7207 when what
+  // was queued before it has run.
+  bool spindleAlarm() const { return spindle_alarm_; }
+  const SourcePosition& spindleAlarmWhere() const { return spindle_alarm_where_; }
   const AxisLimits& limits() const { return limits_; }
   std::size_t queued() const { return queue_.size(); }
 
@@ -68,6 +75,9 @@ class MotionPlanner {
   ContinuousPath path_;
   Interpolator interpolator_;
   double spindle_rpm_ = 0.0;
+  bool spindle_stopped_ = false;  // M05 seen (and no M03/M04 since)
+  bool spindle_alarm_ = false;
+  SourcePosition spindle_alarm_where_;
   bool ended_ = false;
 };
 
