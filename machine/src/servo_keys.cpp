@@ -26,6 +26,8 @@ constexpr NumberKey kNumberKeys[] = {
     {"contour_tol", &ServoConfig::contour_tol, Range::Positive},
     {"standstill_pos_tol", &ServoConfig::standstill_pos_tol, Range::Positive},
     {"standstill_delay_time", &ServoConfig::standstill_delay_time, Range::NonNegative},
+    {"stop_limit_fine", &ServoConfig::stop_limit_fine, Range::Positive},
+    {"positioning_time", &ServoConfig::positioning_time, Range::Positive},
     {"backlash", &ServoConfig::backlash, Range::Any},
     {"backlash_compensation", &ServoConfig::backlash_compensation, Range::Any},
 };

@@ -3,6 +3,7 @@
 #include "ncc/vm/controller.h"
 
 #include <algorithm>
+#include <cmath>
 #include <sstream>
 #include <vector>
 
@@ -132,6 +133,61 @@ TEST(Controller, FeedPerRevolutionWithTheSpindleStoppedIsAnAlarm) {
   std::unique_ptr<vm::Controller> ctl = make(a.finish(), m);
   runAll(*ctl);
   EXPECT_EQ(ctl->status(), TickStatus::Finished);
+}
+
+TEST(Controller, ExactStopWaitsForTheAxesToBeInPosition) {
+  // Kv 1 without feed-forward or speed-loop lag: after the G09 block the setpoint is held on
+  // its end point while the error decays by (1 - Kv T) per cycle, until it is within
+  // STOP_LIMIT_FINE (0.01 mm); the next block starts on the following tick.
+  ServoConfig servo;
+  servo.ffw_mode = FeedForwardMode::None;
+  servo.equiv_speedctrl_time = 0.0;
+  const MachineConfig m = machineWith(servo);
+  bytecode::Assembler a = assemblerFor(m);
+  a.line(xyz(10, 0, 0), 600.0, bytecode::kFlagExactStop);
+  a.line(xyz(10, 5, 0), 600.0).op(bytecode::Opcode::End);
+  std::unique_ptr<vm::Controller> ctl = make(a.finish(), m);
+  const std::vector<TickOutput> ticks = runAll(*ctl);
+  ASSERT_EQ(ctl->status(), TickStatus::Finished);
+  std::size_t first = ticks.size(), last = 0;
+  for (std::size_t k = 0; k < ticks.size(); ++k) {
+    if (ticks[k].commanded != xyz(10, 0, 0)) continue;
+    first = std::min(first, k);
+    last = k;
+  }
+  ASSERT_LT(first, ticks.size());
+  ASSERT_GT(last, first + 2);
+  const double e0 = std::abs(ticks[first].commanded[0] - ticks[first].actual[0]);
+  const double decay = 1.0 - kvPerSecond(1.0) * m.ipo_cycle_seconds;
+  std::size_t expected = 0;
+  for (double e = e0; e > 0.01; e *= decay) ++expected;
+  EXPECT_GT(expected, 10u);
+  // In position on tick last - 1 (checked after its servo step), not one tick earlier; the
+  // next block's first sample (tick `last`) is its start point, the stop point.
+  EXPECT_EQ(last - 1 - first, expected);
+  EXPECT_LE(std::abs(ticks[last - 1].commanded[0] - ticks[last - 1].actual[0]), 0.01);
+  EXPECT_GT(std::abs(ticks[last - 2].commanded[0] - ticks[last - 2].actual[0]), 0.01);
+}
+
+TEST(Controller, PositioningTimeoutIsAlarm25080) {
+  ServoConfig servo;
+  servo.ffw_mode = FeedForwardMode::None;
+  servo.kv = 0.05;              // 0.83/s: the lag decays far too slowly
+  servo.positioning_time = 0.1;
+  servo.contour_tol = 1e6;
+  servo.standstill_pos_tol = 1e6;
+  const MachineConfig m = machineWith(servo);
+  bytecode::Assembler a = assemblerFor(m);
+  a.at(1, 1).line(xyz(10, 0, 0), 600.0, bytecode::kFlagExactStop);
+  a.at(1, 2).line(xyz(10, 5, 0), 600.0).op(bytecode::Opcode::End);
+  std::unique_ptr<vm::Controller> ctl = make(a.finish(), m);
+  const std::vector<TickOutput> ticks = runAll(*ctl);
+  EXPECT_EQ(ctl->status(), TickStatus::Alarm);
+  ASSERT_NE(ctl->alarm(), nullptr);
+  EXPECT_EQ(ctl->alarm()->code, "25080");
+  EXPECT_EQ(ctl->alarm()->where.line, 1u);
+  EXPECT_NE(ctl->alarm()->message.find("axis X"), std::string::npos) << ctl->alarm()->message;
+  EXPECT_EQ(ticks.back().commanded, xyz(10, 0, 0));  // the next block never started
 }
 
 TEST(Controller, ReferenceCheckAlarmStopsTheRunWhenTheBlockIsReached) {

@@ -40,6 +40,8 @@ TEST(ServoKeys, DefaultsAreSiemensDefaults) {
   EXPECT_EQ(s.contour_tol, 1.0);
   EXPECT_EQ(s.standstill_pos_tol, 0.2);
   EXPECT_EQ(s.standstill_delay_time, 0.4);
+  EXPECT_EQ(s.stop_limit_fine, 0.01);
+  EXPECT_EQ(s.positioning_time, 1.0);
   EXPECT_EQ(s.backlash, 0.0);
   EXPECT_EQ(s.backlash_compensation, 0.0);
   EXPECT_TRUE(s.pitch_error.values.empty());
@@ -57,6 +59,8 @@ equiv_speedctrl_time = 0.003
 contour_tol = 0.5
 standstill_pos_tol = 0.05
 standstill_delay_time = 0.2
+stop_limit_fine = 0.005
+positioning_time = 2.5
 backlash = 0.012
 backlash_compensation = 0.01
 pitch_error = { start = -100.0, step = 50.0, values = [0.0, 0.002, -0.001] }
@@ -72,6 +76,8 @@ pitch_compensation = { start = -100, step = 50, values = [0.0, 0.002, -0.001] }
   EXPECT_EQ(y.servo.contour_tol, 0.5);
   EXPECT_EQ(y.servo.standstill_pos_tol, 0.05);
   EXPECT_EQ(y.servo.standstill_delay_time, 0.2);
+  EXPECT_EQ(y.servo.stop_limit_fine, 0.005);
+  EXPECT_EQ(y.servo.positioning_time, 2.5);
   EXPECT_EQ(y.servo.backlash, 0.012);
   EXPECT_EQ(y.servo.backlash_compensation, 0.01);
   const PitchTable expected{-100.0, 50.0, {0.0, 0.002, -0.001}};

@@ -1,6 +1,7 @@
 #include "ncc/vm/controller.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <utility>
 
@@ -114,7 +115,10 @@ TickStatus Controller::tick(TickOutput& out) noexcept {
   const uint64_t k = next_tick_;
   AxisValues setpoint{};
   motion::SetpointInfo info;
-  if (!planner_.setpoint(k, setpoint, info)) {
+  if (waiting_in_position_) {
+    setpoint = last_.commanded;
+    info = held_info_;
+  } else if (!planner_.setpoint(k, setpoint, info)) {
     // Everything queued has run: the program's end, or the block that raised an alarm.
     if (executor_.alarm()) {
       raiseExecutorAlarm();
@@ -141,6 +145,15 @@ TickStatus Controller::tick(TickOutput& out) noexcept {
   stats_.add(k, last_.time, setpoint, sample.actual, sample.following_error,
              !info.idle && info.kind == MotionPrimitive::Kind::Rapid, info.velocity);
   if (servo_.alarm().code != 0) raiseServoAlarm(servo_.alarm(), info.where);
+  if (info.in_position_check && !waiting_in_position_) {
+    waiting_in_position_ = true;
+    wait_start_ = k;
+    held_info_ = info;
+    held_info_.in_position_check = false;
+    held_info_.segments_finished = 0;
+  }
+  if (waiting_in_position_ && status_ == TickStatus::Running)
+    waiting_in_position_ = !inPosition(sample.position_error, k);
 
   last_.status = status_;
   out = last_;
@@ -152,6 +165,38 @@ void Controller::raiseExecutorAlarm() {
   assignBounded(alarm_.code, from.code);
   assignBounded(alarm_.message, from.message);
   alarm_.where = from.where;
+  has_alarm_ = true;
+  status_ = TickStatus::Alarm;
+}
+
+bool Controller::inPosition(const AxisValues& position_error, uint64_t tick) {
+  int worst = -1;
+  double worst_error = 0.0;
+  for (int i = 0; i < machine_.axisCount(); ++i) {
+    const double error = std::abs(position_error[i]);
+    if (error > machine_.axes[static_cast<std::size_t>(i)].servo.stop_limit_fine &&
+        error > worst_error) {
+      worst = i;
+      worst_error = error;
+    }
+  }
+  if (worst < 0) return true;
+  const double waited = static_cast<double>(tick - wait_start_) * machine_.ipo_cycle_seconds;
+  if (waited > machine_.axes[static_cast<std::size_t>(worst)].servo.positioning_time)
+    raisePositioningAlarm(worst, worst_error, held_info_.where);
+  return false;
+}
+
+void Controller::raisePositioningAlarm(int axis, double error, SourcePosition where) {
+  const AxisConfig& a = machine_.axes[static_cast<std::size_t>(axis)];
+  char message[kAlarmMessageCapacity];
+  std::snprintf(message, sizeof message,
+                "positioning monitoring: axis %.14s is %.6f mm from its end point, outside "
+                "STOP_LIMIT_FINE %.6f mm after POSITIONING_TIME %.3f s",
+                a.name.c_str(), error, a.servo.stop_limit_fine, a.servo.positioning_time);
+  alarm_.code.assign("25080");
+  alarm_.message.assign(message);
+  alarm_.where = where;
   has_alarm_ = true;
   status_ = TickStatus::Alarm;
 }

@@ -104,6 +104,7 @@ void ContinuousPath::queueHeld(const AxisValues& end, double end_curvature,
   QueuedSegment seg;
   seg.where = held_.where;
   seg.path = PathSegment::line(held_.start, end, n);
+  seg.exact_stop = stop_after && held_.exact_stop;
   if (!(seg.path.length() > kNegligibleLength)) {
     // Trimmed away by the blends at both ends (they meet tangentially with zero curvature).
     if (stop_after) queue_.stopAfterLast();
@@ -149,6 +150,7 @@ void ContinuousPath::line(const AxisValues& from, const AxisValues& to, double f
   next.end = to;
   next.feed = feed;
   next.where = where;
+  next.exact_stop = exact_stop;
   const PathSegment programmed = PathSegment::line(from, to, n);
   next.length = programmed.length();
   programmed.tangent(0.0, next.direction);

@@ -121,8 +121,13 @@ bool Interpolator::setpoint(uint64_t k, LookAhead& queue, bool closed, AxisValue
       phase_ = frac;
     }
     piece_start_ = piece_end_;
+    bool positioning = false;  // an exact stop or a rapid's end: the axes must get there
     if (piece_ends_run_ && piece_end_ == run.length) {
-      position_ = queue.frontSegment().path.to();
+      const QueuedSegment& last = queue.frontSegment();
+      positioning = exit_velocity_ == 0.0 &&
+                    (last.exact_stop || run.kind == MotionPrimitive::Kind::Rapid);
+      info.where = last.where;
+      position_ = last.path.to();
       queue.popSegment();
       ++info.segments_finished;
       queue.popRun();
@@ -130,13 +135,13 @@ bool Interpolator::setpoint(uint64_t k, LookAhead& queue, bool closed, AxisValue
     } else {
       queue.setFrontRunStarted(true);
     }
-    if (queue.empty() || resync_) {
-      // Sample the stop: the end point on this tick.
-      if (queue.empty()) {
-        out = position_;
-        info.idle = true;
-        return true;
-      }
+    if (queue.empty() || positioning) {
+      // Sample the stop: the end point on this tick. After an exact stop or a rapid the next
+      // piece starts on a later tick, when the caller has done its in-position check.
+      out = position_;
+      info.idle = true;
+      info.in_position_check = positioning && !queue.empty();
+      return true;
     }
   }
   resync_ = true;

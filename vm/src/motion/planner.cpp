@@ -74,6 +74,7 @@ bool MotionPlanner::push(const MotionPrimitive& m) {
   path_.flush();
   QueuedSegment seg;
   seg.where = m.where;
+  seg.exact_stop = m.exact_stop;
   if (m.kind == MotionPrimitive::Kind::Arc) {
     seg.path = PathSegment::arc(m.from, m.to, n, m.axis1, m.axis2, m.center[m.axis1],
                                 m.center[m.axis2], m.cw, m.extra_turns);

@@ -101,6 +101,7 @@ void ServoAxes::step(const AxisValues& __restrict setpoint, ServoSample& __restr
     last_nut_[i] = nut;
     out.actual[i] = nut - play_sign_[i] * play_lag_[i];
     out.following_error[i] = target_[i] - motor_[i];
+    out.position_error[i] = command_[i] + backlash_[i] - motor_[i];
     out.velocity[i] = speed_[i];
     out.acceleration[i] = (speed_[i] - last_speed_[i]) / cycle;
   }

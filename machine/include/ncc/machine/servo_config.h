@@ -28,6 +28,8 @@ struct ServoConfig {
   double contour_tol = 1.0;              // MD 36400 CONTOUR_TOL, mm: following-error limit
   double standstill_pos_tol = 0.2;       // MD 36030 STANDSTILL_POS_TOL, mm
   double standstill_delay_time = 0.4;    // MD 36040 STANDSTILL_DELAY_TIME, s
+  double stop_limit_fine = 0.01;         // MD 36010 STOP_LIMIT_FINE, mm: in-position window
+  double positioning_time = 1.0;         // MD 36020 POSITIONING_TIME, s: alarm 25080 after
   double backlash = 0.0;                 // mechanical play of the simulated axis, mm
   double backlash_compensation = 0.0;    // MD 32450 BACKLASH, mm
   PitchTable pitch_error;                // leadscrew error of the simulated axis

@@ -114,6 +114,11 @@ class Controller {
   void raiseServoAlarm(const ServoAlarm& servo_alarm, SourcePosition where);
   void raiseExecutorAlarm();
   void raiseSpindleAlarm();
+  void raisePositioningAlarm(int axis, double error, SourcePosition where);
+  // After an exact stop or a rapid (SetpointInfo::in_position_check): true once every axis'
+  // position error (encoder against the compensated setpoint) is within STOP_LIMIT_FINE;
+  // raises 25080 after POSITIONING_TIME.
+  bool inPosition(const AxisValues& position_error, uint64_t tick);
   std::string_view fileName(uint32_t file) const;
 
   // Declaration order matters: the executor refers to program_.
@@ -133,6 +138,10 @@ class Controller {
   TickStatus status_ = TickStatus::Running;
   Alarm alarm_;                   // strings reserved in the constructor
   bool has_alarm_ = false;
+  // In-position wait: the setpoint is held at the stop until the axes get there.
+  bool waiting_in_position_ = false;
+  uint64_t wait_start_ = 0;
+  motion::SetpointInfo held_info_;
 };
 
 }  // namespace ncc::vm

@@ -57,6 +57,7 @@ class ContinuousPath {
     double length = 0.0;     // programmed length
     double feed = 0.0;       // mm/s
     SourcePosition where;
+    bool exact_stop = false;       // G09/G61
     double start_limit = 0.0;      // junction velocity limit at `start`
     double start_curvature = 0.0;  // chain curvature at its start vertex (0: not a chain vertex)
     double start_sagitta = 0.0;    // the polygon's deviation from the chain's curve there

@@ -31,6 +31,7 @@ struct QueuedSegment {
   SourcePosition where;
   double run_offset = 0.0;  // path length of its run before it
   bool per_axis = false;    // a non-linear rapid (axis_rapid.h): its own run, at rest both ends
+  bool exact_stop = false;  // G09/G61: the path stops at its end with an in-position check
 };
 
 struct Run {

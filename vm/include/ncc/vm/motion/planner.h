@@ -16,7 +16,7 @@
 // G64 (continuous_path.h): feed lines are held back one primitive so that their end vertex
 // can be blended within the corner tolerance or passed as part of a smooth chain.
 //
-// Not done in this version (docs/planner.md): feed overrides, the in-position check.
+// Not done in this version (docs/planner.md): feed and rapid overrides.
 #include <cstddef>
 #include <cstdint>
 

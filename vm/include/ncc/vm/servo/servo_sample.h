@@ -11,6 +11,9 @@ struct ServoSample {
   AxisValues setpoint{};         // what step() was given
   AxisValues actual{};           // table positions
   AxisValues following_error{};  // position controller error per axis, mm
+  // Compensated setpoint (not delayed) minus encoder, mm: how far the axis is from where the
+  // control wants it; exact stop fine (STOP_LIMIT_FINE) compares this.
+  AxisValues position_error{};
   AxisValues velocity{};         // motor speed, mm/s (deg/s)
   AxisValues acceleration{};     // mm/s^2 (deg/s^2)
 };
