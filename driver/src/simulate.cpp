@@ -6,10 +6,12 @@
 namespace ncc::driver {
 
 SimulationResult simulate(const bytecode::Program& program, const MachineConfig& machine,
-                          TraceWriter* trace, uint64_t max_steps) {
+                          TraceWriter* trace, const SimulationOptions& settings) {
   SimulationResult result;
   vm::ControllerOptions options;
-  options.step_limit = max_steps;
+  options.step_limit = settings.max_steps;
+  options.feed_override = settings.feed_override;
+  options.rapid_override = settings.rapid_override;
   bytecode::Error error;
   std::unique_ptr<vm::Controller> controller = vm::Controller::create(program, machine, error, options);
   if (!controller) {

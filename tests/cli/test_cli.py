@@ -143,6 +143,26 @@ class CliTest(unittest.TestCase):
         self.assertEqual(proc.returncode, 0)
         self.assertEqual(len(slurp(out).splitlines()), 4)
 
+    def test_run_overrides_scale_the_program_time(self):
+        # A single long G01 at F600: at 50 % feed override the cruise takes twice as long.
+        prog = self.write("long.nc", "G21 G90 G94 G17\nG01 X100. F600.\nM30\n")
+        def seconds(*extra):
+            proc = ncc("run", prog, *extra)
+            self.assertEqual(proc.returncode, 0, proc.stderr)
+            return float(re.search(r"program time +(\d+\.\d+) s", proc.stdout).group(1))
+        full, half = seconds(), seconds("--feed-override=50")
+        self.assertAlmostEqual(half / full, 2.0, delta=0.02)
+        rapid = self.write("rapid.nc", "G21 G90\nG00 X400.\nM30\n")
+        proc_full = ncc("run", rapid)
+        proc_slow = ncc("run", rapid, "--rapid-override=25")
+        t_full = float(re.search(r"program time +(\d+\.\d+) s", proc_full.stdout).group(1))
+        t_slow = float(re.search(r"program time +(\d+\.\d+) s", proc_slow.stdout).group(1))
+        self.assertGreater(t_slow, 3.0 * t_full)
+        for bad in ("--feed-override=0", "--feed-override=250", "--rapid-override=150"):
+            proc = ncc("run", prog, bad)
+            self.assertEqual(proc.returncode, 2, bad)
+            self.assertIn("override", proc.stderr)
+
     def test_run_vars_is_a_json_object(self):
         proc = ncc("run", self.write("a.nc", GOOD), "--emit=vars")
         self.assertEqual(proc.returncode, 0, proc.stderr)

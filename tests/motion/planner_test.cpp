@@ -134,5 +134,31 @@ TEST(Planner, NonLinearRapidMovesEachAxisOnItsOwn) {
   for (const AxisValues& p : linear.points) EXPECT_NEAR(p[1], p[0] / 10.0, 1e-9);
 }
 
+TEST(Planner, StaticOverridesScaleFeedAndRapid) {
+  const MachineConfig m = defaultMachine();
+  const auto top = [&](double feed_ovr, double rapid_ovr, const MotionPrimitive& mv) {
+    MotionPlanner planner(m, 64);
+    planner.setOverrides(feed_ovr, rapid_ovr);
+    EXPECT_TRUE(planner.push(mv));
+    planner.endOfProgram();
+    AxisValues p;
+    SetpointInfo info;
+    double v = 0.0;
+    for (uint64_t k = 0; planner.setpoint(k, p, info); ++k) v = std::max(v, info.velocity);
+    EXPECT_EQ(p, mv.to);
+    return v;
+  };
+  const MotionPrimitive g01 = line(xyz(0, 0, 0), xyz(100, 0, 0), 3000.0);
+  EXPECT_NEAR(top(0.5, 1.0, g01), 25.0, 1e-9);
+  EXPECT_NEAR(top(1.5, 1.0, g01), 75.0, 1e-9);
+  EXPECT_NEAR(top(2.0, 1.0, line(xyz(0, 0, 0), xyz(900, 0, 0), 20000.0)), 500.0, 1e-9);  // axis limit
+  const MotionPrimitive g00 = rapid(xyz(0, 0, 0), xyz(400, 0, 0));
+  EXPECT_NEAR(top(1.0, 0.25, g00), 125.0, 1e-9);
+  MotionPrimitive per_axis = g00;
+  per_axis.per_axis = true;
+  EXPECT_NEAR(top(1.0, 0.25, per_axis), 125.0, 1e-9);
+  EXPECT_NEAR(top(0.5, 0.5, g00), 250.0, 1e-9);  // the feed override leaves rapids alone
+}
+
 }  // namespace
 }  // namespace ncc::vm::motion

@@ -22,6 +22,8 @@ struct RunArgs {
   std::string output;
   std::string emit = "summary";
   uint64_t max_steps = driver::kDefaultMaxSteps;
+  double feed_override = 100.0;   // %
+  double rapid_override = 100.0;  // %
 };
 
 // Samples of the servo model's actual motion beyond the machine's limits, by kind. (The
@@ -77,7 +79,11 @@ int runSimulation(driver::Session& session, const bytecode::Program& program, co
     trace = binary ? driver::makeBinaryTraceWriter(output.stream(), header)
                    : driver::makeCsvTraceWriter(output.stream(), header);
   }
-  driver::SimulationResult sim = driver::simulate(program, session.machine(), trace.get(), args.max_steps);
+  driver::SimulationOptions options;
+  options.max_steps = args.max_steps;
+  options.feed_override = args.feed_override / 100.0;
+  options.rapid_override = args.rapid_override / 100.0;
+  driver::SimulationResult sim = driver::simulate(program, session.machine(), trace.get(), options);
   if (!sim.error.empty()) {
     std::cerr << "ncc: error: " << sim.error << '\n';
     return kProgramError;
@@ -165,6 +171,14 @@ void addRunCommand(CLI::App& app, int& exit_code) {
   cmd->add_option("--max-steps", args->max_steps,
                   "stop with alarm NCC7204 after this many VM instructions (0: no limit); guards "
                   "against programs that loop forever")
+      ->capture_default_str();
+  cmd->add_option("--feed-override", args->feed_override,
+                  "feed override for the simulated run, % of the programmed F (static)")
+      ->check(CLI::Range(1.0, 200.0))
+      ->capture_default_str();
+  cmd->add_option("--rapid-override", args->rapid_override,
+                  "rapid override for the simulated run, % of the axes' rapid speeds (static)")
+      ->check(CLI::Range(1.0, 100.0))
       ->capture_default_str();
   args->common.addTo(*cmd);
   cmd->callback([args, &exit_code] { exit_code = runRun(*args); });

@@ -70,6 +70,7 @@ Controller::Controller(bytecode::Program program, const MachineConfig& machine,
       servo_(machine_),
       stats_(machine_.axisCount()) {
   executor_.setStepLimit(options_.step_limit);
+  planner_.setOverrides(options_.feed_override, options_.rapid_override);
   servo_.reset(machine_.start_position);
   last_.commanded = machine_.start_position;
   last_.actual = machine_.start_position;

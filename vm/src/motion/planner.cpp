@@ -31,10 +31,17 @@ double windowLength(const AxisLimits& l) {
 
 MotionPlanner::MotionPlanner(const MachineConfig& machine, std::size_t window_capacity)
     : limits_(AxisLimits::from(machine)),
+      rapid_limits_(limits_),
       queue_(std::max<std::size_t>(window_capacity, 2 * ContinuousPath::kSlotsPerLine),
              windowLength(limits_)),
       path_(limits_, queue_),
-      interpolator_(machine.start_position, limits_) {}
+      interpolator_(machine.start_position, rapid_limits_) {}
+
+void MotionPlanner::setOverrides(double feed, double rapid) {
+  feed_override_ = std::isfinite(feed) ? std::clamp(feed, 1e-3, 2.0) : 1.0;
+  const double r = std::isfinite(rapid) ? std::clamp(rapid, 1e-3, 1.0) : 1.0;
+  for (int i = 0; i < limits_.count; ++i) rapid_limits_.rapid_velocity[i] = r * limits_.rapid_velocity[i];
+}
 
 bool MotionPlanner::push(const MotionPrimitive& m) {
   if (spindle_alarm_) return true;  // input ends at the alarm
@@ -61,7 +68,7 @@ bool MotionPlanner::push(const MotionPrimitive& m) {
     return true;
   }
   const bool rapid = m.kind == MotionPrimitive::Kind::Rapid;
-  double feed = m.feed_per_rev ? m.feed * spindle_rpm_ / 60.0 : m.feed / 60.0;
+  double feed = (m.feed_per_rev ? m.feed * spindle_rpm_ / 60.0 : m.feed / 60.0) * feed_override_;
   if (!rapid) feed = std::max(feed, kMinFeed);
   if (m.kind == MotionPrimitive::Kind::Line) {
     if (PathSegment::line(m.from, m.to, n).length() > 0.0) {
@@ -85,14 +92,14 @@ bool MotionPlanner::push(const MotionPrimitive& m) {
     if (m.exact_stop) stop();
     return true;
   }
-  if (rapid && m.per_axis && AxisRapid::make(m.from, m.to, limits_).valid()) {
+  if (rapid && m.per_axis && AxisRapid::make(m.from, m.to, rapid_limits_).valid()) {
     // Non-linear positioning: its own piece, from rest to rest (interpolator.h).
     seg.per_axis = true;
     queue_.stopAfterLast();
-    queue_.push(seg, m.kind, segmentLimits(seg.path, limits_, true, feed), 0.0, true, 0.0);
+    queue_.push(seg, m.kind, segmentLimits(seg.path, rapid_limits_, true, feed), 0.0, true, 0.0);
     return true;
   }
-  SegmentLimits limits = segmentLimits(seg.path, limits_, rapid, feed);
+  SegmentLimits limits = segmentLimits(seg.path, rapid ? rapid_limits_ : limits_, rapid, feed);
   limits.velocity = std::max(limits.velocity, kMinFeed);
   const QueuedSegment* prev = queue_.lastSegment();
   const double vertex = prev != nullptr ? junctionVelocity(prev->path, seg.path, limits_) : 0.0;

@@ -20,8 +20,15 @@ struct SimulationResult {
   std::string error;               // the program could not be loaded into the controller
 };
 
-// Runs `program` to its end (or an alarm, or `max_steps` VM instructions: 0 = no limit).
+// The operator's settings for a simulated run.
+struct SimulationOptions {
+  uint64_t max_steps = 0;       // VM instruction budget (0: no limit), alarm NCC7204
+  double feed_override = 1.0;   // fraction, up to 2 (200 %)
+  double rapid_override = 1.0;  // fraction, up to 1
+};
+
+// Runs `program` to its end (or an alarm, or the instruction budget).
 SimulationResult simulate(const bytecode::Program& program, const MachineConfig& machine,
-                          TraceWriter* trace, uint64_t max_steps);
+                          TraceWriter* trace, const SimulationOptions& options);
 
 }  // namespace ncc::driver

@@ -67,6 +67,10 @@ struct ControllerOptions {
   // Executor instruction budget for the whole run (0: unlimited), alarm NCC7204 when hit.
   // Guards against a macro loop without motion, which would otherwise keep one tick busy.
   uint64_t step_limit = 0;
+  // Operator overrides for the whole run (MotionPlanner::setOverrides): feed 0..2 (200 %),
+  // rapid 0..1.
+  double feed_override = 1.0;
+  double rapid_override = 1.0;
 };
 
 class Controller {

@@ -16,7 +16,8 @@
 // G64 (continuous_path.h): feed lines are held back one primitive so that their end vertex
 // can be blended within the corner tolerance or passed as part of a smooth chain.
 //
-// Not done in this version (docs/planner.md): feed and rapid overrides.
+// Not done in this version (docs/planner.md): overrides changed during a run (they are
+// static: set before it).
 #include <cstddef>
 #include <cstdint>
 
@@ -49,6 +50,11 @@ class MotionPlanner {
   // full.
   bool accept(const Event& event);
   void setSpindleSpeed(double rpm) { spindle_rpm_ = rpm; }
+  // Operator overrides as fractions, set before the run: `feed` scales every programmed feed
+  // (0 < feed <= 2, i.e. up to 200 %), `rapid` the axes' rapid speeds (0 < rapid <= 1). Values
+  // outside are clamped. They apply to what is pushed afterwards (static overrides; a change
+  // during the run does not re-plan what is queued).
+  void setOverrides(double feed, double rapid);
   // The path comes to rest at the end of the last queued segment (M00/M01).
   void stop();
   // No more input: setpoint() returns false once everything queued has run.
@@ -71,6 +77,8 @@ class MotionPlanner {
 
  private:
   AxisLimits limits_;
+  AxisLimits rapid_limits_;  // limits_ with the rapid override applied to the rapid speeds
+  double feed_override_ = 1.0;
   LookAhead queue_;
   ContinuousPath path_;
   Interpolator interpolator_;
