@@ -17,22 +17,33 @@ constexpr std::array<double, 5> kWeights = {0.2369268850561891, 0.47862867049936
 constexpr int kBoundSamples = 128;
 constexpr double kBoundMargin = 1.02;
 
-// Bernstein form of degree n (n + 1 coefficients) at t.
-template <std::size_t N>
-double bezier(const std::array<double, N>& c, std::size_t n, double t) {
-  // de Casteljau: stable, fixed order.
-  std::array<double, N> w = c;
-  for (std::size_t r = 1; r <= n; ++r)
-    for (std::size_t i = 0; i + r <= n; ++i) w[i] = w[i] + t * (w[i + 1] - w[i]);
-  return w[0];
+// Power-basis coefficients of a degree-5 Bezier with control values b.
+std::array<double, 6> powerBasis(const std::array<double, 6>& b) {
+  constexpr double kBinomial[6][6] = {{1, 0, 0, 0, 0, 0},  {1, 1, 0, 0, 0, 0},
+                                      {1, 2, 1, 0, 0, 0},  {1, 3, 3, 1, 0, 0},
+                                      {1, 4, 6, 4, 1, 0},  {1, 5, 10, 10, 5, 1}};
+  std::array<double, 6> a{};
+  for (int k = 0; k <= 5; ++k) {
+    double sum = 0.0;
+    for (int i = 0; i <= k; ++i) sum += ((k - i) % 2 == 0 ? 1.0 : -1.0) * kBinomial[k][i] * b[i];
+    a[k] = kBinomial[5][k] * sum;
+  }
+  return a;
 }
 
-// Control points of the derivative of a degree-n Bezier.
+// Coefficients of the derivative of sum a_k t^k.
 template <std::size_t N>
-std::array<double, N> derive(const std::array<double, N>& c, std::size_t n) {
-  std::array<double, N> d{};
-  for (std::size_t i = 0; i < n; ++i) d[i] = static_cast<double>(n) * (c[i + 1] - c[i]);
+std::array<double, N - 1> differentiate(const std::array<double, N>& a) {
+  std::array<double, N - 1> d{};
+  for (std::size_t k = 1; k < N; ++k) d[k - 1] = static_cast<double>(k) * a[k];
   return d;
+}
+
+template <std::size_t N>
+double horner(const std::array<double, N>& a, double t) {
+  double r = a[N - 1];
+  for (std::size_t k = N - 1; k-- > 0;) r = r * t + a[k];
+  return r;
 }
 
 }  // namespace
@@ -55,11 +66,13 @@ CornerBlend CornerBlend::make(const AxisValues& corner, const AxisValues& u_in,
     b.e2_[i] = sin_t > 0.0 ? b.e2_[i] / sin_t : 0.0;
     b.plane_share_[i] = std::min(1.0, std::hypot(b.e1_[i], b.e2_[i]));
   }
-  b.x_ = {-kOuter * d, -kMiddle * d, -kInner * d, kInner * d * cos_t, kMiddle * d * cos_t,
-          kOuter * d * cos_t};
-  b.y_ = {0.0, 0.0, 0.0, kInner * d * sin_t, kMiddle * d * sin_t, kOuter * d * sin_t};
-  b.dx_ = derive(b.x_, 5);
-  b.dy_ = derive(b.y_, 5);
+  b.px_ = powerBasis({-kOuter * d, -kMiddle * d, -kInner * d, kInner * d * cos_t,
+                      kMiddle * d * cos_t, kOuter * d * cos_t});
+  b.py_ = powerBasis({0.0, 0.0, 0.0, kInner * d * sin_t, kMiddle * d * sin_t, kOuter * d * sin_t});
+  b.vx_ = differentiate(b.px_);
+  b.vy_ = differentiate(b.py_);
+  b.ax_ = differentiate(b.vx_);
+  b.ay_ = differentiate(b.vy_);
 
   b.s_table_[0] = 0.0;
   for (int k = 0; k < kTableSteps; ++k) {
@@ -69,15 +82,12 @@ CornerBlend CornerBlend::make(const AxisValues& corner, const AxisValues& u_in,
   }
 
   // Curvature bounds from the plane curve's derivatives.
-  const auto& dx1 = b.dx_;
-  const auto& dy1 = b.dy_;
-  const auto dx2 = derive(dx1, 4), dy2 = derive(dy1, 4);
-  const auto dx3 = derive(dx2, 3), dy3 = derive(dy2, 3);
+  const auto jx = differentiate(b.ax_), jy = differentiate(b.ay_);
   for (int k = 0; k <= kBoundSamples; ++k) {
     const double t = static_cast<double>(k) / kBoundSamples;
-    const double x1 = bezier(dx1, 4, t), y1 = bezier(dy1, 4, t);
-    const double x2 = bezier(dx2, 3, t), y2 = bezier(dy2, 3, t);
-    const double x3 = bezier(dx3, 2, t), y3 = bezier(dy3, 2, t);
+    const double x1 = horner(b.vx_, t), y1 = horner(b.vy_, t);
+    const double x2 = horner(b.ax_, t), y2 = horner(b.ay_, t);
+    const double x3 = horner(jx, t), y3 = horner(jy, t);
     const double sp2 = x1 * x1 + y1 * y1;
     const double sp = std::sqrt(sp2);
     const double cross = x1 * y2 - y1 * x2;
@@ -95,14 +105,14 @@ CornerBlend CornerBlend::make(const AxisValues& corner, const AxisValues& u_in,
 }
 
 void CornerBlend::derivative(double t, double& dx, double& dy) const {
-  dx = bezier(dx_, 4, t);
-  dy = bezier(dy_, 4, t);
+  dx = horner(vx_, t);
+  dy = horner(vy_, t);
 }
 
 double CornerBlend::speed(double t) const {
   double dx, dy;
   derivative(t, dx, dy);
-  return std::hypot(dx, dy);
+  return std::sqrt(dx * dx + dy * dy);
 }
 
 double CornerBlend::arcLength(double t0, double t1) const {
@@ -131,7 +141,7 @@ double CornerBlend::parameterAt(double s) const {
 
 void CornerBlend::position(double s, AxisValues& out) const {
   const double t = parameterAt(s);
-  const double x = bezier(x_, 5, t), y = bezier(y_, 5, t);
+  const double x = horner(px_, t), y = horner(py_, t);
   out = corner_;
   for (int i = 0; i < axis_count_; ++i) out[i] = corner_[i] + x * e1_[i] + y * e2_[i];
 }
@@ -140,17 +150,15 @@ void CornerBlend::tangent(double s, AxisValues& out) const {
   const double t = parameterAt(s);
   double dx, dy;
   derivative(t, dx, dy);
-  const double sp = std::hypot(dx, dy);
+  const double sp = std::sqrt(dx * dx + dy * dy);
   out = AxisValues{};
   for (int i = 0; i < axis_count_; ++i) out[i] = (dx * e1_[i] + dy * e2_[i]) / sp;
 }
 
 void CornerBlend::curvature(double s, AxisValues& out) const {
   const double t = parameterAt(s);
-  const auto& dx1 = dx_;
-  const auto& dy1 = dy_;
-  const double x1 = bezier(dx1, 4, t), y1 = bezier(dy1, 4, t);
-  const double x2 = bezier(derive(dx1, 4), 3, t), y2 = bezier(derive(dy1, 4), 3, t);
+  const double x1 = horner(vx_, t), y1 = horner(vy_, t);
+  const double x2 = horner(ax_, t), y2 = horner(ay_, t);
   const double sp2 = x1 * x1 + y1 * y1;
   // d2x/ds2 = (c'' - (c'' . T) T) / |c'|^2 with T = c' / |c'|.
   const double along = (x2 * x1 + y2 * y1) / sp2;

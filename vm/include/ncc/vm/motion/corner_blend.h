@@ -64,8 +64,12 @@ class CornerBlend {
   AxisValues e1_{};  // the incoming direction
   AxisValues e2_{};  // in the plane, orthogonal to e1, towards the outgoing direction
   std::array<double, kMaxAxes> plane_share_{};
-  std::array<double, 6> x_{}, y_{};  // control points in the (e1, e2) plane, origin at the corner
-  std::array<double, 6> dx_{}, dy_{};  // of the derivative (degree 4; the last entry unused)
+  // The plane curve in the (e1, e2) plane, origin at the corner, as power-basis coefficients
+  // (sum c_k t^k, evaluated by Horner: far cheaper per tick than de Casteljau): position
+  // (degree 5), first and second derivative.
+  std::array<double, 6> px_{}, py_{};
+  std::array<double, 5> vx_{}, vy_{};
+  std::array<double, 4> ax_{}, ay_{};
   std::array<double, kTableSteps + 1> s_table_{};
   double max_curvature_ = 0.0;
   double max_curvature_rate_ = 0.0;
