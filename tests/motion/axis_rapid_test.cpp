@@ -15,22 +15,10 @@
 namespace ncc::vm::motion {
 namespace {
 
+using motion_test::kTolerance;
+using motion_test::restToRestTime;
+using motion_test::Worst;
 using motion_test::xyz;
-
-// Rest-to-rest time, the four cases of docs/planner.md (same as scurve_test.cpp).
-double restToRestTime(double L, double v, double a, double j) {
-  const double va = a * a / j;
-  const double vp_tri = std::cbrt(L * L * j / 4.0);
-  if (vp_tri <= std::min(v, va)) return 4.0 * std::cbrt(L / (2.0 * j));
-  if (v <= va) {
-    if (L >= 2.0 * v * std::sqrt(v / j)) return L / v + 2.0 * std::sqrt(v / j);
-    return 4.0 * std::cbrt(L / (2.0 * j));
-  }
-  const double t_no_cruise = a / j + std::sqrt((a / j) * (a / j) + 4.0 * L / a);
-  const double vp = a * (t_no_cruise / 2.0 - a / j);
-  if (vp <= v) return t_no_cruise;
-  return L / v + v / a + a / j;
-}
 
 // Equal limits on three axes: 500 mm/s rapid, 2000 mm/s^2, 50000 mm/s^3 (the profile uses
 // 45000: a^2/j = 88.9 mm/s, below the rapid speed).
@@ -147,10 +135,6 @@ TEST(AxisRapid, ExactEndsAtStartAndArrival) {
   EXPECT_EQ(r.pathSpeed(0.0), 0.0);
 }
 
-struct Worst {
-  double velocity = 0, acceleration = 0, jerk = 0;  // largest ratio to the limit
-};
-
 // Samples t = k T - phase (clamped by the rapid: before the start at `from`, after the end at
 // `to`, so the standstill on both sides is part of the check) and takes finite differences
 // per axis, as random_suite_test.cpp does with the planner's setpoints. `jerk_share` scales
@@ -183,9 +167,6 @@ Worst check(const AxisRapid& r, const AxisLimits& l, double phase, double jerk_s
   }
   return w;
 }
-
-// Same numerical tolerance as the random suite.
-constexpr double kTolerance = 1e-6;
 
 TEST(AxisRapid, SampledAxisLimitsHold) {
   const AxisLimits limits[] = {equalLimits(), mixedLimits()};

@@ -9,9 +9,13 @@
 #include <vector>
 
 #include "gtest/gtest.h"
+#include "motion_test_util.h"
 
 namespace ncc::vm::motion {
 namespace {
+
+using motion_test::distance;
+using motion_test::toSegment;
 
 constexpr int kAxes = 3;
 
@@ -28,25 +32,6 @@ double norm(const AxisValues& v) {
   double s = 0.0;
   for (int i = 0; i < kAxes; ++i) s += v[i] * v[i];
   return std::sqrt(s);
-}
-
-double distance(const AxisValues& a, const AxisValues& b) {
-  AxisValues d{};
-  for (int i = 0; i < kAxes; ++i) d[i] = a[i] - b[i];
-  return norm(d);
-}
-
-// Distance from p to the segment [a, b].
-double toSegment(const AxisValues& p, const AxisValues& a, const AxisValues& b) {
-  double ab2 = 0.0, ap_ab = 0.0;
-  for (int i = 0; i < kAxes; ++i) {
-    ab2 += (b[i] - a[i]) * (b[i] - a[i]);
-    ap_ab += (p[i] - a[i]) * (b[i] - a[i]);
-  }
-  const double f = std::clamp(ap_ab / ab2, 0.0, 1.0);
-  AxisValues q{};
-  for (int i = 0; i < kAxes; ++i) q[i] = a[i] + f * (b[i] - a[i]);
-  return distance(p, q);
 }
 
 struct Corner {

@@ -13,24 +13,6 @@ namespace {
 
 using namespace motion_test;
 
-double distance(const AxisValues& a, const AxisValues& b) {
-  double s = 0.0;
-  for (int i = 0; i < 3; ++i) s += (a[i] - b[i]) * (a[i] - b[i]);
-  return std::sqrt(s);
-}
-
-double toSegment(const AxisValues& p, const AxisValues& a, const AxisValues& b) {
-  double ab2 = 0.0, ap_ab = 0.0;
-  for (int i = 0; i < 3; ++i) {
-    ab2 += (b[i] - a[i]) * (b[i] - a[i]);
-    ap_ab += (p[i] - a[i]) * (b[i] - a[i]);
-  }
-  const double f = ab2 > 0.0 ? std::clamp(ap_ab / ab2, 0.0, 1.0) : 0.0;
-  AxisValues q{};
-  for (int i = 0; i < 3; ++i) q[i] = a[i] + f * (b[i] - a[i]);
-  return distance(p, q);
-}
-
 // Largest distance of any setpoint from the programmed polyline.
 double worstDeviation(const Trace& t, const std::vector<MotionPrimitive>& prog) {
   double worst = 0.0;

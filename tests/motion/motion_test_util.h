@@ -159,4 +159,39 @@ inline Worst check(const MachineConfig& m, const Trace& t) {
 // which reads as 8e-13 / T^3 = 8e-4 mm/s^3 of jerk; 1e-6 relative covers it with margin.
 constexpr double kTolerance = 1e-6;
 
+// Rest-to-rest time over L at path limits v, a, j: the four closed forms of docs/planner.md.
+inline double restToRestTime(double L, double v, double a, double j) {
+  const double va = a * a / j;  // velocity gained by one full jerk pair
+  const double vp_tri = std::cbrt(L * L * j / 4.0);  // peak with neither limit reached
+  if (vp_tri <= std::min(v, va)) return 4.0 * std::cbrt(L / (2.0 * j));
+  if (v <= va) {  // a_max never reached
+    if (L >= 2.0 * v * std::sqrt(v / j)) return L / v + 2.0 * std::sqrt(v / j);
+    return 4.0 * std::cbrt(L / (2.0 * j));
+  }
+  const double t_no_cruise = a / j + std::sqrt((a / j) * (a / j) + 4.0 * L / a);
+  const double vp = a * (t_no_cruise / 2.0 - a / j);
+  if (vp <= v) return t_no_cruise;  // a_max reached, v_max not
+  return L / v + v / a + a / j;      // both reached
+}
+
+// Euclidean distance over X Y Z.
+inline double distance(const AxisValues& a, const AxisValues& b) {
+  double s = 0.0;
+  for (int i = 0; i < 3; ++i) s += (a[i] - b[i]) * (a[i] - b[i]);
+  return std::sqrt(s);
+}
+
+// Distance from p to the segment [a, b] over X Y Z.
+inline double toSegment(const AxisValues& p, const AxisValues& a, const AxisValues& b) {
+  double ab2 = 0.0, ap_ab = 0.0;
+  for (int i = 0; i < 3; ++i) {
+    ab2 += (b[i] - a[i]) * (b[i] - a[i]);
+    ap_ab += (p[i] - a[i]) * (b[i] - a[i]);
+  }
+  const double f = ab2 > 0.0 ? std::clamp(ap_ab / ab2, 0.0, 1.0) : 0.0;
+  AxisValues q{};
+  for (int i = 0; i < 3; ++i) q[i] = a[i] + f * (b[i] - a[i]);
+  return distance(p, q);
+}
+
 }  // namespace ncc::motion_test

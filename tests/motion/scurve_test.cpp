@@ -13,20 +13,7 @@ namespace {
 constexpr double kA = 2000.0;   // mm/s^2
 constexpr double kJ = 50000.0;  // mm/s^3; a^2/j = 80 mm/s
 
-// Rest-to-rest time, the four cases (docs/planner.md).
-double restToRestTime(double L, double v, double a, double j) {
-  const double va = a * a / j;  // velocity gained by one full jerk pair
-  const double vp_tri = std::cbrt(L * L * j / 4.0);  // peak with neither limit reached
-  if (vp_tri <= std::min(v, va)) return 4.0 * std::cbrt(L / (2.0 * j));
-  if (v <= va) {  // a_max never reached
-    if (L >= 2.0 * v * std::sqrt(v / j)) return L / v + 2.0 * std::sqrt(v / j);
-    return 4.0 * std::cbrt(L / (2.0 * j));
-  }
-  const double t_no_cruise = a / j + std::sqrt((a / j) * (a / j) + 4.0 * L / a);
-  const double vp = a * (t_no_cruise / 2.0 - a / j);
-  if (vp <= v) return t_no_cruise;  // a_max reached, v_max not
-  return L / v + v / a + a / j;      // both reached
-}
+using motion_test::restToRestTime;  // the four closed forms (docs/planner.md)
 
 struct Case {
   double length, v_max;
