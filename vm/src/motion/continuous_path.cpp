@@ -17,8 +17,6 @@ constexpr double kChainMaxTurn = 0.1;
 // Turns above 150 degrees are not blended: the path stops. A blend there is a tight loop
 // passed at a crawl (no time won), and its arc-length table would need finer steps.
 constexpr double kMaxBlendTurn = 150.0 * std::numbers::pi / 180.0;
-// Slowest planned path speed (1 mm/min): a zero speed would never end.
-constexpr double kMinVelocity = 1.0 / 60.0;
 // What is left of a trimmed line below this length (mm) is not queued: the blends meet.
 constexpr double kNegligibleLength = 1e-9;
 
@@ -131,7 +129,7 @@ void ContinuousPath::queueHeld(const AxisValues& end, double end_curvature,
     limits.acceleration = roundDown(limits.acceleration);
     limits.jerk = roundDown(limits.jerk);
   }
-  limits.velocity = std::max(limits.velocity, kMinVelocity);
+  limits.velocity = std::max(limits.velocity, kMinPathVelocity);
   enqueue(seg, MotionPrimitive::Kind::Line, limits, held_.start_limit, stop_after);
 }
 
@@ -204,7 +202,7 @@ void ContinuousPath::line(const AxisValues& from, const AxisValues& to, double f
         blend.where = where;
         blend.path = PathSegment::blend(b_from, b_to, curve, n);
         SegmentLimits bl = segmentLimits(blend.path, limits_, false, std::min(a.feed, feed));
-        bl.velocity = std::max(bl.velocity, kMinVelocity);
+        bl.velocity = std::max(bl.velocity, kMinPathVelocity);
         // Worth it if faster than the alternative: the kink's speed, or a stop.
         double path_accel = kInf, path_jerk = kInf;
         for (int i = 0; i < n; ++i) {

@@ -5,13 +5,6 @@
 #include <limits>
 
 namespace ncc::vm::motion {
-namespace {
-
-// Slowest path speed a feed move is planned with (F0): a zero speed would never end.
-// 1 mm/min.
-constexpr double kMinFeed = 1.0 / 60.0;
-
-}  // namespace
 
 double windowLength(const AxisLimits& l) {
   double v = 0.0, a = std::numeric_limits<double>::infinity(), j = a;
@@ -69,7 +62,7 @@ bool MotionPlanner::push(const MotionPrimitive& m) {
   }
   const bool rapid = m.kind == MotionPrimitive::Kind::Rapid;
   double feed = (m.feed_per_rev ? m.feed * spindle_rpm_ / 60.0 : m.feed / 60.0) * feed_override_;
-  if (!rapid) feed = std::max(feed, kMinFeed);
+  if (!rapid) feed = std::max(feed, kMinPathVelocity);
   if (m.kind == MotionPrimitive::Kind::Line) {
     if (PathSegment::line(m.from, m.to, n).length() > 0.0) {
       path_.line(m.from, m.to, feed, m.exact_stop, m.where);
@@ -100,7 +93,7 @@ bool MotionPlanner::push(const MotionPrimitive& m) {
     return true;
   }
   SegmentLimits limits = segmentLimits(seg.path, rapid ? rapid_limits_ : limits_, rapid, feed);
-  limits.velocity = std::max(limits.velocity, kMinFeed);
+  limits.velocity = std::max(limits.velocity, kMinPathVelocity);
   const QueuedSegment* prev = queue_.lastSegment();
   const double vertex = prev != nullptr ? junctionVelocity(prev->path, seg.path, limits_) : 0.0;
   path_.enqueue(seg, m.kind, limits, vertex, m.exact_stop);

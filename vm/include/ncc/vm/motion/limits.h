@@ -28,6 +28,9 @@ inline constexpr double kSmoothJerkShare = 0.9;
 // Direction change (radians) above which an unblended junction is a corner: the path stops
 // there (G64 corners are blended first, continuous_path.h).
 inline constexpr double kCornerAngle = 0.01;
+// Slowest path speed anything is planned with (1 mm/min: F0, a tiny override, a crawl-limited
+// curve): a zero speed would never end.
+inline constexpr double kMinPathVelocity = 1.0 / 60.0;
 // Share of the axis acceleration the centripetal part may take at the top speed of a curve.
 inline constexpr double kCentripetalShare = 0.75;
 // Largest share of the axis jerk and acceleration a chain's polygon wiggle may take: a
