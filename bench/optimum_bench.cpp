@@ -20,13 +20,12 @@
 #include "ncc/vm/events.h"
 #include "ncc/vm/motion/planner.h"
 #include "ncc/vm/motion/scurve.h"
+#include "planner_run.h"
 
 namespace {
 
 using ncc::AxisValues;
 using ncc::vm::MotionPrimitive;
-using ncc::vm::motion::MotionPlanner;
-using ncc::vm::motion::SetpointInfo;
 
 AxisValues xy(double x, double y) {
   AxisValues v{};
@@ -35,15 +34,7 @@ AxisValues xy(double x, double y) {
   return v;
 }
 
-MotionPrimitive line(const AxisValues& from, const AxisValues& to, double feed, bool stop) {
-  MotionPrimitive m;
-  m.kind = MotionPrimitive::Kind::Line;
-  m.from = from;
-  m.to = to;
-  m.feed = feed;
-  m.exact_stop = stop;
-  return m;
-}
+using ncc::bench::line;
 
 MotionPrimitive arc(const AxisValues& from, const AxisValues& to, double cx, double cy, bool cw,
                     double feed) {
@@ -59,17 +50,8 @@ MotionPrimitive arc(const AxisValues& from, const AxisValues& to, double cx, dou
 
 // Seconds the planner takes (last tick - first tick).
 double plannerSeconds(const ncc::MachineConfig& machine, const std::vector<MotionPrimitive>& prog) {
-  MotionPlanner planner(machine, 4096);
-  AxisValues out;
-  SetpointInfo info;
-  std::size_t next = 0;
-  uint64_t k = 0;
-  for (;; ++k) {
-    while (next < prog.size() && planner.canAccept()) planner.push(prog[next++]);
-    if (next == prog.size()) planner.endOfProgram();
-    if (!planner.setpoint(k, out, info)) break;
-  }
-  return static_cast<double>(k - 1) * machine.ipo_cycle_seconds;
+  return static_cast<double>(ncc::bench::runPlanner(machine, prog, 4096) - 1) *
+         machine.ipo_cycle_seconds;
 }
 
 // Rest-to-rest time over `length` at path limits v, a, j (closed form via the S-curve).

@@ -9,37 +9,20 @@
 #include "ncc/machine/machine_config.h"
 #include "ncc/vm/events.h"
 #include "ncc/vm/motion/planner.h"
+#include "planner_run.h"
 
 namespace {
 
 using ncc::AxisValues;
 using ncc::vm::MotionPrimitive;
-using ncc::vm::motion::MotionPlanner;
-using ncc::vm::motion::SetpointInfo;
 
-MotionPrimitive line(const AxisValues& from, const AxisValues& to, double feed) {
-  MotionPrimitive m;
-  m.kind = MotionPrimitive::Kind::Line;
-  m.from = from;
-  m.to = to;
-  m.feed = feed;
-  return m;
-}
+using ncc::bench::line;
 
-// Runs a program through the planner like the VM loop; returns ticks.
+// The VM's planner loop; returns ticks.
 uint64_t runProgram(const ncc::MachineConfig& machine, const std::vector<MotionPrimitive>& prog) {
-  MotionPlanner planner(machine, 1024);
-  AxisValues out;
-  SetpointInfo info;
-  std::size_t next = 0;
-  uint64_t k = 0;
-  for (;; ++k) {
-    while (next < prog.size() && planner.canAccept()) planner.push(prog[next++]);
-    if (next == prog.size()) planner.endOfProgram();
-    if (!planner.setpoint(k, out, info)) break;
-  }
-  benchmark::DoNotOptimize(out);
-  return k;
+  const uint64_t ticks = ncc::bench::runPlanner(machine, prog);
+  benchmark::DoNotOptimize(ticks);
+  return ticks;
 }
 
 // 20,000 collinear 10 um segments at F6000 (10 segments per tick): planning dominates.
