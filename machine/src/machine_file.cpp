@@ -145,34 +145,29 @@ class MachineFileReader {
       if (const toml::table* w = ctx_.table(*n, "machine.work")) readWork(*w);
     if (const toml::node* n = t.get("axis"))
       if (const toml::table* a = ctx_.table(*n, "machine.axis")) readAxisLimits(*a);
-    if (const toml::node* n = t.get("ipo_cycle")) {
-      if (auto v = ctx_.number(*n, "ipo_cycle")) {
-        if (*v <= 0.0 || *v > 0.1)
-          ctx_.error(kBadValue, ctx_.at(*n),
-                     cat("'ipo_cycle' must be above 0 and at most 0.1 s, not ", *v));
-        else
-          m_.ipo_cycle_seconds = *v;
-      }
-    }
-    if (const toml::node* n = t.get("chord_tolerance")) {
-      if (auto v = ctx_.number(*n, "chord_tolerance")) {
-        if (*v <= 0.0 || *v > 1.0)
-          ctx_.error(kBadValue, ctx_.at(*n),
-                     cat("'chord_tolerance' must be above 0 and at most 1 mm, not ", *v));
-        else
-          m_.chord_tolerance = *v;
-      }
-    }
-    if (const toml::node* n = t.get("corner_tolerance")) {
-      if (auto v = ctx_.number(*n, "corner_tolerance")) {
-        if (*v < 0.0 || *v > 10.0)
-          ctx_.error(kBadValue, ctx_.at(*n),
-                     cat("'corner_tolerance' must be at least 0 and at most 10 mm, not ", *v));
-        else
-          m_.corner_tolerance = *v;
-      }
-    }
+    readBounded(t, "ipo_cycle", Low::Excluded, 0.0, 0.1, "s", m_.ipo_cycle_seconds);
+    readBounded(t, "chord_tolerance", Low::Excluded, 0.0, 1.0, "mm", m_.chord_tolerance);
+    readBounded(t, "corner_tolerance", Low::Included, 0.0, 10.0, "mm", m_.corner_tolerance);
     return true;
+  }
+
+  enum class Low { Included, Excluded };
+  // [machine] `key`, if given: a number from `low` (included or not) to `high` into `field`,
+  // else an error naming the range.
+  void readBounded(const toml::table& t, std::string_view key, Low low_bound, double low,
+                   double high, std::string_view unit, double& field) {
+    const toml::node* n = t.get(key);
+    if (!n) return;
+    const std::optional<double> v = ctx_.number(*n, key);
+    if (!v) return;
+    const bool above_low = low_bound == Low::Included ? *v >= low : *v > low;
+    if (above_low && *v <= high) {
+      field = *v;
+      return;
+    }
+    ctx_.error(kBadValue, ctx_.at(*n),
+               cat("'", key, "' must be ", low_bound == Low::Included ? "at least " : "above ", low,
+                   " and at most ", high, " ", unit, ", not ", *v));
   }
 
   bool readAxes(const toml::node& node) {
