@@ -139,9 +139,11 @@ void ContinuousPath::flush() {
   held_.active = false;
 }
 
-void ContinuousPath::line(const AxisValues& from, const AxisValues& to, double feed,
+bool ContinuousPath::line(const AxisValues& from, const AxisValues& to, double feed,
                           bool exact_stop, const SourcePosition& where) {
   const int n = limits_.count;
+  const PathSegment programmed = PathSegment::line(from, to, n);
+  if (!(programmed.length() > 0.0)) return false;
   HeldLine next;
   next.active = true;
   next.start = from;
@@ -149,7 +151,6 @@ void ContinuousPath::line(const AxisValues& from, const AxisValues& to, double f
   next.feed = feed;
   next.where = where;
   next.exact_stop = exact_stop;
-  const PathSegment programmed = PathSegment::line(from, to, n);
   next.length = programmed.length();
   programmed.tangent(0.0, next.direction);
 
@@ -239,6 +240,7 @@ void ContinuousPath::line(const AxisValues& from, const AxisValues& to, double f
     queueHeld(held_.end, 0.0, 0.0, AxisValues{}, true);
     held_.active = false;
   }
+  return true;
 }
 
 }  // namespace ncc::vm::motion

@@ -64,11 +64,8 @@ bool MotionPlanner::push(const MotionPrimitive& m) {
   double feed = (m.feed_per_rev ? m.feed * spindle_rpm_ / 60.0 : m.feed / 60.0) * feed_override_;
   if (!rapid) feed = std::max(feed, kMinPathVelocity);
   if (m.kind == MotionPrimitive::Kind::Line) {
-    if (PathSegment::line(m.from, m.to, n).length() > 0.0) {
-      path_.line(m.from, m.to, feed, m.exact_stop, m.where);
-    } else if (m.exact_stop) {  // nothing moves: only its exact stop counts
-      stop();
-    }
+    // A line that does not move counts only for its exact stop.
+    if (!path_.line(m.from, m.to, feed, m.exact_stop, m.where) && m.exact_stop) stop();
     return true;
   }
   path_.flush();

@@ -34,8 +34,8 @@ class ContinuousPath {
   ContinuousPath(const AxisLimits& limits, LookAhead& queue) : limits_(limits), queue_(queue) {}
 
   // A feed line from `from` to `to` at `feed` mm/s (caller checks the queue has
-  // kSlotsPerLine free slots).
-  void line(const AxisValues& from, const AxisValues& to, double feed, bool exact_stop,
+  // kSlotsPerLine free slots). False, taking nothing, when it does not move.
+  bool line(const AxisValues& from, const AxisValues& to, double feed, bool exact_stop,
             const SourcePosition& where);
   // Something other than a feed line follows (or nothing will): queue the held line up to its
   // programmed end point.
