@@ -263,6 +263,14 @@ class CliTest(unittest.TestCase):
         self.assertFalse(os.path.exists(out + ".tmp"))
         self.assertEqual(ncc("run", good, "--emit=moves", "-o", out, "--max-steps", "0").returncode, 0)
 
+    def test_feed_per_revolution_without_spindle_is_an_alarm_at_its_block(self):
+        prog = self.write("g95.nc", "G21 G90 G17\nG01 X5. F600.\nG95 G01 X10. F0.1\nM30\n")
+        proc = ncc("run", prog)
+        self.assertEqual(proc.returncode, 3, proc.stderr)
+        self.assertIn("g95.nc:3:1: error[NCC7207]: feed per revolution with the spindle stopped: "
+                      "S is 0 (or not given) or M05 is active", proc.stderr)
+        self.assertIn("final position     X5.0 Y0.0 Z0.0", proc.stdout + proc.stderr)
+
     def test_trace_csv_and_binary_agree_and_end_on_the_program_end(self):
         good = self.write("a.nc", GOOD)
         csv_path = os.path.join(self.dir, "t.csv")

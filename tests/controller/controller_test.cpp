@@ -122,6 +122,9 @@ TEST(Controller, FeedPerRevolutionWithTheSpindleStoppedIsAnAlarm) {
     EXPECT_EQ(ctl->status(), TickStatus::Alarm) << with_m05;
     ASSERT_NE(ctl->alarm(), nullptr);
     EXPECT_EQ(ctl->alarm()->code, "NCC7207");
+    EXPECT_EQ(ctl->alarm()->message,
+              "feed per revolution with the spindle stopped: S is 0 (or not given) or M05 is "
+              "active");
     EXPECT_EQ(ctl->alarm()->where, (SourceLocation{1, 3, 1}));
     ASSERT_FALSE(ticks.empty());
     EXPECT_EQ(ticks.back().commanded, xyz(5, 0, 0));
@@ -186,7 +189,12 @@ TEST(Controller, PositioningTimeoutIsAlarm25080) {
   ASSERT_NE(ctl->alarm(), nullptr);
   EXPECT_EQ(ctl->alarm()->code, "25080");
   EXPECT_EQ(ctl->alarm()->where.line, 1u);
-  EXPECT_NE(ctl->alarm()->message.find("axis X"), std::string::npos) << ctl->alarm()->message;
+  EXPECT_EQ(ctl->alarm()->message.rfind("positioning monitoring: axis X is ", 0), 0u)
+      << ctl->alarm()->message;
+  EXPECT_NE(ctl->alarm()->message.find(" mm from its end point, outside STOP_LIMIT_FINE 0.010000 mm "
+                                       "after POSITIONING_TIME 0.100 s"),
+            std::string::npos)
+      << ctl->alarm()->message;
   EXPECT_EQ(ticks.back().commanded, xyz(10, 0, 0));  // the next block never started
 }
 

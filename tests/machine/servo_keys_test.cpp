@@ -102,6 +102,10 @@ pitch_error = { start = 0.0, step = 10.0, values = [0.0, 0.001] }
 TEST(ServoKeys, BadValuesAreReported) {
   EXPECT_EQ(onlyError("[machine.axis.X]\nkv = 0.0\n"),
             "machine.toml:2:6: error[NCC0306]: 'kv' of X must be above 0");
+  EXPECT_EQ(onlyError("[machine.axis.X]\nstop_limit_fine = 0.0\n"),
+            "machine.toml:2:19: error[NCC0306]: 'stop_limit_fine' of X must be above 0");
+  EXPECT_EQ(onlyError("[machine.axis.Y]\npositioning_time = -1.0\n"),
+            "machine.toml:2:20: error[NCC0306]: 'positioning_time' of Y must be above 0");
   EXPECT_EQ(onlyError("[machine.axis.X]\nequiv_speedctrl_time = -0.001\n"),
             "machine.toml:2:24: error[NCC0306]: 'equiv_speedctrl_time' of X must be at least 0");
   EXPECT_EQ(onlyError("[machine.axis.X]\nkv = \"fast\"\n"),
