@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <numbers>
 
 #include "ncc/vm/motion/corner_blend.h"
 #include "ncc/vm/motion/scurve.h"
@@ -14,9 +13,6 @@ namespace {
 constexpr double kInf = std::numeric_limits<double>::infinity();
 // Turns above this are never chain vertices (the chain model's small-angle bounds).
 constexpr double kChainMaxTurn = 0.1;
-// Turns above 150 degrees are not blended: the path stops. A blend there is a tight loop
-// passed at a crawl (no time won), and its arc-length table would need finer steps.
-constexpr double kMaxBlendTurn = 150.0 * std::numbers::pi / 180.0;
 // What is left of a trimmed line below this length (mm) is not queued: the blends meet.
 constexpr double kNegligibleLength = 1e-9;
 
@@ -190,7 +186,7 @@ bool ContinuousPath::line(const AxisValues& from, const AxisValues& to, double f
       const double unblended = std::min(kink, chain_end);
       // The blend candidate: d from the tolerance, at most half of each line.
       bool blended = false;
-      if (tolerance > 0.0 && theta > 0.0 && theta <= kMaxBlendTurn) {
+      if (tolerance > 0.0 && theta > 0.0 && theta <= CornerBlend::kMaxTurn) {
         const double d = std::min({tolerance / (CornerBlend::kDeviationFactor * std::sin(0.5 * theta)),
                                    0.5 * a.length, 0.5 * next.length});
         AxisValues b_from = a.end, b_to = a.end;

@@ -12,9 +12,17 @@ constexpr std::array<double, 5> kNodes = {-0.9061798459386640, -0.53846931010568
 constexpr std::array<double, 5> kWeights = {0.2369268850561891, 0.4786286704993665,
                                             0.5688888888888889, 0.4786286704993665,
                                             0.2369268850561891};
-// Samples for the curvature bounds, and the margin on them: between samples the quintic's
-// curvature changes by far less than 2 %.
+// The curvature bounds of the blend with d = 1, tabulated over the turning angle. The
+// blend's shape depends on theta alone and d only scales it, so its curvature scales as 1/d
+// and its curvature rate as 1/d^2: make() needs a look-up, not a sampling of the curve.
+// kBoundSamples samples along the curve per angle, kBoundAngles + 1 angles over
+// [0, kMaxTurn]. What is tabulated is bound / theta, which is smooth and tends to a constant
+// at theta = 0 (both bounds grow like theta for small turns); between two tabulated angles
+// the larger ratio is taken. The margin covers the curve between samples (its curvature
+// changes by far less than 2 % there). tests/motion/corner_blend_test.cpp checks the bounds
+// against dense sampling.
 constexpr int kBoundSamples = 128;
+constexpr int kBoundAngles = 512;
 constexpr double kBoundMargin = 1.02;
 
 // Power-basis coefficients of a degree-5 Bezier with control values b.
@@ -46,7 +54,68 @@ double horner(const std::array<double, N>& a, double t) {
   return r;
 }
 
+// Per tabulated angle: the d = 1 blend's largest curvature and curvature rate, over theta.
+struct UnitBounds {
+  std::array<double, kBoundAngles + 1> curvature{};
+  std::array<double, kBoundAngles + 1> curvature_rate{};
+};
+
+// Power-basis coefficients of the plane curve (origin at the corner, x along the incoming
+// line) for turning angle theta (cos_t, sin_t) and trim d.
+void planeCurve(double cos_t, double sin_t, double d, std::array<double, 6>& px,
+                std::array<double, 6>& py) {
+  using B = CornerBlend;
+  px = powerBasis({-B::kOuter * d, -B::kMiddle * d, -B::kInner * d, B::kInner * d * cos_t,
+                   B::kMiddle * d * cos_t, B::kOuter * d * cos_t});
+  py = powerBasis({0.0, 0.0, 0.0, B::kInner * d * sin_t, B::kMiddle * d * sin_t,
+                   B::kOuter * d * sin_t});
+}
+
+// Largest curvature and curvature rate sqrt(k'^2 + k^4) of the d = 1 curve, sampled.
+void sampleBounds(double theta, double& curvature, double& curvature_rate) {
+  std::array<double, 6> px, py;
+  planeCurve(std::cos(theta), std::sin(theta), 1.0, px, py);
+  const auto vx = differentiate(px), vy = differentiate(py);
+  const auto ax = differentiate(vx), ay = differentiate(vy);
+  const auto jx = differentiate(ax), jy = differentiate(ay);
+  curvature = curvature_rate = 0.0;
+  for (int k = 0; k <= kBoundSamples; ++k) {
+    const double t = static_cast<double>(k) / kBoundSamples;
+    const double x1 = horner(vx, t), y1 = horner(vy, t);
+    const double x2 = horner(ax, t), y2 = horner(ay, t);
+    const double x3 = horner(jx, t), y3 = horner(jy, t);
+    const double sp2 = x1 * x1 + y1 * y1;
+    const double sp = std::sqrt(sp2);
+    const double cross = x1 * y2 - y1 * x2;
+    const double kappa = cross / (sp2 * sp);
+    const double dkappa_dt =
+        ((x1 * y3 - y1 * x3) * sp2 - 3.0 * cross * (x1 * x2 + y1 * y2)) / (sp2 * sp2 * sp);
+    const double dkappa_ds = dkappa_dt / sp;
+    curvature = std::max(curvature, std::abs(kappa));
+    curvature_rate = std::max(
+        curvature_rate, std::sqrt(dkappa_ds * dkappa_ds + kappa * kappa * kappa * kappa));
+  }
+}
+
+const UnitBounds& unitBounds() {
+  static const UnitBounds table = [] {
+    UnitBounds t;
+    for (int k = 0; k <= kBoundAngles; ++k) {
+      // Node 0: the limit theta -> 0, taken at a tiny angle.
+      const double theta =
+          CornerBlend::kMaxTurn * (k == 0 ? 1e-6 : static_cast<double>(k)) / kBoundAngles;
+      sampleBounds(theta, t.curvature[k], t.curvature_rate[k]);
+      t.curvature[k] /= theta;
+      t.curvature_rate[k] /= theta;
+    }
+    return t;
+  }();
+  return table;
+}
+
 }  // namespace
+
+void CornerBlend::prepareTables() { (void)unitBounds(); }
 
 CornerBlend CornerBlend::make(const AxisValues& corner, const AxisValues& u_in,
                               const AxisValues& u_out, double d, int axis_count) {
@@ -66,9 +135,7 @@ CornerBlend CornerBlend::make(const AxisValues& corner, const AxisValues& u_in,
     b.e2_[i] = sin_t > 0.0 ? b.e2_[i] / sin_t : 0.0;
     b.plane_share_[i] = std::min(1.0, std::hypot(b.e1_[i], b.e2_[i]));
   }
-  b.px_ = powerBasis({-kOuter * d, -kMiddle * d, -kInner * d, kInner * d * cos_t,
-                      kMiddle * d * cos_t, kOuter * d * cos_t});
-  b.py_ = powerBasis({0.0, 0.0, 0.0, kInner * d * sin_t, kMiddle * d * sin_t, kOuter * d * sin_t});
+  planeCurve(cos_t, sin_t, d, b.px_, b.py_);
   b.vx_ = differentiate(b.px_);
   b.vy_ = differentiate(b.py_);
   b.ax_ = differentiate(b.vx_);
@@ -81,26 +148,19 @@ CornerBlend CornerBlend::make(const AxisValues& corner, const AxisValues& u_in,
     b.s_table_[k + 1] = b.s_table_[k] + b.arcLength(t0, t1);
   }
 
-  // Curvature bounds from the plane curve's derivatives.
-  const auto jx = differentiate(b.ax_), jy = differentiate(b.ay_);
-  for (int k = 0; k <= kBoundSamples; ++k) {
-    const double t = static_cast<double>(k) / kBoundSamples;
-    const double x1 = horner(b.vx_, t), y1 = horner(b.vy_, t);
-    const double x2 = horner(b.ax_, t), y2 = horner(b.ay_, t);
-    const double x3 = horner(jx, t), y3 = horner(jy, t);
-    const double sp2 = x1 * x1 + y1 * y1;
-    const double sp = std::sqrt(sp2);
-    const double cross = x1 * y2 - y1 * x2;
-    const double kappa = cross / (sp2 * sp);
-    const double dkappa_dt =
-        ((x1 * y3 - y1 * x3) * sp2 - 3.0 * cross * (x1 * x2 + y1 * y2)) / (sp2 * sp2 * sp);
-    const double dkappa_ds = dkappa_dt / sp;
-    b.max_curvature_ = std::max(b.max_curvature_, std::abs(kappa));
-    b.max_curvature_rate_ =
-        std::max(b.max_curvature_rate_, std::sqrt(dkappa_ds * dkappa_ds + kappa * kappa * kappa * kappa));
-  }
-  b.max_curvature_ *= kBoundMargin;
-  b.max_curvature_rate_ *= kBoundMargin;
+  b.speed_table_[0] = b.speed(0.0);
+  for (int k = 1; k <= kTableSteps; ++k)
+    b.speed_table_[k] = b.speed(static_cast<double>(k) / kTableSteps);
+
+  // Curvature bounds: the d = 1 table at theta, scaled.
+  const double theta = std::atan2(sin_t, cos_t);
+  const double cell = std::clamp(theta / kMaxTurn, 0.0, 1.0) * kBoundAngles;
+  const int lo = std::min(static_cast<int>(cell), kBoundAngles - 1);
+  const UnitBounds& unit = unitBounds();
+  const double scale = kBoundMargin * theta;
+  b.max_curvature_ = scale * std::max(unit.curvature[lo], unit.curvature[lo + 1]) / d;
+  b.max_curvature_rate_ =
+      scale * std::max(unit.curvature_rate[lo], unit.curvature_rate[lo + 1]) / (d * d);
   return b;
 }
 
@@ -129,13 +189,17 @@ double CornerBlend::parameterAt(double s) const {
   const double t0 = static_cast<double>(k) / kTableSteps;
   const double t1 = static_cast<double>(k + 1) / kTableSteps;
   const double s0 = s_table_[k], s1 = s_table_[k + 1];
-  double t = t0 + (t1 - t0) * (s - s0) / (s1 - s0);
-  // Newton on S(t) - s: the speed is the derivative; three steps reach rounding from the
-  // linear guess (the speed changes little within a step).
-  for (int i = 0; i < 3; ++i) {
-    t -= (s0 + arcLength(t0, t) - s) / speed(t);
-    t = std::clamp(t, t0, t1);
-  }
+  // Cubic Hermite guess of t(s) in the step (dt/ds = 1/speed at both ends), then one Newton
+  // step on S(t) - s (the speed is its derivative): the guess is within about 1e-8 of the
+  // step, so Newton's quadratic convergence reaches rounding.
+  const double h = s1 - s0;
+  const double u = (s - s0) / h;
+  const double m0 = h * kTableSteps / speed_table_[k], m1 = h * kTableSteps / speed_table_[k + 1];
+  const double u2 = u * u, u3 = u2 * u;
+  const double frac = (3.0 * u2 - 2.0 * u3) + (u3 - 2.0 * u2 + u) * m0 + (u3 - u2) * m1;
+  double t = t0 + (t1 - t0) * frac;
+  t -= (s0 + arcLength(t0, t) - s) / speed(t);
+  t = std::clamp(t, t0, t1);
   return t;
 }
 

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <limits>
 
+#include "ncc/vm/motion/corner_blend.h"
+
 namespace ncc::vm::motion {
 
 double windowLength(const AxisLimits& l) {
@@ -28,7 +30,9 @@ MotionPlanner::MotionPlanner(const MachineConfig& machine, std::size_t window_ca
       queue_(std::max<std::size_t>(window_capacity, 2 * ContinuousPath::kSlotsPerLine),
              windowLength(limits_)),
       path_(limits_, queue_),
-      interpolator_(machine.start_position, rapid_limits_) {}
+      interpolator_(machine.start_position, rapid_limits_) {
+  CornerBlend::prepareTables();  // at load, not in the first tick that blends a corner
+}
 
 void MotionPlanner::setOverrides(double feed, double rapid) {
   feed_override_ = std::isfinite(feed) ? std::clamp(feed, 1e-3, 2.0) : 1.0;

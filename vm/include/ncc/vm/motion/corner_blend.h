@@ -14,9 +14,11 @@
 // (docs/planner.md, "Corner blending").
 //
 // Arc length: a table of s at 32 equal steps of the Bezier parameter (5-point Gauss-Legendre
-// per step), inverted by Newton's method; exact to rounding. Everything is a pure function of
+// per step), inverted by a Hermite guess and a Newton step; exact to rounding. Curvature
+// bounds come from a table over the turning angle, computed once per process. Everything is a pure function of
 // the construction arguments: no allocation, no throw.
 #include <array>
+#include <numbers>
 
 #include "ncc/machine/axes.h"
 
@@ -29,6 +31,14 @@ class CornerBlend {
   // Control points on each line, as fractions of d from the corner.
   static constexpr double kOuter = 1.0, kMiddle = 0.6, kInner = 0.2;
   static constexpr int kTableSteps = 32;
+  // Largest turning angle a blend is made for (150 degrees): beyond it a blend is a tight
+  // loop passed at a crawl, and the arc-length table would need finer steps.
+  static constexpr double kMaxTurn = 150.0 * std::numbers::pi / 180.0;
+
+  // Fills the curvature-bound table shared by all blends (a few ms, once per process); the
+  // motion planner calls it on construction so that no tick pays for it. make() fills it on
+  // first use otherwise.
+  static void prepareTables();
 
   // The blend of the corner `corner` between unit directions `u_in` and `u_out` (not
   // opposite), trimming `d` > 0 off both lines. Starts at corner - d u_in, ends at
@@ -70,7 +80,8 @@ class CornerBlend {
   std::array<double, 6> px_{}, py_{};
   std::array<double, 5> vx_{}, vy_{};
   std::array<double, 4> ax_{}, ay_{};
-  std::array<double, kTableSteps + 1> s_table_{};
+  std::array<double, kTableSteps + 1> s_table_{};      // path length at t = k / kTableSteps
+  std::array<double, kTableSteps + 1> speed_table_{};  // |dc/dt| there
   double max_curvature_ = 0.0;
   double max_curvature_rate_ = 0.0;
 };
