@@ -2,7 +2,10 @@
 // program (rapids, 10 um chain, arcs, a helix, dwell, G95, M01) on a machine with torque
 // feed-forward and backlash is pinned, identical across two runs and after re-constructing,
 // and identical whether the program came from bytes or from memory.
+#include <algorithm>
+#include <cmath>
 #include <sstream>
+#include <vector>
 
 #include "controller_test_util.h"
 #include "ncc/bytecode/writer.h"
@@ -86,6 +89,62 @@ TEST(ControllerDeterminism, PinnedHashAcrossRunsAndConstructions) {
               static_cast<unsigned long long>(a.ticks));
   EXPECT_EQ(a.hash, kPinnedHash);
   EXPECT_EQ(a.ticks, kPinnedTicks);
+}
+
+// The real-time split (ControllerOptions::prepare_in_tick = false): tick() only interpolates
+// and steps the servo, the caller runs prepare() between ticks. Same trace, bit for bit.
+TEST(ControllerDeterminism, PrepareBetweenTicksGivesTheSameTrace) {
+  const MachineConfig m = machine();
+  vm::ControllerOptions split;
+  split.prepare_in_tick = false;
+  std::unique_ptr<vm::Controller> ctl = make(program(m), m, split);
+  TraceHash h;
+  TickOutput out;
+  uint64_t ticks = 0;
+  ctl->prepare();
+  while (ctl->tick(out) == TickStatus::Running) {
+    h.add(out, ctl->axisCount());
+    ++ticks;
+    ctl->prepare();
+  }
+  EXPECT_EQ(ctl->status(), TickStatus::Finished);
+  EXPECT_EQ(h.value(), kPinnedHash);
+  EXPECT_EQ(ticks, kPinnedTicks);
+}
+
+// A preparation that falls behind (run every 40th tick, 3 events at a time) never makes the
+// path unsafe: the planner brakes at the end of what it holds. The program still ends at its
+// end point, only later.
+TEST(ControllerDeterminism, StarvedPreparationOnlySlowsThePath) {
+  const MachineConfig m = machine();
+  vm::ControllerOptions starved;
+  starved.prepare_in_tick = false;
+  starved.max_events_per_tick = 3;
+  std::unique_ptr<vm::Controller> ctl = make(program(m), m, starved);
+  TickOutput out;
+  uint64_t ticks = 0;
+  std::vector<AxisValues> setpoints;
+  for (;; ++ticks) {
+    if (ticks % 40 == 0) ctl->prepare();
+    if (ctl->tick(out) != TickStatus::Running) break;
+    setpoints.push_back(out.commanded);
+  }
+  EXPECT_EQ(ctl->status(), TickStatus::Finished);
+  EXPECT_GT(ticks, kPinnedTicks);
+  // The setpoints' second differences stay within every axis' acceleration limit.
+  const double T = m.ipo_cycle_seconds;
+  double worst = 0.0;
+  for (std::size_t k = 2; k < setpoints.size(); ++k) {
+    for (int i = 0; i < m.axisCount(); ++i) {
+      const double a =
+          (setpoints[k][i] - 2.0 * setpoints[k - 1][i] + setpoints[k - 2][i]) / (T * T);
+      worst = std::max(worst, std::abs(a) / m.axes[static_cast<std::size_t>(i)].max_acceleration);
+    }
+  }
+  EXPECT_LE(worst, 1.0 + 1e-6);
+  EXPECT_DOUBLE_EQ(out.commanded[0], 0.0);
+  EXPECT_DOUBLE_EQ(out.commanded[1], 0.0);
+  EXPECT_DOUBLE_EQ(out.commanded[2], 20.0);
 }
 
 }  // namespace

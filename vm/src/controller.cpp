@@ -85,7 +85,8 @@ std::string_view Controller::fileName(uint32_t file) const {
 
 // Feeds the planner while it wants more: motion, S (feed per revolution, dwell in
 // revolutions), M00/M01/M02/M30 (stops) all go through MotionPlanner::accept().
-void Controller::pullEvents() {
+void Controller::prepare() noexcept {
+  if (status_ != TickStatus::Running) return;
   uint32_t budget = options_.max_events_per_tick;  // 0: unlimited
   while (!input_done_ && planner_.canAccept()) {
     if (!event_pending_) {
@@ -111,7 +112,7 @@ TickStatus Controller::tick(TickOutput& out) noexcept {
     out = last_;
     return status_;
   }
-  pullEvents();
+  if (options_.prepare_in_tick) prepare();
 
   const uint64_t k = next_tick_;
   AxisValues setpoint{};

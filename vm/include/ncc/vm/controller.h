@@ -71,6 +71,12 @@ struct ControllerOptions {
   // rapid 0..1.
   double feed_override = 1.0;
   double rapid_override = 1.0;
+  // true: tick() runs prepare() itself before computing the setpoint (the simple loop).
+  // false: the caller runs prepare() in each cycle's slack, after tick() (the real-time loop:
+  // tick() then holds only the interpolation and the servo step). Either way the outputs are
+  // bit-identical as long as prepare() runs once before the first tick and once between two
+  // ticks.
+  bool prepare_in_tick = true;
 };
 
 class Controller {
@@ -97,8 +103,15 @@ class Controller {
   Controller(const Controller&) = delete;
   Controller& operator=(const Controller&) = delete;
 
-  // One IPO cycle. See TickStatus for what `out` holds.
+  // One IPO cycle. See TickStatus for what `out` holds. With prepare_in_tick it first runs
+  // prepare(); else only the real-time part: the setpoint from what is already planned, the
+  // servo step, the statistics.
   TickStatus tick(TickOutput& out) noexcept;
+  // The preparation (a real controller's preprocessing task): pulls executor events into the
+  // look-ahead while it wants more, at most max_events_per_tick of them. Real-time loops call
+  // it after tick(), in the rest of the cycle; a look-ahead that is not refilled in time only
+  // makes the path brake at the end of what it holds. Never throws or allocates.
+  void prepare() noexcept;
 
   TickStatus status() const { return status_; }
   // The alarm that stopped the run, or nullptr. Executor alarms (NCC72xx) are raised when the
@@ -114,7 +127,6 @@ class Controller {
   int axisCount() const { return machine_.axisCount(); }
 
  private:
-  void pullEvents();
   void raiseServoAlarm(const ServoAlarm& servo_alarm, SourcePosition where);
   void raiseExecutorAlarm();
   void raiseSpindleAlarm();
