@@ -1,6 +1,8 @@
 // Embedding the ncc VM in a controller loop: load a compiled program (.ncb) and, optionally, a
-// machine file, then call Controller::tick() once per IPO cycle. A real controller would send
-// `out.commanded` to its drives; this example prints every 100th tick and the statistics.
+// machine file, then run the real-time loop: Controller::tick() at the start of each IPO cycle
+// (the setpoint, quickly), Controller::prepare() in the rest of the cycle (the look-ahead). A
+// real controller would send `out.commanded` to its drives; this example prints every 100th
+// tick and the statistics.
 //
 //   example_embed_vm part.ncb [machine.toml]
 #include <cstdio>
@@ -33,17 +35,22 @@ int main(int argc, char** argv) {
 
   // Load + verify; everything the run needs is allocated here, none of it in the loop.
   ncc::bytecode::Error error;
+  ncc::vm::ControllerOptions options;
+  options.prepare_in_tick = false;  // this loop calls prepare() itself, after each tick
   std::unique_ptr<ncc::vm::Controller> ctl =
-      ncc::vm::Controller::loadFile(argv[1], machine, error);
+      ncc::vm::Controller::loadFile(argv[1], machine, error, options);
   if (!ctl) {
     std::fprintf(stderr, "%s: error[%s]: %s\n", argv[1], error.code.c_str(), error.message.c_str());
     return 1;
   }
 
-  // The real-time loop: one tick per IPO cycle.
+  // The real-time loop: one tick per IPO cycle. The setpoint first (bounded, short), then the
+  // preparation, which may take longer and only has to be done before the next cycle.
   const int axes = ctl->axisCount();
   ncc::vm::TickOutput out;
+  ctl->prepare();  // fill the look-ahead before the machine moves
   while (ctl->tick(out) == ncc::vm::TickStatus::Running) {
+    ctl->prepare();
     if (out.tick % 100 != 0) continue;
     std::printf("t=%8.3f s  line %5u ", out.time, out.where.line);
     for (int i = 0; i < axes; ++i)

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
 #include "gtest/gtest.h"
 #include "motion_test_util.h"
@@ -111,6 +112,48 @@ TEST(SCurve, RandomProfilesRespectLimits) {
       ASSERT_NEAR(ds, p.at(0.5 * (t0 + t1)).v * h, j * h * h * h + 1e-8 * L + 1e-12) << n;
     }
   }
+}
+
+// The peak velocity of a profile without cruise (both ramps meet) against a bisection of
+// rampDistance(v_start, vp) + rampDistance(v_end, vp) = L to the last bit: the solver's result
+// fits (never longer than L) and is the root to 1e-12. The first case is one from a G64
+// blend where the root lies a few ulps above v_end, where the ramp from v_end grows like
+// sqrt(vp - v_end) and plain Newton keeps overshooting.
+TEST(SCurve, PeakVelocityIsTheRootOfTheRampDistances) {
+  struct Peak {
+    double length, v_start, v_end, v_max, a, j;
+  };
+  std::vector<Peak> cases = {
+      {0.056217554721197993, 5.6445337265109057, 5.8247252863333134, 6.118743724738235,
+       221.52342060619227, 7499.9999999999991},
+      {0.035230083809227757, 2.1400070564211555, 3.4035668784600484, 33.000486901272822,
+       1005.3724201780287, 31550.148178097916},
+  };
+  for (int k = 0; k < 200; ++k) {  // deterministic spread of short pieces
+    const double u = (k + 0.5) / 200.0;
+    cases.push_back({0.01 + 0.2 * u, 15.0 * std::fmod(7.3 * u, 1.0), 15.0 * std::fmod(3.1 * u, 1.0),
+                     60.0, 300.0 + 1500.0 * std::fmod(5.7 * u, 1.0), 5000.0 + 40000.0 * u});
+  }
+  int solved = 0;
+  for (const Peak& c : cases) {
+    const SCurveProfile p = planProfile(c.length, c.v_start, c.v_end, c.v_max, c.a, c.j);
+    if (!p.end_reachable || p.v_peak >= c.v_max) continue;  // not the case under test
+    auto distance = [&](double vp) {
+      return rampDistance(c.v_start, vp, c.a, c.j) + rampDistance(c.v_end, vp, c.a, c.j);
+    };
+    double lo = std::max(c.v_start, c.v_end), hi = c.v_max;
+    if (distance(lo) >= c.length) continue;  // no ramps to solve for
+    for (int i = 0; i < 200; ++i) {
+      const double mid = 0.5 * (lo + hi);
+      (distance(mid) <= c.length ? lo : hi) = mid;
+    }
+    ++solved;
+    EXPECT_LE(distance(p.v_peak), c.length * (1.0 + 1e-15)) << c.length << " " << c.v_start;
+    EXPECT_NEAR(p.v_peak, lo, 1e-12 * lo) << c.length << " " << c.v_start;
+    EXPECT_NEAR(p.accel.distance + p.v_peak * p.t_cruise + p.decel.distance, c.length,
+                1e-12 * c.length);
+  }
+  EXPECT_GT(solved, 50);  // the spread really exercises the solver
 }
 
 }  // namespace

@@ -125,15 +125,32 @@ double solvePeak(double length, double v0, double v1, double lo, double hi, doub
     }
   }
   // Mixed cases: Newton on a monotone function, safeguarded by bisection; bounded steps.
+  // Newton approaches the root from one side, so the bracket's far side does not move: once a
+  // Newton step no longer moves x (converged to rounding), x is taken if it fits, else a
+  // point just below it; bisecting the far side down instead costs dozens of evaluations.
+  const double resolution = 1e-13 * hi;
+  constexpr double kConverged = 4e-16;  // a Newton step below this share of x: at the root
+  const double base = std::max(v0, v1);  // <= lo
   double x = 0.5 * (lo + hi);
-  for (int i = 0; i < 100 && hi - lo > 1e-13 * hi; ++i) {
+  for (int i = 0; i < 100 && hi - lo > resolution; ++i) {
     const double f = peakDistance(x, v0, v1, a_max, j_max) - length;
     if (f <= 0.0) lo = x; else hi = x;
     if (f == 0.0) break;
+    // Newton in w = sqrt(x - base): near base the ramp from the higher end velocity is short
+    // and its distance grows like sqrt(x - base), which Newton in x overshoots; in w it is
+    // smooth.
     const double slope = rampDistanceSlope(v0, x, a_max, j_max) + rampDistanceSlope(v1, x, a_max, j_max);
-    double next = x - f / slope;
-    if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
-    x = next;
+    const double w = std::sqrt(x - base);
+    const double w_next = w - f / (2.0 * w * slope);
+    const double newton = w_next > 0.0 ? base + w_next * w_next : base;
+    if (std::abs(newton - x) <= kConverged * x) {
+      if (f < 0.0) return x;
+      const double below = std::min(x, newton) * (1.0 - kConverged);
+      if (fits(below)) return below;
+    }
+    // Outside the bracket: below it, the root sits just above lo (Newton says so even in w),
+    // so close in on lo geometrically; above it, bisect.
+    x = newton <= lo ? lo + 0.01 * (x - lo) : newton < hi ? newton : 0.5 * (lo + hi);
   }
   return lo;
 }
@@ -141,7 +158,7 @@ double solvePeak(double length, double v0, double v1, double lo, double hi, doub
 // Lowest velocity reachable braking from v0 within length (only for the error report).
 double lowestReachable(double v0, double length, double a_max, double j_max) {
   double lo = 0.0, hi = v0;
-  for (int i = 0; i < 100; ++i) {
+  for (int i = 0; i < 100 && hi - lo > 1e-13 * v0; ++i) {
     const double mid = 0.5 * (lo + hi);
     if (rampDistance(mid, v0, a_max, j_max) <= length) hi = mid; else lo = mid;
   }
