@@ -76,9 +76,11 @@ struct Trace {
 };
 
 // Runs `program` through a planner the way the VM loop does: before each tick, push while the
-// planner wants more. `max_ticks` guards against a hang.
+// planner wants more (and, with `plan_ahead`, let it plan the next piece, as
+// vm::Controller::prepare does). `max_ticks` guards against a hang.
 inline Trace run(const MachineConfig& machine, const std::vector<MotionPrimitive>& program,
-                 std::size_t capacity = 1024, uint64_t max_ticks = 50'000'000) {
+                 std::size_t capacity = 1024, uint64_t max_ticks = 50'000'000,
+                 bool plan_ahead = false) {
   vm::motion::MotionPlanner planner(machine, capacity);
   Trace trace;
   std::size_t next = 0;
@@ -87,6 +89,7 @@ inline Trace run(const MachineConfig& machine, const std::vector<MotionPrimitive
   for (uint64_t k = 0; k < max_ticks; ++k) {
     while (next < program.size() && planner.canAccept()) planner.push(program[next++]);
     if (next == program.size()) planner.endOfProgram();
+    if (plan_ahead) planner.planAhead();
     if (!planner.setpoint(k, p, info)) break;
     trace.points.push_back(p);
     trace.infos.push_back(info);

@@ -210,5 +210,19 @@ TEST(RandomSuite, DeterministicHash) {
   EXPECT_EQ(h, 0x33e59404dcfb6d4cULL);
 }
 
+// MotionPlanner::planAhead (the next piece planned in the preparation, outside the tick) is a
+// pure precomputation: the setpoints are bit-identical with and without it.
+TEST(RandomSuite, PlanningAheadChangesNoSetpoint) {
+  const MachineConfig m = testMachine();
+  for (uint64_t seed = 1; seed <= 6; ++seed) {
+    Generator gen(seed);
+    const std::vector<MotionPrimitive> prog = gen.program(40);
+    const Trace plain = run(m, prog);
+    const Trace ahead = run(m, prog, 1024, 50'000'000, true);
+    ASSERT_EQ(plain.ticks(), ahead.ticks()) << "seed " << seed;
+    EXPECT_EQ(fnv1a(plain, 3), fnv1a(ahead, 3)) << "seed " << seed;
+  }
+}
+
 }  // namespace
 }  // namespace ncc::motion_test

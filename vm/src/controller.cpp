@@ -83,10 +83,15 @@ std::string_view Controller::fileName(uint32_t file) const {
                                         : std::string_view();
 }
 
-// Feeds the planner while it wants more: motion, S (feed per revolution, dwell in
-// revolutions), M00/M01/M02/M30 (stops) all go through MotionPlanner::accept().
 void Controller::prepare() noexcept {
   if (status_ != TickStatus::Running) return;
+  pullEvents();
+  planner_.planAhead();
+}
+
+// Feeds the planner while it wants more: motion, S (feed per revolution, dwell in
+// revolutions), M00/M01/M02/M30 (stops) all go through MotionPlanner::accept().
+void Controller::pullEvents() {
   uint32_t budget = options_.max_events_per_tick;  // 0: unlimited
   while (!input_done_ && planner_.canAccept()) {
     if (!event_pending_) {

@@ -1,6 +1,8 @@
 #include "ncc/vm/motion/interpolator.h"
 
 #include <algorithm>
+#include <bit>
+#include <cstdint>
 #include <cmath>
 
 namespace ncc::vm::motion {
@@ -27,28 +29,95 @@ void Interpolator::startPiece(LookAhead& queue, bool closed) {
     piece_ends_run_ = true;
     return;
   }
-  const SegmentLimits& l = run.limits;
-  const double v0 = exit_velocity_;
-  const double rest = run.length - piece_start_;
-  const bool open = queue.frontRunIsLast() && !closed && !run.stop_after;
-  if (open) {
+  const PieceInputs in = pieceInputs(queue, 0, piece_start_, exit_velocity_, closed);
+  const PiecePlan plan =
+      ahead_[0].ready && in.sameAs(ahead_[0].inputs) ? ahead_[0].plan : planPiece(in);
+  std::shift_left(ahead_.begin(), ahead_.end(), 1);  // the next one up is the front now
+  ahead_.back().ready = false;
+  profile_ = plan.profile;
+  duration_ = profile_.duration;
+  piece_end_ = plan.piece_end;
+  piece_ends_run_ = plan.ends_run;
+}
+
+bool Interpolator::PieceInputs::sameAs(const PieceInputs& o) const {
+  auto same = [](double a, double b) {
+    return std::bit_cast<uint64_t>(a) == std::bit_cast<uint64_t>(b);
+  };
+  return same(limits.velocity, o.limits.velocity) &&
+         same(limits.acceleration, o.limits.acceleration) && same(limits.jerk, o.limits.jerk) &&
+         same(run_length, o.run_length) && same(piece_start, o.piece_start) && same(v0, o.v0) &&
+         same(v1, o.v1) && open == o.open;
+}
+
+Interpolator::PieceInputs Interpolator::pieceInputs(const LookAhead& queue, std::size_t run,
+                                                    double piece_start, double v0,
+                                                    bool closed) const {
+  const Run& r = queue.run(run);
+  PieceInputs in;
+  in.limits = r.limits;
+  in.run_length = r.length;
+  in.piece_start = piece_start;
+  in.v0 = v0;
+  in.open = run + 1 == queue.runCount() && !closed && !r.stop_after;
+  in.v1 = in.open ? 0.0 : queue.runExit(run);
+  return in;
+}
+
+Interpolator::PiecePlan Interpolator::planPiece(const PieceInputs& in) const {
+  const SegmentLimits& l = in.limits;
+  const double rest = in.run_length - in.piece_start;
+  PiecePlan plan;
+  if (in.open) {
     const double top = l.velocity;
     const double brake = rampDistance(0.0, top, l.acceleration, l.jerk);
     const double chunk = rest - brake;
     // Room to reach top speed and hold it for at least one cycle before the braking zone.
-    if (chunk >= rampDistance(v0, top, l.acceleration, l.jerk) + top * cycle_) {
-      profile_ = planProfile(chunk, v0, top, top, l.acceleration, l.jerk);
-      duration_ = profile_.duration;
-      piece_end_ = piece_start_ + chunk;
-      piece_ends_run_ = false;
-      return;
+    if (chunk >= rampDistance(in.v0, top, l.acceleration, l.jerk) + top * cycle_) {
+      plan.profile = planProfile(chunk, in.v0, top, top, l.acceleration, l.jerk);
+      plan.piece_end = in.piece_start + chunk;
+      plan.ends_run = false;
+      return plan;
     }
   }
-  const double v1 = open ? 0.0 : queue.frontRunExit();
-  profile_ = planProfile(rest, v0, v1, l.velocity, l.acceleration, l.jerk);
-  duration_ = profile_.duration;
-  piece_end_ = run.length;
-  piece_ends_run_ = true;
+  plan.profile = planProfile(rest, in.v0, in.v1, l.velocity, l.acceleration, l.jerk);
+  plan.piece_end = in.run_length;
+  plan.ends_run = true;
+  return plan;
+}
+
+void Interpolator::planNextPiece(const LookAhead& queue, bool closed) {
+  // Where the next piece starts: after the running one (at its exit velocity), or, at rest or
+  // between pieces, at the front run where the last one ended.
+  std::size_t run = 0;
+  double piece_start = piece_start_;
+  double v0 = resync_ ? 0.0 : exit_velocity_;
+  if (running_) {
+    if (per_axis_ || queue.run(0).kind == MotionPrimitive::Kind::Dwell) return;
+    run = piece_ends_run_ ? 1 : 0;
+    piece_start = piece_ends_run_ ? 0.0 : piece_end_;
+    v0 = profile_.v_end;
+  }
+  for (PlannedPiece& slot : ahead_) {
+    if (run >= queue.runCount()) return;
+    const Run& r = queue.run(run);
+    // The run's first queued segment: after the remaining segments of the runs before it.
+    std::size_t first = 0;
+    for (std::size_t i = 0; i < run; ++i) first += queue.run(i).segments;
+    if (r.kind == MotionPrimitive::Kind::Dwell || first >= queue.size() ||
+        queue.segment(first).per_axis)
+      return;
+    const PieceInputs in = pieceInputs(queue, run, piece_start, v0, closed);
+    if (!(slot.ready && in.sameAs(slot.inputs))) slot = {true, in, planPiece(in)};
+    // The piece after it (a piece that ends at rest hands over from rest: v = 0 either way).
+    if (slot.plan.ends_run) {
+      ++run;
+      piece_start = 0.0;
+    } else {
+      piece_start = slot.plan.piece_end;
+    }
+    v0 = slot.plan.profile.v_end;
+  }
 }
 
 bool Interpolator::setpoint(uint64_t k, LookAhead& queue, bool closed, AxisValues& out,

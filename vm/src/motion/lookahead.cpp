@@ -81,9 +81,9 @@ void LookAhead::backwardPass() {
   }
 }
 
-double LookAhead::frontRunExit() const {
-  if (run_count_ < 2 || runAt(0).stop_after) return 0.0;
-  return runAt(1).entry_planned;
+double LookAhead::runExit(std::size_t i) const {
+  if (i + 1 >= run_count_ || runAt(i).stop_after) return 0.0;
+  return runAt(i + 1).entry_planned;
 }
 
 void LookAhead::popSegment() {

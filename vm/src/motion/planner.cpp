@@ -137,6 +137,11 @@ void MotionPlanner::endOfProgram() {
   if (queue_.room() > 0) path_.flush();  // else on a later tick, when there is room
 }
 
+void MotionPlanner::planAhead() {
+  if (ended_ && path_.holding() && queue_.room() > 0) path_.flush();
+  interpolator_.planNextPiece(queue_, ended_ && !path_.holding());
+}
+
 bool MotionPlanner::setpoint(uint64_t k, AxisValues& out, SetpointInfo& info) {
   if (ended_ && path_.holding() && queue_.room() > 0) path_.flush();
   const bool closed = ended_ && !path_.holding();

@@ -108,7 +108,8 @@ class Controller {
   // servo step, the statistics.
   TickStatus tick(TickOutput& out) noexcept;
   // The preparation (a real controller's preprocessing task): pulls executor events into the
-  // look-ahead while it wants more, at most max_events_per_tick of them. Real-time loops call
+  // look-ahead while it wants more, at most max_events_per_tick of them, and plans the next
+  // profile piece (MotionPlanner::planAhead). Real-time loops call
   // it after tick(), in the rest of the cycle; a look-ahead that is not refilled in time only
   // makes the path brake at the end of what it holds. Never throws or allocates.
   void prepare() noexcept;
@@ -127,6 +128,7 @@ class Controller {
   int axisCount() const { return machine_.axisCount(); }
 
  private:
+  void pullEvents();
   void raiseServoAlarm(const ServoAlarm& servo_alarm, SourcePosition where);
   void raiseExecutorAlarm();
   void raiseSpindleAlarm();

@@ -16,6 +16,7 @@
 //    Otherwise the piece brakes to rest at the end of the window.
 //  - a non-linear rapid (QueuedSegment::per_axis) is one piece from rest to rest in which
 //    every axis follows its own profile (axis_rapid.h).
+#include <array>
 #include <cstddef>
 #include <cstdint>
 
@@ -53,9 +54,37 @@ class Interpolator {
   // position. The tick on which the queue runs empty still returns true with the end point.
   bool setpoint(uint64_t k, LookAhead& queue, bool closed, AxisValues& out, SetpointInfo& info);
 
+  // Plans the next kPlannedAhead pieces after the running one (or from rest) from what is
+  // queued now, so that setpoint() finds them ready: the preparation's share of the forward
+  // pass, done outside the real-time tick (vm::Controller::prepare). Two, because a tick may
+  // finish one piece and start the next two. setpoint() takes a plan only if everything it
+  // depends on is still bit for bit the same, so the setpoints do not depend on whether or
+  // when this is called.
+  static constexpr int kPlannedAhead = 2;
+  void planNextPiece(const LookAhead& queue, bool closed);
+
   const AxisValues& position() const { return position_; }
 
  private:
+  // Everything a line/arc piece's plan depends on (dwells and non-linear rapids are planned
+  // directly: they are cheap or rare).
+  struct PieceInputs {
+    SegmentLimits limits;
+    double run_length = 0.0;
+    double piece_start = 0.0;  // run offset
+    double v0 = 0.0;           // entry velocity
+    double v1 = 0.0;           // planned exit of the run (0 for an open run)
+    bool open = false;         // the last run, more may be queued behind it
+    bool sameAs(const PieceInputs& o) const;
+  };
+  struct PiecePlan {
+    SCurveProfile profile;
+    double piece_end = 0.0;
+    bool ends_run = false;
+  };
+  PieceInputs pieceInputs(const LookAhead& queue, std::size_t run, double piece_start, double v0,
+                          bool closed) const;
+  PiecePlan planPiece(const PieceInputs& in) const;
   void startPiece(LookAhead& queue, bool closed);
 
   AxisValues position_;  // end of the last finished segment
@@ -75,6 +104,14 @@ class Interpolator {
   double phase_ = 0.0;
   double exit_velocity_ = 0.0;  // of the last finished piece
   bool resync_ = true;          // the next piece starts on the tick it is first evaluated
+  // planNextPiece()'s results in the order the pieces will run, each valid for exactly its
+  // inputs.
+  struct PlannedPiece {
+    bool ready = false;
+    PieceInputs inputs;
+    PiecePlan plan;
+  };
+  std::array<PlannedPiece, kPlannedAhead> ahead_{};
 };
 
 }  // namespace ncc::vm::motion

@@ -75,7 +75,14 @@ class LookAhead {
   bool frontRunIsLast() const { return run_count_ == 1; }
   // Planned entry velocity of the run after the front run (0 when there is none or the front
   // run stops).
-  double frontRunExit() const;
+  double frontRunExit() const { return runExit(0); }
+  // Read access by position from the front, for planning ahead (Interpolator).
+  std::size_t runCount() const { return run_count_; }
+  const Run& run(std::size_t i) const { return runAt(i); }
+  const QueuedSegment& segment(std::size_t i) const { return segmentAt(i); }
+  // Planned velocity at the end of run i: the next run's entry, 0 when none follows or run i
+  // stops.
+  double runExit(std::size_t i) const;
   // Drop the front segment / the (empty) front run.
   void popSegment();
   void popRun();

@@ -60,6 +60,11 @@ class MotionPlanner {
   // No more input: setpoint() returns false once everything queued has run.
   void endOfProgram();
 
+  // The preparation's share of the forward pass, called after pushing: plans the piece that
+  // follows the running one (Interpolator::planNextPiece), so that the tick finds it ready.
+  // Optional: setpoint() gives the same result without it, only doing that work itself.
+  void planAhead();
+
   // Setpoint of tick k (k increasing by one per call, t = k * ipo_cycle_seconds). Returns
   // false when the program is done; while waiting for input it holds position and returns
   // true.
