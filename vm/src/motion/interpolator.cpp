@@ -8,6 +8,7 @@
 namespace ncc::vm::motion {
 
 void Interpolator::startPiece(LookAhead& queue, bool closed) {
+  ++pieces_changed_;
   Run& run = queue.frontRun();
   queue.setFrontRunStarted(true);
   running_ = true;
@@ -87,6 +88,13 @@ Interpolator::PiecePlan Interpolator::planPiece(const PieceInputs& in) const {
 }
 
 void Interpolator::planNextPiece(const LookAhead& queue, bool closed) {
+  if (planned_once_ && queue.version() == planned_queue_version_ &&
+      pieces_changed_ == planned_pieces_changed_ && closed == planned_closed_)
+    return;  // nothing it depends on has changed since the last call
+  planned_once_ = true;
+  planned_queue_version_ = queue.version();
+  planned_pieces_changed_ = pieces_changed_;
+  planned_closed_ = closed;
   // Where the next piece starts: after the running one (at its exit velocity), or, at rest or
   // between pieces, at the front run where the last one ended.
   std::size_t run = 0;
@@ -177,6 +185,7 @@ bool Interpolator::setpoint(uint64_t k, LookAhead& queue, bool closed, AxisValue
     }
     // The piece ended before this tick: move the clock to its end and continue.
     running_ = false;
+    ++pieces_changed_;
     exit_velocity_ = profile_.v_end;
     if (exit_velocity_ == 0.0) {
       resync_ = true;  // at rest: the next piece starts on a tick (exact stop sample)
@@ -214,6 +223,7 @@ bool Interpolator::setpoint(uint64_t k, LookAhead& queue, bool closed, AxisValue
     }
   }
   resync_ = true;
+  ++pieces_changed_;
   out = position_;
   return false;
 }

@@ -60,11 +60,13 @@ void LookAhead::push(const QueuedSegment& segment, MotionPrimitive::Kind kind,
     slot.run_offset = 0.0;
   }
   backwardPass();
+  ++version_;
 }
 
 void LookAhead::stopAfterLast() {
   // Its exit is already 0 (it ends the window); later pushes read the flag.
   if (run_count_ > 0) runAt(run_count_ - 1).stop_after = true;
+  ++version_;
 }
 
 void LookAhead::backwardPass() {
@@ -90,6 +92,7 @@ void LookAhead::popSegment() {
   if (segment_count_ == 0) return;
   seg_head_ = (seg_head_ + 1) % segments_.size();
   --segment_count_;
+  ++version_;
   if (segment_count_ > 0) queued_length_ -= segmentAt(0).path.length();
   if (segment_count_ <= 1) queued_length_ = 0.0;  // no drift from the running sum
   if (run_count_ > 0 && runAt(0).segments > 0) --runAt(0).segments;
@@ -100,6 +103,7 @@ void LookAhead::popRun() {
   run_head_ = (run_head_ + 1) % runs_.size();
   --run_count_;
   front_started_ = false;
+  ++version_;
 }
 
 }  // namespace ncc::vm::motion

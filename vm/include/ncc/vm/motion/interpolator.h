@@ -112,6 +112,13 @@ class Interpolator {
     PiecePlan plan;
   };
   std::array<PlannedPiece, kPlannedAhead> ahead_{};
+  // What ahead_ was last planned from: the queue's version, the pieces started or finished
+  // so far, and `closed`. While all three stand, planNextPiece() has nothing to redo.
+  uint64_t pieces_changed_ = 0;
+  uint64_t planned_queue_version_ = 0;
+  uint64_t planned_pieces_changed_ = 0;
+  bool planned_closed_ = false;
+  bool planned_once_ = false;
 };
 
 }  // namespace ncc::vm::motion

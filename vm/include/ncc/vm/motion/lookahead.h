@@ -83,6 +83,9 @@ class LookAhead {
   // Planned velocity at the end of run i: the next run's entry, 0 when none follows or run i
   // stops.
   double runExit(std::size_t i) const;
+  // Changes with every push, pop and stop flag: what is queued (and planned) is the same as
+  // long as it is.
+  uint64_t version() const { return version_; }
   // Drop the front segment / the (empty) front run.
   void popSegment();
   void popRun();
@@ -103,6 +106,7 @@ class LookAhead {
   std::size_t seg_head_ = 0, segment_count_ = 0;
   std::size_t run_head_ = 0, run_count_ = 0;
   bool front_started_ = false;
+  uint64_t version_ = 0;
   double window_length_ = 0.0;
   double queued_length_ = 0.0;  // lengths of the segments behind the front one
 };
