@@ -69,25 +69,27 @@ double ContinuousPath::blendCost(double speed, double accel, double jerk, double
   return ramps + blend_length / v - 2.0 * trim / speed;
 }
 
-double ContinuousPath::curvatureStepLimit(double step, const AxisValues& involved) const {
-  double v = kInf;
-  if (!(step > 0.0)) return v;
+ContinuousPath::Weakest ContinuousPath::weakest(const AxisValues& involved) const {
+  Weakest w{kInf, kInf};
   for (int i = 0; i < limits_.count; ++i) {
     if (involved[i] == 0.0) continue;
-    v = std::min(v, std::sqrt(kJunctionJerkShare * limits_.jerk[i] * limits_.ipo_cycle / step));
+    w.acceleration = std::min(w.acceleration, limits_.acceleration[i]);
+    w.jerk = std::min(w.jerk, limits_.jerk[i]);
   }
-  return v;
+  return w;
+}
+
+double ContinuousPath::curvatureStepLimit(double step, const AxisValues& involved) const {
+  if (!(step > 0.0)) return kInf;
+  return std::sqrt(kJunctionJerkShare * weakest(involved).jerk * limits_.ipo_cycle / step);
 }
 
 double ContinuousPath::wiggleAllowance(const AxisValues& involved) const {
   // limits.h: 2 delta / T^2 of acceleration and 4 delta / T^3 of jerk.
   const double T = limits_.ipo_cycle;
-  double delta = kInf;
-  for (int i = 0; i < limits_.count; ++i) {
-    if (involved[i] == 0.0) continue;
-    delta = std::min(delta, kWiggleJerkShare * limits_.jerk[i] * T * T * T / 4.0);
-    delta = std::min(delta, kWiggleAccelerationShare * limits_.acceleration[i] * T * T / 2.0);
-  }
+  const Weakest w = weakest(involved);
+  const double delta = std::min(kWiggleJerkShare * w.jerk * T * T * T / 4.0,
+                                kWiggleAccelerationShare * w.acceleration * T * T / 2.0);
   return delta == kInf ? 0.0 : delta;
 }
 
@@ -201,12 +203,8 @@ bool ContinuousPath::line(const AxisValues& from, const AxisValues& to, double f
         SegmentLimits bl = segmentLimits(blend.path, limits_, false, std::min(a.feed, feed));
         bl.velocity = std::max(bl.velocity, kMinPathVelocity);
         // Worth it if faster than the alternative: the kink's speed, or a stop.
-        double path_accel = kInf, path_jerk = kInf;
-        for (int i = 0; i < n; ++i) {
-          if (involved[i] == 0.0) continue;
-          path_accel = std::min(path_accel, limits_.acceleration[i]);
-          path_jerk = std::min(path_jerk, kSmoothJerkShare * limits_.jerk[i]);
-        }
+        const Weakest w = weakest(involved);
+        const double path_accel = w.acceleration, path_jerk = kSmoothJerkShare * w.jerk;
         const double speed = std::min(a.feed, feed);
         const bool beats_stop =
             blendCost(speed, path_accel, path_jerk, bl.velocity, blend.path.length(), d) <

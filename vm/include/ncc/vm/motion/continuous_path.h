@@ -68,6 +68,12 @@ class ContinuousPath {
   // vertices (end_curvature: 0 when its end is not a chain vertex).
   void queueHeld(const AxisValues& end, double end_curvature, double end_sagitta,
                  const AxisValues& next_direction, bool stop_after);
+  // The lowest acceleration and jerk limits among the axes in `involved` (infinite if none):
+  // what a path through those axes may use.
+  struct Weakest {
+    double acceleration, jerk;
+  };
+  Weakest weakest(const AxisValues& involved) const;
   // Highest speed at which the curvature may change by `step` (1/mm) within one cycle: the
   // acceleration step v^2 step reads as a jerk v^2 step / T on the axes in `involved`.
   double curvatureStepLimit(double step, const AxisValues& involved) const;
