@@ -367,6 +367,11 @@ TEST(AxisRapid, InvalidLimitsGiveNoMotion) {
   AxisValues bad = to;
   bad[0] = NAN;
   EXPECT_FALSE(AxisRapid::make(from, bad, equalLimits()).valid());
+  // possible() (the planner's check) says the same without planning.
+  EXPECT_FALSE(AxisRapid::possible(from, to, l));
+  EXPECT_TRUE(AxisRapid::possible(from, xyz(10, 0, 0), l));
+  EXPECT_FALSE(AxisRapid::possible(from, bad, equalLimits()));
+  EXPECT_TRUE(AxisRapid::possible(from, to, equalLimits()));
 }
 
 TEST(AxisRapid, DeterministicAndAllocationFree) {

@@ -10,24 +10,28 @@ bool positiveFinite(double x) { return x > 0.0 && std::isfinite(x); }
 
 }  // namespace
 
+bool AxisRapid::possible(const AxisValues& from, const AxisValues& to, const AxisLimits& limits) {
+  for (int i = 0; i < std::clamp(limits.count, 0, kMaxAxes); ++i) {
+    if (!std::isfinite(from[i]) || !std::isfinite(to[i])) return false;
+    if (to[i] == from[i]) continue;  // a standing axis needs no limits
+    if (!positiveFinite(limits.rapid_velocity[i]) || !positiveFinite(limits.acceleration[i]) ||
+        !positiveFinite(kSmoothJerkShare * limits.jerk[i]))
+      return false;
+  }
+  return true;
+}
+
 AxisRapid AxisRapid::make(const AxisValues& from, const AxisValues& to, const AxisLimits& limits) {
   AxisRapid r;
   r.count_ = std::clamp(limits.count, 0, kMaxAxes);
   r.from_ = from;
   r.to_ = to;
-  for (int i = 0; i < r.count_; ++i) {
-    if (!std::isfinite(from[i]) || !std::isfinite(to[i])) {
-      r.valid_ = false;
-      continue;
-    }
+  r.valid_ = possible(from, to, limits);
+  for (int i = 0; r.valid_ && i < r.count_; ++i) {
     if (to[i] == from[i]) continue;  // standing axis: empty profile, sign 0
     const double v = limits.rapid_velocity[i];
     const double a = limits.acceleration[i];
     const double j = kSmoothJerkShare * limits.jerk[i];
-    if (!positiveFinite(v) || !positiveFinite(a) || !positiveFinite(j)) {
-      r.valid_ = false;
-      continue;
-    }
     r.sign_[i] = to[i] > from[i] ? 1.0 : -1.0;
     r.profiles_[i] = planProfile(std::abs(to[i] - from[i]), 0.0, 0.0, v, a, j);
     r.duration_ = std::max(r.duration_, r.profiles_[i].duration);

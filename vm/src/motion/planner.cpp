@@ -86,7 +86,7 @@ bool MotionPlanner::push(const MotionPrimitive& m) {
     if (m.exact_stop) stop();
     return true;
   }
-  if (rapid && m.per_axis && AxisRapid::make(m.from, m.to, rapid_limits_).valid()) {
+  if (rapid && m.per_axis && AxisRapid::possible(m.from, m.to, rapid_limits_)) {
     // Non-linear positioning: its own piece, from rest to rest (interpolator.h).
     seg.per_axis = true;
     queue_.stopAfterLast();

@@ -33,6 +33,9 @@ class AxisRapid {
   // Requires finite positions and, for every axis that moves, positive finite limits (the
   // machine file guarantees them); otherwise valid() is false and the move has duration 0.
   static AxisRapid make(const AxisValues& from, const AxisValues& to, const AxisLimits& limits);
+  // Whether make() would give a valid rapid, without planning its profiles (the planner checks
+  // this when it queues the move; the interpolator makes it when the move starts).
+  static bool possible(const AxisValues& from, const AxisValues& to, const AxisLimits& limits);
 
   bool valid() const { return valid_; }
   int axisCount() const { return count_; }
