@@ -98,13 +98,16 @@ void BytecodeWriter::encode(const ir::Operation& op, const ir::Block& block) {
   using bytecode::Opcode;
   bytecode::Instruction in;
   const uint8_t exact = block.exact_stop ? bytecode::kFlagExactStop : 0;
+  // G63 tapping mode: the feed override is fixed at 100 % for the feed moves.
+  const uint8_t fixed_override =
+      block.modal.path == ir::PathControl::Tapping ? bytecode::kFlagFixedOverride : 0;
   if (const auto* r = std::get_if<ir::Rapid>(&op)) {
     in.op = Opcode::Rapid;
     in.flags = exact | (r->type == ir::RapidType::PerAxis ? bytecode::kFlagPerAxis : 0);
     in.axes = r->to;
   } else if (const auto* l = std::get_if<ir::Linear>(&op)) {
     in.op = Opcode::Line;
-    in.flags = exact | (l->feed_per_rev ? bytecode::kFlagFeedPerRev : 0);
+    in.flags = exact | fixed_override | (l->feed_per_rev ? bytecode::kFlagFeedPerRev : 0);
     in.value = l->feed;
     in.axes = l->to;
   } else if (const auto* a = std::get_if<ir::Arc>(&op)) {
@@ -118,7 +121,7 @@ void BytecodeWriter::encode(const ir::Operation& op, const ir::Block& block) {
       return;
     }
     in.op = Opcode::Arc;
-    in.flags = exact | (a->feed_per_rev ? bytecode::kFlagFeedPerRev : 0) |
+    in.flags = exact | fixed_override | (a->feed_per_rev ? bytecode::kFlagFeedPerRev : 0) |
                (a->clockwise ? bytecode::kFlagClockwise : 0);
     in.plane = arcPlane(a->plane);
     in.axis1 = static_cast<uint8_t>(axis1);

@@ -47,6 +47,13 @@ TEST(Verifier, RejectsUnknownFlagBits) {
   Assembler a(test::xyzHeader());
   a.rapid({0, 0, 0}, bytecode::kFlagClockwise).op(Opcode::End);  // CW is for arcs only
   EXPECT_EQ(verifyCode(a.finish()), "NCC7102");
+  // G63's fixed override (1.1) is for feed moves only.
+  Assembler rapid(test::xyzHeader());
+  rapid.rapid({0, 0, 0}, bytecode::kFlagFixedOverride).op(Opcode::End);
+  EXPECT_EQ(verifyCode(rapid.finish()), "NCC7102");
+  Assembler feed(test::xyzHeader());
+  feed.line({0, 0, 1}, 100.0, bytecode::kFlagFixedOverride).op(Opcode::End);
+  EXPECT_EQ(verifyCode(feed.finish()), "ok");
 }
 
 TEST(Verifier, RejectsNonFiniteAndNonPositiveOperands) {

@@ -143,6 +143,14 @@ class CliTest(unittest.TestCase):
         self.assertEqual(proc.returncode, 0)
         self.assertEqual(len(slurp(out).splitlines()), 4)
 
+    def disassemble(self, source):
+        ncb = source + ".ncb"
+        proc = ncc("compile", source, "-o", ncb)
+        self.assertEqual(proc.returncode, 0, proc.stderr)
+        proc = ncc("dis", ncb)
+        self.assertEqual(proc.returncode, 0, proc.stderr)
+        return proc.stdout
+
     def test_run_overrides_scale_the_program_time(self):
         # A single long G01 at F600: at 50 % feed override the cruise takes twice as long.
         prog = self.write("long.nc", "G21 G90 G94 G17\nG01 X100. F600.\nM30\n")
@@ -158,6 +166,17 @@ class CliTest(unittest.TestCase):
         t_full = float(re.search(r"program time +(\d+\.\d+) s", proc_full.stdout).group(1))
         t_slow = float(re.search(r"program time +(\d+\.\d+) s", proc_slow.stdout).group(1))
         self.assertGreater(t_slow, 3.0 * t_full)
+        # G63 (tapping mode) fixes the feed override at 100 % for its moves: the same time at
+        # 50 % as at 100 %; after G64 the override applies again.
+        tap = self.write("tap.nc", "G21 G90 G94 G17\nS500 M03\nG63 G01 Z-100. F600.\nM30\n")
+        self.assertIn("fixed-override", self.disassemble(tap))
+        tap_full = float(re.search(r"program time +(\d+\.\d+) s", ncc("run", tap).stdout).group(1))
+        tap_half = float(re.search(r"program time +(\d+\.\d+) s",
+                                   ncc("run", tap, "--feed-override=50").stdout).group(1))
+        self.assertEqual(tap_full, tap_half)
+        cut = self.write("cut.nc", "G21 G90 G94 G17\nG63 G01 Z-1. F600.\nG64 G01 X100. F600.\nM30\n")
+        listing = self.disassemble(cut)
+        self.assertEqual(listing.count("fixed-override"), 1, listing)
         for bad in ("--feed-override=0", "--feed-override=250", "--rapid-override=150"):
             proc = ncc("run", prog, bad)
             self.assertEqual(proc.returncode, 2, bad)

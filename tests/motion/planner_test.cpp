@@ -158,6 +158,11 @@ TEST(Planner, StaticOverridesScaleFeedAndRapid) {
   per_axis.per_axis = true;
   EXPECT_NEAR(top(1.0, 0.25, per_axis), 125.0, 1e-9);
   EXPECT_NEAR(top(0.5, 0.5, g00), 250.0, 1e-9);  // the feed override leaves rapids alone
+  // G63 tapping mode (MotionPrimitive::fixed_override): the programmed F at any override.
+  MotionPrimitive tap = line(xyz(0, 0, 0), xyz(0, 0, -100), 3000.0);
+  tap.fixed_override = true;
+  EXPECT_NEAR(top(0.5, 1.0, tap), 50.0, 1e-9);
+  EXPECT_NEAR(top(2.0, 1.0, tap), 50.0, 1e-9);
 }
 
 }  // namespace

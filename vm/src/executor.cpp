@@ -141,6 +141,7 @@ bool Executor::next(Event& out) {
         m.where = where(at);
         m.exact_stop = (in.flags & bytecode::kFlagExactStop) != 0;
         m.feed_per_rev = (in.flags & bytecode::kFlagFeedPerRev) != 0;
+        m.fixed_override = (in.flags & bytecode::kFlagFixedOverride) != 0;
         m.feed = in.value;
         if (in.op == Opcode::Dwell) {
           m.kind = MotionPrimitive::Kind::Dwell;

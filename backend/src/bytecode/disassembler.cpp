@@ -64,6 +64,7 @@ std::string operands(const Program& program, const Instruction& in) {
       out = absl::StrCat(axesText(program, in.axes, all), " F", formatNumber(in.value));
       flag(kFlagFeedPerRev, "per-rev");
       flag(kFlagExactStop, "exact-stop");
+      flag(kFlagFixedOverride, "fixed-override");
       break;
     case Opcode::Arc: {
       const uint8_t plane = static_cast<uint8_t>(in.plane);
@@ -76,6 +77,7 @@ std::string operands(const Program& program, const Instruction& in) {
       if (in.turns != 0) absl::StrAppend(&out, " turns ", in.turns);
       flag(kFlagFeedPerRev, "per-rev");
       flag(kFlagExactStop, "exact-stop");
+      flag(kFlagFixedOverride, "fixed-override");
       break;
     }
     case Opcode::Dwell:

@@ -19,8 +19,9 @@ constexpr std::array<OpcodeInfo, 256> makeTable() {
   };
   set(Opcode::End, "END", 0, 0, 0, false);
   set(Opcode::Rapid, "RAPID", kMotionFlags | kFlagPerAxis, 0, 0);
-  set(Opcode::Line, "LINE", kMotionFlags | kFlagFeedPerRev, 0, 0);
-  set(Opcode::Arc, "ARC", kMotionFlags | kFlagFeedPerRev | kFlagClockwise, 0, 0);
+  set(Opcode::Line, "LINE", kMotionFlags | kFlagFeedPerRev | kFlagFixedOverride, 0, 0);
+  set(Opcode::Arc, "ARC", kMotionFlags | kFlagFeedPerRev | kFlagClockwise | kFlagFixedOverride,
+      0, 0);
   set(Opcode::Dwell, "DWELL", kFlagRevolutions, 0, 0);
   set(Opcode::SpindleSpeed, "SPINDLE_SPEED", 0, 0, 0);
   set(Opcode::SpindleCW, "SPINDLE_CW", 0, 0, 0);

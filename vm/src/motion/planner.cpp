@@ -65,7 +65,9 @@ bool MotionPlanner::push(const MotionPrimitive& m) {
     return true;
   }
   const bool rapid = m.kind == MotionPrimitive::Kind::Rapid;
-  double feed = (m.feed_per_rev ? m.feed * spindle_rpm_ / 60.0 : m.feed / 60.0) * feed_override_;
+  // G63 (tapping without an encoder): the tap's pitch is F / S, so the feed runs at 100 %.
+  const double override = m.fixed_override ? 1.0 : feed_override_;
+  double feed = (m.feed_per_rev ? m.feed * spindle_rpm_ / 60.0 : m.feed / 60.0) * override;
   if (!rapid) feed = std::max(feed, kMinPathVelocity);
   if (m.kind == MotionPrimitive::Kind::Line) {
     // A line that does not move counts only for its exact stop.

@@ -9,7 +9,7 @@ namespace ncc::bytecode {
 
 inline constexpr char kMagic[4] = {'N', 'C', 'C', 'B'};
 inline constexpr uint16_t kVersionMajor = 1;
-inline constexpr uint16_t kVersionMinor = 0;
+inline constexpr uint16_t kVersionMinor = 1;
 
 // Fixed part of the header; the axis table (kAxisEntrySize bytes per axis) follows it and the
 // code section starts right after the axis table.
@@ -81,6 +81,7 @@ inline constexpr uint8_t kFlagExactStop = 0x02;   // RAPID, LINE, ARC: stop at t
 inline constexpr uint8_t kFlagPerAxis = 0x04;     // RAPID: axes move independently (non-linear G00)
 inline constexpr uint8_t kFlagClockwise = 0x08;   // ARC: G02
 inline constexpr uint8_t kFlagRevolutions = 0x10; // DWELL: amount in spindle revolutions
+inline constexpr uint8_t kFlagFixedOverride = 0x20; // LINE, ARC: feed override fixed at 100 % (G63)
 
 enum class ArcPlane : uint8_t { XY = 0, ZX = 1, YZ = 2 };  // G17 G18 G19
 

@@ -31,6 +31,7 @@ struct MotionPrimitive {
   double feed = 0.0;          // Line/Arc: mm/min, or mm/rev when feed_per_rev
   bool feed_per_rev = false;
   bool exact_stop = false;    // decelerate to a stop at the end (G09 / G61)
+  bool fixed_override = false;  // Line/Arc: the feed override does not apply (G63 tapping)
   bool per_axis = false;      // Rapid: axes move independently (non-linear G00)
   double seconds = 0.0;       // Dwell: seconds, or spindle revolutions when `revolutions`
   bool revolutions = false;
