@@ -80,20 +80,76 @@ SegmentLimits segmentLimits(const PathSegment& path, const AxisLimits& axes, boo
   const double v = lim.velocity;
 
   // Tangential acceleration and jerk: what the axis limits leave at that speed.
+  TangentialBudget budget;
   for (int i = 0; i < axes.count; ++i) {
     if (t[i] == 0.0 && (!curved || q[i] == 0.0)) continue;
     const double centripetal = curved ? v * v * kappa * q[i] : 0.0;
     const double rotation = curved ? v * v * v * rate * q[i] : 0.0;
     const double acc_left = axes.acceleration[i] - q[i] * wiggle_acc - centripetal;
     const double jerk_left = kSmoothJerkShare * axes.jerk[i] - q[i] * wiggle_jerk - rotation;
-    if (t[i] > 0.0) {
-      lim.acceleration = std::min(lim.acceleration, acc_left / t[i]);
-      lim.jerk = std::min(lim.jerk, (curved ? 0.5 : 1.0) * jerk_left / t[i]);
-    }
-    if (curved && q[i] > 0.0 && v > 0.0)  // the cross term 3 v a_t k_i
-      lim.acceleration = std::min(lim.acceleration, 0.5 * jerk_left / (3.0 * v * kappa * q[i]));
+    if (t[i] > 0.0) lim.acceleration = std::min(lim.acceleration, acc_left / t[i]);
+    // The cross term 3 v a_t k_i (curves) shares jerk_left with j_t t_i.
+    budget.add(t[i], curved ? 3.0 * v * kappa * q[i] : 0.0, jerk_left);
   }
+  budget.split(v, lim.acceleration, lim.jerk);
   return lim;
+}
+
+void TangentialBudget::add(double tangent, double cross, double jerk_left) {
+  if (count_ >= kMaxAxes) return;
+  rows_[count_++] = {tangent, cross, jerk_left};
+}
+
+double TangentialBudget::jerkAt(double a) const {
+  double j = kInf;
+  for (int k = 0; k < count_; ++k) {
+    const Row& r = rows_[k];
+    if (r.tangent > 0.0) j = std::min(j, (r.jerk_left - r.cross * a) / r.tangent);
+  }
+  return j;
+}
+
+void TangentialBudget::split(double v, double& acceleration, double& jerk) const {
+  // The largest a_t that leaves every axis some jerk (j_t > 0), and no more than `acceleration`.
+  double a_max = acceleration;
+  for (int k = 0; k < count_; ++k)
+    if (rows_[k].cross > 0.0) a_max = std::min(a_max, rows_[k].jerk_left / rows_[k].cross);
+  if (!(a_max > 0.0) || !(v > 0.0)) {
+    // Nothing to share (or no room at all): the plain limits.
+    acceleration = std::min(acceleration, a_max);
+    jerk = std::min(jerk, jerkAt(0.0));
+    return;
+  }
+  // A ramp over dv = v takes about v / a + a / j(a). Candidates: for each axis, the a that
+  // minimises it were that axis alone binding, a = J' / (c + sqrt(J' t / v)) (docs/planner.md),
+  // and a_max itself; the best feasible one wins. On a line (c = 0) this is a_max with the
+  // full jerk.
+  double best_a = 0.0, best_time = kInf, best_j = 0.0;
+  auto consider = [&](double a) {
+    a = std::min(a, a_max);
+    if (!(a > 0.0)) return;
+    const double j = jerkAt(a);
+    if (!(j > 0.0)) return;
+    const double time = v / a + a / j;
+    if (time < best_time) {
+      best_time = time;
+      best_a = a;
+      best_j = j;
+    }
+  };
+  consider(a_max);
+  for (int k = 0; k < count_; ++k) {
+    const Row& r = rows_[k];
+    if (r.cross > 0.0 && r.tangent > 0.0 && r.jerk_left > 0.0)
+      consider(r.jerk_left / (r.cross + std::sqrt(r.jerk_left * r.tangent / v)));
+  }
+  if (best_time == kInf) {  // no a with positive jerk left: creep (limits stay positive)
+    acceleration = std::min(acceleration, 0.5 * a_max);
+    jerk = std::min(jerk, std::max(jerkAt(acceleration), 0.0));
+    return;
+  }
+  acceleration = best_a;
+  jerk = std::min(jerk, best_j);
 }
 
 double junctionVelocity(const PathSegment& a, const PathSegment& b, const AxisLimits& axes) {

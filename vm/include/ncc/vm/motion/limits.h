@@ -55,6 +55,28 @@ struct AxisLimits {
   static AxisLimits from(const MachineConfig& machine);
 };
 
+// The choice of tangential acceleration a_t and jerk j_t on a segment. Per axis i the
+// tangential jerk j_t t_i and, on a curve, the cross term c_i a_t (c_i = 3 v k_i) share the jerk
+// left after the curvature's rotation, J'_i: j_t t_i + c_i a_t <= J'_i. split() picks the a_t
+// (and with it the largest j_t) that makes a ramp over the top speed v shortest, v/a + a/j,
+// instead of a fixed half-and-half (docs/planner.md, "Limits").
+class TangentialBudget {
+ public:
+  void add(double tangent, double cross, double jerk_left);
+  // `acceleration` in: the bound from the axis accelerations; out: the chosen a_t. `jerk` in:
+  // any bound already set; out: j_t.
+  void split(double v, double& acceleration, double& jerk) const;
+
+ private:
+  struct Row {
+    double tangent, cross, jerk_left;
+  };
+  // The largest j_t every axis allows when a_t = a.
+  double jerkAt(double a) const;
+  std::array<Row, kMaxAxes> rows_{};
+  int count_ = 0;
+};
+
 // Limits along the path of one segment.
 struct SegmentLimits {
   double velocity = 0.0;      // mm/s
