@@ -134,23 +134,32 @@ TEST(CornerBlend, IsParametrisedByArcLength) {
   }
 }
 
+// The largest curvature |d2x/ds2| and curvature rate (finite differences of the curvature
+// vector) over n equal steps of the blend.
+struct Sampled {
+  double curvature, rate;
+};
+Sampled sampledCurvature(const CornerBlend& b, int n) {
+  const double h = b.length() / n;
+  Sampled top{0.0, 0.0};
+  AxisValues prev{};
+  b.curvature(0.0, prev);
+  for (int k = 1; k <= n; ++k) {
+    AxisValues kv{};
+    b.curvature(h * k, kv);
+    top.curvature = std::max(top.curvature, norm(kv));
+    AxisValues dk{};
+    for (int i = 0; i < kAxes; ++i) dk[i] = (kv[i] - prev[i]) / h;
+    top.rate = std::max(top.rate, norm(dk));
+    prev = kv;
+  }
+  return top;
+}
+
 TEST(CornerBlend, CurvatureStaysWithinItsBounds) {
   for (const Corner& c : corners()) {
     const CornerBlend b = CornerBlend::make(c.corner, c.in, c.out, c.d, kAxes);
-    const int n = 3000;
-    const double h = b.length() / n;
-    double top = 0.0, top_rate = 0.0;
-    AxisValues prev{};
-    b.curvature(0.0, prev);
-    for (int k = 1; k <= n; ++k) {
-      AxisValues kv{};
-      b.curvature(h * k, kv);
-      top = std::max(top, norm(kv));
-      AxisValues dk{};
-      for (int i = 0; i < kAxes; ++i) dk[i] = (kv[i] - prev[i]) / h;
-      top_rate = std::max(top_rate, norm(dk));
-      prev = kv;
-    }
+    const auto [top, top_rate] = sampledCurvature(b, 3000);
     EXPECT_LE(top, b.maxCurvature());
     EXPECT_GT(top, 0.9 * b.maxCurvature());
     EXPECT_LE(top_rate, b.maxCurvatureRate());
@@ -169,20 +178,7 @@ TEST(CornerBlend, TabulatedBoundsHoldBetweenTableAngles) {
     const double d = k % 3 == 0 ? 0.004 : k % 3 == 1 ? 0.5 : 12.0;
     const CornerBlend b = CornerBlend::make(corner, unit(0, 1, 0),
                                             unit(0, std::cos(th), std::sin(th)), d, kAxes);
-    const int n = 1500;
-    const double h = b.length() / n;
-    double top = 0.0, top_rate = 0.0;
-    AxisValues prev{};
-    b.curvature(0.0, prev);
-    for (int i = 1; i <= n; ++i) {
-      AxisValues kv{};
-      b.curvature(h * i, kv);
-      top = std::max(top, norm(kv));
-      AxisValues dk{};
-      for (int a = 0; a < kAxes; ++a) dk[a] = (kv[a] - prev[a]) / h;
-      top_rate = std::max(top_rate, norm(dk));
-      prev = kv;
-    }
+    const auto [top, top_rate] = sampledCurvature(b, 1500);
     EXPECT_LE(top, b.maxCurvature()) << th;
     EXPECT_GT(top, b.maxCurvature() / 1.06) << th;
     EXPECT_LE(top_rate, b.maxCurvatureRate()) << th;
