@@ -1,8 +1,9 @@
 // The tangential budget on curves (limits.h TangentialBudget): the split of each axis' jerk
-// between the tangential jerk and the cross term 3 v a_t k_i that makes a ramp shortest, and
-// the constraints it must keep.
+// between the tangential jerk and the cross term 3 v k a_t that makes a ramp shortest, under
+// the sum-form and norm-form bounds, and the constraints it must keep.
 #include "ncc/vm/motion/limits.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "gtest/gtest.h"
@@ -12,36 +13,63 @@ namespace {
 
 double rampTime(double v, double a, double j) { return v / a + a / j; }
 
-TEST(TangentialBudget, OneAxisTakesTheClosedFormOptimum) {
-  // r 10 mm circle at 100 mm/s: c = 3 v k = 30 /s, J' = 35000 mm/s^3, A left 1000 mm/s^2.
+// Within its limit by at least one of the two bounds.
+bool withinLimit(const TangentialBudget::Axis& x, double a, double j) {
+  const double tol = 1e-12 * std::max(x.jerk_left, x.norm_jerk_left);
+  const bool sum = j * x.tangent + x.cross * a <= x.jerk_left + tol;
+  const bool norm = x.norm_cross > 0.0 &&
+                    std::hypot(j, x.norm_cross * a) <= x.norm_jerk_left + tol;
+  return sum || norm;
+}
+
+TEST(TangentialBudget, SumFormAloneReachesTheClosedFormOptimum) {
+  // r 10 mm circle at 100 mm/s, the sum form only: c = 3 v k = 30 /s, J' = 35000 mm/s^3.
   TangentialBudget b;
-  b.add(1.0, 30.0, 35000.0);
+  b.add({1.0, 30.0, 35000.0, 0.0, 0.0});
   double a = 1000.0, j = INFINITY;
   b.split(100.0, a, j);
-  const double expected = 35000.0 / (30.0 + std::sqrt(35000.0 / 100.0));
-  EXPECT_NEAR(a, expected, 1e-9 * expected);
-  EXPECT_NEAR(j, 35000.0 - 30.0 * a, 1e-9 * j);
-  // It beats the old half-and-half split and any nearby a.
-  EXPECT_LT(rampTime(100.0, a, j), rampTime(100.0, 35000.0 / 60.0, 17500.0));
-  for (double f : {0.9, 0.95, 1.05, 1.1})
-    EXPECT_LT(rampTime(100.0, a, j), rampTime(100.0, f * a, 35000.0 - 30.0 * f * a));
+  const double a_opt = 35000.0 / (30.0 + std::sqrt(35000.0 / 100.0));
+  const double best = rampTime(100.0, a_opt, 35000.0 - 30.0 * a_opt);
+  EXPECT_NEAR(rampTime(100.0, a, j), best, 1e-6 * best);
+  EXPECT_NEAR(a, a_opt, 2e-3 * a_opt);
+  EXPECT_TRUE(withinLimit({1.0, 30.0, 35000.0, 0.0, 0.0}, a, j));
+}
+
+TEST(TangentialBudget, NormFormOnTheCurvesPlaneIsFaster) {
+  // The same axis with the norm form: sqrt(j^2 + (30 a)^2) <= 35000 allows more of both.
+  const TangentialBudget::Axis axis{1.0, 30.0, 35000.0, 30.0, 35000.0};
+  TangentialBudget b;
+  b.add(axis);
+  double a = 1700.0, j = INFINITY;
+  b.split(100.0, a, j);
+  EXPECT_TRUE(withinLimit(axis, a, j));
+  const double a_sum = 35000.0 / (30.0 + std::sqrt(35000.0 / 100.0));
+  EXPECT_LT(rampTime(100.0, a, j), 0.85 * rampTime(100.0, a_sum, 35000.0 - 30.0 * a_sum));
+  // And it is the optimum of the norm form: no nearby a does better.
+  for (double f : {0.9, 0.97, 1.03, 1.1}) {
+    const double af = f * a;
+    const double jf = std::sqrt(35000.0 * 35000.0 - 900.0 * af * af);
+    EXPECT_LE(rampTime(100.0, a, j), rampTime(100.0, af, jf) * (1.0 + 1e-6)) << f;
+  }
 }
 
 TEST(TangentialBudget, KeepsEveryAxisWithinItsJerkAndTheAccelerationBound) {
+  const TangentialBudget::Axis axes[3] = {{1.0, 30.0, 35000.0, 30.0, 34000.0},
+                                          {0.6, 45.0, 20000.0, 0.0, 0.0},
+                                          {0.0, 12.0, 900.0, 20.0, 1200.0}};
   TangentialBudget b;
-  const double t[3] = {1.0, 0.6, 0.0}, c[3] = {30.0, 45.0, 12.0}, left[3] = {35000.0, 20000.0, 900.0};
-  for (int i = 0; i < 3; ++i) b.add(t[i], c[i], left[i]);
+  for (const auto& x : axes) b.add(x);
   double a = 500.0, j = INFINITY;  // 500: what the axis accelerations leave
   b.split(80.0, a, j);
   EXPECT_GT(a, 0.0);
   EXPECT_LE(a, 500.0);
   EXPECT_GT(j, 0.0);
-  for (int i = 0; i < 3; ++i) EXPECT_LE(j * t[i] + c[i] * a, left[i] * (1.0 + 1e-12)) << i;
+  for (int i = 0; i < 3; ++i) EXPECT_TRUE(withinLimit(axes[i], a, j)) << i;
 }
 
 TEST(TangentialBudget, OnALineTakesTheFullLimits) {
   TangentialBudget b;
-  b.add(0.8, 0.0, 45000.0);
+  b.add({0.8, 0.0, 45000.0, 0.0, 0.0});
   double a = 2500.0, j = INFINITY;
   b.split(50.0, a, j);
   EXPECT_EQ(a, 2500.0);

@@ -79,77 +79,110 @@ SegmentLimits segmentLimits(const PathSegment& path, const AxisLimits& axes, boo
   }
   const double v = lim.velocity;
 
-  // Tangential acceleration and jerk: what the axis limits leave at that speed.
+  // Tangential acceleration and jerk: what the axis limits leave at that speed. Two bounds
+  // hold for every axis (docs/planner.md, "Limits"), and an axis is within its limit if
+  // either is: the sum of the parts' shares, a_t t_i + v^2 k q_i, and the norm of the whole
+  // vector, sqrt(a_t^2 + (v^2 k)^2) (the tangent and the normal are orthogonal).
   TangentialBudget budget;
+  const double centripetal = curved ? v * v * kappa : 0.0;
+  const double cross = curved ? 3.0 * v * kappa : 0.0;  // the cross term 3 v a_t k, per a_t
+  const double rotation = curved ? v * v * v * rate : 0.0;
   for (int i = 0; i < axes.count; ++i) {
     if (t[i] == 0.0 && (!curved || q[i] == 0.0)) continue;
-    const double centripetal = curved ? v * v * kappa * q[i] : 0.0;
-    const double rotation = curved ? v * v * v * rate * q[i] : 0.0;
-    const double acc_left = axes.acceleration[i] - q[i] * wiggle_acc - centripetal;
-    const double jerk_left = kSmoothJerkShare * axes.jerk[i] - q[i] * wiggle_jerk - rotation;
-    if (t[i] > 0.0) lim.acceleration = std::min(lim.acceleration, acc_left / t[i]);
-    // The cross term 3 v a_t k_i (curves) shares jerk_left with j_t t_i.
-    budget.add(t[i], curved ? 3.0 * v * kappa * q[i] : 0.0, jerk_left);
+    const double acc = axes.acceleration[i] - q[i] * wiggle_acc;
+    double a_i = kInf;
+    if (t[i] > 0.0) a_i = (acc - centripetal * q[i]) / t[i];
+    else if (acc < centripetal * q[i]) a_i = -kInf;
+    if (curved && q[i] > 0.0 && acc >= centripetal)
+      a_i = std::max(a_i, std::sqrt(acc * acc - centripetal * centripetal));
+    lim.acceleration = std::min(lim.acceleration, a_i);
+    const double jerk = kSmoothJerkShare * axes.jerk[i] - q[i] * wiggle_jerk;
+    budget.add({t[i], cross * q[i], jerk - rotation * q[i],
+                curved && q[i] > 0.0 ? cross : 0.0, curved && q[i] > 0.0 ? jerk - rotation : 0.0});
   }
   budget.split(v, lim.acceleration, lim.jerk);
   return lim;
 }
 
-void TangentialBudget::add(double tangent, double cross, double jerk_left) {
+void TangentialBudget::add(const Axis& axis) {
   if (count_ >= kMaxAxes) return;
-  rows_[count_++] = {tangent, cross, jerk_left};
+  axes_[count_++] = axis;
 }
 
 double TangentialBudget::jerkAt(double a) const {
   double j = kInf;
   for (int k = 0; k < count_; ++k) {
-    const Row& r = rows_[k];
-    if (r.tangent > 0.0) j = std::min(j, (r.jerk_left - r.cross * a) / r.tangent);
+    const Axis& x = axes_[k];
+    // Sum form: j t + c a <= J'.
+    double allowed = -kInf;
+    if (x.tangent > 0.0) allowed = (x.jerk_left - x.cross * a) / x.tangent;
+    else if (x.cross * a <= x.jerk_left) allowed = kInf;
+    // Norm form: sqrt(j^2 + (m a)^2) <= J''.
+    if (x.norm_cross > 0.0 && x.norm_jerk_left >= x.norm_cross * a) {
+      const double m = x.norm_cross * a;
+      allowed = std::max(allowed, std::sqrt(x.norm_jerk_left * x.norm_jerk_left - m * m));
+    }
+    j = std::min(j, allowed);
   }
   return j;
 }
 
 void TangentialBudget::split(double v, double& acceleration, double& jerk) const {
-  // The largest a_t that leaves every axis some jerk (j_t > 0), and no more than `acceleration`.
-  double a_max = acceleration;
-  for (int k = 0; k < count_; ++k)
-    if (rows_[k].cross > 0.0) a_max = std::min(a_max, rows_[k].jerk_left / rows_[k].cross);
-  if (!(a_max > 0.0) || !(v > 0.0)) {
-    // Nothing to share (or no room at all): the plain limits.
-    acceleration = std::min(acceleration, a_max);
-    jerk = std::min(jerk, jerkAt(0.0));
+  const double a_max = acceleration;
+  if (!(a_max > 0.0) || !(v > 0.0) || !(jerkAt(a_max) < jerkAt(0.0))) {
+    // Nothing to share (a line: the jerk does not depend on a_t), or no room at all.
+    jerk = std::min(jerk, jerkAt(a_max > 0.0 ? a_max : 0.0));
     return;
   }
-  // A ramp over dv = v takes about v / a + a / j(a). Candidates: for each axis, the a that
-  // minimises it were that axis alone binding, a = J' / (c + sqrt(J' t / v)) (docs/planner.md),
-  // and a_max itself; the best feasible one wins. On a line (c = 0) this is a_max with the
-  // full jerk.
-  double best_a = 0.0, best_time = kInf, best_j = 0.0;
-  auto consider = [&](double a) {
-    a = std::min(a, a_max);
-    if (!(a > 0.0)) return;
+  // A ramp over dv = v takes about v / a + a / j(a): the a_t that makes it shortest, by a
+  // golden-section search (with either form alone j(a) is concave and decreasing, so the time
+  // is unimodal in a), then the largest j_t at that a_t.
+  auto time = [&](double a) {
     const double j = jerkAt(a);
-    if (!(j > 0.0)) return;
-    const double time = v / a + a / j;
-    if (time < best_time) {
-      best_time = time;
-      best_a = a;
-      best_j = j;
+    return j > 0.0 ? v / a + a / j : kInf;
+  };
+  constexpr double kGolden = 0.6180339887498949;
+  double lo = 1e-3 * a_max, hi = a_max;
+  double x1 = hi - kGolden * (hi - lo), x2 = lo + kGolden * (hi - lo);
+  double f1 = time(x1), f2 = time(x2);
+  for (int i = 0; i < kSplitSteps; ++i) {
+    if (f1 <= f2) {
+      hi = x2;
+      x2 = x1;
+      f2 = f1;
+      x1 = hi - kGolden * (hi - lo);
+      f1 = time(x1);
+    } else {
+      lo = x1;
+      x1 = x2;
+      f1 = f2;
+      x2 = lo + kGolden * (hi - lo);
+      f2 = time(x2);
     }
+  }
+  // The search assumes one minimum; where the bound switches forms on some axis there may be
+  // two, so also try a_max and each axis' sum-form optimum a = J' / (c + sqrt(J' t / v)).
+  double best = f1 <= f2 ? x1 : x2;
+  double best_time = std::min(f1, f2);
+  auto consider = [&](double a) {
+    if (!(a > 0.0 && a <= a_max)) return;
+    const double f = time(a);
+    if (f < best_time) best_time = f, best = a;
   };
   consider(a_max);
   for (int k = 0; k < count_; ++k) {
-    const Row& r = rows_[k];
-    if (r.cross > 0.0 && r.tangent > 0.0 && r.jerk_left > 0.0)
-      consider(r.jerk_left / (r.cross + std::sqrt(r.jerk_left * r.tangent / v)));
+    const Axis& x = axes_[k];
+    if (x.cross > 0.0 && x.tangent > 0.0 && x.jerk_left > 0.0)
+      consider(x.jerk_left / (x.cross + std::sqrt(x.jerk_left * x.tangent / v)));
   }
-  if (best_time == kInf) {  // no a with positive jerk left: creep (limits stay positive)
-    acceleration = std::min(acceleration, 0.5 * a_max);
+  const double j = jerkAt(best);
+  if (!(j > 0.0)) {  // no a_t with jerk left: creep (the limits stay positive)
+    acceleration = 0.5 * a_max;
     jerk = std::min(jerk, std::max(jerkAt(acceleration), 0.0));
     return;
   }
-  acceleration = best_a;
-  jerk = std::min(jerk, best_j);
+  acceleration = best;
+  jerk = std::min(jerk, j);
 }
 
 double junctionVelocity(const PathSegment& a, const PathSegment& b, const AxisLimits& axes) {

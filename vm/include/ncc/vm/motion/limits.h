@@ -55,25 +55,36 @@ struct AxisLimits {
   static AxisLimits from(const MachineConfig& machine);
 };
 
-// The choice of tangential acceleration a_t and jerk j_t on a segment. Per axis i the
-// tangential jerk j_t t_i and, on a curve, the cross term c_i a_t (c_i = 3 v k_i) share the jerk
-// left after the curvature's rotation, J'_i: j_t t_i + c_i a_t <= J'_i. split() picks the a_t
-// (and with it the largest j_t) that makes a ramp over the top speed v shortest, v/a + a/j,
-// instead of a fixed half-and-half (docs/planner.md, "Limits").
+// The choice of tangential acceleration a_t and jerk j_t on a segment. The axis jerk on a
+// curve is the i-th component of j_t T + 3 v k a_t N + v^3 R (T, N orthogonal unit vectors,
+// |R| = rho). Two bounds on it hold, and the axis is within its limit if either is:
+//  - sum form: j_t t_i + c_i a_t <= J'_i, with c_i = 3 v k q_i and J'_i what is left after
+//    the rotation v^3 rho q_i;
+//  - norm form (axes on the curve's plane): sqrt(j_t^2 + (3 v k a_t)^2) <= J''_i, with J''_i
+//    what is left after v^3 rho.
+// split() picks the a_t (and with it the largest j_t) that makes a ramp over the top speed v
+// shortest, v/a + a/j (docs/planner.md, "Limits").
 class TangentialBudget {
  public:
-  void add(double tangent, double cross, double jerk_left);
+  struct Axis {
+    double tangent;         // t_i
+    double cross;           // c_i (sum form)
+    double jerk_left;       // J'_i
+    double norm_cross;      // 3 v k (0: no norm form for this axis)
+    double norm_jerk_left;  // J''_i
+  };
+  // Golden-section steps of split(): the optimum's time to about 1e-4.
+  static constexpr int kSplitSteps = 24;
+
+  void add(const Axis& axis);
   // `acceleration` in: the bound from the axis accelerations; out: the chosen a_t. `jerk` in:
   // any bound already set; out: j_t.
   void split(double v, double& acceleration, double& jerk) const;
 
  private:
-  struct Row {
-    double tangent, cross, jerk_left;
-  };
   // The largest j_t every axis allows when a_t = a.
   double jerkAt(double a) const;
-  std::array<Row, kMaxAxes> rows_{};
+  std::array<Axis, kMaxAxes> axes_{};
   int count_ = 0;
 };
 
