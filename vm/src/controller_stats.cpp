@@ -61,9 +61,9 @@ void StatisticsAccumulator::add(uint64_t k, double time, const AxisValues& comma
     const double p = e[i] - along * direction_[i];
     perpendicular2 += p * p;
   }
-  const double contour = std::sqrt(perpendicular2);
-  if (contour > stats_.max_contour_error) {
-    stats_.max_contour_error = contour;
+  // Compared squared: the root only for a new largest value.
+  if (perpendicular2 > stats_.max_contour_error * stats_.max_contour_error) {
+    stats_.max_contour_error = std::sqrt(perpendicular2);
     stats_.max_contour_error_tick = k;
   }
 
