@@ -186,5 +186,30 @@ TEST(CornerBlend, TabulatedBoundsHoldBetweenTableAngles) {
   }
 }
 
+// Small turns (up to 0.05 rad, what CAM polylines mostly have) are inverted by interpolation
+// alone, without a Newton step: still arc length to about 1e-12 of a 1/4000 step.
+TEST(CornerBlend, SmallTurnsAreParametrisedByArcLengthWithoutNewton) {
+  const AxisValues corner = unit(2.0, -1.0, 0.5);
+  for (double th : {0.001, 0.01, 0.03, 0.0499}) {
+    for (double d : {0.005, 0.3, 20.0}) {
+      const CornerBlend b = CornerBlend::make(corner, unit(1, 0, 0),
+                                              unit(std::cos(th), 0, std::sin(th)), d, kAxes);
+      const int n = 4000;
+      const double step = b.length() / n;
+      AxisValues prev{}, p{};
+      b.position(0.0, prev);
+      for (int k = 1; k <= n; ++k) {
+        b.position(step * k, p);
+        // The chord of an arc of length h on curvature k is shorter by at most (k h)^2 / 24.
+        const double kh = b.maxCurvature() * step;
+        const double chord = distance(p, prev);
+        ASSERT_LE(chord, step * (1.0 + 1e-10)) << th << " " << d << " " << k;
+        ASSERT_GE(chord, step * (1.0 - kh * kh / 24.0 - 1e-10)) << th << " " << d << " " << k;
+        prev = p;
+      }
+    }
+  }
+}
+
 }  // namespace
 }  // namespace ncc::vm::motion

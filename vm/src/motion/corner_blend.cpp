@@ -148,12 +148,19 @@ CornerBlend CornerBlend::make(const AxisValues& corner, const AxisValues& u_in,
     b.s_table_[k + 1] = b.s_table_[k] + b.arcLength(t0, t1);
   }
 
-  b.speed_table_[0] = b.speed(0.0);
-  for (int k = 1; k <= kTableSteps; ++k)
-    b.speed_table_[k] = b.speed(static_cast<double>(k) / kTableSteps);
+  for (int k = 0; k <= kTableSteps; ++k) {
+    const double t = static_cast<double>(k) / kTableSteps;
+    double dx, dy;
+    b.derivative(t, dx, dy);
+    const double sp2 = dx * dx + dy * dy;
+    b.speed_table_[k] = std::sqrt(sp2);
+    // t''(s) = -(c' . c'') / |c'|^4
+    b.dtds2_table_[k] = -(dx * horner(b.ax_, t) + dy * horner(b.ay_, t)) / (sp2 * sp2);
+  }
 
   // Curvature bounds: the d = 1 table at theta, scaled.
   const double theta = std::atan2(sin_t, cos_t);
+  b.interpolation_exact_ = theta <= kInterpolationExactTurn;
   const double cell = std::clamp(theta / kMaxTurn, 0.0, 1.0) * kBoundAngles;
   const int lo = std::min(static_cast<int>(cell), kBoundAngles - 1);
   const UnitBounds& unit = unitBounds();
@@ -189,18 +196,22 @@ double CornerBlend::parameterAt(double s) const {
   const double t0 = static_cast<double>(k) / kTableSteps;
   const double t1 = static_cast<double>(k + 1) / kTableSteps;
   const double s0 = s_table_[k], s1 = s_table_[k + 1];
-  // Cubic Hermite guess of t(s) in the step (dt/ds = 1/speed at both ends), then one Newton
-  // step on S(t) - s (the speed is its derivative): the guess is within about 1e-8 of the
-  // step, so Newton's quadratic convergence reaches rounding.
+  // Quintic Hermite interpolation of t(s) over the step, from t, dt/ds = 1/|c'| and
+  // d2t/ds2 at both ends (u = (s - s0) / h, derivatives per unit u). For small turns the speed
+  // hardly changes and this is t to about 1e-14 (corner_blend_test checks it); otherwise one
+  // Newton step on S(t) - s (the speed is its derivative) from it reaches rounding.
   const double h = s1 - s0;
   const double u = (s - s0) / h;
-  const double m0 = h * kTableSteps / speed_table_[k], m1 = h * kTableSteps / speed_table_[k + 1];
-  const double u2 = u * u, u3 = u2 * u;
-  const double frac = (3.0 * u2 - 2.0 * u3) + (u3 - 2.0 * u2 + u) * m0 + (u3 - u2) * m1;
-  double t = t0 + (t1 - t0) * frac;
-  t -= (s0 + arcLength(t0, t) - s) / speed(t);
-  t = std::clamp(t, t0, t1);
-  return t;
+  const double m0 = h / speed_table_[k], m1 = h / speed_table_[k + 1];
+  const double a0 = h * h * dtds2_table_[k], a1 = h * h * dtds2_table_[k + 1];
+  const double u2 = u * u, u3 = u2 * u, u4 = u3 * u, u5 = u4 * u;
+  double t = (1.0 - 10.0 * u3 + 15.0 * u4 - 6.0 * u5) * t0 +
+             (u - 6.0 * u3 + 8.0 * u4 - 3.0 * u5) * m0 +
+             (0.5 * u2 - 1.5 * u3 + 1.5 * u4 - 0.5 * u5) * a0 +
+             (0.5 * u3 - u4 + 0.5 * u5) * a1 + (-4.0 * u3 + 7.0 * u4 - 3.0 * u5) * m1 +
+             (10.0 * u3 - 15.0 * u4 + 6.0 * u5) * t1;
+  if (!interpolation_exact_) t -= (s0 + arcLength(t0, t) - s) / speed(t);
+  return std::clamp(t, t0, t1);
 }
 
 void CornerBlend::position(double s, AxisValues& out) const {

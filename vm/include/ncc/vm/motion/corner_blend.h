@@ -14,7 +14,8 @@
 // (docs/planner.md, "Corner blending").
 //
 // Arc length: a table of s at 32 equal steps of the Bezier parameter (5-point Gauss-Legendre
-// per step), inverted by a Hermite guess and a Newton step; exact to rounding. Curvature
+// per step), inverted by quintic Hermite interpolation (and, for turns above 3 degrees, a
+// Newton step); exact to about 1e-14. Curvature
 // bounds come from a table over the turning angle, computed once per process. Everything is a pure function of
 // the construction arguments: no allocation, no throw.
 #include <array>
@@ -82,6 +83,11 @@ class CornerBlend {
   std::array<double, 4> ax_{}, ay_{};
   std::array<double, kTableSteps + 1> s_table_{};      // path length at t = k / kTableSteps
   std::array<double, kTableSteps + 1> speed_table_{};  // |dc/dt| there
+  std::array<double, kTableSteps + 1> dtds2_table_{};  // d2t/ds2 there
+  // Turns up to this angle: the quintic Hermite interpolation of t(s) is exact to about 1e-14
+  // without a Newton step.
+  static constexpr double kInterpolationExactTurn = 0.05;
+  bool interpolation_exact_ = false;
   double max_curvature_ = 0.0;
   double max_curvature_rate_ = 0.0;
 };
