@@ -2,8 +2,8 @@
 
 #include <algorithm>
 #include <bit>
-#include <cstdint>
 #include <cmath>
+#include <cstdint>
 
 namespace ncc::vm::motion {
 
@@ -88,6 +88,7 @@ Interpolator::PiecePlan Interpolator::planPiece(const PieceInputs& in) const {
 }
 
 void Interpolator::planNextPiece(const LookAhead& queue, bool closed) {
+  if (queue.empty()) return;
   if (planned_once_ && queue.version() == planned_queue_version_ &&
       pieces_changed_ == planned_pieces_changed_ && closed == planned_closed_)
     return;  // nothing it depends on has changed since the last call
