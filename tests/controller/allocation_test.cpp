@@ -1,6 +1,8 @@
 // After construction, tick() allocates nothing (real-time discipline), through a whole
 // program and through a servo alarm: a replaced global operator new counts every allocation
 // of this binary.
+#include <cmath>
+
 #include "allocation_counter.h"
 
 #include "controller_test_util.h"
@@ -43,6 +45,37 @@ TEST(ControllerAllocation, TickAllocatesNothing) {
   EXPECT_EQ(ctl->status(), vm::TickStatus::Finished);
   EXPECT_GT(ticks, 5000u);
   EXPECT_GT(stats.path_length, 100.0);
+}
+
+// The real-time loop (prepare_in_tick = false): neither tick() nor prepare() allocates, on a
+// G64 zig-zag whose corners are blended and a polyline whose vertices run as a chain.
+TEST(ControllerAllocation, SplitLoopWithBlendsAllocatesNothing) {
+  MachineConfig m = defaultMachine();
+  m.corner_tolerance = 0.05;
+  bytecode::Assembler a = assemblerFor(m);
+  a.at(1, 1).rapid(xyz(0, 0, 2));
+  for (int i = 1; i <= 400; ++i)  // 30-degree zig-zag: blended corners
+    a.at(1, 2).line(xyz(2.0 * i, (i % 2) * 1.15, 2), 1200.0);
+  for (int i = 1; i <= 400; ++i)  // gentle polyline: chain vertices and small blends
+    a.at(1, 3).line(xyz(800 + 0.05 * i, 1.15 + 0.5 * std::sin(0.01 * i), 2), 2000.0);
+  a.op(bytecode::Opcode::ProgramEndRewind).op(bytecode::Opcode::End);
+  vm::ControllerOptions options;
+  options.window_capacity = 128;
+  options.prepare_in_tick = false;
+  std::unique_ptr<vm::Controller> ctl = make(a.finish(), m, options);
+  const long before = test::allocationCount();
+  vm::TickOutput out;
+  uint64_t ticks = 0, at_rest = 0;
+  ctl->prepare();
+  while (ctl->tick(out) == vm::TickStatus::Running) {
+    ctl->prepare();
+    ++ticks;
+    if (out.path_velocity == 0.0 && out.commanded[0] > 1.0) ++at_rest;
+  }
+  EXPECT_EQ(test::allocationCount() - before, 0);
+  EXPECT_EQ(ctl->status(), vm::TickStatus::Finished);
+  EXPECT_GT(ticks, 1000u);
+  EXPECT_LT(at_rest, 40u);  // the 400 corners are passed moving: blended, not stopped
 }
 
 TEST(ControllerAllocation, ServoAlarmAllocatesNothing) {
