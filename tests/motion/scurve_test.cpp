@@ -156,5 +156,30 @@ TEST(SCurve, PeakVelocityIsTheRootOfTheRampDistances) {
   EXPECT_GT(solved, 50);  // the spread really exercises the solver
 }
 
+// Braking to rest over exactly the braking distance, short by rounding: the profile stops
+// (v_end 0), it does not give up part-way. The braking distance is not monotone in the end
+// velocity (a short triangular ramp brakes more gently), so the bisection this falls back on
+// once ended at 4.99 mm/s in the first case, a G64 window end reached at 8.08 mm/s.
+TEST(SCurve, StopThatFitsUpToRoundingEndsAtRest) {
+  struct Stop {
+    double v0, a, j;
+  };
+  for (const Stop& c : {Stop{8.084809, 410.762, 14936.0}, Stop{100.0, 2000.0, 50000.0},
+                        Stop{3.0, 500.0, 100000.0}}) {
+    const double exact = rampDistance(0.0, c.v0, c.a, c.j);
+    for (double shortfall : {0.0, 1e-15, 1e-13}) {
+      const double length = exact * (1.0 - shortfall);
+      EXPECT_EQ(lowestReachableVelocity(c.v0, length, c.a, c.j), 0.0) << c.v0 << " " << shortfall;
+      const SCurveProfile p = planProfile(length, c.v0, 0.0, c.v0, c.a, c.j);
+      EXPECT_EQ(p.v_end, 0.0) << c.v0 << " " << shortfall;
+    }
+    // Genuinely too short: the lowest reachable velocity, and braking to it fits.
+    const double half = 0.5 * exact;
+    const double w = lowestReachableVelocity(c.v0, half, c.a, c.j);
+    EXPECT_GT(w, 0.0);
+    EXPECT_LE(rampDistance(w, c.v0, c.a, c.j), half * (1.0 + 1e-12));
+  }
+}
+
 }  // namespace
 }  // namespace ncc::vm::motion

@@ -155,8 +155,14 @@ double solvePeak(double length, double v0, double v1, double lo, double hi, doub
   return lo;
 }
 
-// Lowest velocity reachable braking from v0 within length (only for the error report).
-double lowestReachable(double v0, double length, double a_max, double j_max) {
+}  // namespace
+
+double lowestReachableVelocity(double v0, double length, double a_max, double j_max) {
+  // A full stop first: the braking distance is not monotone in the end velocity (a short
+  // triangular ramp decelerates more gently, so braking part of the way can take longer than
+  // stopping), and a stop that fits up to rounding must give 0, not a point on the far side.
+  if (rampDistance(0.0, v0, a_max, j_max) <= length * (1.0 + 1e-12)) return 0.0;
+  // Beyond it the distance only falls towards v0, so bisection finds the lowest end velocity.
   double lo = 0.0, hi = v0;
   for (int i = 0; i < 100 && hi - lo > 1e-13 * v0; ++i) {
     const double mid = 0.5 * (lo + hi);
@@ -164,8 +170,6 @@ double lowestReachable(double v0, double length, double a_max, double j_max) {
   }
   return hi;
 }
-
-}  // namespace
 
 SCurveProfile planProfile(double length, double v_start, double v_end, double v_max,
                           double a_max, double j_max) {
@@ -188,7 +192,7 @@ SCurveProfile planProfile(double length, double v_start, double v_end, double v_
     }
   } else if (v_end < v_start) {
     if (reachableVelocity(v_end, length, a_max, j_max) < v_start) {
-      v_end = lowestReachable(v_start, length, a_max, j_max);
+      v_end = lowestReachableVelocity(v_start, length, a_max, j_max);
       p.end_reachable = false;
     }
   }

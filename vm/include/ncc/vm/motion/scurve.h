@@ -43,6 +43,9 @@ double rampDistance(double v1, double v2, double a_max, double j_max);
 double reachableVelocity(double v, double length, double a_max, double j_max);
 // reachableVelocity(v, ...) - v, computed without the rounding of v.
 double reachableGain(double v, double length, double a_max, double j_max);
+// The lowest velocity one can brake to from `v0` within `length` (0 if a stop fits, up to
+// rounding); a bisection, for planProfile's unreachable end velocity.
+double lowestReachableVelocity(double v0, double length, double a_max, double j_max);
 
 struct SCurveProfile {
   double length = 0.0;
