@@ -167,7 +167,7 @@ TEST(SCurve, StopThatFitsUpToRoundingEndsAtRest) {
   for (const Stop& c : {Stop{8.084809, 410.762, 14936.0}, Stop{100.0, 2000.0, 50000.0},
                         Stop{3.0, 500.0, 100000.0}}) {
     const double exact = rampDistance(0.0, c.v0, c.a, c.j);
-    for (double shortfall : {0.0, 1e-15, 1e-13}) {
+    for (double shortfall : {0.0, 1e-15, 1e-13, 1e-10}) {
       const double length = exact * (1.0 - shortfall);
       EXPECT_EQ(lowestReachableVelocity(c.v0, length, c.a, c.j), 0.0) << c.v0 << " " << shortfall;
       const SCurveProfile p = planProfile(length, c.v0, 0.0, c.v0, c.a, c.j);

@@ -161,7 +161,9 @@ double lowestReachableVelocity(double v0, double length, double a_max, double j_
   // A full stop first: the braking distance is not monotone in the end velocity (a short
   // triangular ramp decelerates more gently, so braking part of the way can take longer than
   // stopping), and a stop that fits up to rounding must give 0, not a point on the far side.
-  if (rampDistance(0.0, v0, a_max, j_max) <= length * (1.0 + 1e-12)) return 0.0;
+  // "Up to rounding" is 1e-9 of the length (a picometre per millimetre): velocities chained
+  // through several runs carry more than one ulp, and planProfile's ramp rebuild absorbs it.
+  if (rampDistance(0.0, v0, a_max, j_max) <= length * (1.0 + 1e-9)) return 0.0;
   // Beyond it the distance only falls towards v0, so bisection finds the lowest end velocity.
   double lo = 0.0, hi = v0;
   for (int i = 0; i < 100 && hi - lo > 1e-13 * v0; ++i) {
