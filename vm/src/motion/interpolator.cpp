@@ -89,10 +89,9 @@ Interpolator::PiecePlan Interpolator::planPiece(const PieceInputs& in) const {
 
 void Interpolator::planNextPiece(const LookAhead& queue, bool closed) {
   if (queue.empty()) return;
-  if (planned_once_ && queue.version() == planned_queue_version_ &&
+  if (queue.version() == planned_queue_version_ &&
       pieces_changed_ == planned_pieces_changed_ && closed == planned_closed_)
     return;  // nothing it depends on has changed since the last call
-  planned_once_ = true;
   planned_queue_version_ = queue.version();
   planned_pieces_changed_ = pieces_changed_;
   planned_closed_ = closed;

@@ -139,14 +139,15 @@ void MotionPlanner::endOfProgram() {
   if (queue_.room() > 0) path_.flush();  // else on a later tick, when there is room
 }
 
-void MotionPlanner::planAhead() {
+bool MotionPlanner::closeInput() {
   if (ended_ && path_.holding() && queue_.room() > 0) path_.flush();
-  interpolator_.planNextPiece(queue_, ended_ && !path_.holding());
+  return ended_ && !path_.holding();
 }
 
+void MotionPlanner::planAhead() { interpolator_.planNextPiece(queue_, closeInput()); }
+
 bool MotionPlanner::setpoint(uint64_t k, AxisValues& out, SetpointInfo& info) {
-  if (ended_ && path_.holding() && queue_.room() > 0) path_.flush();
-  const bool closed = ended_ && !path_.holding();
+  const bool closed = closeInput();
   if (interpolator_.setpoint(k, queue_, closed, out, info)) return true;
   return !closed;
 }

@@ -113,12 +113,12 @@ class Interpolator {
   };
   std::array<PlannedPiece, kPlannedAhead> ahead_{};
   // What ahead_ was last planned from: the queue's version, the pieces started or finished
-  // so far, and `closed`. While all three stand, planNextPiece() has nothing to redo.
+  // so far, and `closed`. While all three stand, planNextPiece() has nothing to redo. (No
+  // queue reaches the initial version: the first call always plans.)
   uint64_t pieces_changed_ = 0;
-  uint64_t planned_queue_version_ = 0;
+  uint64_t planned_queue_version_ = UINT64_MAX;
   uint64_t planned_pieces_changed_ = 0;
   bool planned_closed_ = false;
-  bool planned_once_ = false;
 };
 
 }  // namespace ncc::vm::motion

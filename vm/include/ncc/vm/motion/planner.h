@@ -81,6 +81,10 @@ class MotionPlanner {
   std::size_t queued() const { return queue_.size(); }
 
  private:
+  // After endOfProgram(): queues the held line once the ring has room. True when nothing more
+  // will be queued (the last run is final).
+  bool closeInput();
+
   AxisLimits limits_;
   AxisLimits rapid_limits_;  // limits_ with the rapid override applied to the rapid speeds
   double feed_override_ = 1.0;
