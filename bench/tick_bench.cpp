@@ -1,6 +1,7 @@
 // Controller::tick() for a 6-axis machine with the servo model (torque feed-forward, backlash,
 // pitch tables): ns per tick, the real-time tick and the preparation timed apart (issue 3's
-// target: worst tick <= 1 us), and how long one hour of program time takes to simulate. Figures, not pass/fail (docs/testing.md).
+// target: worst tick <= 1 us), and how long one hour of program time takes to simulate.
+// Figures, not pass/fail (docs/testing.md).
 #include <benchmark/benchmark.h>
 
 #include <algorithm>
@@ -45,9 +46,10 @@ ncc::bytecode::Program program(const ncc::MachineConfig& m, int loops) {
   return as.finish();
 }
 
-std::unique_ptr<ncc::vm::Controller> controller(const ncc::MachineConfig& m, int loops) {
+std::unique_ptr<ncc::vm::Controller> controller(const ncc::MachineConfig& m, int loops,
+                                                const ncc::vm::ControllerOptions& options = {}) {
   ncc::bytecode::Error error;
-  return ncc::vm::Controller::create(program(m, loops), m, error);
+  return ncc::vm::Controller::create(program(m, loops), m, error, options);
 }
 
 // Mean cost of a tick, restarting the program whenever it ends (restart not timed).
@@ -83,9 +85,7 @@ void BM_WorstTick6Axes(benchmark::State& state) {
   double first_prepare_ns = 0.0;
   for (auto _ : state) {
     state.PauseTiming();
-    ncc::bytecode::Error error;
-    std::unique_ptr<ncc::vm::Controller> ctl =
-        ncc::vm::Controller::create(program(m, 20), m, error, split);
+    std::unique_ptr<ncc::vm::Controller> ctl = controller(m, 20, split);
     state.ResumeTiming();
     const auto p0 = Clock::now();
     ctl->prepare();

@@ -14,6 +14,17 @@ namespace {
 
 using namespace motion_test;
 
+// Runs one primitive through `planner` to its end; returns the highest path speed and leaves
+// the last setpoint in `end`.
+double topSpeed(MotionPlanner& planner, const MotionPrimitive& mv, AxisValues& end) {
+  EXPECT_TRUE(planner.push(mv));
+  planner.endOfProgram();
+  SetpointInfo info;
+  double top = 0.0;
+  for (uint64_t k = 0; planner.setpoint(k, end, info); ++k) top = std::max(top, info.velocity);
+  return top;
+}
+
 TEST(Planner, RestToRestLineTimeMatchesClosedForm) {
   const MachineConfig m = defaultMachine();  // a = 2000, j = 50000, T = 1 ms
   const double a = 2000.0, j = kSmoothJerkShare * 50000.0;  // the line's path jerk
@@ -102,13 +113,8 @@ TEST(Planner, FeedPerRevolutionUsesSpindleSpeed) {
   planner.setSpindleSpeed(1000.0);
   MotionPrimitive mv = line(xyz(0, 0, 0), xyz(100, 0, 0), 0.1);  // 0.1 mm/rev * 1000 rpm
   mv.feed_per_rev = true;
-  ASSERT_TRUE(planner.push(mv));
-  planner.endOfProgram();
-  AxisValues p;
-  SetpointInfo info;
-  double top = 0.0;
-  for (uint64_t k = 0; planner.setpoint(k, p, info); ++k) top = std::max(top, info.velocity);
-  EXPECT_NEAR(top, 100.0 / 60.0, 1e-12);
+  AxisValues end;
+  EXPECT_NEAR(topSpeed(planner, mv, end), 100.0 / 60.0, 1e-12);
 }
 
 TEST(Planner, NonLinearRapidMovesEachAxisOnItsOwn) {
@@ -139,13 +145,9 @@ TEST(Planner, StaticOverridesScaleFeedAndRapid) {
   const auto top = [&](double feed_ovr, double rapid_ovr, const MotionPrimitive& mv) {
     MotionPlanner planner(m, 64);
     planner.setOverrides(feed_ovr, rapid_ovr);
-    EXPECT_TRUE(planner.push(mv));
-    planner.endOfProgram();
-    AxisValues p;
-    SetpointInfo info;
-    double v = 0.0;
-    for (uint64_t k = 0; planner.setpoint(k, p, info); ++k) v = std::max(v, info.velocity);
-    EXPECT_EQ(p, mv.to);
+    AxisValues end;
+    const double v = topSpeed(planner, mv, end);
+    EXPECT_EQ(end, mv.to);
     return v;
   };
   const MotionPrimitive g01 = line(xyz(0, 0, 0), xyz(100, 0, 0), 3000.0);
