@@ -70,19 +70,27 @@ void BM_Tick6Axes(benchmark::State& state) {
 BENCHMARK(BM_Tick6Axes);
 
 // The real-time loop (ControllerOptions::prepare_in_tick = false): every tick() of a whole
-// program timed on its own with a steady clock — mean, worst, and the 99.99th percentile (the
-// worst tick on shared cores is usually preemption, not the VM) — and the prepare() that
-// follows it in the cycle's slack, timed the same way (its first call fills the look-ahead
-// window). The clock's own cost is included.
+// program timed on its own with a steady clock — mean, percentiles, worst — and the prepare()
+// that follows it in the cycle's slack, timed the same way (its first call fills the
+// look-ahead window). The clock's own cost is included.
+//
+// On shared cores the worst single measurement is the host preempting the process, not the
+// VM. Because the controller is deterministic, tick i does the same work in every run of the
+// program, so the benchmark also runs the program several times and keeps, per tick, the
+// fastest of its runs: preemption rarely hits the same tick in every run, while the VM's own
+// cost does. The largest of those per-tick minima ("replayed worst") is the worst-case cost
+// of a tick of this program. The first tick is reported on its own: it runs with cold
+// caches after the window fill (4 ms of planning evicted its code and the servo's state), a
+// one-off at program start.
 void BM_WorstTick6Axes(benchmark::State& state) {
   const ncc::MachineConfig m = ncc::bench::sixAxes();
   ncc::vm::ControllerOptions split;
   split.prepare_in_tick = false;
   using Clock = std::chrono::steady_clock;
-  std::vector<double> tick_ns, prepare_ns;
-  tick_ns.reserve(1 << 20);
-  prepare_ns.reserve(1 << 20);
+  std::vector<double> tick_ns, prepare_ns;  // every measurement of every run
+  std::vector<double> tick_min_ns, prepare_min_ns;  // per tick after the first: fastest run
   double first_prepare_ns = 0.0;
+  double first_tick_ns = 1e300;  // the fastest of the runs, like every other tick
   for (auto _ : state) {
     state.PauseTiming();
     std::unique_ptr<ncc::vm::Controller> ctl = controller(m, 20, split);
@@ -92,35 +100,49 @@ void BM_WorstTick6Axes(benchmark::State& state) {
     first_prepare_ns = std::max(
         first_prepare_ns, std::chrono::duration<double, std::nano>(Clock::now() - p0).count());
     ncc::vm::TickOutput out;
-    for (;;) {
+    for (std::size_t i = 0;; ++i) {
       const auto t0 = Clock::now();
       const ncc::vm::TickStatus st = ctl->tick(out);
       const auto t1 = Clock::now();
       if (st != ncc::vm::TickStatus::Running) break;
       ctl->prepare();
       const auto t2 = Clock::now();
-      tick_ns.push_back(std::chrono::duration<double, std::nano>(t1 - t0).count());
-      prepare_ns.push_back(std::chrono::duration<double, std::nano>(t2 - t1).count());
+      const double tick = std::chrono::duration<double, std::nano>(t1 - t0).count();
+      const double prepare = std::chrono::duration<double, std::nano>(t2 - t1).count();
+      if (i == 0) {
+        first_tick_ns = std::min(first_tick_ns, tick);
+        continue;
+      }
+      tick_ns.push_back(tick);
+      prepare_ns.push_back(prepare);
+      if (i - 1 == tick_min_ns.size()) {  // the first run
+        tick_min_ns.push_back(tick);
+        prepare_min_ns.push_back(prepare);
+      } else {
+        tick_min_ns[i - 1] = std::min(tick_min_ns[i - 1], tick);
+        prepare_min_ns[i - 1] = std::min(prepare_min_ns[i - 1], prepare);
+      }
     }
   }
-  auto summary = [&](std::vector<double>& ns, const char* name) {
+  auto summary = [&](std::vector<double>& ns, const std::vector<double>& replayed,
+                     const std::string& name) {
     double total = 0.0;
     for (double t : ns) total += t;
     std::sort(ns.begin(), ns.end());
-    const std::string n(name);
-    state.counters[n + "_mean_ns"] = total / static_cast<double>(ns.size());
-    state.counters[n + "_p99_ns"] = ns[ns.size() * 99 / 100];
-    state.counters[n + "_p999_ns"] = ns[ns.size() * 999 / 1000];
-    state.counters[n + "_p9999_ns"] = ns[ns.size() * 9999 / 10000];
-    state.counters[n + "_worst_ns"] = ns.back();
+    state.counters[name + "_mean_ns"] = total / static_cast<double>(ns.size());
+    state.counters[name + "_p99_ns"] = ns[ns.size() * 99 / 100];
+    state.counters[name + "_p999_ns"] = ns[ns.size() * 999 / 1000];
+    state.counters[name + "_worst_ns"] = ns.back();
+    state.counters[name + "_replayed_worst_ns"] =
+        *std::max_element(replayed.begin(), replayed.end());
   };
-  state.counters["ticks"] =
-      static_cast<double>(tick_ns.size()) / static_cast<double>(state.iterations());
-  summary(tick_ns, "tick");
-  summary(prepare_ns, "prepare");
+  state.counters["ticks"] = static_cast<double>(tick_min_ns.size());
+  summary(tick_ns, tick_min_ns, "tick");
+  summary(prepare_ns, prepare_min_ns, "prepare");
   state.counters["first_prepare_ns"] = first_prepare_ns;
+  state.counters["first_tick_ns"] = first_tick_ns;
 }
-BENCHMARK(BM_WorstTick6Axes)->Unit(benchmark::kMillisecond)->Iterations(3);
+BENCHMARK(BM_WorstTick6Axes)->Unit(benchmark::kMillisecond)->Iterations(7);
 
 // Simulating a long program: ticks per second of wall time, and what one hour of program
 // time (3.6e6 ticks at T = 1 ms) costs.

@@ -4,6 +4,7 @@
 #include <bit>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 
 namespace ncc::vm::motion {
 
@@ -23,7 +24,8 @@ void Interpolator::startPiece(LookAhead& queue, bool closed) {
   per_axis_ = queue.frontSegment().per_axis;
   if (per_axis_) {
     const QueuedSegment& seg = queue.frontSegment();
-    rapid_ = AxisRapid::make(seg.path.from(), seg.path.to(), limits_);
+    rapid_ = rapidAheadFor(seg) ? rapid_ahead_
+                                : AxisRapid::make(seg.path.from(), seg.path.to(), limits_);
     profile_ = SCurveProfile{};
     duration_ = rapid_.duration();
     piece_end_ = run.length;
@@ -39,6 +41,15 @@ void Interpolator::startPiece(LookAhead& queue, bool closed) {
   duration_ = profile_.duration;
   piece_end_ = plan.piece_end;
   piece_ends_run_ = plan.ends_run;
+}
+
+bool Interpolator::rapidAheadFor(const QueuedSegment& seg) const {
+  // The limits are the machine's, fixed: the end points decide the rapid.
+  auto same = [](const AxisValues& a, const AxisValues& b) {
+    return std::memcmp(a.data(), b.data(), sizeof(AxisValues)) == 0;
+  };
+  return rapid_ahead_ready_ && same(rapid_ahead_.from(), seg.path.from()) &&
+         same(rapid_ahead_.to(), seg.path.to());
 }
 
 bool Interpolator::PieceInputs::sameAs(const PieceInputs& o) const {
@@ -101,10 +112,11 @@ void Interpolator::planNextPiece(const LookAhead& queue, bool closed) {
   double piece_start = piece_start_;
   double v0 = resync_ ? 0.0 : exit_velocity_;
   if (running_) {
-    if (per_axis_ || queue.run(0).kind == MotionPrimitive::Kind::Dwell) return;
-    run = piece_ends_run_ ? 1 : 0;
-    piece_start = piece_ends_run_ ? 0.0 : piece_end_;
-    v0 = profile_.v_end;
+    // A rapid or a dwell is its own run and ends at rest.
+    const bool whole_run = per_axis_ || queue.run(0).kind == MotionPrimitive::Kind::Dwell;
+    run = whole_run || piece_ends_run_ ? 1 : 0;
+    piece_start = whole_run || piece_ends_run_ ? 0.0 : piece_end_;
+    v0 = whole_run ? 0.0 : profile_.v_end;
   }
   for (PlannedPiece& slot : ahead_) {
     if (run >= queue.runCount()) return;
@@ -112,9 +124,15 @@ void Interpolator::planNextPiece(const LookAhead& queue, bool closed) {
     // The run's first queued segment: after the remaining segments of the runs before it.
     std::size_t first = 0;
     for (std::size_t i = 0; i < run; ++i) first += queue.run(i).segments;
-    if (r.kind == MotionPrimitive::Kind::Dwell || first >= queue.size() ||
-        queue.segment(first).per_axis)
-      return;
+    if (r.kind == MotionPrimitive::Kind::Dwell || first >= queue.size()) return;
+    if (queue.segment(first).per_axis) {
+      const QueuedSegment& seg = queue.segment(first);
+      if (!rapidAheadFor(seg)) {
+        rapid_ahead_ = AxisRapid::make(seg.path.from(), seg.path.to(), limits_);
+        rapid_ahead_ready_ = true;
+      }
+      return;  // it ends at rest: nothing after it depends on it
+    }
     const PieceInputs in = pieceInputs(queue, run, piece_start, v0, closed);
     if (!(slot.ready && in.sameAs(slot.inputs))) slot = {true, in, planPiece(in)};
     // The piece after it (a piece that ends at rest hands over from rest: v = 0 either way).

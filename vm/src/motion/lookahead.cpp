@@ -88,6 +88,14 @@ double LookAhead::runExit(std::size_t i) const {
   return runAt(i + 1).entry_planned;
 }
 
+void LookAhead::prefetchFront(std::size_t count) const {
+  constexpr std::size_t kCacheLine = 64;
+  for (std::size_t i = 0; i < std::min(count, segment_count_); ++i) {
+    const char* bytes = reinterpret_cast<const char*>(&segmentAt(i));
+    for (std::size_t b = 0; b < sizeof(QueuedSegment); b += kCacheLine) __builtin_prefetch(bytes + b);
+  }
+}
+
 void LookAhead::popSegment() {
   if (segment_count_ == 0) return;
   seg_head_ = (seg_head_ + 1) % segments_.size();

@@ -144,7 +144,10 @@ bool MotionPlanner::closeInput() {
   return ended_ && !path_.holding();
 }
 
-void MotionPlanner::planAhead() { interpolator_.planNextPiece(queue_, closeInput()); }
+void MotionPlanner::planAhead() {
+  interpolator_.planNextPiece(queue_, closeInput());
+  queue_.prefetchFront(kSegmentsWarmed);
+}
 
 bool MotionPlanner::setpoint(uint64_t k, AxisValues& out, SetpointInfo& info) {
   const bool closed = closeInput();

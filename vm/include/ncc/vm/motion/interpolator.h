@@ -85,6 +85,8 @@ class Interpolator {
   PieceInputs pieceInputs(const LookAhead& queue, std::size_t run, double piece_start, double v0,
                           bool closed) const;
   PiecePlan planPiece(const PieceInputs& in) const;
+  // Whether rapid_ahead_ is the non-linear rapid of `seg` (bit-identical end points).
+  bool rapidAheadFor(const QueuedSegment& seg) const;
   void startPiece(LookAhead& queue, bool closed);
 
   AxisValues position_;  // end of the last finished segment
@@ -112,6 +114,9 @@ class Interpolator {
     PiecePlan plan;
   };
   std::array<PlannedPiece, kPlannedAhead> ahead_{};
+  // The next non-linear rapid, made by planNextPiece when it is the next piece up.
+  bool rapid_ahead_ready_ = false;
+  AxisRapid rapid_ahead_;
   // What ahead_ was last planned from: the queue's version, the pieces started or finished
   // so far, and `closed`. While all three stand, planNextPiece() has nothing to redo. (No
   // queue reaches the initial version: the first call always plans.)

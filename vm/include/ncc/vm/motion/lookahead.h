@@ -86,6 +86,11 @@ class LookAhead {
   // Changes with every push, pop and stop flag: what is queued (and planned) is the same as
   // long as it is.
   uint64_t version() const { return version_; }
+  // Asks the CPU to bring the first `count` queued segments into cache. A segment is large
+  // (a blend carries its arc-length tables) and was written when it entered the window, long
+  // enough ago to have left the cache; reading it cold costs a tick several hundred ns, so
+  // the preparation calls this for the segments the next tick will read.
+  void prefetchFront(std::size_t count) const;
   // Drop the front segment / the (empty) front run.
   void popSegment();
   void popRun();

@@ -61,7 +61,8 @@ class MotionPlanner {
   void endOfProgram();
 
   // The preparation's share of the forward pass, called after pushing: plans the piece that
-  // follows the running one (Interpolator::planNextPiece), so that the tick finds it ready.
+  // follows the running one (Interpolator::planNextPiece), so that the tick finds it ready,
+  // and brings the segments the tick reads next into cache (LookAhead::prefetchFront).
   // Optional: setpoint() gives the same result without it, only doing that work itself.
   void planAhead();
 
@@ -81,6 +82,9 @@ class MotionPlanner {
   std::size_t queued() const { return queue_.size(); }
 
  private:
+  // Segments planAhead() warms for the next tick: a cycle passes a blend and the lines on
+  // either side of it, a few more when segments are shorter than a cycle's travel.
+  static constexpr std::size_t kSegmentsWarmed = 4;
   // After endOfProgram(): queues the held line once the ring has room. True when nothing more
   // will be queued (the last run is final).
   bool closeInput();
