@@ -88,9 +88,12 @@ double LookAhead::runExit(std::size_t i) const {
   return runAt(i + 1).entry_planned;
 }
 
-void LookAhead::prefetchFront(std::size_t count) const {
+void LookAhead::prefetchFront(std::size_t count) {
   constexpr std::size_t kCacheLine = 64;
-  for (std::size_t i = 0; i < std::min(count, segment_count_); ++i) {
+  const uint64_t end = segments_popped_ + std::min(count, segment_count_);
+  const uint64_t from = std::max(prefetched_until_, segments_popped_);
+  prefetched_until_ = std::max(prefetched_until_, end);
+  for (std::size_t i = from - segments_popped_; i < end - segments_popped_; ++i) {
     const char* bytes = reinterpret_cast<const char*>(&segmentAt(i));
     for (std::size_t b = 0; b < sizeof(QueuedSegment); b += kCacheLine) __builtin_prefetch(bytes + b);
   }
@@ -100,6 +103,7 @@ void LookAhead::popSegment() {
   if (segment_count_ == 0) return;
   seg_head_ = (seg_head_ + 1) % segments_.size();
   --segment_count_;
+  ++segments_popped_;
   ++version_;
   if (segment_count_ > 0) queued_length_ -= segmentAt(0).path.length();
   if (segment_count_ <= 1) queued_length_ = 0.0;  // no drift from the running sum

@@ -89,8 +89,9 @@ class LookAhead {
   // Asks the CPU to bring the first `count` queued segments into cache. A segment is large
   // (a blend carries its arc-length tables) and was written when it entered the window, long
   // enough ago to have left the cache; reading it cold costs a tick several hundred ns, so
-  // the preparation calls this for the segments the next tick will read.
-  void prefetchFront(std::size_t count) const;
+  // the preparation calls this for the segments the next tick will read. Segments already
+  // prefetched by an earlier call are skipped.
+  void prefetchFront(std::size_t count);
   // Drop the front segment / the (empty) front run.
   void popSegment();
   void popRun();
@@ -109,6 +110,8 @@ class LookAhead {
   std::vector<QueuedSegment> segments_;
   std::vector<Run> runs_;
   std::size_t seg_head_ = 0, segment_count_ = 0;
+  uint64_t segments_popped_ = 0;     // over the ring's life: the front's absolute index
+  uint64_t prefetched_until_ = 0;    // absolute index after the last segment prefetched
   std::size_t run_head_ = 0, run_count_ = 0;
   bool front_started_ = false;
   uint64_t version_ = 0;
