@@ -95,7 +95,7 @@ double ContinuousPath::wiggleAllowance(const AxisValues& involved) const {
 
 void ContinuousPath::queueHeld(const AxisValues& end, double end_curvature,
                                double end_sagitta, const AxisValues& next_direction,
-                               bool stop_after) {
+                               bool stop_after, bool end_at_rest) {
   const int n = limits_.count;
   QueuedSegment seg;
   seg.where = held_.where;
@@ -116,11 +116,16 @@ void ContinuousPath::queueHeld(const AxisValues& end, double end_curvature,
   }
   SegmentLimits limits = segmentLimits(seg.path, limits_, false, held_.feed, chain);
   // The chain's curvature changes from one vertex to the next along this line: an
-  // acceleration step v^2 dk within at most one cycle reads as a jerk v^2 dk / T.
+  // acceleration step v^2 dk within at most one cycle reads as a jerk v^2 dk / T. Where the
+  // path is at rest (the first line of a chain started from a standstill, the last one
+  // before a stop) the step is v^2 dk = 0: the line takes its other vertex's curvature.
   if (chain.curvature > 0.0) {
-    limits.velocity = std::min(
-        limits.velocity,
-        curvatureStepLimit(std::abs(end_curvature - held_.start_curvature), chain.involved));
+    const bool start_at_rest = held_.start_limit <= 0.0;
+    end_at_rest = end_at_rest || stop_after;
+    const double start_k = start_at_rest ? end_curvature : held_.start_curvature;
+    const double end_k = end_at_rest ? held_.start_curvature : end_curvature;
+    const double step = start_at_rest && end_at_rest ? 0.0 : std::abs(end_k - start_k);
+    limits.velocity = std::min(limits.velocity, curvatureStepLimit(step, chain.involved));
     // Neighbouring lines of a chain differ slightly in curvature; rounded down to a common
     // grid, their limits are equal and they join one run (one S-curve, not one per 10 um).
     if (limits.velocity < held_.feed) limits.velocity = roundDown(limits.velocity);
@@ -131,9 +136,9 @@ void ContinuousPath::queueHeld(const AxisValues& end, double end_curvature,
   enqueue(seg, MotionPrimitive::Kind::Line, limits, held_.start_limit, stop_after);
 }
 
-void ContinuousPath::flush() {
+void ContinuousPath::flush(bool at_rest) {
   if (!held_.active) return;
-  queueHeld(held_.end, 0.0, 0.0, AxisValues{}, false);
+  queueHeld(held_.end, 0.0, 0.0, AxisValues{}, false, at_rest);
   held_.active = false;
 }
 

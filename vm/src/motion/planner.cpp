@@ -54,7 +54,7 @@ bool MotionPlanner::push(const MotionPrimitive& m) {
     return true;
   }
   if (m.kind == MotionPrimitive::Kind::Dwell) {
-    path_.flush();
+    path_.flush(true);
     QueuedSegment seg;
     seg.where = m.where;
     seg.path = PathSegment::dwell(m.from, n);
@@ -74,7 +74,7 @@ bool MotionPlanner::push(const MotionPrimitive& m) {
     if (!path_.line(m.from, m.to, feed, m.exact_stop, m.where) && m.exact_stop) stop();
     return true;
   }
-  path_.flush();
+  path_.flush(rapid);  // a rapid starts from rest; an arc may join the line moving
   QueuedSegment seg;
   seg.where = m.where;
   seg.exact_stop = m.exact_stop;
@@ -130,17 +130,17 @@ bool MotionPlanner::accept(const Event& event) {
 }
 
 void MotionPlanner::stop() {
-  path_.flush();
+  path_.flush(true);
   queue_.stopAfterLast();
 }
 
 void MotionPlanner::endOfProgram() {
   ended_ = true;
-  if (queue_.room() > 0) path_.flush();  // else on a later tick, when there is room
+  if (queue_.room() > 0) path_.flush(true);  // else on a later tick, when there is room
 }
 
 bool MotionPlanner::closeInput() {
-  if (ended_ && path_.holding() && queue_.room() > 0) path_.flush();
+  if (ended_ && path_.holding() && queue_.room() > 0) path_.flush(true);
   return ended_ && !path_.holding();
 }
 

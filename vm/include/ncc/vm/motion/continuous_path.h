@@ -38,8 +38,9 @@ class ContinuousPath {
   bool line(const AxisValues& from, const AxisValues& to, double feed, bool exact_stop,
             const SourcePosition& where);
   // Something other than a feed line follows (or nothing will): queue the held line up to its
-  // programmed end point.
-  void flush();
+  // programmed end point. `at_rest`: the path stops there (a stop, a dwell, a rapid or the
+  // program's end follows).
+  void flush(bool at_rest);
   bool holding() const { return held_.active; }
 
   // Queues any segment behind what is queued, with the junction rule: from rest after a stop,
@@ -65,9 +66,10 @@ class ContinuousPath {
   };
 
   // Queues the held line from its start to `end`, planned with the chain curvature of its two
-  // vertices (end_curvature: 0 when its end is not a chain vertex).
+  // vertices (end_curvature: 0 when its end is not a chain vertex). `end_at_rest`: the path
+  // stops at `end` (stop_after, or what follows starts from rest).
   void queueHeld(const AxisValues& end, double end_curvature, double end_sagitta,
-                 const AxisValues& next_direction, bool stop_after);
+                 const AxisValues& next_direction, bool stop_after, bool end_at_rest = false);
   // The lowest acceleration and jerk limits among the axes in `involved` (infinite if none):
   // what a path through those axes may use.
   struct Weakest {
