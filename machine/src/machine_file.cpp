@@ -124,7 +124,8 @@ class MachineFileReader {
   bool readMachine(const toml::table& t) {
     static constexpr std::string_view kKeys[] = {"axes",   "diameter_axes", "offsets",  "work",
                                                  "params", "axis",          "ipo_cycle",
-                                                 "chord_tolerance", "corner_tolerance"};
+                                                 "chord_tolerance", "corner_tolerance",
+                                                 "lookahead_segments"};
     for (const auto& [key, node] : t)
       if (std::find(std::begin(kKeys), std::end(kKeys), key.str()) == std::end(kKeys))
         ctx_.unknownKey(key, "[machine]");
@@ -148,7 +149,27 @@ class MachineFileReader {
     readBounded(t, "ipo_cycle", Low::Excluded, 0.0, 0.1, "s", m_.ipo_cycle_seconds);
     readBounded(t, "chord_tolerance", Low::Excluded, 0.0, 1.0, "mm", m_.chord_tolerance);
     readBounded(t, "corner_tolerance", Low::Included, 0.0, 10.0, "mm", m_.corner_tolerance);
+    readCount(t, "lookahead_segments", kMinLookahead, kMaxLookahead, m_.lookahead_segments);
     return true;
+  }
+
+  // The look-ahead's bounds: a few segments (what one line may queue, with room to plan), and
+  // what fits in about 32 MB.
+  static constexpr int kMinLookahead = 16, kMaxLookahead = 16384;
+
+  // [machine] `key`, if given: an integer from `low` to `high` into `field`, else an error
+  // naming the range.
+  void readCount(const toml::table& t, std::string_view key, int low, int high, int& field) {
+    const toml::node* n = t.get(key);
+    if (!n) return;
+    const std::optional<int64_t> v = ctx_.integer(*n, key);
+    if (!v) return;
+    if (*v >= low && *v <= high) {
+      field = static_cast<int>(*v);
+      return;
+    }
+    ctx_.error(kBadValue, ctx_.at(*n),
+               cat("'", key, "' must be at least ", low, " and at most ", high, ", not ", *v));
   }
 
   enum class Low { Included, Excluded };

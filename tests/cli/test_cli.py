@@ -4,6 +4,7 @@
 Run by ctest as: test_cli.py NCC_BINARY
 """
 import json
+import math
 import re
 import os
 import subprocess
@@ -181,6 +182,29 @@ class CliTest(unittest.TestCase):
             proc = ncc("run", prog, bad)
             self.assertEqual(proc.returncode, 2, bad)
             self.assertIn("override", proc.stderr)
+
+    def test_run_lookahead_depth_from_the_machine_file(self):
+        # A circle r10 in 0.01 mm chords at F6000: the default look-ahead (1024 segments, 10 mm)
+        # cannot hold the braking distance from F; lookahead_segments = 4096 can, so the
+        # circle runs faster. Out of range is a machine-file error naming the key.
+        n = 6283
+        lines = ["G21 G90 G94 G17", "G00 X10. Y0.", "G64 G01 F6000."]
+        for i in range(1, n + 1):
+            t = 2.0 * math.pi * i / n
+            x, y = (10.0, 0.0) if i == n else (10.0 * math.cos(t), 10.0 * math.sin(t))
+            lines.append(f"X{x:.9f} Y{y:.9f}")
+        prog = self.write("circle.nc", "\n".join(lines + ["M30", ""]))
+        def seconds(*extra):
+            proc = ncc("run", prog, *extra)
+            self.assertEqual(proc.returncode, 0, proc.stderr)
+            return float(re.search(r"program time +(\d+\.\d+) s", proc.stdout).group(1))
+        deep = self.write("deep.toml", '[machine]\naxes = ["X", "Y", "Z"]\nlookahead_segments = 4096\n')
+        default, longer = seconds(), seconds("--machine", deep)
+        self.assertLess(longer, default - 0.05)
+        bad = self.write("bad.toml", '[machine]\naxes = ["X", "Y", "Z"]\nlookahead_segments = 8\n')
+        proc = ncc("run", prog, "--machine", bad)
+        self.assertNotEqual(proc.returncode, 0)
+        self.assertIn("lookahead_segments", proc.stderr)
 
     def test_run_vars_is_a_json_object(self):
         proc = ncc("run", self.write("a.nc", GOOD), "--emit=vars")

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <sstream>
 #include <vector>
 
@@ -94,6 +95,37 @@ TEST(Controller, ProgramStopBringsThePathToRest) {
   };
   EXPECT_NEAR(minimumInterior(false), 50.0, 1e-9);
   EXPECT_EQ(minimumInterior(true), 0.0);
+}
+
+TEST(Controller, LookAheadDepthComesFromTheMachine) {
+  // A circle r 10 in 0.01 mm chords at F6000: the planner keeps a stop within what it holds,
+  // so 1024 segments (10 mm) allow only part of the feed (braking on the curve takes about
+  // 8.5 mm from 100 mm/s); the machine's lookahead_segments = 4096 holds it and the circle
+  // runs at F. An explicit ControllerOptions::window_capacity overrides the machine.
+  auto topSpeed = [](int machine_segments, std::size_t option_segments) {
+    MachineConfig m = defaultMachine();
+    m.lookahead_segments = machine_segments;
+    m.start_position = xyz(10, 0, 0);
+    bytecode::Assembler a = assemblerFor(m);
+    const int n = 6283;
+    for (int i = 1; i <= n; ++i) {
+      const double t = 2.0 * std::numbers::pi * i / n;
+      a.line(i == n ? xyz(10, 0, 0) : xyz(10 * std::cos(t), 10 * std::sin(t), 0), 6000.0);
+    }
+    a.op(bytecode::Opcode::End);
+    vm::ControllerOptions options;
+    options.window_capacity = option_segments;
+    bytecode::Error error;
+    std::unique_ptr<vm::Controller> ctl = vm::Controller::create(a.finish(), m, error, options);
+    EXPECT_TRUE(ctl) << error.message;
+    double top = 0.0;
+    if (ctl)
+      for (const TickOutput& t : runAll(*ctl)) top = std::max(top, t.path_velocity);
+    return top;
+  };
+  EXPECT_LT(topSpeed(1024, 0), 90.0);
+  EXPECT_NEAR(topSpeed(4096, 0), 100.0, 1e-9);
+  EXPECT_LT(topSpeed(4096, 1024), 90.0);
 }
 
 TEST(Controller, FeedPerRevolutionUsesTheSpindleSpeed) {

@@ -44,6 +44,7 @@ axes = ["X", "Y", "Z", "B"]
 ipo_cycle = 0.002
 chord_tolerance = 0.0005
 corner_tolerance = 0.05
+lookahead_segments = 4096
 [machine.offsets]
 H1 = 100.5
 D1 = 5.0
@@ -91,6 +92,7 @@ position = { X = 1.0, Z = 200.0 }
   EXPECT_DOUBLE_EQ(m.ipo_cycle_seconds, 0.002);
   EXPECT_DOUBLE_EQ(m.chord_tolerance, 0.0005);
   EXPECT_DOUBLE_EQ(m.corner_tolerance, 0.05);
+  EXPECT_EQ(m.lookahead_segments, 4096);
 
   EXPECT_EQ(m.tool_offsets.length, (std::map<int, double>{{1, 100.5}, {12, -3.25}}));
   EXPECT_EQ(m.tool_offsets.radius, (std::map<int, double>{{1, 5.0}}));
@@ -365,6 +367,12 @@ TEST(MachineFile, AxisLimitErrors) {
   EXPECT_EQ(onlyError("[machine]\nchord_tolerance = -0.001\n"),
             "machine.toml:2:19: error[NCC0306]: 'chord_tolerance' must be above 0 and at most 1 mm, "
             "not -0.001");
+  EXPECT_EQ(onlyError("[machine]\nlookahead_segments = 8\n"),
+            "machine.toml:2:22: error[NCC0306]: 'lookahead_segments' must be at least 16 and at "
+            "most 16384, not 8");
+  EXPECT_EQ(onlyError("[machine]\nlookahead_segments = 100.5\n"),
+            "machine.toml:2:22: error[NCC0303]: wrong type for 'lookahead_segments': expected an "
+            "integer, found a float");
 }
 
 TEST(MachineFile, ModuloAxisMustBeRotary) {

@@ -66,7 +66,9 @@ Controller::Controller(bytecode::Program program, const MachineConfig& machine,
       program_(std::move(program)),
       options_(options),
       executor_(program_, machine_),
-      planner_(machine_, options.window_capacity),
+      planner_(machine_, options.window_capacity != 0
+                             ? options.window_capacity
+                             : static_cast<std::size_t>(std::max(machine_.lookahead_segments, 1))),
       servo_(machine_),
       stats_(machine_.axisCount()) {
   executor_.setStepLimit(options_.step_limit);

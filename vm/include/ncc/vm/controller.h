@@ -58,8 +58,9 @@ struct TickOutput {
 };
 
 struct ControllerOptions {
-  // Most motion segments the planner's look-ahead holds (allocated once).
-  std::size_t window_capacity = 1024;
+  // Most motion segments the planner's look-ahead holds (allocated once); 0: the machine's
+  // MachineConfig::lookahead_segments.
+  std::size_t window_capacity = 0;
   // Most executor events pulled in one tick: bounds a tick's work when the program emits many
   // events that do not fill the window (M codes, zero-length moves). A lower bound can only
   // make the planner see less ahead (it then plans to brake at the end of what it has).
