@@ -5,7 +5,7 @@
 // known and the machine's full axis limits A and J (no share kept for junctions):
 // - lines along one axis (the G61 square's sides): the rest-to-rest S-curve, which is the
 //   optimum of that 1-D problem;
-// - circles (written as 0.01 mm chords; the chords are 0.1 nm off the circle): the per-axis
+// - circles (as one arc, or written as 0.01 mm chords 1.25 nm off the circle): the per-axis
 //   optimum of circle_optimum.h, which uses the limits as they are at each point of the
 //   circle. On these circles it is within 0.3 % of the S-curve at A and J over the whole
 //   length, because the run-up happens where the tangent is nearly along Y and the
@@ -102,6 +102,13 @@ int main() {
       c.reference = ncc::bench::CircleOptimum(r, feed / 60.0, A, J).seconds();
       contours.push_back(c);
     }
+  }
+  // The same circles as one G2/G3 (the path is the circle itself: no polygon wiggle).
+  for (double r : {10.0, 25.0}) {
+    Contour c{"circle r" + std::to_string(static_cast<int>(r)) + " as one arc, F6000", {}, 0.0};
+    c.program.push_back(arc(xy(r, 0), xy(r, 0), 0.0, 0.0, false, 6000.0));
+    c.reference = ncc::bench::CircleOptimum(r, 100.0, A, J).seconds();
+    contours.push_back(c);
   }
   // Line - tangent arc - line (a slot end): 30 mm, half circle r 25, 30 mm, F600.
   {

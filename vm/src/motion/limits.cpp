@@ -4,10 +4,16 @@
 #include <cmath>
 #include <limits>
 
+#include "ncc/vm/motion/ramp_envelope.h"
+
 namespace ncc::vm::motion {
 namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
+// The ramp envelope (ramp_envelope.h) is searched when the terms that grow with the speed
+// take more than this share of some axis' acceleration or jerk at the top speed: below it
+// there is little to gain for its cost (a few tens of microseconds).
+constexpr double kEnvelopeWorthShare = 0.05;
 
 }  // namespace
 
@@ -84,9 +90,11 @@ SegmentLimits segmentLimits(const PathSegment& path, const AxisLimits& axes, boo
   // either is: the sum of the parts' shares, a_t t_i + v^2 k q_i, and the norm of the whole
   // vector, sqrt(a_t^2 + (v^2 k)^2) (the tangent and the normal are orthogonal).
   TangentialBudget budget;
+  RampEnvelope envelope(v, kappa, rate);
   const double centripetal = curved ? v * v * kappa : 0.0;
   const double cross = curved ? 3.0 * v * kappa : 0.0;  // the cross term 3 v a_t k, per a_t
   const double rotation = curved ? v * v * v * rate : 0.0;
+  double speed_share = 0.0;  // largest share of an axis limit the speed-dependent terms take
   for (int i = 0; i < axes.count; ++i) {
     if (t[i] == 0.0 && (!curved || q[i] == 0.0)) continue;
     const double acc = axes.acceleration[i] - q[i] * wiggle_acc;
@@ -99,8 +107,16 @@ SegmentLimits segmentLimits(const PathSegment& path, const AxisLimits& axes, boo
     const double jerk = kSmoothJerkShare * axes.jerk[i] - q[i] * wiggle_jerk;
     budget.add({t[i], cross * q[i], jerk - rotation * q[i],
                 curved && q[i] > 0.0 ? cross : 0.0, curved && q[i] > 0.0 ? jerk - rotation : 0.0});
+    envelope.add({t[i], q[i], acc, jerk});
+    speed_share = std::max({speed_share, centripetal * q[i] / acc, rotation * q[i] / jerk});
   }
   budget.split(v, lim.acceleration, lim.jerk);
+  // On arcs and chains the envelope of the ramps may allow more (a blend is short and passed
+  // near constant speed: its ramps happen on the lines around it).
+  if (curved && path.shape() != PathSegment::Shape::Blend) {
+    speed_share = std::max(speed_share, cross * lim.acceleration / lim.jerk);
+    if (speed_share > kEnvelopeWorthShare) envelope.widen(lim.acceleration, lim.jerk);
+  }
   return lim;
 }
 

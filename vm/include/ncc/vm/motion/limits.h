@@ -8,7 +8,8 @@
 // axis jerk j_t t_i + 3 v a_t k_i + v^3 r_i (r: the rate of the curvature vector):
 //  - the path speed is capped so that v^2 k uses at most kCentripetalShare of the axis
 //    acceleration and v^3 r a third of the smooth jerk share; a_t and j_t get what is left at
-//    that speed, so a slow feed on a curve still accelerates at nearly the full limit;
+//    that speed, so a slow feed on a curve still accelerates at nearly the full limit, and
+//    on arcs and chains more where the ramps allow it (ramp_envelope.h);
 //  - lines use kSmoothJerkShare of each axis' jerk; the rest is for the velocity kink and
 //    acceleration step a junction may cause within one IPO cycle;
 //  - a line in a smooth chain (continuous_path.h) is planned as a curve of the chain's

@@ -1,0 +1,116 @@
+// The ramp envelope (ramp_envelope.h): what it allows must keep every axis within its limits
+// at every state a profile with those limits can reach, checked here by dense sampling
+// independent of the envelope's interval bounds; it must never be slower than the
+// top-speed budget it starts from; and through the planner a fast small circle gains from it
+// while every sampled setpoint stays within the axis limits.
+#include "ncc/vm/motion/ramp_envelope.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "gtest/gtest.h"
+#include "motion_test_util.h"
+#include "ncc/vm/motion/limits.h"
+
+namespace ncc::vm::motion {
+namespace {
+
+using namespace motion_test;
+
+// Every axis at (v, a_t, j_t) of a curve: the sum or the norm bound holds.
+bool axisWithin(const RampEnvelope::Axis& x, double v, double kappa, double rate, double a,
+                double j) {
+  const double tol = 1e-9;
+  const double centripetal = v * v * kappa, cross = 3.0 * v * kappa * a, rotation = v * v * v * rate;
+  const bool on_plane = x.normal > 0.0;
+  const bool acc = a * x.tangent + centripetal * x.normal <= x.acceleration * (1 + tol) ||
+                   (on_plane && std::hypot(a, centripetal) <= x.acceleration * (1 + tol));
+  const bool jerk = j * x.tangent + (cross + rotation) * x.normal <= x.jerk * (1 + tol) ||
+                    (on_plane && std::hypot(j, cross) + rotation <= x.jerk * (1 + tol));
+  return acc && jerk;
+}
+
+TEST(RampEnvelope, WidenedLimitsHoldAtEveryReachableState) {
+  Random rng(7);
+  int widened = 0;
+  for (int trial = 0; trial < 200; ++trial) {
+    double top = rng.uniform(5.0, 300.0);
+    const double kappa = 1.0 / rng.uniform(0.5, 100.0), rate = kappa * kappa;
+    std::vector<RampEnvelope::Axis> axes;
+    const int n = 2 + rng.below(3);
+    for (int i = 0; i < n; ++i) {
+      const RampEnvelope::Axis x{rng.uniform(0.3, 1.0), rng.below(3) == 0 ? 0.0 : rng.uniform(0.3, 1.0),
+                                 rng.uniform(800.0, 4000.0), rng.uniform(10000.0, 80000.0)};
+      axes.push_back(x);
+      // The top speed is capped as segmentLimits caps it: the centripetal part at most 3/4
+      // of the axis acceleration, the rotation at most 1/3 of its jerk.
+      if (x.normal > 0.0) {
+        top = std::min(top, std::sqrt(kCentripetalShare * x.acceleration / (kappa * x.normal)));
+        top = std::min(top, std::cbrt(x.jerk / 3.0 / (rate * x.normal)));
+      }
+    }
+    RampEnvelope env(top, kappa, rate);
+    TangentialBudget budget;
+    for (const RampEnvelope::Axis& x : axes) {
+      env.add(x);
+      budget.add({x.tangent, 3.0 * top * kappa * x.normal, x.jerk - top * top * top * rate * x.normal,
+                  x.normal > 0.0 ? 3.0 * top * kappa : 0.0,
+                  x.normal > 0.0 ? x.jerk - top * top * top * rate : 0.0});
+    }
+    // The top-speed budget's choice, as segmentLimits makes it (acceleration from the axes).
+    double a0 = 1e300;
+    for (const auto& x : axes) {
+      const double c = top * top * kappa;
+      double ai = x.tangent > 0.0 ? (x.acceleration - c * x.normal) / x.tangent : 1e300;
+      if (x.normal > 0.0 && x.acceleration >= c) ai = std::max(ai, std::sqrt(x.acceleration * x.acceleration - c * c));
+      a0 = std::min(a0, ai);
+    }
+    if (!(a0 > 0.0)) continue;
+    double j0 = INFINITY;
+    budget.split(top, a0, j0);
+    if (!(a0 > 0.0 && j0 > 0.0)) continue;
+    double a = a0, j = j0;
+    env.widen(a, j);
+    EXPECT_LE(top / a + a / j, (top / a0 + a0 / j0) * (1.0 + 1e-12)) << trial;
+    if (a != a0 || j != j0) ++widened;
+    // Dense sampling of the envelope: every v, every |a_t| up to min(a, sqrt(2 j (top - v))),
+    // the full jerk.
+    for (int s = 0; s <= 400; ++s) {
+      const double v = std::min(top, top * s / 400.0);
+      const double alpha = std::min(a, std::sqrt(2.0 * j * (top - v)));
+      for (double f : {0.0, 0.5, 1.0}) {
+        for (const auto& x : axes)
+          ASSERT_TRUE(axisWithin(x, v, kappa, rate, f * alpha, j))
+              << "trial " << trial << " v " << v << " a_t " << f * alpha << " j " << j;
+      }
+    }
+  }
+  EXPECT_GT(widened, 50);  // the envelope usually finds a faster pair
+}
+
+TEST(RampEnvelope, SmallFastCircleGainsAndKeepsEveryLimit) {
+  // G2 circles of r 3..25 mm at F3000..F9000 from rest: the planned time against the
+  // rest-to-rest S-curve over the circle at full axis limits (a lower bound within 0.3 % on
+  // circles, bench/circle_optimum.h), and every sampled setpoint within the axis limits.
+  const MachineConfig m = defaultMachine();
+  const double A = m.axes[0].max_acceleration, J = m.axes[0].max_jerk;
+  for (double r : {3.0, 10.0, 25.0}) {
+    for (double feed : {3000.0, 6000.0, 9000.0}) {
+      const Trace t = run(m, {arc(xyz(r, 0, 0), xyz(r, 0, 0), 0, 1, 0.0, 0.0, false, feed)});
+      const Worst w = check(m, t);
+      EXPECT_LE(w.velocity, 1.0 + kTolerance) << r << " " << feed;
+      EXPECT_LE(w.acceleration, 1.0 + kTolerance) << r << " " << feed;
+      EXPECT_LE(w.jerk, 1.0 + kTolerance) << r << " " << feed;
+      EXPECT_EQ(t.points.back(), xyz(r, 0, 0));
+      if (r == 10.0 && feed == 6000.0) {
+        // 0.781 s with the top-speed budget alone; the lower bound is 0.718 s.
+        const double bound = restToRestTime(2.0 * std::numbers::pi * r, 100.0, A, J);
+        EXPECT_LT(static_cast<double>(t.ticks() - 1) * m.ipo_cycle_seconds, 1.05 * bound);
+      }
+    }
+  }
+}
+
+}  // namespace
+}  // namespace ncc::vm::motion

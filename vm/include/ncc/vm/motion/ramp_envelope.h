@@ -1,0 +1,58 @@
+#pragma once
+// Tangential acceleration and jerk for a curve that hold along every ramp, not only at the
+// curve's top speed (docs/planner.md, "Limits").
+//
+// TangentialBudget (limits.h) prices the centripetal part v^2 k, the cross term 3 v k a_t and
+// the rotation v^3 rho at the top speed V together with the full a_t. But every S-curve
+// profile planned with velocity limit V, acceleration a and jerk j (scurve.h) has, at every
+// instant,
+//     |a_t| <= alpha(v) = min(a, sqrt(2 j (V - v))):
+// the rest of a ramp up still gains a_t^2 / 2j of speed, and a ramp down has already lost
+// that much since its peak (<= V). The terms that grow with v therefore meet the full a_t
+// only at lower speeds, and near V the tangential part is small. widen() searches the
+// (a, j) with the shortest ramp over V, V/a + a/j, for which every axis stays within its
+// limits at every (v, alpha(v), j) of that envelope. It checks the envelope on intervals of v
+// with bounds that hold over the whole interval (alpha at the interval's start, the terms
+// that grow with v at its end), so the result is safe between the checked speeds too.
+#include <array>
+
+#include "ncc/machine/axes.h"
+
+namespace ncc::vm::motion {
+
+class RampEnvelope {
+ public:
+  struct Axis {
+    double tangent;       // t_i: bound of |dx_i/ds|
+    double normal;        // q_i: bound of the axis' share of the unit normal
+    double acceleration;  // what the axis may use (after any wiggle share)
+    double jerk;          // likewise, of the smooth jerk share
+  };
+  // Speed intervals checked, and the search's steps.
+  static constexpr int kIntervals = 16;
+  static constexpr int kCandidates = 8;
+  static constexpr int kJerkSteps = 16;
+
+  // A curve with top speed `top`, curvature bound `curvature` and curvature-rate bound
+  // `rate` (|d3x/ds3|).
+  RampEnvelope(double top, double curvature, double rate)
+      : top_(top), curvature_(curvature), rate_(rate) {}
+  void add(const Axis& axis);
+
+  // (acceleration, jerk) in: limits that already hold at the top speed (TangentialBudget's);
+  // out: the pair with the shortest ramp among those and the envelope's candidates.
+  void widen(double& acceleration, double& jerk) const;
+
+  // Whether every axis is within its limits on the whole envelope of (a, j).
+  bool holds(double a, double j) const;
+
+ private:
+  // The largest j (up to `cap`) for which holds(a, j), 0 if none.
+  double largestJerk(double a, double cap) const;
+
+  double top_, curvature_, rate_;
+  std::array<Axis, kMaxAxes> axes_{};
+  int count_ = 0;
+};
+
+}  // namespace ncc::vm::motion
