@@ -184,9 +184,9 @@ class CliTest(unittest.TestCase):
             self.assertIn("override", proc.stderr)
 
     def test_run_lookahead_depth_from_the_machine_file(self):
-        # A circle r10 in 0.01 mm chords at F6000: the default look-ahead (1024 segments, 10 mm)
-        # cannot hold the braking distance from F; lookahead_segments = 4096 can, so the
-        # circle runs faster. Out of range is a machine-file error naming the key.
+        # A circle r10 in 0.01 mm chords at F6000: 64 segments (0.64 mm) cannot hold the
+        # braking distance from F; lookahead_segments = 4096 can, so the circle runs faster.
+        # Out of range is a machine-file error naming the key.
         n = 6283
         lines = ["G21 G90 G94 G17", "G00 X10. Y0.", "G64 G01 F6000."]
         for i in range(1, n + 1):
@@ -199,8 +199,19 @@ class CliTest(unittest.TestCase):
             self.assertEqual(proc.returncode, 0, proc.stderr)
             return float(re.search(r"program time +(\d+\.\d+) s", proc.stdout).group(1))
         deep = self.write("deep.toml", '[machine]\naxes = ["X", "Y", "Z"]\nlookahead_segments = 4096\n')
-        default, longer = seconds(), seconds("--machine", deep)
-        self.assertLess(longer, default - 0.05)
+        shallow = self.write("shallow.toml", '[machine]\naxes = ["X", "Y", "Z"]\nlookahead_segments = 64\n')
+        self.assertLess(seconds("--machine", deep), seconds("--machine", shallow) - 0.5)
+        # The summary says how often the depth held the speed down, and names the key.
+        def limited(*extra):
+            out = ncc("run", prog, *extra).stdout
+            m = re.search(r"look-ahead limited +(\d+\.\d) % of the time \((\d+) segments: "
+                          r"\[machine\] lookahead_segments\)", out)
+            self.assertIsNotNone(m, out)
+            return float(m.group(1)), int(m.group(2))
+        self.assertGreater(limited("--machine", shallow)[0], 50.0)
+        self.assertEqual(limited("--machine", shallow)[1], 64)
+        self.assertEqual(limited("--machine", deep), (0.0, 4096))
+        self.assertEqual(limited()[1], 1024)
         bad = self.write("bad.toml", '[machine]\naxes = ["X", "Y", "Z"]\nlookahead_segments = 8\n')
         proc = ncc("run", prog, "--machine", bad)
         self.assertNotEqual(proc.returncode, 0)

@@ -39,8 +39,17 @@ std::string limitViolationsLine(const vm::RunStatistics& s, int axis_count) {
                          s.limit_violations, travel, velocity, acceleration);
 }
 
+// How often the look-ahead's depth held the speed down, and the setting that sets it.
+std::string lookaheadLine(const vm::RunStatistics& s, int lookahead_segments) {
+  const double share = s.ticks > 0 ? 100.0 * static_cast<double>(s.lookahead_limited_ticks) /
+                                         static_cast<double>(s.ticks)
+                                   : 0.0;
+  return absl::StrFormat("look-ahead limited %.1f %% of the time (%d segments: [machine] lookahead_segments)",
+                         share, lookahead_segments);
+}
+
 void printSummary(std::ostream& out, const driver::SimulationResult& sim,
-                  const bytecode::Program& program, double tick_seconds) {
+                  const bytecode::Program& program, double tick_seconds, int lookahead_segments) {
   const vm::RunStatistics& s = sim.statistics;
   out << absl::StrFormat("program time       %.3f s (%d ticks of %g ms)\n", s.program_time, s.ticks,
                          tick_seconds * 1000.0)
@@ -52,6 +61,7 @@ void printSummary(std::ostream& out, const driver::SimulationResult& sim,
       << absl::StrFormat("max contour error  %.4f mm (t = %.3f s)\n", s.max_contour_error,
                          static_cast<double>(s.max_contour_error_tick) * tick_seconds)
       << limitViolationsLine(s, program.axisCount()) << '\n'
+      << lookaheadLine(s, lookahead_segments) << '\n'
       << "final position    ";
   for (int i = 0; i < program.axisCount(); ++i)
     out << ' ' << program.header.axes[i].name << driver::jsonNumber(sim.final_commanded[i]);
@@ -88,17 +98,20 @@ int runSimulation(driver::Session& session, const bytecode::Program& program, co
     std::cerr << "ncc: error: " << sim.error << '\n';
     return kProgramError;
   }
+  const MachineConfig& machine = session.machine();
+  auto summary = [&](std::ostream& out) {
+    printSummary(out, sim, program, machine.ipo_cycle_seconds, machine.lookahead_segments);
+  };
   if (sim.alarm) {
     output.discard();
     reportAlarm(session, program, *sim.alarm);
     printDiagnostics(session);
-    if (args.emit == "summary") printSummary(std::cerr, sim, program, session.machine().ipo_cycle_seconds);
+    if (args.emit == "summary") summary(std::cerr);
     return kRuntimeAlarm;
   }
-  if (args.emit == "summary") printSummary(output.stream(), sim, program, session.machine().ipo_cycle_seconds);
+  if (args.emit == "summary") summary(output.stream());
   if (!output.commit()) return kUsage;
-  if (!args.output.empty() && args.emit != "summary")
-    printSummary(std::cout, sim, program, session.machine().ipo_cycle_seconds);
+  if (!args.output.empty() && args.emit != "summary") summary(std::cout);
   return kOk;
 }
 

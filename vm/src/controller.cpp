@@ -151,6 +151,7 @@ TickStatus Controller::tick(TickOutput& out) noexcept {
   last_.path_velocity = info.velocity;
   last_.where = info.where;
   last_.file = fileName(info.where.file);
+  if (info.lookahead_limited) ++lookahead_limited_ticks_;
   stats_.add(k, last_.time, setpoint, sample.actual, sample.following_error,
              !info.idle && info.kind == MotionPrimitive::Kind::Rapid, info.velocity);
   if (servo_.alarm().code != 0) raiseServoAlarm(servo_.alarm(), info.where);
@@ -242,6 +243,7 @@ void Controller::raiseServoAlarm(const ServoAlarm& a, SourcePosition where) {
 
 RunStatistics Controller::statistics() const {
   RunStatistics s = stats_.statistics();
+  s.lookahead_limited_ticks = lookahead_limited_ticks_;
   s.limit_violations = 0;
   for (int i = 0; i < servo_.axisCount(); ++i) {
     s.violations[i] = servo_.violations(i);

@@ -19,6 +19,7 @@ void Interpolator::startPiece(LookAhead& queue, bool closed) {
     duration_ = run.dwell_seconds;
     piece_start_ = piece_end_ = 0.0;
     piece_ends_run_ = true;
+    piece_lookahead_limited_ = false;
     return;
   }
   per_axis_ = queue.frontSegment().per_axis;
@@ -30,6 +31,7 @@ void Interpolator::startPiece(LookAhead& queue, bool closed) {
     duration_ = rapid_.duration();
     piece_end_ = run.length;
     piece_ends_run_ = true;
+    piece_lookahead_limited_ = false;
     return;
   }
   const PieceInputs in = pieceInputs(queue, 0, piece_start_, exit_velocity_, closed);
@@ -41,6 +43,7 @@ void Interpolator::startPiece(LookAhead& queue, bool closed) {
   duration_ = profile_.duration;
   piece_end_ = plan.piece_end;
   piece_ends_run_ = plan.ends_run;
+  piece_lookahead_limited_ = plan.lookahead_limited;
 }
 
 bool Interpolator::rapidAheadFor(const QueuedSegment& seg) const {
@@ -91,10 +94,24 @@ Interpolator::PiecePlan Interpolator::planPiece(const PieceInputs& in) const {
       plan.ends_run = false;
       return plan;
     }
+    // Top speed is out of reach within what is queued. Ramp up only to the highest speed from
+    // which a stop still fits, ending the piece there (a = 0, where the ramps would meet):
+    // input that arrives meanwhile lets the next piece go on accelerating, where a piece that
+    // also braked would be committed to stopping.
+    const SCurveProfile whole = planProfile(rest, in.v0, 0.0, top, l.acceleration, l.jerk);
+    if (whole.v_peak > in.v0 && whole.accel.duration >= cycle_) {
+      plan.profile = planProfile(whole.accel.distance, in.v0, whole.v_peak, whole.v_peak,
+                                 l.acceleration, l.jerk);
+      plan.piece_end = in.piece_start + whole.accel.distance;
+      plan.ends_run = false;
+      plan.lookahead_limited = true;
+      return plan;
+    }
   }
   plan.profile = planProfile(rest, in.v0, in.v1, l.velocity, l.acceleration, l.jerk);
   plan.piece_end = in.run_length;
   plan.ends_run = true;
+  plan.lookahead_limited = in.open;
   return plan;
 }
 
@@ -199,6 +216,7 @@ bool Interpolator::setpoint(uint64_t k, LookAhead& queue, bool closed, AxisValue
       info.kind = run.kind;
       info.where = seg.where;
       info.idle = false;
+      info.lookahead_limited = piece_lookahead_limited_;
       return true;
     }
     // The piece ended before this tick: move the clock to its end and continue.

@@ -70,11 +70,13 @@ void RampEnvelope::widen(double& acceleration, double& jerk) const {
   j_cap = std::max(j_cap, j0);
   double best_a = a0, best_j = j0, best_time = top_ / a0 + a0 / j0;
   // Candidates spaced geometrically from the top-speed choice to the rest limit; at each,
-  // the largest jerk the envelope allows.
+  // the largest jerk the envelope allows. Only pairs that raise neither limit less than the
+  // budget's are taken: a profile is never slower with higher limits, so no move (a short one
+  // that never reaches V included) loses time.
   for (int c = 0; c <= kCandidates; ++c) {
     const double a = a0 * std::pow(a_cap / a0, static_cast<double>(c) / kCandidates);
     const double j = largestJerk(a, j_cap);
-    if (!(j > 0.0)) continue;
+    if (!(j >= j0)) continue;
     const double time = top_ / a + a / j;
     if (time < best_time) best_time = time, best_a = a, best_j = j;
   }

@@ -148,6 +148,7 @@ class Controller {
   motion::MotionPlanner planner_;
   ServoModel servo_;
   StatisticsAccumulator stats_;
+  uint64_t lookahead_limited_ticks_ = 0;  // ticks with SetpointInfo::lookahead_limited
 
   Event event_;                   // the executor's output slot (reused)
   bool event_pending_ = false;    // event_ was pulled but the planner had no room

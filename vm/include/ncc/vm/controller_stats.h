@@ -39,6 +39,9 @@ struct RunStatistics {
   uint64_t max_contour_error_tick = 0;
   std::array<LimitViolations, kMaxAxes> violations{};  // per axis
   int64_t limit_violations = 0;        // sum over axes and kinds
+  // Ticks on which the path braked toward the end of what the look-ahead held while more of
+  // the program was to come: its depth (lookahead_segments) limited the speed.
+  uint64_t lookahead_limited_ticks = 0;
 };
 
 class StatisticsAccumulator {

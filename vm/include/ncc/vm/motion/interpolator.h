@@ -41,6 +41,9 @@ struct SetpointInfo {
   // the next piece starts on the next call, so a caller with a servo model can hold the
   // setpoint there until the axes are in position (vm::Controller does).
   bool in_position_check = false;
+  // The running piece brakes toward the end of what is queued although more input may
+  // follow: the look-ahead (its capacity, or a preparation that fell behind) limits the speed.
+  bool lookahead_limited = false;
 };
 
 class Interpolator {
@@ -81,6 +84,7 @@ class Interpolator {
     SCurveProfile profile;
     double piece_end = 0.0;
     bool ends_run = false;
+    bool lookahead_limited = false;  // an open run too short to reach top speed and brake
   };
   PieceInputs pieceInputs(const LookAhead& queue, std::size_t run, double piece_start, double v0,
                           bool closed) const;
@@ -99,6 +103,7 @@ class Interpolator {
   double piece_start_ = 0.0;  // run offset where the piece starts
   double piece_end_ = 0.0;    // run offset where it ends
   bool piece_ends_run_ = false;
+  bool piece_lookahead_limited_ = false;
   bool per_axis_ = false;  // the piece is a non-linear rapid: axes evaluated by rapid_
   AxisRapid rapid_;
   // Its clock.

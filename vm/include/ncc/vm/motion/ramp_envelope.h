@@ -40,7 +40,8 @@ class RampEnvelope {
   void add(const Axis& axis);
 
   // (acceleration, jerk) in: limits that already hold at the top speed (TangentialBudget's);
-  // out: the pair with the shortest ramp among those and the envelope's candidates.
+  // out: the pair with the shortest ramp over V among those and the envelope's candidates
+  // that are at least as large in both (so no profile gets slower).
   void widen(double& acceleration, double& jerk) const;
 
   // Whether every axis is within its limits on the whole envelope of (a, j).
