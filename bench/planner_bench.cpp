@@ -1,9 +1,10 @@
 // Motion planner throughput (figures, not pass/fail): planned segments per second on 10 um
-// G01 chains, and interpolated ticks per second on a circle.
+// G01 chains, straight and along a fast circle, and interpolated ticks per second on a circle.
 //   build/bench/planner_bench
 #include <benchmark/benchmark.h>
 
 #include <cmath>
+#include <numbers>
 #include <vector>
 
 #include "ncc/machine/machine_config.h"
@@ -43,6 +44,28 @@ void BM_PlannedSegments(benchmark::State& state) {
   state.counters["ticks/s"] = benchmark::Counter(static_cast<double>(ticks), benchmark::Counter::kIsRate);
 }
 BENCHMARK(BM_PlannedSegments)->Unit(benchmark::kMillisecond);
+
+// A circle r = 10 in 0.01 mm chords at F6000 (10 chords per tick): a fast curved chain, whose
+// limits come from the ramp envelope search (computed once per chain shape).
+void BM_PlannedCurvedChain(benchmark::State& state) {
+  const ncc::MachineConfig machine = ncc::defaultMachine();
+  std::vector<MotionPrimitive> prog;
+  const double r = 10.0;
+  const int n = static_cast<int>(std::lround(2.0 * std::numbers::pi * r / 0.01));
+  AxisValues p{};
+  p[0] = r;
+  for (int i = 1; i <= n; ++i) {
+    const double t = 2.0 * std::numbers::pi * i / n;
+    AxisValues q{};
+    q[0] = i == n ? r : r * std::cos(t);
+    q[1] = i == n ? 0.0 : r * std::sin(t);
+    prog.push_back(line(p, q, 6000.0));
+    p = q;
+  }
+  for (auto _ : state) runProgram(machine, prog);
+  state.SetItemsProcessed(static_cast<int64_t>(state.iterations()) * static_cast<int64_t>(prog.size()));
+}
+BENCHMARK(BM_PlannedCurvedChain)->Unit(benchmark::kMillisecond);
 
 // Ten full circles r = 20 at F3000 as one arc each: interpolation dominates.
 void BM_Ticks(benchmark::State& state) {

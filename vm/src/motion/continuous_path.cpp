@@ -26,6 +26,13 @@ double roundDown(double x) {
   return std::min(x, std::exp2(std::floor(16.0 * std::log2(x)) / 16.0));
 }
 
+// Rounds a positive shape quantity up to the grid 2^(k/64) (steps of 1.1 %): a chain's lines
+// then share their curvature and sagitta, and their limits are computed once.
+double roundUpFine(double x) {
+  if (!(x > 0.0) || !std::isfinite(x)) return x;
+  return std::max(x, std::exp2(std::ceil(64.0 * std::log2(x)) / 64.0));
+}
+
 double dot(const AxisValues& a, const AxisValues& b, int n) {
   double s = 0.0;
   for (int i = 0; i < n; ++i) s += a[i] * b[i];
@@ -107,14 +114,15 @@ void ContinuousPath::queueHeld(const AxisValues& end, double end_curvature,
     return;
   }
   ChainShape chain;
-  chain.curvature = std::max(held_.start_curvature, end_curvature);
-  chain.sagitta = std::max(held_.start_sagitta, end_sagitta);
+  chain.curvature = roundUpFine(std::max(held_.start_curvature, end_curvature));
+  chain.sagitta = roundUpFine(std::max(held_.start_sagitta, end_sagitta));
   for (int i = 0; i < n; ++i) {
     const bool moves = held_.direction[i] != 0.0 || held_.previous_direction[i] != 0.0 ||
                        next_direction[i] != 0.0;
     chain.involved[i] = moves ? 1.0 : 0.0;
   }
-  SegmentLimits limits = segmentLimits(seg.path, limits_, false, held_.feed, chain);
+  SegmentLimits limits = chain.curvature > 0.0 ? chainLimits(seg.path, held_.feed, chain)
+                                               : segmentLimits(seg.path, limits_, false, held_.feed, chain);
   // The chain's curvature changes from one vertex to the next along this line: an
   // acceleration step v^2 dk within at most one cycle reads as a jerk v^2 dk / T. Where the
   // path is at rest (the first line of a chain started from a standstill, the last one
@@ -134,6 +142,21 @@ void ContinuousPath::queueHeld(const AxisValues& end, double end_curvature,
   }
   limits.velocity = std::max(limits.velocity, kMinPathVelocity);
   enqueue(seg, MotionPrimitive::Kind::Line, limits, held_.start_limit, stop_after);
+}
+
+SegmentLimits ContinuousPath::chainLimits(const PathSegment& line, double feed,
+                                          const ChainShape& chain) {
+  // A chain line's limits depend on nothing else: its tangent and normal are bounded by 1 on
+  // every involved axis (limits.h), whatever its direction.
+  const bool same = chain_cache_.valid && chain_cache_.feed == feed &&
+                    chain_cache_.curvature == chain.curvature &&
+                    chain_cache_.sagitta == chain.sagitta &&
+                    chain_cache_.involved == chain.involved;
+  if (!same) {
+    chain_cache_ = {true, feed, chain.curvature, chain.sagitta, chain.involved,
+                    segmentLimits(line, limits_, false, feed, chain)};
+  }
+  return chain_cache_.limits;
 }
 
 void ContinuousPath::flush(bool at_rest) {

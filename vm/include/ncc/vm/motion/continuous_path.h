@@ -87,10 +87,21 @@ class ContinuousPath {
                           double blend_length, double trim);
   // Largest polygon deviation (mm) a chain may have on the axes in `involved`.
   double wiggleAllowance(const AxisValues& involved) const;
+  // segmentLimits of a chain line, kept for the next line of the same shape: on fast curves
+  // they take a search over the ramp envelope (ramp_envelope.h), tens of microseconds, and a
+  // chain's lines share curvature and sagitta (rounded up to a 1.1 % grid).
+  SegmentLimits chainLimits(const PathSegment& line, double feed, const ChainShape& chain);
 
   const AxisLimits& limits_;
   LookAhead& queue_;
   HeldLine held_;
+  struct ChainLimitsCache {
+    bool valid = false;
+    double feed = 0.0, curvature = 0.0, sagitta = 0.0;
+    AxisValues involved{};
+    SegmentLimits limits;
+  };
+  ChainLimitsCache chain_cache_;
 };
 
 }  // namespace ncc::vm::motion
