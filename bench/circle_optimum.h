@@ -36,11 +36,12 @@ class CircleOptimum {
   double topSpeed() const { return top_; }
 
   // Seconds from rest to rest once around; NaN if the run-up and slow-down do not fit (the
-  // contours benchmarked here always reach top speed).
+  // contours benchmarked here always reach top speed) or the limits leave no way to land.
   double seconds() const {
     double s = 0.0, v = 0.0, a = 0.0, t = 0.0;
     bool landing = false;
-    for (;;) {
+    for (int step = 0;; ++step) {
+      if (step > kMaxSteps) return std::numeric_limits<double>::quiet_NaN();
       double lo, hi;
       jerkRange(s, v, a, lo, hi);
       if (!landing && landingSpeed(s, v, a) >= top_) landing = true;
@@ -69,6 +70,10 @@ class CircleOptimum {
 
  private:
   static constexpr double kStep = 1e-5;  // s
+  // Guards: a run-up or a landing takes far fewer steps than these (a landing a / |j| of a
+  // second). More means a state that cannot brake its acceleration: seconds() is then NaN.
+  static constexpr int kMaxSteps = 10000000;
+  static constexpr int kMaxLandingSteps = 1000000;
 
   // The path jerks [lo, hi] that keep both axes' jerk within J at (s, v, a).
   void jerkRange(double s, double v, double a, double& lo, double& hi) const {
@@ -101,9 +106,10 @@ class CircleOptimum {
   // The speed at which a = 0 is reached from (s, v, a) braking the acceleration with the
   // least jerk allowed.
   double landingSpeed(double s, double v, double a) const {
-    while (a > 0.0) {
+    for (int step = 0; a > 0.0; ++step) {
       double lo, hi;
       jerkRange(s, v, a, lo, hi);
+      if (!(lo < 0.0) || step > kMaxLandingSteps) return std::numeric_limits<double>::infinity();
       const double a_next = a + lo * kStep;
       if (a_next <= 0.0) return v + 0.5 * a * kStep * (a / (a - a_next));
       s += v * kStep + 0.5 * a * kStep * kStep;

@@ -45,27 +45,32 @@ void BM_PlannedSegments(benchmark::State& state) {
 }
 BENCHMARK(BM_PlannedSegments)->Unit(benchmark::kMillisecond);
 
-// A circle r = 10 in 0.01 mm chords at F6000 (10 chords per tick): a fast curved chain, whose
-// limits come from the ramp envelope search (computed once per chain shape).
+// A circle r = 10 in chords of about 0.01 mm at F6000 (10 chords per tick): a fast curved
+// chain, whose limits come from the ramp envelope search (computed once per chain shape).
+// Argument 0: equal chords; 1: chords of 0.005 to 0.015 mm (every chord has its own length
+// and sagitta; vertices next to chords above about 0.014 mm deviate too much for a chain and
+// are blended, so this one also pays for blends and their short runs in the backward pass).
 void BM_PlannedCurvedChain(benchmark::State& state) {
   const ncc::MachineConfig machine = ncc::defaultMachine();
+  const bool varying = state.range(0) != 0;
   std::vector<MotionPrimitive> prog;
   const double r = 10.0;
-  const int n = static_cast<int>(std::lround(2.0 * std::numbers::pi * r / 0.01));
   AxisValues p{};
   p[0] = r;
-  for (int i = 1; i <= n; ++i) {
-    const double t = 2.0 * std::numbers::pi * i / n;
+  double angle = 0.0;
+  for (int i = 0; angle < 2.0 * std::numbers::pi; ++i) {
+    const double chord = varying ? 0.005 + 0.01 * ((i * 7919) % 101) / 100.0 : 0.01;
+    angle = std::min(angle + chord / r, 2.0 * std::numbers::pi);
     AxisValues q{};
-    q[0] = i == n ? r : r * std::cos(t);
-    q[1] = i == n ? 0.0 : r * std::sin(t);
+    q[0] = r * std::cos(angle);
+    q[1] = r * std::sin(angle);
     prog.push_back(line(p, q, 6000.0));
     p = q;
   }
   for (auto _ : state) runProgram(machine, prog);
   state.SetItemsProcessed(static_cast<int64_t>(state.iterations()) * static_cast<int64_t>(prog.size()));
 }
-BENCHMARK(BM_PlannedCurvedChain)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_PlannedCurvedChain)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
 
 // Ten full circles r = 20 at F3000 as one arc each: interpolation dominates.
 void BM_Ticks(benchmark::State& state) {

@@ -100,7 +100,7 @@ TEST(Controller, ProgramStopBringsThePathToRest) {
 TEST(Controller, LookAheadDepthComesFromTheMachine) {
   // A circle r 10 in 0.01 mm chords at F6000: the planner keeps a stop within what it holds,
   // so 256 segments (2.56 mm) allow only part of the feed (braking on the curve takes about
-  // 6.4 mm from 100 mm/s); the machine's lookahead_segments = 4096 holds it and the circle
+  // 6.7 mm from 100 mm/s); the machine's lookahead_segments = 4096 holds it and the circle
   // runs at F. An explicit ControllerOptions::window_capacity overrides the machine. The
   // statistics count the ticks the depth held the speed down: with 4096 only at the start,
   // while the first ticks' events (max_events_per_tick) fill the window.

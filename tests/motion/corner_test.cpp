@@ -136,7 +136,7 @@ TEST_P(TessellatedCircle, RunsAtFeedLikeTheCircle) {
   const double r = 10.0, feed = GetParam();
   const int n = static_cast<int>(std::lround(2.0 * std::numbers::pi * r / 0.01));
   const std::vector<MotionPrimitive> prog = polygonCircle(r, n, feed);
-  // A window of 4096 segments: braking from 100 mm/s takes 8.5 mm, 850 of these chords.
+  // A window of 4096 segments: braking from 100 mm/s takes about 6.7 mm, 670 of these chords.
   const Trace t = run(m, prog, 4096);
   const Trace arc_trace = run(m, {arc(xyz(r, 0, 0), xyz(r, 0, 0), 0, 1, 0.0, 0.0, false, feed)});
   double top = 0.0;
@@ -153,6 +153,34 @@ TEST_P(TessellatedCircle, RunsAtFeedLikeTheCircle) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Corners, TessellatedCircle, ::testing::Values(3000.0, 6000.0));
+
+TEST(Corners, ZeroLengthRapidDoesNotEndAChainAtRest) {
+  // A chain followed by a rapid that does not move and then a line: nothing stops between
+  // them, so the chain's last line must keep its curvature-step limit (a chain's end is only
+  // free of it where the path is at rest). With the chain ended as if at rest the sampled
+  // jerk was 14.9 x the limit.
+  const MachineConfig m = defaultMachine();
+  const double r = 10.0;
+  const int n = static_cast<int>(std::lround(std::numbers::pi * r / 0.01));
+  std::vector<MotionPrimitive> prog;
+  AxisValues p = xyz(r, 0, 0);
+  for (int i = 1; i <= n; ++i) {
+    const double a = std::numbers::pi * i / n;
+    const AxisValues q = xyz(r * std::cos(a), r * std::sin(a), 0);
+    prog.push_back(line(p, q, 6000.0));
+    p = q;
+  }
+  // The line goes on exactly along the last chord: no kink to slow the junction.
+  const AxisValues& before = prog.back().from;
+  const AxisValues on = xyz(p[0] + 500.0 * (p[0] - before[0]), p[1] + 500.0 * (p[1] - before[1]), 0);
+  prog.push_back(rapid(p, p));
+  prog.push_back(line(p, on, 6000.0));
+  const Trace t = run(m, prog, 4096);
+  const Worst w = check(m, t);
+  EXPECT_LE(w.acceleration, 1.0 + kTolerance);
+  EXPECT_LE(w.jerk, 1.0 + kTolerance);
+  EXPECT_EQ(t.points.back(), prog.back().to);
+}
 
 // Random 3-D polylines: segment lengths from 5 um to 20 mm, turns from 0 to 175 degrees,
 // feeds 100..8000 mm/min, on a machine with unequal axes.

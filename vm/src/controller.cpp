@@ -68,7 +68,8 @@ Controller::Controller(bytecode::Program program, const MachineConfig& machine,
       executor_(program_, machine_),
       planner_(machine_, options.window_capacity != 0
                              ? options.window_capacity
-                             : static_cast<std::size_t>(std::max(machine_.lookahead_segments, 1))),
+                             // The machine file's range, also for a MachineConfig built in code.
+                             : static_cast<std::size_t>(std::clamp(machine_.lookahead_segments, 16, 16384))),
       servo_(machine_),
       stats_(machine_.axisCount()) {
   executor_.setStepLimit(options_.step_limit);

@@ -26,12 +26,16 @@ double roundDown(double x) {
   return std::min(x, std::exp2(std::floor(16.0 * std::log2(x)) / 16.0));
 }
 
-// Rounds a positive shape quantity up to the grid 2^(k/64) (steps of 1.1 %): a chain's lines
-// then share their curvature and sagitta, and their limits are computed once.
-double roundUpFine(double x) {
+// Rounds a positive shape quantity up to the grid 2^(k/steps): a chain's lines then share
+// their curvature and sagitta, and their limits are computed once per shape.
+double roundUp(double x, double steps) {
   if (!(x > 0.0) || !std::isfinite(x)) return x;
-  return std::max(x, std::exp2(std::ceil(64.0 * std::log2(x)) / 64.0));
+  return std::max(x, std::exp2(std::ceil(steps * std::log2(x)) / steps));
 }
+// Curvature on a 1.1 % grid. The sagitta (the polygon's wiggle, which takes at most a fifth of
+// the jerk) on a 19 % grid: it changes with every chord length, and this keeps chains whose
+// chords vary to a few shapes.
+constexpr double kCurvatureGridSteps = 64.0, kSagittaGridSteps = 4.0;
 
 double dot(const AxisValues& a, const AxisValues& b, int n) {
   double s = 0.0;
@@ -114,8 +118,8 @@ void ContinuousPath::queueHeld(const AxisValues& end, double end_curvature,
     return;
   }
   ChainShape chain;
-  chain.curvature = roundUpFine(std::max(held_.start_curvature, end_curvature));
-  chain.sagitta = roundUpFine(std::max(held_.start_sagitta, end_sagitta));
+  chain.curvature = roundUp(std::max(held_.start_curvature, end_curvature), kCurvatureGridSteps);
+  chain.sagitta = roundUp(std::max(held_.start_sagitta, end_sagitta), kSagittaGridSteps);
   for (int i = 0; i < n; ++i) {
     const bool moves = held_.direction[i] != 0.0 || held_.previous_direction[i] != 0.0 ||
                        next_direction[i] != 0.0;
@@ -148,15 +152,16 @@ SegmentLimits ContinuousPath::chainLimits(const PathSegment& line, double feed,
                                           const ChainShape& chain) {
   // A chain line's limits depend on nothing else: its tangent and normal are bounded by 1 on
   // every involved axis (limits.h), whatever its direction.
-  const bool same = chain_cache_.valid && chain_cache_.feed == feed &&
-                    chain_cache_.curvature == chain.curvature &&
-                    chain_cache_.sagitta == chain.sagitta &&
-                    chain_cache_.involved == chain.involved;
-  if (!same) {
-    chain_cache_ = {true, feed, chain.curvature, chain.sagitta, chain.involved,
-                    segmentLimits(line, limits_, false, feed, chain)};
+  for (const ChainLimits& c : chain_cache_) {
+    if (c.valid && c.feed == feed && c.curvature == chain.curvature &&
+        c.sagitta == chain.sagitta && c.involved == chain.involved)
+      return c.limits;
   }
-  return chain_cache_.limits;
+  ChainLimits& slot = chain_cache_[chain_cache_next_];
+  chain_cache_next_ = (chain_cache_next_ + 1) % chain_cache_.size();
+  slot = {true, feed, chain.curvature, chain.sagitta, chain.involved,
+          segmentLimits(line, limits_, false, feed, chain)};
+  return slot.limits;
 }
 
 void ContinuousPath::flush(bool at_rest) {
@@ -181,9 +186,11 @@ bool ContinuousPath::line(const AxisValues& from, const AxisValues& to, double f
   programmed.tangent(0.0, next.direction);
 
   if (!held_.active) {
-    // The junction with whatever is queued (an arc, or nothing): the plain rule.
+    // The junction with whatever is queued (an arc, or nothing): the plain rule. From rest
+    // (nothing queued, a stop, a dwell or a rapid before it: enqueue's rule) it is 0.
     const QueuedSegment* prev = queue_.lastSegment();
-    next.start_limit = prev != nullptr ? junctionVelocity(prev->path, programmed, limits_) : 0.0;
+    const bool from_rest = prev == nullptr || queue_.lastStops() || !isFeed(queue_.lastKind());
+    next.start_limit = from_rest ? 0.0 : junctionVelocity(prev->path, programmed, limits_);
   } else {
     const HeldLine& a = held_;
     const double theta = turnAngle(a.direction, next.direction, n);

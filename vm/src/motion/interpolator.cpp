@@ -47,7 +47,7 @@ void Interpolator::startPiece(LookAhead& queue, bool closed) {
 }
 
 bool Interpolator::rapidAheadFor(const QueuedSegment& seg) const {
-  // The limits are the machine's, fixed: the end points decide the rapid.
+  // The limits are fixed while it is ready (rapidLimitsChanged): the end points decide.
   auto same = [](const AxisValues& a, const AxisValues& b) {
     return std::memcmp(a.data(), b.data(), sizeof(AxisValues)) == 0;
   };
@@ -104,7 +104,7 @@ Interpolator::PiecePlan Interpolator::planPiece(const PieceInputs& in) const {
                                  l.acceleration, l.jerk);
       plan.piece_end = in.piece_start + whole.accel.distance;
       plan.ends_run = false;
-      plan.lookahead_limited = true;
+      plan.lookahead_limited = whole.v_peak < top;
       return plan;
     }
   }

@@ -38,6 +38,7 @@ void MotionPlanner::setOverrides(double feed, double rapid) {
   feed_override_ = std::isfinite(feed) ? std::clamp(feed, 1e-3, 2.0) : 1.0;
   const double r = std::isfinite(rapid) ? std::clamp(rapid, 1e-3, 1.0) : 1.0;
   for (int i = 0; i < limits_.count; ++i) rapid_limits_.rapid_velocity[i] = r * limits_.rapid_velocity[i];
+  interpolator_.rapidLimitsChanged();
 }
 
 bool MotionPlanner::push(const MotionPrimitive& m) {
@@ -74,7 +75,6 @@ bool MotionPlanner::push(const MotionPrimitive& m) {
     if (!path_.line(m.from, m.to, feed, m.exact_stop, m.where) && m.exact_stop) stop();
     return true;
   }
-  path_.flush(rapid);  // a rapid starts from rest; an arc may join the line moving
   QueuedSegment seg;
   seg.where = m.where;
   seg.exact_stop = m.exact_stop;
@@ -84,7 +84,10 @@ bool MotionPlanner::push(const MotionPrimitive& m) {
   } else {
     seg.path = PathSegment::line(m.from, m.to, n);
   }
-  if (!(seg.path.length() > 0.0)) {  // nothing moves: only its exact stop counts
+  const bool moves = seg.path.length() > 0.0;
+  // The held line ends at rest before a rapid that moves; an arc may join it moving.
+  path_.flush(rapid && moves);
+  if (!moves) {  // nothing moves: only its exact stop counts
     if (m.exact_stop) stop();
     return true;
   }

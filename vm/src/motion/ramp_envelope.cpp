@@ -43,9 +43,9 @@ bool RampEnvelope::holds(double a, double j) const {
   return true;
 }
 
-double RampEnvelope::largestJerk(double a, double cap) const {
+double RampEnvelope::largestJerk(double a, double floor, double cap) const {
   if (holds(a, cap)) return cap;
-  double lo = 0.0, hi = cap;
+  double lo = floor, hi = cap;
   for (int k = 0; k < kJerkSteps; ++k) {
     const double mid = 0.5 * (lo + hi);
     (holds(a, mid) ? lo : hi) = mid;
@@ -75,8 +75,8 @@ void RampEnvelope::widen(double& acceleration, double& jerk) const {
   // that never reaches V included) loses time.
   for (int c = 0; c <= kCandidates; ++c) {
     const double a = a0 * std::pow(a_cap / a0, static_cast<double>(c) / kCandidates);
-    const double j = largestJerk(a, j_cap);
-    if (!(j >= j0)) continue;
+    if (!holds(a, j0)) continue;  // not even the budget's jerk at this acceleration
+    const double j = largestJerk(a, j0, j_cap);
     const double time = top_ / a + a / j;
     if (time < best_time) best_time = time, best_a = a, best_j = j;
   }

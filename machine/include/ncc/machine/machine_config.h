@@ -72,7 +72,7 @@ struct MachineConfig {
   double corner_tolerance = 0.01;
   // Most motion segments the VM's look-ahead holds (a line, a corner blend, an arc each take
   // one). The planner keeps a stop within what it holds, so with short segments this bounds
-  // the speed: a circle r 10 in 0.01 mm chords at F6000 brakes over about 6.5 mm, 650 of
+  // the speed: a circle r 10 in 0.01 mm chords at F6000 brakes over about 6.7 mm, 670 of
   // its chords; with 256 it stays below 90 mm/s. Each takes about 2 KB. Machine file:
   // [machine] lookahead_segments.
   int lookahead_segments = 1024;

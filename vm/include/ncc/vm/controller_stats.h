@@ -39,8 +39,9 @@ struct RunStatistics {
   uint64_t max_contour_error_tick = 0;
   std::array<LimitViolations, kMaxAxes> violations{};  // per axis
   int64_t limit_violations = 0;        // sum over axes and kinds
-  // Ticks on which the path braked toward the end of what the look-ahead held while more of
-  // the program was to come: its depth (lookahead_segments) limited the speed.
+  // Ticks on which the path ramped to a peak below its top speed, or braked to rest, because a
+  // stop had to fit within what the look-ahead held while more of the program was to come:
+  // its depth (lookahead_segments) or a late prepare() limited the speed.
   uint64_t lookahead_limited_ticks = 0;
 };
 

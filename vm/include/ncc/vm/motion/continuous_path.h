@@ -17,6 +17,7 @@
 //  - stop: reversals, a zero corner tolerance, or a turn too large to blend.
 // Held lines never reach the look-ahead half-decided: each one is queued exactly once, when
 // its end vertex is known or nothing can follow (flush).
+#include <array>
 #include <cstddef>
 
 #include "ncc/vm/events.h"
@@ -87,21 +88,22 @@ class ContinuousPath {
                           double blend_length, double trim);
   // Largest polygon deviation (mm) a chain may have on the axes in `involved`.
   double wiggleAllowance(const AxisValues& involved) const;
-  // segmentLimits of a chain line, kept for the next line of the same shape: on fast curves
+  // segmentLimits of a chain line, kept for later lines of the same shape: on fast curves
   // they take a search over the ramp envelope (ramp_envelope.h), tens of microseconds, and a
-  // chain's lines share curvature and sagitta (rounded up to a 1.1 % grid).
+  // chain's lines share curvature and sagitta (rounded up to a grid).
   SegmentLimits chainLimits(const PathSegment& line, double feed, const ChainShape& chain);
 
   const AxisLimits& limits_;
   LookAhead& queue_;
   HeldLine held_;
-  struct ChainLimitsCache {
+  struct ChainLimits {
     bool valid = false;
     double feed = 0.0, curvature = 0.0, sagitta = 0.0;
     AxisValues involved{};
     SegmentLimits limits;
   };
-  ChainLimitsCache chain_cache_;
+  std::array<ChainLimits, 32> chain_cache_{};  // the last shapes seen, replaced in turn
+  std::size_t chain_cache_next_ = 0;
 };
 
 }  // namespace ncc::vm::motion

@@ -13,7 +13,10 @@
 //  - the open last run: if the known rest allows accelerating to the run's top speed and
 //    still braking to rest, the piece ends at top speed (a = 0) where braking from top speed
 //    still fits; the next piece continues at top speed with whatever has been queued since.
-//    Otherwise the piece brakes to rest at the end of the window.
+//    Otherwise the piece ramps up only to the highest speed from which a stop still fits
+//    and ends there (a = 0); a piece that starts at that speed brakes to rest at the end of
+//    the window. (A braking piece is committed once started; ending at the peak lets input
+//    that arrives meanwhile carry the path on.)
 //  - a non-linear rapid (QueuedSegment::per_axis) is one piece from rest to rest in which
 //    every axis follows its own profile (axis_rapid.h).
 #include <array>
@@ -41,8 +44,9 @@ struct SetpointInfo {
   // the next piece starts on the next call, so a caller with a servo model can hold the
   // setpoint there until the axes are in position (vm::Controller does).
   bool in_position_check = false;
-  // The running piece brakes toward the end of what is queued although more input may
-  // follow: the look-ahead (its capacity, or a preparation that fell behind) limits the speed.
+  // The running piece ramps up to a peak below the run's top speed, or brakes to rest, because
+  // a stop must fit within what is queued although more input may follow: the look-ahead (its
+  // depth, or a preparation that fell behind) limits the speed.
   bool lookahead_limited = false;
 };
 
@@ -67,6 +71,8 @@ class Interpolator {
   void planNextPiece(const LookAhead& queue, bool closed);
 
   const AxisValues& position() const { return position_; }
+  // The rapid limits (kept by reference) were changed: a rapid planned ahead is stale.
+  void rapidLimitsChanged() { rapid_ahead_ready_ = false; }
 
  private:
   // Everything a line/arc piece's plan depends on (dwells and non-linear rapids are planned

@@ -31,7 +31,7 @@ class RampEnvelope {
   // Speed intervals checked, and the search's steps.
   static constexpr int kIntervals = 16;
   static constexpr int kCandidates = 8;
-  static constexpr int kJerkSteps = 16;
+  static constexpr int kJerkSteps = 12;
 
   // A curve with top speed `top`, curvature bound `curvature` and curvature-rate bound
   // `rate` (|d3x/ds3|).
@@ -48,8 +48,8 @@ class RampEnvelope {
   bool holds(double a, double j) const;
 
  private:
-  // The largest j (up to `cap`) for which holds(a, j), 0 if none.
-  double largestJerk(double a, double cap) const;
+  // The largest j in [floor, cap] for which holds(a, j), given holds(a, floor).
+  double largestJerk(double a, double floor, double cap) const;
 
   double top_, curvature_, rate_;
   std::array<Axis, kMaxAxes> axes_{};
