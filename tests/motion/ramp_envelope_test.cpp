@@ -70,6 +70,17 @@ TEST(RampEnvelope, WidenedLimitsHoldAtEveryReachableState) {
     double j0 = INFINITY;
     budget.split(top, a0, j0);
     if (!(a0 > 0.0 && j0 > 0.0)) continue;
+    // The closed-form largest jerk agrees with a fine bisection on holds().
+    for (double f : {1.0, 1.5, 2.5}) {
+      const double a_try = f * a0;
+      double lo = 0.0, hi = 1e7;
+      for (int k = 0; k < 80; ++k) {
+        const double mid = 0.5 * (lo + hi);
+        (env.holds(a_try, mid) ? lo : hi) = mid;
+      }
+      EXPECT_NEAR(std::min(env.jerkBound(a_try), 1e7), lo, 1e-9 * std::max(lo, 1.0))
+          << "trial " << trial << " a " << a_try;
+    }
     double a = a0, j = j0;
     env.widen(a, j);
     EXPECT_LE(top / a + a / j, (top / a0 + a0 / j0) * (1.0 + 1e-12)) << trial;

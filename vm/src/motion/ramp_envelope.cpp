@@ -43,8 +43,78 @@ bool RampEnvelope::holds(double a, double j) const {
   return true;
 }
 
+double RampEnvelope::jerkBound(double a) const {
+  // Per speed interval and axis, the largest j with the same bounds as holds(). alpha(j) =
+  // min(a, sqrt(2 j D)), D = V - u0: for j >= a^2 / 2D it is a and every bound is linear or
+  // quadratic in j; below, it is sqrt(2 j D) and they are quadratic in sqrt(j) (sum form) or
+  // in j (norm form). Each bound grows with j, so its largest j is a root, and an axis is
+  // within its limit if either form is: the larger of the two.
+  double bound = kInf;
+  for (int m = 0; m < kIntervals; ++m) {
+    const double u0 = top_ * m / kIntervals;
+    const double u1 = m + 1 == kIntervals ? top_ : top_ * (m + 1) / kIntervals;
+    const double d = top_ - u0;
+    const double j_switch = a * a / (2.0 * d);  // alpha reaches a here
+    const double centripetal = u1 * u1 * curvature_;
+    const double c3 = 3.0 * u1 * curvature_;  // cross term per unit alpha
+    const double rotation = u1 * u1 * u1 * rate_;
+    for (int i = 0; i < count_; ++i) {
+      const Axis& x = axes_[i];
+      const bool on_plane = x.normal > 0.0;
+      // Acceleration: the largest alpha either form allows; above a it does not bind.
+      double alpha_max = -kInf;
+      if (x.tangent > 0.0) alpha_max = (x.acceleration - centripetal * x.normal) / x.tangent;
+      else if (centripetal * x.normal <= x.acceleration) alpha_max = kInf;
+      if (on_plane && centripetal <= x.acceleration)
+        alpha_max = std::max(alpha_max, std::sqrt(x.acceleration * x.acceleration - centripetal * centripetal));
+      if (alpha_max < a) {
+        if (!(alpha_max > 0.0)) return 0.0;
+        bound = std::min(bound, alpha_max * alpha_max / (2.0 * d));
+      }
+      // Jerk, sum form: j t + (c3 alpha + rotation) q <= J.
+      double sum = -kInf;
+      const double left = x.jerk - rotation * x.normal;
+      if (c3 * a * x.normal <= left) {  // with alpha = a: j t <= left - c3 a q
+        const double rest = left - c3 * a * x.normal;
+        const double j1 = x.tangent > 0.0 ? rest / x.tangent : kInf;
+        if (j1 >= j_switch) sum = j1;
+      }
+      if (sum == -kInf && left > 0.0) {
+        // alpha = sqrt(2 j D): t s^2 + b s - left <= 0, s = sqrt(j), b = c3 q sqrt(2D).
+        const double b = c3 * x.normal * std::sqrt(2.0 * d);
+        const double s = x.tangent > 0.0
+                             ? 2.0 * left / (b + std::sqrt(b * b + 4.0 * x.tangent * left))
+                             : (b > 0.0 ? left / b : kInf);
+        sum = std::min(s * s, j_switch);
+      }
+      // Norm form: j^2 + (c3 alpha)^2 <= (J - rotation)^2.
+      double norm = -kInf;
+      if (on_plane && rotation <= x.jerk) {
+        const double c = (x.jerk - rotation) * (x.jerk - rotation);
+        if (c3 * a * c3 * a <= c && std::sqrt(c - c3 * a * c3 * a) >= j_switch) {
+          norm = std::sqrt(c - c3 * a * c3 * a);
+        } else {
+          // j^2 + e j - c <= 0 with e = 2 D c3^2.
+          const double e = 2.0 * d * c3 * c3;
+          norm = std::min(2.0 * c / (e + std::sqrt(e * e + 4.0 * c)), j_switch);
+        }
+      }
+      const double best = std::max(sum, norm);
+      if (!(best > 0.0)) return 0.0;
+      bound = std::min(bound, best);
+    }
+  }
+  return bound;
+}
+
 double RampEnvelope::largestJerk(double a, double floor, double cap) const {
   if (holds(a, cap)) return cap;
+  // The closed form, confirmed by holds() (a rounding step below it if needed).
+  const double closed = std::min(cap, jerkBound(a));
+  for (double shrink : {0.0, 1e-12, 1e-9, 1e-6}) {
+    const double j = closed * (1.0 - shrink);
+    if (j >= floor && holds(a, j)) return j;
+  }
   double lo = floor, hi = cap;
   for (int k = 0; k < kJerkSteps; ++k) {
     const double mid = 0.5 * (lo + hi);

@@ -46,10 +46,15 @@ class RampEnvelope {
 
   // Whether every axis is within its limits on the whole envelope of (a, j).
   bool holds(double a, double j) const;
+  // The largest j for which holds(a, j) (up to rounding), in closed form per speed interval
+  // and axis; 0 if none.
+  double jerkBound(double a) const;
 
  private:
-  // The largest j in [floor, cap] for which holds(a, j), given holds(a, floor).
+  // The largest j in [floor, cap] for which holds(a, j), given holds(a, floor): the closed
+  // form of jerkBound when holds() confirms it, else a bisection.
   double largestJerk(double a, double floor, double cap) const;
+
 
   double top_, curvature_, rate_;
   std::array<Axis, kMaxAxes> axes_{};
