@@ -149,13 +149,10 @@ class MachineFileReader {
     readBounded(t, "ipo_cycle", Low::Excluded, 0.0, 0.1, "s", m_.ipo_cycle_seconds);
     readBounded(t, "chord_tolerance", Low::Excluded, 0.0, 1.0, "mm", m_.chord_tolerance);
     readBounded(t, "corner_tolerance", Low::Included, 0.0, 10.0, "mm", m_.corner_tolerance);
-    readCount(t, "lookahead_segments", kMinLookahead, kMaxLookahead, m_.lookahead_segments);
+    readCount(t, "lookahead_segments", MachineConfig::kMinLookaheadSegments,
+              MachineConfig::kMaxLookaheadSegments, m_.lookahead_segments);
     return true;
   }
-
-  // The look-ahead's bounds: a few segments (what one line may queue, with room to plan), and
-  // what fits in about 32 MB.
-  static constexpr int kMinLookahead = 16, kMaxLookahead = 16384;
 
   // [machine] `key`, if given: an integer from `low` to `high` into `field`, else an error
   // naming the range.

@@ -69,7 +69,9 @@ Controller::Controller(bytecode::Program program, const MachineConfig& machine,
       planner_(machine_, options.window_capacity != 0
                              ? options.window_capacity
                              // The machine file's range, also for a MachineConfig built in code.
-                             : static_cast<std::size_t>(std::clamp(machine_.lookahead_segments, 16, 16384))),
+                             : static_cast<std::size_t>(std::clamp(
+                                   machine_.lookahead_segments, MachineConfig::kMinLookaheadSegments,
+                                   MachineConfig::kMaxLookaheadSegments))),
       servo_(machine_),
       stats_(machine_.axisCount()) {
   executor_.setStepLimit(options_.step_limit);

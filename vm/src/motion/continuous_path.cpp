@@ -20,22 +20,21 @@ bool isFeed(MotionPrimitive::Kind k) {
   return k == MotionPrimitive::Kind::Line || k == MotionPrimitive::Kind::Arc;
 }
 
-// Rounds a positive limit down to the grid 2^(k/16) (steps of 4.4 %).
-double roundDown(double x) {
+// Rounds a positive value down / up to the grid 2^(k/steps).
+double roundDown(double x, double steps) {
   if (!(x > 0.0) || !std::isfinite(x)) return x;
-  return std::min(x, std::exp2(std::floor(16.0 * std::log2(x)) / 16.0));
+  return std::min(x, std::exp2(std::floor(steps * std::log2(x)) / steps));
 }
-
-// Rounds a positive shape quantity up to the grid 2^(k/steps): a chain's lines then share
-// their curvature and sagitta, and their limits are computed once per shape.
 double roundUp(double x, double steps) {
   if (!(x > 0.0) || !std::isfinite(x)) return x;
   return std::max(x, std::exp2(std::ceil(steps * std::log2(x)) / steps));
 }
-// Curvature on a 1.1 % grid. The sagitta (the polygon's wiggle, which takes at most a fifth of
-// the jerk) on a 19 % grid: it changes with every chord length, and this keeps chains whose
-// chords vary to a few shapes.
-constexpr double kCurvatureGridSteps = 64.0, kSagittaGridSteps = 4.0;
+// A chain line's limits are rounded down to a 4.4 % grid, so that neighbouring lines have
+// equal limits and join one run. Its shape is rounded up, so that its lines share one shape
+// and their limits are computed once: the curvature on a 1.1 % grid; the sagitta (the
+// polygon's wiggle, which takes at most a fifth of the jerk) on a 19 % grid, since it changes
+// with every chord length.
+constexpr double kLimitGridSteps = 16.0, kCurvatureGridSteps = 64.0, kSagittaGridSteps = 4.0;
 
 double dot(const AxisValues& a, const AxisValues& b, int n) {
   double s = 0.0;
@@ -56,14 +55,17 @@ double turnAngle(const AxisValues& u1, const AxisValues& u2, int n) {
 
 }  // namespace
 
+bool ContinuousPath::joinsMoving(MotionPrimitive::Kind kind) const {
+  return queue_.lastSegment() != nullptr && !queue_.lastStops() &&
+         queue_.lastKind() != MotionPrimitive::Kind::Dwell &&
+         isFeed(queue_.lastKind()) == isFeed(kind);
+}
+
 void ContinuousPath::enqueue(const QueuedSegment& segment, MotionPrimitive::Kind kind,
                              const SegmentLimits& limits, double vertex_limit, bool stop_after) {
-  double entry = 0.0;
-  const QueuedSegment* prev = queue_.lastSegment();
-  if (prev != nullptr && !queue_.lastStops() && queue_.lastKind() != MotionPrimitive::Kind::Dwell &&
-      isFeed(queue_.lastKind()) == isFeed(kind)) {
-    entry = std::min({queue_.lastLimits().velocity, limits.velocity, vertex_limit});
-  }
+  const double entry =
+      joinsMoving(kind) ? std::min({queue_.lastLimits().velocity, limits.velocity, vertex_limit})
+                        : 0.0;
   queue_.push(segment, kind, limits, entry, stop_after, 0.0);
 }
 
@@ -140,9 +142,9 @@ void ContinuousPath::queueHeld(const AxisValues& end, double end_curvature,
     limits.velocity = std::min(limits.velocity, curvatureStepLimit(step, chain.involved));
     // Neighbouring lines of a chain differ slightly in curvature; rounded down to a common
     // grid, their limits are equal and they join one run (one S-curve, not one per 10 um).
-    if (limits.velocity < held_.feed) limits.velocity = roundDown(limits.velocity);
-    limits.acceleration = roundDown(limits.acceleration);
-    limits.jerk = roundDown(limits.jerk);
+    if (limits.velocity < held_.feed) limits.velocity = roundDown(limits.velocity, kLimitGridSteps);
+    limits.acceleration = roundDown(limits.acceleration, kLimitGridSteps);
+    limits.jerk = roundDown(limits.jerk, kLimitGridSteps);
   }
   limits.velocity = std::max(limits.velocity, kMinPathVelocity);
   enqueue(seg, MotionPrimitive::Kind::Line, limits, held_.start_limit, stop_after);
@@ -186,11 +188,11 @@ bool ContinuousPath::line(const AxisValues& from, const AxisValues& to, double f
   programmed.tangent(0.0, next.direction);
 
   if (!held_.active) {
-    // The junction with whatever is queued (an arc, or nothing): the plain rule. From rest
-    // (nothing queued, a stop, a dwell or a rapid before it: enqueue's rule) it is 0.
-    const QueuedSegment* prev = queue_.lastSegment();
-    const bool from_rest = prev == nullptr || queue_.lastStops() || !isFeed(queue_.lastKind());
-    next.start_limit = from_rest ? 0.0 : junctionVelocity(prev->path, programmed, limits_);
+    // The junction with whatever is queued (an arc, or nothing): the plain rule; 0 from rest
+    // (nothing queued, a stop, a dwell or a rapid before it).
+    next.start_limit = joinsMoving(MotionPrimitive::Kind::Line)
+                           ? junctionVelocity(queue_.lastSegment()->path, programmed, limits_)
+                           : 0.0;
   } else {
     const HeldLine& a = held_;
     const double theta = turnAngle(a.direction, next.direction, n);

@@ -12,7 +12,7 @@ namespace {
 constexpr double kInf = std::numeric_limits<double>::infinity();
 // The ramp envelope (ramp_envelope.h) is searched when the terms that grow with the speed
 // take more than this share of some axis' acceleration or jerk at the top speed: below it
-// there is little to gain for its cost (a few tens of microseconds).
+// there is little to gain for its cost (several microseconds).
 constexpr double kEnvelopeWorthShare = 0.05;
 
 }  // namespace
@@ -107,8 +107,10 @@ SegmentLimits segmentLimits(const PathSegment& path, const AxisLimits& axes, boo
     const double jerk = kSmoothJerkShare * axes.jerk[i] - q[i] * wiggle_jerk;
     budget.add({t[i], cross * q[i], jerk - rotation * q[i],
                 curved && q[i] > 0.0 ? cross : 0.0, curved && q[i] > 0.0 ? jerk - rotation : 0.0});
-    envelope.add({t[i], q[i], acc, jerk});
-    speed_share = std::max({speed_share, centripetal * q[i] / acc, rotation * q[i] / jerk});
+    if (curved) {
+      envelope.add({t[i], q[i], acc, jerk});
+      speed_share = std::max({speed_share, centripetal * q[i] / acc, rotation * q[i] / jerk});
+    }
   }
   budget.split(v, lim.acceleration, lim.jerk);
   // On arcs and chains the envelope of the ramps may allow more (a blend is short and passed

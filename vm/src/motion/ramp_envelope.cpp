@@ -16,15 +16,20 @@ void RampEnvelope::add(const Axis& axis) {
   axes_[count_++] = axis;
 }
 
+RampEnvelope::Interval RampEnvelope::interval(int m) const {
+  // Over [u0, u1]: alpha is largest at u0, the terms that grow with v at u1.
+  const double u0 = top_ * m / kIntervals;
+  const double u1 = m + 1 == kIntervals ? top_ : top_ * (m + 1) / kIntervals;
+  return {top_ - u0, u1 * u1 * curvature_, 3.0 * u1 * curvature_, u1 * u1 * u1 * rate_};
+}
+
 bool RampEnvelope::holds(double a, double j) const {
   for (int m = 0; m < kIntervals; ++m) {
-    // Over [u0, u1]: alpha is largest at u0, the terms that grow with v at u1.
-    const double u0 = top_ * m / kIntervals;
-    const double u1 = m + 1 == kIntervals ? top_ : top_ * (m + 1) / kIntervals;
-    const double alpha = std::min(a, std::sqrt(2.0 * j * (top_ - u0)));
-    const double centripetal = u1 * u1 * curvature_;
-    const double cross = 3.0 * u1 * curvature_ * alpha;
-    const double rotation = u1 * u1 * u1 * rate_;
+    const Interval iv = interval(m);
+    const double alpha = std::min(a, std::sqrt(2.0 * j * iv.room));
+    const double centripetal = iv.centripetal;
+    const double cross = iv.cross_per_alpha * alpha;
+    const double rotation = iv.rotation;
     for (int i = 0; i < count_; ++i) {
       const Axis& x = axes_[i];
       // Each axis is within its limit if either bound holds (limits.h, TangentialBudget):
@@ -51,13 +56,12 @@ double RampEnvelope::jerkBound(double a) const {
   // within its limit if either form is: the larger of the two.
   double bound = kInf;
   for (int m = 0; m < kIntervals; ++m) {
-    const double u0 = top_ * m / kIntervals;
-    const double u1 = m + 1 == kIntervals ? top_ : top_ * (m + 1) / kIntervals;
-    const double d = top_ - u0;
+    const Interval iv = interval(m);
+    const double d = iv.room;
     const double j_switch = a * a / (2.0 * d);  // alpha reaches a here
-    const double centripetal = u1 * u1 * curvature_;
-    const double c3 = 3.0 * u1 * curvature_;  // cross term per unit alpha
-    const double rotation = u1 * u1 * u1 * rate_;
+    const double centripetal = iv.centripetal;
+    const double c3 = iv.cross_per_alpha;
+    const double rotation = iv.rotation;
     for (int i = 0; i < count_; ++i) {
       const Axis& x = axes_[i];
       const bool on_plane = x.normal > 0.0;

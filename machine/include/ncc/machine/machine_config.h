@@ -74,8 +74,10 @@ struct MachineConfig {
   // one). The planner keeps a stop within what it holds, so with short segments this bounds
   // the speed: a circle r 10 in 0.01 mm chords at F6000 brakes over about 6.7 mm, 670 of
   // its chords; with 256 it stays below 90 mm/s. Each takes about 2 KB. Machine file:
-  // [machine] lookahead_segments.
+  // [machine] lookahead_segments, from kMinLookaheadSegments (what one line may queue, with
+  // room to plan) to kMaxLookaheadSegments (about 32 MB).
   int lookahead_segments = 1024;
+  static constexpr int kMinLookaheadSegments = 16, kMaxLookaheadSegments = 16384;
   ParameterSet params;                   // [machine.params]
 
   int axisIndex(std::string_view name) const;  // -1 if not configured

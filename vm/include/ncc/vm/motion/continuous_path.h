@@ -86,10 +86,13 @@ class ContinuousPath {
   static double stopCost(double speed, double accel, double jerk);
   static double blendCost(double speed, double accel, double jerk, double blend_speed,
                           double blend_length, double trim);
+  // Whether a segment of `kind` queued now joins the path while it moves (else it starts from
+  // rest: nothing queued, or a stop, a dwell or a change between feed and rapid before it).
+  bool joinsMoving(MotionPrimitive::Kind kind) const;
   // Largest polygon deviation (mm) a chain may have on the axes in `involved`.
   double wiggleAllowance(const AxisValues& involved) const;
   // segmentLimits of a chain line, kept for later lines of the same shape: on fast curves
-  // they take a search over the ramp envelope (ramp_envelope.h), tens of microseconds, and a
+  // they take a search over the ramp envelope (ramp_envelope.h), several microseconds, and a
   // chain's lines share curvature and sagitta (rounded up to a grid).
   SegmentLimits chainLimits(const PathSegment& line, double feed, const ChainShape& chain);
 

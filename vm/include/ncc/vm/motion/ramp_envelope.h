@@ -51,10 +51,18 @@ class RampEnvelope {
   double jerkBound(double a) const;
 
  private:
+  // Speed interval m of kIntervals over [0, V], bounded as holds() and jerkBound() use it: the
+  // room V - u0 that alpha is taken at, and the terms that grow with v at the interval's end.
+  struct Interval {
+    double room;             // V - u0
+    double centripetal;      // u1^2 k
+    double cross_per_alpha;  // 3 u1 k (the cross term is this times a_t)
+    double rotation;         // u1^3 rho
+  };
+  Interval interval(int m) const;
   // The largest j in [floor, cap] for which holds(a, j), given holds(a, floor): the closed
   // form of jerkBound when holds() confirms it, else a bisection.
   double largestJerk(double a, double floor, double cap) const;
-
 
   double top_, curvature_, rate_;
   std::array<Axis, kMaxAxes> axes_{};
