@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <functional>
 #include <vector>
 
 #include "ncc/machine/machine_config.h"
@@ -77,11 +78,16 @@ struct Trace {
 
 // Runs `program` through a planner the way the VM loop does: before each tick, push while the
 // planner wants more (and, with `plan_ahead`, let it plan the next piece, as
-// vm::Controller::prepare does). `max_ticks` guards against a hang.
+// vm::Controller::prepare does). `max_ticks` guards against a hang. `before_tick(k, planner)`,
+// when given, runs before tick k's setpoint (an operator turning the feed override knob);
+// `setup(planner)` once before the first push.
+using PlannerHook = std::function<void(uint64_t, vm::motion::MotionPlanner&)>;
 inline Trace run(const MachineConfig& machine, const std::vector<MotionPrimitive>& program,
                  std::size_t capacity = 1024, uint64_t max_ticks = 50'000'000,
-                 bool plan_ahead = false) {
+                 bool plan_ahead = false, const PlannerHook& before_tick = {},
+                 const std::function<void(vm::motion::MotionPlanner&)>& setup = {}) {
   vm::motion::MotionPlanner planner(machine, capacity);
+  if (setup) setup(planner);
   Trace trace;
   std::size_t next = 0;
   AxisValues p{};
@@ -89,6 +95,7 @@ inline Trace run(const MachineConfig& machine, const std::vector<MotionPrimitive
   for (uint64_t k = 0; k < max_ticks; ++k) {
     while (next < program.size() && planner.canAccept()) planner.push(program[next++]);
     if (next == program.size()) planner.endOfProgram();
+    if (before_tick) before_tick(k, planner);
     if (plan_ahead) planner.planAhead();
     if (!planner.setpoint(k, p, info)) break;
     trace.points.push_back(p);

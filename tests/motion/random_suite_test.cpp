@@ -210,6 +210,57 @@ TEST(RandomSuite, DeterministicHash) {
   EXPECT_EQ(h, 0x7a249232e525c717ULL);
 }
 
+// The operator turns the feed override knob during the run (MotionPlanner::setFeedOverride):
+// at seeded random ticks (every 15 or every 120 ticks on average), to random values from 5 %
+// up to the maximum the run was planned for (100 %, or 200 % on odd seeds), with a full or a
+// 48-segment look-ahead. Every sampled limit still holds, every stop still lands on
+// its point, planning ahead still changes no setpoint, and the knob really acts (the program
+// time changes).
+TEST(RandomSuite, LiveFeedOverrideKeepsEveryLimit) {
+  const MachineConfig m = testMachine();
+  Worst overall;
+  int slower = 0;
+  constexpr uint64_t kSeeds = 16;
+  for (uint64_t seed = 1; seed <= kSeeds; ++seed) {
+    Generator gen(seed);
+    const std::vector<MotionPrimitive> prog = gen.program(30);
+    const double top = seed % 2 == 1 ? 2.0 : 1.0;
+    const int every = seed % 3 == 0 ? 15 : 120;
+    const std::size_t window = seed % 4 == 0 ? 48 : 1024;
+    auto knob = [seed, top, every](uint64_t k, vm::motion::MotionPlanner& planner) {
+      // The same turns for the same tick whatever ran before: a hash of (seed, k).
+      Random r(seed * 1000003 + k);
+      if (r.below(every) == 0) planner.setFeedOverride(r.uniform(0.05, top));
+    };
+    auto setup = [top](vm::motion::MotionPlanner& planner) { planner.setOverrides(1.0, 1.0, top); };
+    const Trace t = run(m, prog, window, 50'000'000, false, knob, setup);
+    const Trace ahead = run(m, prog, window, 50'000'000, true, knob, setup);
+    ASSERT_GT(t.ticks(), 0u);
+    EXPECT_EQ(fnv1a(t, 3), fnv1a(ahead, 3)) << "seed " << seed;
+    const Worst w = check(m, t);
+    EXPECT_LE(w.velocity, 1.0 + kTolerance) << "seed " << seed;
+    EXPECT_LE(w.acceleration, 1.0 + kTolerance) << "seed " << seed;
+    EXPECT_LE(w.jerk, 1.0 + kTolerance) << "seed " << seed;
+    overall.velocity = std::max(overall.velocity, w.velocity);
+    overall.acceleration = std::max(overall.acceleration, w.acceleration);
+    overall.jerk = std::max(overall.jerk, w.jerk);
+    EXPECT_EQ(t.points.back(), prog.back().to) << "seed " << seed;
+    for (std::size_t i = 0; i < prog.size(); ++i) {
+      const bool stops = prog[i].exact_stop || (i + 1 < prog.size() && prog[i + 1].kind == Kind::Dwell);
+      if (!stops) continue;
+      EXPECT_NE(std::find(t.points.begin(), t.points.end(), prog[i].to), t.points.end())
+          << "seed " << seed << " primitive " << i;
+    }
+    if (t.ticks() > run(m, prog, window).ticks()) ++slower;
+  }
+  // Turned mostly below 100 % (and planned for 200 % on odd seeds): most runs take longer.
+  EXPECT_GE(slower, static_cast<int>(kSeeds) / 2);
+  std::printf("live feed override: worst ratio to axis limit: v %.9f a %.9f j %.9f; %d of %llu "
+              "runs slower\n",
+              overall.velocity, overall.acceleration, overall.jerk, slower,
+              static_cast<unsigned long long>(kSeeds));
+}
+
 // MotionPlanner::planAhead (the next piece planned in the preparation, outside the tick) is a
 // pure precomputation: the setpoints are bit-identical with and without it.
 TEST(RandomSuite, PlanningAheadChangesNoSetpoint) {

@@ -75,7 +75,8 @@ Controller::Controller(bytecode::Program program, const MachineConfig& machine,
       servo_(machine_),
       stats_(machine_.axisCount()) {
   executor_.setStepLimit(options_.step_limit);
-  planner_.setOverrides(options_.feed_override, options_.rapid_override);
+  planner_.setOverrides(options_.feed_override, options_.rapid_override,
+                        options_.max_feed_override);
   servo_.reset(machine_.start_position);
   last_.commanded = machine_.start_position;
   last_.actual = machine_.start_position;

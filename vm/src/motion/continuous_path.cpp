@@ -114,6 +114,7 @@ void ContinuousPath::queueHeld(const AxisValues& end, double end_curvature,
   seg.where = held_.where;
   seg.path = PathSegment::line(held_.start, end, n);
   seg.exact_stop = stop_after && held_.exact_stop;
+  seg.feed_limit = held_.feed_limit;
   if (!(seg.path.length() > kNegligibleLength)) {
     // Trimmed away by the blends at both ends (they meet tangentially with zero curvature).
     if (stop_after) queue_.stopAfterLast();
@@ -173,7 +174,7 @@ void ContinuousPath::flush(bool at_rest) {
 }
 
 bool ContinuousPath::line(const AxisValues& from, const AxisValues& to, double feed,
-                          bool exact_stop, const SourcePosition& where) {
+                          double feed_limit, bool exact_stop, const SourcePosition& where) {
   const int n = limits_.count;
   const PathSegment programmed = PathSegment::line(from, to, n);
   if (!(programmed.length() > 0.0)) return false;
@@ -182,6 +183,7 @@ bool ContinuousPath::line(const AxisValues& from, const AxisValues& to, double f
   next.start = from;
   next.end = to;
   next.feed = feed;
+  next.feed_limit = feed_limit;
   next.where = where;
   next.exact_stop = exact_stop;
   next.length = programmed.length();
@@ -236,6 +238,7 @@ bool ContinuousPath::line(const AxisValues& from, const AxisValues& to, double f
         const CornerBlend curve = CornerBlend::make(a.end, a.direction, next.direction, d, n);
         QueuedSegment blend;
         blend.where = where;
+        blend.feed_limit = std::min(a.feed_limit, feed_limit);
         blend.path = PathSegment::blend(b_from, b_to, curve, n);
         SegmentLimits bl = segmentLimits(blend.path, limits_, false, std::min(a.feed, feed));
         bl.velocity = std::max(bl.velocity, kMinPathVelocity);

@@ -71,6 +71,7 @@ Interpolator::PieceInputs Interpolator::pieceInputs(const LookAhead& queue, std:
   const Run& r = queue.run(run);
   PieceInputs in;
   in.limits = r.limits;
+  in.limits.velocity = queue.velocity(run);  // under a live feed override
   in.run_length = r.length;
   in.piece_start = piece_start;
   in.v0 = v0;
@@ -83,6 +84,22 @@ Interpolator::PiecePlan Interpolator::planPiece(const PieceInputs& in) const {
   const SegmentLimits& l = in.limits;
   const double rest = in.run_length - in.piece_start;
   PiecePlan plan;
+  if (in.v0 > l.velocity) {
+    // Entered above its speed limit (a live feed override turned down): brake to the limit
+    // first, ending the piece there (a = 0), if the rest still reaches the exit (at rest for an
+    // open run) from the limit; else the profile below cruises on and brakes to the exit.
+    const double target = in.open ? l.velocity : std::max(l.velocity, in.v1);
+    const double brake = rampDistance(target, in.v0, l.acceleration, l.jerk);
+    const double after = rest - brake;
+    const double exit = in.open ? 0.0 : in.v1;
+    if (target < in.v0 && after > target * cycle_ &&
+        reachableVelocity(exit, after, l.acceleration, l.jerk) >= target) {
+      plan.profile = planProfile(brake, in.v0, target, target, l.acceleration, l.jerk);
+      plan.piece_end = in.piece_start + brake;
+      plan.ends_run = false;
+      return plan;
+    }
+  }
   if (in.open) {
     const double top = l.velocity;
     const double brake = rampDistance(0.0, top, l.acceleration, l.jerk);
@@ -163,9 +180,36 @@ void Interpolator::planNextPiece(const LookAhead& queue, bool closed) {
   }
 }
 
+Commitment Interpolator::commitForReplan(const LookAhead& queue) {
+  if (!running_) return {piece_start_, resync_ ? 0.0 : exit_velocity_};
+  const Run& run = queue.run(0);
+  if (per_axis_ || run.kind == MotionPrimitive::Kind::Dwell) return {run.length, 0.0};
+  // A run the feed override does not scale (a rapid, G63) runs on as planned.
+  if (!std::isfinite(run.feed_limit)) return {piece_end_, profile_.v_end};
+  // Local time of the next tick; the cruise of the running piece spans [c0, c1).
+  const double next = static_cast<double>(last_tick_ + 1 - start_tick_) * cycle_ - phase_;
+  const double c0 = profile_.accel.duration;
+  const double c1 = c0 + profile_.t_cruise;
+  const double cut = std::max(next, c0);
+  if (!(profile_.t_cruise > 0.0 && cut < c1)) return {piece_end_, profile_.v_end};
+  // End the piece at `cut`, cruising: every state before it is unchanged.
+  SCurveProfile& p = profile_;
+  p.t_cruise = cut - c0;
+  p.decel = VelocityRamp::make(p.v_peak, p.v_peak, 1.0, 1.0);
+  p.v_end = p.v_peak;
+  p.length = p.accel.distance + p.v_peak * p.t_cruise;
+  p.duration = c0 + p.t_cruise;
+  duration_ = p.duration;
+  piece_end_ = piece_start_ + p.length;
+  piece_ends_run_ = false;
+  ++pieces_changed_;
+  return {piece_end_, p.v_peak};
+}
+
 bool Interpolator::setpoint(uint64_t k, LookAhead& queue, bool closed, AxisValues& out,
                             SetpointInfo& info) {
   info = SetpointInfo{};
+  last_tick_ = k;
   // Bounded: every iteration finishes a segment or a piece; pieces cover at least one
   // cycle of travel unless they end a run.
   for (std::size_t guard = 2 * queue.size() + 4; guard > 0 && !queue.empty(); --guard) {

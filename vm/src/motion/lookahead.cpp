@@ -46,6 +46,7 @@ void LookAhead::push(const QueuedSegment& segment, MotionPrimitive::Kind kind,
     last->length += length;
     ++last->segments;
     last->stop_after = stop_after;
+    last->feed_limit = std::min(last->feed_limit, segment.feed_limit);
   } else {
     Run& run = runAt(run_count_);
     run = Run{};
@@ -56,6 +57,7 @@ void LookAhead::push(const QueuedSegment& segment, MotionPrimitive::Kind kind,
     run.dwell_seconds = dwell_seconds;
     run.entry_limit = entry_limit;
     run.stop_after = stop_after;
+    run.feed_limit = segment.feed_limit;
     ++run_count_;
     slot.run_offset = 0.0;
   }
@@ -69,17 +71,72 @@ void LookAhead::stopAfterLast() {
   ++version_;
 }
 
-void LookAhead::backwardPass() {
+double LookAhead::velocity(std::size_t i) const {
+  const Run& run = runAt(i);
+  if (feed_scale_ == 1.0) return run.limits.velocity;
+  return std::max(std::min(run.limits.velocity, run.feed_limit * feed_scale_), kMinPathVelocity);
+}
+
+double LookAhead::entryLimit(std::size_t i) const {
+  const Run& run = runAt(i);
+  if (feed_scale_ == 1.0) return run.entry_limit;
+  double limit = std::min(run.entry_limit, velocity(i));
+  if (i > 0) limit = std::min(limit, velocity(i - 1));
+  return limit;
+}
+
+void LookAhead::backwardPass(bool full) {
   const std::size_t first = front_started_ ? 1 : 0;
   double exit = 0.0;  // the window ends at rest
   for (std::size_t i = run_count_; i-- > first;) {
     Run& run = runAt(i);
     if (run.stop_after) exit = 0.0;
-    const double entry = std::min(
-        run.entry_limit, reachableVelocity(exit, run.length, run.limits.acceleration, run.limits.jerk));
-    if (i + 1 < run_count_ && entry == run.entry_planned) break;  // earlier runs unchanged
+    const double entry = std::max(
+        run.entry_floor,
+        std::min(entryLimit(i),
+                 reachableVelocity(exit, run.length, run.limits.acceleration, run.limits.jerk)));
+    if (!full && i + 1 < run_count_ && entry == run.entry_planned) break;  // earlier runs unchanged
     run.entry_planned = entry;
     exit = entry;
+  }
+}
+
+void LookAhead::setFeedScale(double scale, const Commitment& committed) {
+  feed_scale_ = scale;
+  for (std::size_t i = 0; i < run_count_; ++i) {
+    Run& run = runAt(i);
+    run.entry_floor = 0.0;
+    run.entry_before = run.entry_planned;
+  }
+  backwardPass(true);
+  ++version_;
+  if (run_count_ == 0) return;
+  // From the committed state on, brake as hard as the limits allow: where that cannot reach a
+  // junction's new entry, the entry is raised to what it can reach. The previous plan got
+  // from the same state to each of those junctions at no less than that (with the same
+  // acceleration and jerk), so a floor never exceeds the previous entry. Computed forwards,
+  // braking through many short runs is ill-conditioned (each run's error grows in the next),
+  // so each floor is capped at the previous entry: from there the previous plan, made
+  // backwards, is exactly feasible.
+  double v = committed.velocity;
+  double rest = runAt(0).length - committed.offset;
+  if (!front_started_ && committed.offset <= 0.0) {
+    runAt(0).entry_floor = v;
+    runAt(0).entry_planned = std::max(runAt(0).entry_planned, v);
+  }
+  for (std::size_t i = 0; i + 1 < run_count_ && v > 0.0; ++i) {
+    const Run& run = runAt(i);
+    Run& next = runAt(i + 1);
+    const double floor =
+        run.stop_after ? 0.0
+                       : std::min(next.entry_before,
+                                  lowestReachableVelocity(v, std::max(rest, 0.0),
+                                                          run.limits.acceleration, run.limits.jerk));
+    if (!(floor > next.entry_planned)) break;  // the new plan is reachable from here on
+    next.entry_floor = floor;
+    next.entry_planned = floor;
+    v = floor;
+    rest = next.length;
   }
 }
 

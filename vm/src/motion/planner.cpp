@@ -34,11 +34,22 @@ MotionPlanner::MotionPlanner(const MachineConfig& machine, std::size_t window_ca
   CornerBlend::prepareTables();  // at load, not in the first tick that blends a corner
 }
 
-void MotionPlanner::setOverrides(double feed, double rapid) {
-  feed_override_ = std::isfinite(feed) ? std::clamp(feed, 1e-3, 2.0) : 1.0;
+void MotionPlanner::setOverrides(double feed, double rapid, double max_feed) {
+  const double live = std::isfinite(feed) ? std::clamp(feed, kMinFeedOverride, kMaxFeedOverride) : 1.0;
+  const double top =
+      std::isfinite(max_feed) ? std::clamp(max_feed, kMinFeedOverride, kMaxFeedOverride) : live;
+  feed_override_ = std::max(live, top);
+  queue_.setFeedScale(live / feed_override_, interpolator_.commitForReplan(queue_));
   const double r = std::isfinite(rapid) ? std::clamp(rapid, 1e-3, 1.0) : 1.0;
   for (int i = 0; i < limits_.count; ++i) rapid_limits_.rapid_velocity[i] = r * limits_.rapid_velocity[i];
   interpolator_.rapidLimitsChanged();
+}
+
+void MotionPlanner::setFeedOverride(double feed) {
+  if (!std::isfinite(feed)) return;
+  const double scale = std::clamp(feed, kMinFeedOverride, feed_override_) / feed_override_;
+  if (scale == queue_.feedScale()) return;
+  queue_.setFeedScale(scale, interpolator_.commitForReplan(queue_));
 }
 
 bool MotionPlanner::push(const MotionPrimitive& m) {
@@ -70,13 +81,17 @@ bool MotionPlanner::push(const MotionPrimitive& m) {
   const double override = m.fixed_override ? 1.0 : feed_override_;
   double feed = (m.feed_per_rev ? m.feed * spindle_rpm_ / 60.0 : m.feed / 60.0) * override;
   if (!rapid) feed = std::max(feed, kMinPathVelocity);
+  // What a live feed override scales (setFeedOverride): not rapids, not G63.
+  const double feed_limit =
+      rapid || m.fixed_override ? std::numeric_limits<double>::infinity() : feed;
   if (m.kind == MotionPrimitive::Kind::Line) {
     // A line that does not move counts only for its exact stop.
-    if (!path_.line(m.from, m.to, feed, m.exact_stop, m.where) && m.exact_stop) stop();
+    if (!path_.line(m.from, m.to, feed, feed_limit, m.exact_stop, m.where) && m.exact_stop) stop();
     return true;
   }
   QueuedSegment seg;
   seg.where = m.where;
+  seg.feed_limit = feed_limit;
   seg.exact_stop = m.exact_stop;
   if (m.kind == MotionPrimitive::Kind::Arc) {
     seg.path = PathSegment::arc(m.from, m.to, n, m.axis1, m.axis2, m.center[m.axis1],

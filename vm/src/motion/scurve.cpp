@@ -193,7 +193,12 @@ SCurveProfile planProfile(double length, double v_start, double v_end, double v_
       p.end_reachable = false;
     }
   } else if (v_end < v_start) {
-    if (reachableVelocity(v_end, length, a_max, j_max) < v_start) {
+    // Short only by rounding (1e-9 of the length, as lowestReachableVelocity counts it: end
+    // velocities chained through several runs carry more than one ulp): kept, the ramp
+    // rebuild below absorbs it. Raising v_end instead could jump far, since the braking
+    // distance is not monotone in the end velocity near a stop.
+    if (reachableVelocity(v_end, length, a_max, j_max) < v_start &&
+        rampDistance(v_end, v_start, a_max, j_max) > length * (1.0 + 1e-9)) {
       v_end = lowestReachableVelocity(v_start, length, a_max, j_max);
       p.end_reachable = false;
     }

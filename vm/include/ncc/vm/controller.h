@@ -68,10 +68,12 @@ struct ControllerOptions {
   // Executor instruction budget for the whole run (0: unlimited), alarm NCC7204 when hit.
   // Guards against a macro loop without motion, which would otherwise keep one tick busy.
   uint64_t step_limit = 0;
-  // Operator overrides for the whole run (MotionPlanner::setOverrides): feed 0..2 (200 %),
-  // rapid 0..1.
+  // Operator overrides at the start of the run (MotionPlanner::setOverrides): feed 0..2
+  // (200 %), rapid 0..1. `max_feed_override` (0: `feed_override`) is the highest the feed
+  // override may be turned to during the run (setFeedOverride); moves are planned for it.
   double feed_override = 1.0;
   double rapid_override = 1.0;
+  double max_feed_override = 0.0;
   // true: tick() runs prepare() itself before computing the setpoint (the simple loop).
   // false: the caller runs prepare() in each cycle's slack, after tick() (the real-time loop:
   // tick() then holds only the interpolation and the servo step). Either way the outputs are
@@ -114,6 +116,15 @@ class Controller {
   // it after tick(), in the rest of the cycle; a look-ahead that is not refilled in time only
   // makes the path brake at the end of what it holds. Never throws or allocates.
   void prepare() noexcept;
+
+  // The operator turns the feed override knob (fraction, clamped to [0.001,
+  // max_feed_override]), between ticks. The queued path is re-planned at once (work grows with
+  // the queued runs, as a push's backward pass does; no allocation); the motion under way
+  // changes speed from its next constant-speed stretch on, within every axis limit
+  // (MotionPlanner::setFeedOverride). Deterministic: the same calls before the same ticks give
+  // the same trace.
+  void setFeedOverride(double feed) noexcept { planner_.setFeedOverride(feed); }
+  double feedOverride() const { return planner_.feedOverride(); }
 
   TickStatus status() const { return status_; }
   // The alarm that stopped the run, or nullptr. Executor alarms (NCC72xx) are raised when the

@@ -35,9 +35,10 @@ class ContinuousPath {
   ContinuousPath(const AxisLimits& limits, LookAhead& queue) : limits_(limits), queue_(queue) {}
 
   // A feed line from `from` to `to` at `feed` mm/s (caller checks the queue has
-  // kSlotsPerLine free slots). False, taking nothing, when it does not move.
-  bool line(const AxisValues& from, const AxisValues& to, double feed, bool exact_stop,
-            const SourcePosition& where);
+  // kSlotsPerLine free slots). `feed_limit`: what a live feed override scales
+  // (QueuedSegment::feed_limit). False, taking nothing, when it does not move.
+  bool line(const AxisValues& from, const AxisValues& to, double feed, double feed_limit,
+            bool exact_stop, const SourcePosition& where);
   // Something other than a feed line follows (or nothing will): queue the held line up to its
   // programmed end point. `at_rest`: the path stops there (a stop, a dwell, a rapid or the
   // program's end follows).
@@ -58,6 +59,7 @@ class ContinuousPath {
     AxisValues direction{};  // unit
     double length = 0.0;     // programmed length
     double feed = 0.0;       // mm/s
+    double feed_limit = 0.0; // QueuedSegment::feed_limit
     SourcePosition where;
     bool exact_stop = false;       // G09/G61
     double start_limit = 0.0;      // junction velocity limit at `start`

@@ -18,7 +18,12 @@
 //    the window. (A braking piece is committed once started; ending at the peak lets input
 //    that arrives meanwhile carry the path on.)
 //  - a non-linear rapid (QueuedSegment::per_axis) is one piece from rest to rest in which
-//    every axis follows its own profile (axis_rapid.h).
+//    every axis follows its own profile (axis_rapid.h);
+//  - a run entered above its speed limit (a live feed override turned down) first gets a
+//    piece that brakes to that limit, where the rest of the run still leaves room to reach
+//    its exit.
+// A live feed override (commitForReplan) cuts the running piece where it next cruises, so that
+// the rest is planned with the new speed limits.
 #include <array>
 #include <cstddef>
 #include <cstdint>
@@ -70,6 +75,12 @@ class Interpolator {
   static constexpr int kPlannedAhead = 2;
   void planNextPiece(const LookAhead& queue, bool closed);
 
+  // The speed limits of what is queued are about to change (a live feed override): cuts the
+  // running piece at the first point from the next tick on where it cruises (a = 0, j = 0),
+  // or else (or when the override does not scale its run: rapids, G63) lets it run to its end, and returns that point, from which the next piece will
+  // start whatever the new plan is. Deterministic: it depends on the ticks taken so far.
+  Commitment commitForReplan(const LookAhead& queue);
+
   const AxisValues& position() const { return position_; }
   // The rapid limits (kept by reference) were changed: a rapid planned ahead is stale.
   void rapidLimitsChanged() { rapid_ahead_ready_ = false; }
@@ -116,6 +127,7 @@ class Interpolator {
   uint64_t start_tick_ = 0;
   double phase_ = 0.0;
   double exit_velocity_ = 0.0;  // of the last finished piece
+  uint64_t last_tick_ = 0;      // k of the last setpoint() call
   bool resync_ = true;          // the next piece starts on the tick it is first evaluated
   // planNextPiece()'s results in the order the pieces will run, each valid for exactly its
   // inputs.

@@ -14,10 +14,15 @@
 // pass stops at the first entry that does not change (earlier ones depend only on it).
 //
 // Forward pass: the interpolator plans one profile ("piece") at a time from the actual
-// velocity (see Interpolator). Two fixed-capacity rings hold segments and runs, allocated in
+// velocity (see Interpolator).
+//
+// Live feed override (setFeedScale): every run's speed limit is its planned limit, at most
+// its programmed feed times the scale. A change re-plans the whole window; entries may fall,
+// but never below what the motion already under way can brake to (entry floors). Two fixed-capacity rings hold segments and runs, allocated in
 // the constructor; nothing allocates or throws afterwards.
 #include <cstddef>
 #include <cstdint>
+#include <limits>
 #include <vector>
 
 #include "ncc/vm/events.h"
@@ -32,6 +37,9 @@ struct QueuedSegment {
   double run_offset = 0.0;  // path length of its run before it
   bool per_axis = false;    // a non-linear rapid (axis_rapid.h): its own run, at rest both ends
   bool exact_stop = false;  // G09/G61: the path stops at its end with an in-position check
+  // The programmed path speed (mm/s, at the planning feed override) a live feed override
+  // scales; infinite where it does not apply (rapids, G63 tapping).
+  double feed_limit = std::numeric_limits<double>::infinity();
 };
 
 struct Run {
@@ -43,6 +51,18 @@ struct Run {
   double entry_limit = 0.0;    // junction velocity limit at its start (0: from rest)
   double entry_planned = 0.0;  // backward pass result
   bool stop_after = false;     // ends at rest whatever follows (G09/G61, M00, dwell...)
+  double feed_limit = std::numeric_limits<double>::infinity();  // lowest of its segments'
+  // Lowest entry the motion under way can brake to (set by setFeedScale, 0 otherwise).
+  double entry_floor = 0.0;
+  double entry_before = 0.0;  // entry_planned before the last setFeedScale
+};
+
+// Where the motion under way is committed to when the speed limits change: at run offset
+// `offset` of the front run it moves at `velocity` with zero acceleration, whatever the new
+// plan (Interpolator::commitForReplan).
+struct Commitment {
+  double offset = 0.0;
+  double velocity = 0.0;
 };
 
 class LookAhead {
@@ -69,6 +89,14 @@ class LookAhead {
   MotionPrimitive::Kind lastKind() const { return runAt(run_count_ - 1).kind; }
   bool lastStops() const { return runAt(run_count_ - 1).stop_after; }
   const SegmentLimits& lastLimits() const { return runAt(run_count_ - 1).limits; }
+  // Run i's speed limit under the live feed override (its planned limit when the scale is 1).
+  double velocity(std::size_t i) const;
+  // A live feed override, as a factor on every run's feed_limit (1: as planned). Re-plans the
+  // whole window from `committed` on: each later junction gets a floor, the lowest velocity
+  // braking as hard as the limits allow reaches from there (all of them at most what the
+  // previous plan had, so every geometric and junction limit still holds). O(queued runs).
+  void setFeedScale(double scale, const Commitment& committed);
+  double feedScale() const { return feed_scale_; }
 
   Run& frontRun() { return runAt(0); }
   QueuedSegment& frontSegment() { return segmentAt(0); }
@@ -105,7 +133,10 @@ class LookAhead {
   }
   Run& runAt(std::size_t i) { return runs_[(run_head_ + i) % runs_.size()]; }
   const Run& runAt(std::size_t i) const { return runs_[(run_head_ + i) % runs_.size()]; }
-  void backwardPass();
+  // `full`: every run, not only up to the first unchanged entry.
+  void backwardPass(bool full = false);
+  // Run i's junction limit under the feed scale: also at most its and the previous run's speed.
+  double entryLimit(std::size_t i) const;
 
   std::vector<QueuedSegment> segments_;
   std::vector<Run> runs_;
@@ -117,6 +148,7 @@ class LookAhead {
   uint64_t version_ = 0;
   double window_length_ = 0.0;
   double queued_length_ = 0.0;  // lengths of the segments behind the front one
+  double feed_scale_ = 1.0;
 };
 
 }  // namespace ncc::vm::motion

@@ -16,8 +16,8 @@
 // G64 (continuous_path.h): feed lines are held back one primitive so that their end vertex
 // can be blended within the corner tolerance or passed as part of a smooth chain.
 //
-// Not done in this version (docs/planner.md): overrides changed during a run (they are
-// static: set before it).
+// Overrides (docs/planner.md, "Overrides"): the feed override may be turned during the run
+// (setFeedOverride); the rapid override is set before it.
 #include <cstddef>
 #include <cstdint>
 
@@ -51,10 +51,19 @@ class MotionPlanner {
   bool accept(const Event& event);
   void setSpindleSpeed(double rpm) { spindle_rpm_ = rpm; }
   // Operator overrides as fractions, set before the run: `feed` scales every programmed feed
-  // (0 < feed <= 2, i.e. up to 200 %), `rapid` the axes' rapid speeds (0 < rapid <= 1). Values
-  // outside are clamped. They apply to what is pushed afterwards (static overrides; a change
-  // during the run does not re-plan what is queued).
-  void setOverrides(double feed, double rapid);
+  // (up to 200 %), `rapid` the axes' rapid speeds (up to 100 %). `max_feed` (default: `feed`)
+  // is the highest the feed override may be turned to during the run (setFeedOverride):
+  // moves are planned for it, since a curve's tangential limits shrink as its speed grows, so
+  // a higher maximum costs time on fast curves. Values outside are clamped (at least 0.1 %).
+  void setOverrides(double feed, double rapid, double max_feed = 0.0);
+  // The operator turns the feed override knob during the run, between ticks (fraction,
+  // clamped to [0.1 %, max_feed]; not G63 tapping, not rapids). The queued path is re-planned
+  // at once (O(queued runs)); the motion under way changes speed from its next constant-speed
+  // stretch on (a ramp under way is finished first), within every axis limit. Deterministic:
+  // the same calls before the same ticks give the same setpoints. 0 % is not a feed hold: it
+  // is taken as 0.1 %.
+  void setFeedOverride(double feed);
+  double feedOverride() const { return feed_override_ * queue_.feedScale(); }
   // The path comes to rest at the end of the last queued segment (M00/M01).
   void stop();
   // No more input: setpoint() returns false once everything queued has run.
@@ -91,7 +100,9 @@ class MotionPlanner {
 
   AxisLimits limits_;
   AxisLimits rapid_limits_;  // limits_ with the rapid override applied to the rapid speeds
-  double feed_override_ = 1.0;
+  static constexpr double kMinFeedOverride = 1e-3;
+  static constexpr double kMaxFeedOverride = 2.0;
+  double feed_override_ = 1.0;  // the one moves are planned with: the highest the knob may reach
   LookAhead queue_;
   ContinuousPath path_;
   Interpolator interpolator_;

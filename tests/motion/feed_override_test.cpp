@@ -1,0 +1,159 @@
+// The feed override turned during the run (MotionPlanner::setFeedOverride): analytic cases on
+// a long line (the running motion is cut where it cruises, brakes or accelerates to the new
+// speed, and the program time is the closed form of that), turns during a ramp, what the
+// knob does not touch (G63, rapids), clamping. The random suite turns it on random programs
+// (random_suite_test.cpp).
+#include <cmath>
+#include <limits>
+
+#include "gtest/gtest.h"
+#include "motion_test_util.h"
+#include "ncc/vm/motion/planner.h"
+#include "ncc/vm/motion/scurve.h"
+
+namespace ncc::vm::motion {
+namespace {
+
+using namespace motion_test;
+
+constexpr double kT = 0.001;                     // default IPO cycle
+constexpr double kA = 2000.0;                    // default axis acceleration
+constexpr double kJ = kSmoothJerkShare * 50000.0;  // a line's path jerk on the default machine
+
+// Path speed along X between ticks k - 1 and k.
+double speedAt(const Trace& t, uint64_t k) { return (t.points[k][0] - t.points[k - 1][0]) / kT; }
+
+// Turns the knob to `value` before tick `at`.
+PlannerHook turnAt(uint64_t at, double value) {
+  return [=](uint64_t k, MotionPlanner& planner) {
+    if (k == at) planner.setFeedOverride(value);
+  };
+}
+
+void expectWithinLimits(const MachineConfig& m, const Trace& t) {
+  const Worst w = check(m, t);
+  constexpr double kTolerance = 1e-6;
+  EXPECT_LE(w.velocity, 1.0 + kTolerance);
+  EXPECT_LE(w.acceleration, 1.0 + kTolerance);
+  EXPECT_LE(w.jerk, 1.0 + kTolerance);
+}
+
+TEST(FeedOverride, TurnedDownWhileCruisingBrakesToTheNewSpeed) {
+  const MachineConfig m = defaultMachine();
+  const double L = 600.0, v = 100.0, half = 50.0;  // F6000, then 50 %
+  const Trace t = run(m, {line(xyz(0, 0, 0), xyz(L, 0, 0), 6000.0)}, 1024, 50'000'000, false,
+                      turnAt(2000, 0.5));
+  EXPECT_EQ(t.points.back(), xyz(L, 0, 0));
+  expectWithinLimits(m, t);
+  EXPECT_NEAR(speedAt(t, 1990), v, 1e-9);
+  // Cut at t = 2 s (the next tick), then a brake 100 -> 50 mm/s at a = 0 on both ends.
+  const VelocityRamp up = VelocityRamp::make(0.0, v, kA, kJ);
+  const VelocityRamp brake = VelocityRamp::make(half, v, kA, kJ);
+  const VelocityRamp stop = VelocityRamp::make(0.0, half, kA, kJ);
+  const uint64_t settled = 2000 + static_cast<uint64_t>(std::ceil(brake.duration / kT)) + 1;
+  for (uint64_t k = settled; k < settled + 100; ++k) EXPECT_NEAR(speedAt(t, k), half, 1e-9) << k;
+  for (uint64_t k = 2001; k < settled; ++k) {
+    EXPECT_LT(speedAt(t, k), v);
+    EXPECT_GT(speedAt(t, k), half);
+  }
+  const double cut_s = up.distance + v * (2.0 - up.duration);
+  const double expected = 2.0 + brake.duration +
+                          (L - cut_s - brake.distance - stop.distance) / half + stop.duration;
+  // The end is sampled on the first tick at or after it, plus the stop sample.
+  EXPECT_NEAR(static_cast<double>(t.ticks()) * kT, expected + kT, 1.5 * kT);
+}
+
+TEST(FeedOverride, TurnedUpAcceleratesToTheNewSpeed) {
+  const MachineConfig m = defaultMachine();
+  const Trace t = run(m, {line(xyz(0, 0, 0), xyz(600, 0, 0), 6000.0)}, 1024, 50'000'000, false,
+                      turnAt(2000, 1.0),
+                      [](MotionPlanner& planner) { planner.setOverrides(0.5, 1.0, 1.0); });
+  EXPECT_EQ(t.points.back(), xyz(600, 0, 0));
+  expectWithinLimits(m, t);
+  EXPECT_NEAR(speedAt(t, 1990), 50.0, 1e-9);
+  const VelocityRamp up = VelocityRamp::make(50.0, 100.0, kA, kJ);
+  const uint64_t settled = 2000 + static_cast<uint64_t>(std::ceil(up.duration / kT)) + 1;
+  for (uint64_t k = settled; k < settled + 100; ++k) EXPECT_NEAR(speedAt(t, k), 100.0, 1e-9) << k;
+}
+
+TEST(FeedOverride, TurnedDuringARampTakesEffectWhenItEnds) {
+  const MachineConfig m = defaultMachine();
+  // At 30 ms the start ramp to 100 mm/s (94 ms) is under way: it finishes, then brakes to 50.
+  const Trace t = run(m, {line(xyz(0, 0, 0), xyz(300, 0, 0), 6000.0)}, 1024, 50'000'000, false,
+                      turnAt(30, 0.5));
+  EXPECT_EQ(t.points.back(), xyz(300, 0, 0));
+  expectWithinLimits(m, t);
+  double top = 0.0;
+  for (uint64_t k = 1; k < 400; ++k) top = std::max(top, speedAt(t, k));
+  EXPECT_GT(top, 99.0);
+  EXPECT_LE(top, 100.0 + 1e-9);
+  for (uint64_t k = 400; k < 500; ++k) EXPECT_NEAR(speedAt(t, k), 50.0, 1e-9) << k;
+}
+
+TEST(FeedOverride, TurnedDownNearAStopStillLandsOnIt) {
+  // Turned down 20 ms before the braking for the exact stop at X50 would start: the stop is
+  // planned with the new limits from where the motion is, and lands exactly.
+  const MachineConfig m = defaultMachine();
+  MotionPrimitive first = line(xyz(0, 0, 0), xyz(50, 0, 0), 6000.0);
+  first.exact_stop = true;
+  const std::vector<MotionPrimitive> prog = {first, line(xyz(50, 0, 0), xyz(50, 40, 0), 6000.0)};
+  const Trace plain = run(m, prog);
+  const VelocityRamp up = VelocityRamp::make(0.0, 100.0, kA, kJ);
+  const uint64_t brake_starts =
+      static_cast<uint64_t>((up.duration + (50.0 - 2.0 * up.distance) / 100.0) / kT);
+  for (uint64_t before : {20u, 2u}) {
+    const Trace t = run(m, prog, 1024, 50'000'000, false, turnAt(brake_starts - before, 0.3));
+    expectWithinLimits(m, t);
+    EXPECT_NE(std::find(t.points.begin(), t.points.end(), xyz(50, 0, 0)), t.points.end());
+    EXPECT_EQ(t.points.back(), xyz(50, 40, 0));
+    EXPECT_GT(t.ticks(), plain.ticks());  // the second line runs at 30 %
+  }
+}
+
+TEST(FeedOverride, LeavesG63AndRapidsAlone) {
+  const MachineConfig m = defaultMachine();
+  MotionPrimitive tap = line(xyz(0, 0, 0), xyz(0, 0, -300), 6000.0);
+  tap.fixed_override = true;  // G63: F / S is the tap's pitch
+  const Trace g63 = run(m, {tap}, 1024, 50'000'000, false, turnAt(1000, 0.5));
+  EXPECT_NEAR((g63.points[1500][2] - g63.points[1501][2]) / kT, 100.0, 1e-9);
+  const Trace g00 = run(m, {rapid(xyz(0, 0, 0), xyz(2000, 0, 0))}, 1024, 50'000'000, false,
+                        turnAt(1000, 0.5));
+  const Trace g00_plain = run(m, {rapid(xyz(0, 0, 0), xyz(2000, 0, 0))});
+  EXPECT_EQ(fnv1a(g00, 3), fnv1a(g00_plain, 3));
+}
+
+TEST(FeedOverride, ClampedToTheRangeItWasPlannedFor) {
+  const MachineConfig m = defaultMachine();
+  MotionPlanner planner(m, 64);
+  planner.setOverrides(1.0, 1.0, 1.2);
+  planner.setFeedOverride(5.0);
+  EXPECT_DOUBLE_EQ(planner.feedOverride(), 1.2);
+  planner.setFeedOverride(0.0);  // not a feed hold: the lowest override
+  EXPECT_DOUBLE_EQ(planner.feedOverride(), 0.001);
+  planner.setFeedOverride(std::numeric_limits<double>::quiet_NaN());
+  EXPECT_DOUBLE_EQ(planner.feedOverride(), 0.001);
+  // Without a maximum the knob cannot go above the start value.
+  MotionPlanner fixed(m, 64);
+  fixed.setOverrides(0.8, 1.0);
+  fixed.setFeedOverride(1.0);
+  EXPECT_DOUBLE_EQ(fixed.feedOverride(), 0.8);
+}
+
+TEST(FeedOverride, SameTurnsSameSetpoints) {
+  const MachineConfig m = defaultMachine();
+  const std::vector<MotionPrimitive> prog = {
+      line(xyz(0, 0, 0), xyz(80, 0, 0), 6000.0), arc(xyz(80, 0, 0), xyz(80, 20, 0), 0, 1, 80, 10, false, 3000.0),
+      line(xyz(80, 20, 0), xyz(0, 20, 0), 6000.0)};
+  auto knob = [](uint64_t k, MotionPlanner& planner) {
+    if (k % 150 == 0) planner.setFeedOverride(0.2 + 0.1 * static_cast<double>((k / 150) % 9));
+  };
+  const Trace a = run(m, prog, 1024, 50'000'000, false, knob);
+  const Trace b = run(m, prog, 1024, 50'000'000, true, knob);
+  EXPECT_EQ(fnv1a(a, 3), fnv1a(b, 3));
+  EXPECT_NE(fnv1a(a, 3), fnv1a(run(m, prog), 3));
+  expectWithinLimits(m, a);
+  EXPECT_EQ(a.points.back(), xyz(0, 20, 0));
+}
+
+}  // namespace
+}  // namespace ncc::vm::motion
