@@ -1,5 +1,7 @@
 #include "ncc/driver/simulate.h"
 
+#include <algorithm>
+
 #include "absl/strings/str_cat.h"
 #include "ncc/vm/controller.h"
 
@@ -12,6 +14,9 @@ SimulationResult simulate(const bytecode::Program& program, const MachineConfig&
   options.step_limit = settings.max_steps;
   options.feed_override = settings.feed_override;
   options.rapid_override = settings.rapid_override;
+  options.max_feed_override = settings.feed_override;
+  for (const FeedOverrideTurn& turn : settings.feed_override_turns)
+    options.max_feed_override = std::max(options.max_feed_override, turn.feed);
   bytecode::Error error;
   std::unique_ptr<vm::Controller> controller = vm::Controller::create(program, machine, error, options);
   if (!controller) {
@@ -21,7 +26,16 @@ SimulationResult simulate(const bytecode::Program& program, const MachineConfig&
   vm::TickOutput tick;
   uint64_t written = 0;  // ticks in the trace so far
   vm::TickStatus status;
-  while ((status = controller->tick(tick)) == vm::TickStatus::Running) {
+  // The knob turns due by the next tick's time (ticks_taken * T), in order.
+  std::size_t next_turn = 0;
+  uint64_t ticks_taken = 0;
+  const std::vector<FeedOverrideTurn>& turns = settings.feed_override_turns;
+  for (;;) {
+    const double now = static_cast<double>(ticks_taken++) * controller->cycleSeconds();
+    while (next_turn < turns.size() && turns[next_turn].seconds <= now)
+      controller->setFeedOverride(turns[next_turn++].feed);
+    status = controller->tick(tick);
+    if (status != vm::TickStatus::Running) break;
     if (trace) trace->sample(tick.tick, tick.commanded, tick.actual);
     ++written;
   }

@@ -183,6 +183,33 @@ class CliTest(unittest.TestCase):
             self.assertEqual(proc.returncode, 2, bad)
             self.assertIn("override", proc.stderr)
 
+    def test_run_feed_override_turned_during_the_run(self):
+        # G01 X300 at F6000 (100 mm/s): turned to 50 % at 1 s, the remaining 200 mm or so run
+        # at half speed, about 2 s longer; turned back to 100 % at 2 s, the second in between
+        # covers 50 mm instead of 100: 0.5 s longer. Written unsorted, the turns apply in
+        # time order. A bad turn is a usage error naming it, and writes no output file.
+        prog = self.write("long300.nc", "G21 G90 G94 G17\nG01 X300. F6000.\nM30\n")
+        def seconds(*extra):
+            proc = ncc("run", prog, *extra)
+            self.assertEqual(proc.returncode, 0, proc.stderr)
+            self.assertIn("status             completed", proc.stdout)
+            self.assertIn("final position     X300.0", proc.stdout)
+            return float(re.search(r"program time +(\d+\.\d+) s", proc.stdout).group(1))
+        full = seconds()
+        halved = seconds("--feed-override-at", "1=50")
+        self.assertAlmostEqual(halved - full, 2.0, delta=0.1)
+        back = seconds("--feed-override-at", "2=100", "--feed-override-at", "1=50")
+        self.assertAlmostEqual(back - full, 0.5, delta=0.1)
+        # Turned up from 50 % to 100 % at 1 s: planned for 100 %, the rest at full speed.
+        up = seconds("--feed-override=50", "--feed-override-at", "1=100")
+        self.assertAlmostEqual(up - full, 0.5, delta=0.1)
+        out = os.path.join(self.dir, "turned.csv")
+        for bad in ("1", "x=50", "1=0", "1=250", "-1=50", "1=50%", "inf=50"):
+            proc = ncc("run", prog, "--feed-override-at", bad, "--emit=trace", "-o", out)
+            self.assertEqual(proc.returncode, 2, bad)
+            self.assertIn("--feed-override-at '%s'" % bad, proc.stderr)
+            self.assertFalse(os.path.exists(out), bad)
+
     def test_run_lookahead_depth_from_the_machine_file(self):
         # A circle r10 in 0.01 mm chords at F6000: 64 segments (0.64 mm) cannot hold the
         # braking distance from F; lookahead_segments = 4096 can, so the circle runs faster.

@@ -47,6 +47,27 @@ TEST(ControllerAllocation, TickAllocatesNothing) {
   EXPECT_GT(stats.path_length, 100.0);
 }
 
+// The operator turns the feed override knob every 50 ticks (Controller::setFeedOverride, a
+// re-plan of the whole window): nothing allocates either.
+TEST(ControllerAllocation, TurningTheFeedOverrideAllocatesNothing) {
+  const MachineConfig m = defaultMachine();
+  vm::ControllerOptions options;
+  options.window_capacity = 256;
+  options.max_feed_override = 1.5;
+  std::unique_ptr<vm::Controller> ctl = make(program(m), m, options);
+  const long before = test::allocationCount();
+  vm::TickOutput out;
+  uint64_t ticks = 0;
+  for (;;) {
+    if (ticks % 50 == 0) ctl->setFeedOverride(0.2 + 0.1 * static_cast<double>((ticks / 50) % 13));
+    if (ctl->tick(out) != vm::TickStatus::Running) break;
+    ++ticks;
+  }
+  EXPECT_EQ(test::allocationCount() - before, 0);
+  EXPECT_EQ(ctl->status(), vm::TickStatus::Finished);
+  EXPECT_GT(ticks, 5000u);
+}
+
 // The real-time loop (prepare_in_tick = false): neither tick() nor prepare() allocates, on a
 // G64 zig-zag whose corners are blended and a polyline whose vertices run as a chain.
 TEST(ControllerAllocation, SplitLoopWithBlendsAllocatesNothing) {

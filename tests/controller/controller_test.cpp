@@ -139,6 +139,43 @@ TEST(Controller, LookAheadDepthComesFromTheMachine) {
   EXPECT_LT(topSpeed(4096, 256).top, 90.0);
 }
 
+TEST(Controller, FeedOverrideTurnedDuringTheRun) {
+  // G01 X300 at F6000 on the default machine: at 100 % it cruises at 100 mm/s; the operator
+  // turns the knob to 40 % at t = 1 s, then to 120 % at t = 2 s (the run is planned for
+  // 120 %). The path speed follows, the program ends where it should, and the knob reports
+  // what it was turned to. Without a planned maximum the knob stops at the start value.
+  MachineConfig m = defaultMachine();
+  bytecode::Assembler a = assemblerFor(m);
+  a.line(xyz(300, 0, 0), 6000.0);
+  a.op(bytecode::Opcode::End);
+  const bytecode::Program prog = a.finish();
+  vm::ControllerOptions options;
+  options.max_feed_override = 1.2;
+  bytecode::Error error;
+  std::unique_ptr<vm::Controller> ctl = vm::Controller::create(prog, m, error, options);
+  ASSERT_TRUE(ctl) << error.message;
+  std::vector<TickOutput> ticks;
+  TickOutput out;
+  for (uint64_t k = 0;; ++k) {
+    if (k == 1000) ctl->setFeedOverride(0.4);
+    if (k == 2000) ctl->setFeedOverride(1.2);
+    if (ctl->tick(out) != TickStatus::Running) break;
+    ticks.push_back(out);
+  }
+  ASSERT_GT(ticks.size(), 2500u);
+  EXPECT_NEAR(ticks[900].path_velocity, 100.0, 1e-9);
+  EXPECT_NEAR(ticks[1900].path_velocity, 40.0, 1e-9);
+  EXPECT_NEAR(ticks[2400].path_velocity, 120.0, 1e-9);
+  EXPECT_DOUBLE_EQ(ctl->feedOverride(), 1.2);
+  EXPECT_EQ(ticks.back().commanded, xyz(300, 0, 0));
+  EXPECT_EQ(ctl->statistics().limit_violations, 0);
+
+  std::unique_ptr<vm::Controller> capped = vm::Controller::create(prog, m, error);
+  ASSERT_TRUE(capped);
+  capped->setFeedOverride(1.2);
+  EXPECT_DOUBLE_EQ(capped->feedOverride(), 1.0);
+}
+
 TEST(Controller, FeedPerRevolutionUsesTheSpindleSpeed) {
   MachineConfig m = defaultMachine();
   bytecode::Assembler a = assemblerFor(m);

@@ -1,8 +1,14 @@
 // `ncc run IN [--emit=moves|vars] [-o FILE]` (IN is a source program or a .ncb file) and
 // `ncc dis FILE.ncb`.
+#include <algorithm>
+#include <cmath>
 #include <iostream>
+#include <string>
+#include <vector>
 
 #include "absl/strings/match.h"
+#include "absl/strings/numbers.h"
+#include "absl/strings/str_split.h"
 #include "absl/strings/str_format.h"
 #include "cli.h"
 #include "pending_output.h"
@@ -24,7 +30,30 @@ struct RunArgs {
   uint64_t max_steps = driver::kDefaultMaxSteps;
   double feed_override = 100.0;   // %
   double rapid_override = 100.0;  // %
+  std::vector<std::string> feed_override_at;  // "SECONDS=PERCENT", as given
 };
+
+// --feed-override-at SECONDS=PERCENT: the turns of the feed override knob, in time order (a
+// stable sort: turns at the same time apply in the order given). False with a message on
+// stderr for a malformed or out-of-range value.
+bool parseFeedOverrideTurns(const std::vector<std::string>& given,
+                            std::vector<driver::FeedOverrideTurn>& turns) {
+  for (const std::string& text : given) {
+    const std::vector<std::string> parts = absl::StrSplit(text, absl::MaxSplits('=', 1));
+    double seconds = 0.0, percent = 0.0;
+    if (parts.size() != 2 || !absl::SimpleAtod(parts[0], &seconds) ||
+        !absl::SimpleAtod(parts[1], &percent) || !std::isfinite(seconds) || seconds < 0.0 ||
+        !(percent >= 1.0 && percent <= 200.0)) {
+      std::cerr << "ncc: error: --feed-override-at '" << text
+                << "': expected SECONDS=PERCENT with SECONDS >= 0 and PERCENT in 1..200\n";
+      return false;
+    }
+    turns.push_back({seconds, percent / 100.0});
+  }
+  std::stable_sort(turns.begin(), turns.end(),
+                   [](const auto& a, const auto& b) { return a.seconds < b.seconds; });
+  return true;
+}
 
 // Samples of the servo model's actual motion beyond the machine's limits, by kind. (The
 // planner keeps the commanded setpoints within them; what the servo adds shows here.)
@@ -93,6 +122,7 @@ int runSimulation(driver::Session& session, const bytecode::Program& program, co
   options.max_steps = args.max_steps;
   options.feed_override = args.feed_override / 100.0;
   options.rapid_override = args.rapid_override / 100.0;
+  if (!parseFeedOverrideTurns(args.feed_override_at, options.feed_override_turns)) return kUsage;
   driver::SimulationResult sim = driver::simulate(program, session.machine(), trace.get(), options);
   if (!sim.error.empty()) {
     std::cerr << "ncc: error: " << sim.error << '\n';
@@ -186,13 +216,17 @@ void addRunCommand(CLI::App& app, int& exit_code) {
                   "against programs that loop forever")
       ->capture_default_str();
   cmd->add_option("--feed-override", args->feed_override,
-                  "feed override for the simulated run, % of the programmed F (static)")
+                  "feed override at the start of the simulated run, % of the programmed F")
       ->check(CLI::Range(1.0, 200.0))
       ->capture_default_str();
   cmd->add_option("--rapid-override", args->rapid_override,
                   "rapid override for the simulated run, % of the axes' rapid speeds (static)")
       ->check(CLI::Range(1.0, 100.0))
       ->capture_default_str();
+  cmd->add_option("--feed-override-at", args->feed_override_at,
+                  "SECONDS=PERCENT: the operator turns the feed override to PERCENT (1..200) at "
+                  "that time of the simulated run (repeatable); moves are planned for the "
+                  "highest feed override of the run");
   args->common.addTo(*cmd);
   cmd->callback([args, &exit_code] { exit_code = runRun(*args); });
 }

@@ -4,6 +4,7 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "ncc/bytecode/program.h"
 #include "ncc/driver/trace.h"
@@ -20,11 +21,21 @@ struct SimulationResult {
   std::string error;               // the program could not be loaded into the controller
 };
 
+// The operator turns the feed override knob to `feed` (fraction) at `seconds` into the run:
+// applied before the first tick at or after that time.
+struct FeedOverrideTurn {
+  double seconds = 0.0;
+  double feed = 1.0;
+};
+
 // The operator's settings for a simulated run.
 struct SimulationOptions {
   uint64_t max_steps = 0;       // VM instruction budget (0: no limit), alarm NCC7204
-  double feed_override = 1.0;   // fraction, up to 2 (200 %)
+  double feed_override = 1.0;   // fraction, up to 2 (200 %), at the start
   double rapid_override = 1.0;  // fraction, up to 1
+  // Turns of the feed override during the run, in time order. Moves are planned for the
+  // highest feed override of the run (vm::ControllerOptions::max_feed_override).
+  std::vector<FeedOverrideTurn> feed_override_turns;
 };
 
 // Runs `program` to its end (or an alarm, or the instruction budget).
