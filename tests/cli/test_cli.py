@@ -210,6 +210,28 @@ class CliTest(unittest.TestCase):
             self.assertIn("--feed-override-at '%s'" % bad, proc.stderr)
             self.assertFalse(os.path.exists(out), bad)
 
+    def test_run_feed_hold_during_the_run(self):
+        # Held at 1 s for 2 s, and at 5 s (after the end) for 1 s: the long line stops on its
+        # path, goes on, and the run takes 2 s longer; overlapping or malformed holds are usage
+        # errors naming the value.
+        prog = self.write("hold300.nc", "G21 G90 G94 G17\nG01 X300. F6000.\nM30\n")
+        def seconds(*extra):
+            proc = ncc("run", prog, *extra)
+            self.assertEqual(proc.returncode, 0, proc.stderr)
+            self.assertIn("status             completed", proc.stdout)
+            self.assertIn("final position     X300.0", proc.stdout)
+            return float(re.search(r"program time +(\d+\.\d+) s", proc.stdout).group(1))
+        full = seconds()
+        held = seconds("--feed-hold-at", "1=2", "--feed-hold-at", "9=1")
+        self.assertAlmostEqual(held - full, 2.0, delta=0.002)
+        for bad in ("1", "1=-2", "x=1", "nan=1"):
+            proc = ncc("run", prog, "--feed-hold-at", bad)
+            self.assertEqual(proc.returncode, 2, bad)
+            self.assertIn("--feed-hold-at '%s'" % bad, proc.stderr)
+        proc = ncc("run", prog, "--feed-hold-at", "1=2", "--feed-hold-at", "2=1")
+        self.assertEqual(proc.returncode, 2)
+        self.assertIn("overlap", proc.stderr)
+
     def test_run_lookahead_depth_from_the_machine_file(self):
         # A circle r10 in 0.01 mm chords at F6000: 64 segments (0.64 mm) cannot hold the
         # braking distance from F; lookahead_segments = 4096 can, so the circle runs faster.

@@ -176,6 +176,39 @@ TEST(Controller, FeedOverrideTurnedDuringTheRun) {
   EXPECT_DOUBLE_EQ(capped->feedOverride(), 1.0);
 }
 
+TEST(Controller, FeedHoldStopsThePathUntilReleased) {
+  // G01 X300 at F6000, held at 1 s and released at 2.5 s: the path stands on the line
+  // meanwhile (Running, zero speed, the same setpoint), the run takes 1.5 s longer and ends
+  // on X300 without a limit violation.
+  MachineConfig m = defaultMachine();
+  bytecode::Assembler a = assemblerFor(m);
+  a.line(xyz(300, 0, 0), 6000.0);
+  a.op(bytecode::Opcode::End);
+  const bytecode::Program prog = a.finish();
+  bytecode::Error error;
+  std::unique_ptr<vm::Controller> plain = vm::Controller::create(prog, m, error);
+  std::unique_ptr<vm::Controller> ctl = vm::Controller::create(prog, m, error);
+  ASSERT_TRUE(plain && ctl) << error.message;
+  const std::size_t plain_ticks = runAll(*plain).size();
+  std::vector<TickOutput> ticks;
+  TickOutput out;
+  for (uint64_t k = 0;; ++k) {
+    if (k == 1000) ctl->setFeedHold(true);
+    if (k == 2500) ctl->setFeedHold(false);
+    EXPECT_EQ(ctl->feedHold(), k >= 1000 && k < 2500);
+    if (ctl->tick(out) != TickStatus::Running) break;
+    ticks.push_back(out);
+  }
+  EXPECT_EQ(ticks.size(), plain_ticks + 1500);
+  for (std::size_t k = 1200; k < 2500; ++k) {
+    ASSERT_EQ(ticks[k].commanded, ticks[1200].commanded) << k;
+    ASSERT_EQ(ticks[k].path_velocity, 0.0) << k;
+  }
+  EXPECT_GT(ticks[1200].commanded[0], 90.0);
+  EXPECT_EQ(ticks.back().commanded, xyz(300, 0, 0));
+  EXPECT_EQ(ctl->statistics().limit_violations, 0);
+}
+
 TEST(Controller, FeedPerRevolutionUsesTheSpindleSpeed) {
   MachineConfig m = defaultMachine();
   bytecode::Assembler a = assemblerFor(m);

@@ -261,6 +261,55 @@ TEST(RandomSuite, LiveFeedOverrideKeepsEveryLimit) {
               static_cast<unsigned long long>(kSeeds));
 }
 
+// The operator presses and releases feed hold at seeded random ticks (and turns the feed
+// override): the path brakes to rest on its path and goes on, every sampled limit holds, every
+// stop lands, planning ahead changes no setpoint, and the program ends where it should. (While
+// developing, 200 seeds; the first version stood on the last sample before a brake's end
+// instead of on its end, a jump the release turned into 1.2x the jerk limit.)
+TEST(RandomSuite, FeedHoldKeepsEveryLimit) {
+  const MachineConfig m = testMachine();
+  Worst overall;
+  uint64_t held_ticks = 0;
+  constexpr uint64_t kSeeds = 12;
+  for (uint64_t seed = 1; seed <= kSeeds; ++seed) {
+    Generator gen(100 + seed);
+    const std::vector<MotionPrimitive> prog = gen.program(30);
+    const int every = seed % 3 == 0 ? 20 : 150;
+    const std::size_t window = seed % 4 == 0 ? 48 : 1024;
+    auto knob = [seed, every](uint64_t k, vm::motion::MotionPlanner& planner) {
+      Random r(seed * 7919 + k);
+      const int roll = r.below(every);
+      if (roll == 0) planner.setFeedHold(!planner.feedHold());
+      if (roll == 1) planner.setFeedOverride(r.uniform(0.05, 1.0));
+      if (k > 4'000'000) planner.setFeedHold(false);  // never held for good
+    };
+    const Trace t = run(m, prog, window, 50'000'000, false, knob);
+    const Trace ahead = run(m, prog, window, 50'000'000, true, knob);
+    ASSERT_GT(t.ticks(), 0u);
+    EXPECT_EQ(fnv1a(t, 3), fnv1a(ahead, 3)) << "seed " << seed;
+    const Worst w = check(m, t);
+    EXPECT_LE(w.velocity, 1.0 + kTolerance) << "seed " << seed;
+    EXPECT_LE(w.acceleration, 1.0 + kTolerance) << "seed " << seed;
+    EXPECT_LE(w.jerk, 1.0 + kTolerance) << "seed " << seed;
+    overall.velocity = std::max(overall.velocity, w.velocity);
+    overall.acceleration = std::max(overall.acceleration, w.acceleration);
+    overall.jerk = std::max(overall.jerk, w.jerk);
+    EXPECT_EQ(t.points.back(), prog.back().to) << "seed " << seed;
+    for (std::size_t i = 0; i < prog.size(); ++i) {
+      const bool stops = prog[i].exact_stop || (i + 1 < prog.size() && prog[i + 1].kind == Kind::Dwell);
+      if (!stops) continue;
+      EXPECT_NE(std::find(t.points.begin(), t.points.end(), prog[i].to), t.points.end())
+          << "seed " << seed << " primitive " << i;
+    }
+    for (std::size_t k = 1; k < t.ticks(); ++k)
+      if (t.points[k] == t.points[k - 1] && t.infos[k].idle) ++held_ticks;
+  }
+  EXPECT_GT(held_ticks, 10000u);  // the holds really stopped the path
+  std::printf("feed hold: worst ratio to axis limit: v %.9f a %.9f j %.9f; %llu ticks standing\n",
+              overall.velocity, overall.acceleration, overall.jerk,
+              static_cast<unsigned long long>(held_ticks));
+}
+
 // MotionPlanner::planAhead (the next piece planned in the preparation, outside the tick) is a
 // pure precomputation: the setpoints are bit-identical with and without it.
 TEST(RandomSuite, PlanningAheadChangesNoSetpoint) {

@@ -31,6 +31,7 @@ struct RunArgs {
   double feed_override = 100.0;   // %
   double rapid_override = 100.0;  // %
   std::vector<std::string> feed_override_at;  // "SECONDS=PERCENT", as given
+  std::vector<std::string> feed_hold_at;      // "SECONDS=DURATION", as given
 };
 
 // --feed-override-at SECONDS=PERCENT: the turns of the feed override knob, in time order (a
@@ -106,6 +107,33 @@ void reportAlarm(driver::Session& session, const bytecode::Program& program, con
 }
 
 // --emit=summary and --emit=trace: the program through the planner, interpolator and servo.
+// --feed-hold-at SECONDS=DURATION: the feed holds, in time order. False with a message on
+// stderr for a malformed, negative or overlapping one.
+bool parseFeedHolds(const std::vector<std::string>& given, std::vector<driver::FeedHoldSpan>& holds) {
+  for (const std::string& text : given) {
+    const std::vector<std::string> parts = absl::StrSplit(text, absl::MaxSplits('=', 1));
+    double seconds = 0.0, duration = 0.0;
+    if (parts.size() != 2 || !absl::SimpleAtod(parts[0], &seconds) ||
+        !absl::SimpleAtod(parts[1], &duration) || !std::isfinite(seconds) || seconds < 0.0 ||
+        !std::isfinite(duration) || duration < 0.0) {
+      std::cerr << "ncc: error: --feed-hold-at '" << text
+                << "': expected SECONDS=DURATION, both in seconds, >= 0\n";
+      return false;
+    }
+    holds.push_back({seconds, duration});
+  }
+  std::stable_sort(holds.begin(), holds.end(),
+                   [](const auto& a, const auto& b) { return a.seconds < b.seconds; });
+  for (std::size_t i = 1; i < holds.size(); ++i) {
+    if (holds[i].seconds < holds[i - 1].seconds + holds[i - 1].duration) {
+      std::cerr << "ncc: error: --feed-hold-at: the holds at " << holds[i - 1].seconds << " s and "
+                << holds[i].seconds << " s overlap\n";
+      return false;
+    }
+  }
+  return true;
+}
+
 int runSimulation(driver::Session& session, const bytecode::Program& program, const RunArgs& args) {
   PendingOutput output;
   if (!output.open(args.output)) return kUsage;
@@ -122,7 +150,9 @@ int runSimulation(driver::Session& session, const bytecode::Program& program, co
   options.max_steps = args.max_steps;
   options.feed_override = args.feed_override / 100.0;
   options.rapid_override = args.rapid_override / 100.0;
-  if (!parseFeedOverrideTurns(args.feed_override_at, options.feed_override_turns)) return kUsage;
+  if (!parseFeedOverrideTurns(args.feed_override_at, options.feed_override_turns) ||
+      !parseFeedHolds(args.feed_hold_at, options.feed_holds))
+    return kUsage;
   driver::SimulationResult sim = driver::simulate(program, session.machine(), trace.get(), options);
   if (!sim.error.empty()) {
     std::cerr << "ncc: error: " << sim.error << '\n';
@@ -227,6 +257,10 @@ void addRunCommand(CLI::App& app, int& exit_code) {
                   "SECONDS=PERCENT: the operator turns the feed override to PERCENT (1..200) at "
                   "that time of the simulated run (repeatable); moves are planned for the "
                   "highest feed override of the run");
+  cmd->add_option("--feed-hold-at", args->feed_hold_at,
+                  "SECONDS=DURATION: the operator holds the feed at that time of the simulated "
+                  "run and releases it DURATION seconds later (repeatable): the path brakes to "
+                  "rest on the programmed path, stands, and goes on");
   args->common.addTo(*cmd);
   cmd->callback([args, &exit_code] { exit_code = runRun(*args); });
 }

@@ -180,12 +180,12 @@ void Interpolator::planNextPiece(const LookAhead& queue, bool closed) {
   }
 }
 
-Commitment Interpolator::commitForReplan(const LookAhead& queue) {
+Commitment Interpolator::commitForReplan(const LookAhead& queue, bool every_run) {
   if (!running_) return {piece_start_, resync_ ? 0.0 : exit_velocity_};
   const Run& run = queue.run(0);
   if (per_axis_ || run.kind == MotionPrimitive::Kind::Dwell) return {run.length, 0.0};
   // A run the feed override does not scale (a rapid, G63) runs on as planned.
-  if (!std::isfinite(run.feed_limit)) return {piece_end_, profile_.v_end};
+  if (!every_run && !std::isfinite(run.feed_limit)) return {piece_end_, profile_.v_end};
   // Local time of the next tick; the cruise of the running piece spans [c0, c1).
   const double next = static_cast<double>(last_tick_ + 1 - start_tick_) * cycle_ - phase_;
   const double c0 = profile_.accel.duration;
@@ -213,6 +213,21 @@ bool Interpolator::setpoint(uint64_t k, LookAhead& queue, bool closed, AxisValue
   // Bounded: every iteration finishes a segment or a piece; pieces cover at least one
   // cycle of travel unless they end a run.
   for (std::size_t guard = 2 * queue.size() + 4; guard > 0 && !queue.empty(); --guard) {
+    if (!running_ && resync_ && queue.held()) {
+      // Feed hold, at rest: stand where the path stopped (run offset piece_start_) until it is
+      // released.
+      Run& run = queue.frontRun();
+      while (run.segments > 1) {
+        const QueuedSegment& seg = queue.frontSegment();
+        if (piece_start_ <= seg.run_offset + seg.path.length()) break;
+        position_ = seg.path.to();
+        queue.popSegment();
+        ++info.segments_finished;
+      }
+      const QueuedSegment& seg = queue.frontSegment();
+      seg.path.position(piece_start_ - seg.run_offset, out);
+      return true;
+    }
     if (!running_) {
       if (resync_) {  // after a stop or starvation: start on this tick
         start_tick_ = k;

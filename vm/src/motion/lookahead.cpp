@@ -73,13 +73,14 @@ void LookAhead::stopAfterLast() {
 
 double LookAhead::velocity(std::size_t i) const {
   const Run& run = runAt(i);
+  if (held_) return 0.0;
   if (feed_scale_ == 1.0) return run.limits.velocity;
   return std::max(std::min(run.limits.velocity, run.feed_limit * feed_scale_), kMinPathVelocity);
 }
 
 double LookAhead::entryLimit(std::size_t i) const {
   const Run& run = runAt(i);
-  if (feed_scale_ == 1.0) return run.entry_limit;
+  if (feed_scale_ == 1.0 && !held_) return run.entry_limit;
   double limit = std::min(run.entry_limit, velocity(i));
   if (i > 0) limit = std::min(limit, velocity(i - 1));
   return limit;
@@ -103,6 +104,15 @@ void LookAhead::backwardPass(bool full) {
 
 void LookAhead::setFeedScale(double scale, const Commitment& committed) {
   feed_scale_ = scale;
+  replan(committed);
+}
+
+void LookAhead::setHold(bool held, const Commitment& committed) {
+  held_ = held;
+  replan(committed);
+}
+
+void LookAhead::replan(const Commitment& committed) {
   for (std::size_t i = 0; i < run_count_; ++i) {
     Run& run = runAt(i);
     run.entry_floor = 0.0;

@@ -52,6 +52,11 @@ void MotionPlanner::setFeedOverride(double feed) {
   queue_.setFeedScale(scale, interpolator_.commitForReplan(queue_));
 }
 
+void MotionPlanner::setFeedHold(bool held) {
+  if (held == queue_.held()) return;
+  queue_.setHold(held, interpolator_.commitForReplan(queue_, /*every_run=*/held));
+}
+
 bool MotionPlanner::push(const MotionPrimitive& m) {
   if (spindle_alarm_) return true;  // input ends at the alarm
   if (!hasRoom()) return false;

@@ -28,6 +28,13 @@ struct FeedOverrideTurn {
   double feed = 1.0;
 };
 
+// The operator holds the feed (feed hold) at `seconds` into the run and releases it
+// `duration` seconds later.
+struct FeedHoldSpan {
+  double seconds = 0.0;
+  double duration = 0.0;
+};
+
 // The operator's settings for a simulated run.
 struct SimulationOptions {
   uint64_t max_steps = 0;       // VM instruction budget (0: no limit), alarm NCC7204
@@ -36,6 +43,8 @@ struct SimulationOptions {
   // Turns of the feed override during the run, in time order. Moves are planned for the
   // highest feed override of the run (vm::ControllerOptions::max_feed_override).
   std::vector<FeedOverrideTurn> feed_override_turns;
+  // Feed holds, in time order, not overlapping.
+  std::vector<FeedHoldSpan> feed_holds;
 };
 
 // Runs `program` to its end (or an alarm, or the instruction budget).

@@ -125,6 +125,11 @@ class Controller {
   // the same trace.
   void setFeedOverride(double feed) noexcept { planner_.setFeedOverride(feed); }
   double feedOverride() const { return planner_.feedOverride(); }
+  // Feed hold (the operator's button), between ticks: the path brakes to rest along the
+  // programmed path within every limit and stands there until released
+  // (MotionPlanner::setFeedHold). The run goes on ticking (Running) meanwhile.
+  void setFeedHold(bool held) noexcept { planner_.setFeedHold(held); }
+  bool feedHold() const { return planner_.feedHold(); }
 
   TickStatus status() const { return status_; }
   // The alarm that stopped the run, or nullptr. Executor alarms (NCC72xx) are raised when the

@@ -22,8 +22,9 @@
 //  - a run entered above its speed limit (a live feed override turned down) first gets a
 //    piece that brakes to that limit, where the rest of the run still leaves room to reach
 //    its exit.
-// A live feed override (commitForReplan) cuts the running piece where it next cruises, so that
-// the rest is planned with the new speed limits.
+// A live feed override or a feed hold (commitForReplan) cuts the running piece where it next
+// cruises, so that the rest is planned with the new speed limits. While the queue is held
+// (LookAhead::held) no piece starts from rest: the path stands where it stopped.
 #include <array>
 #include <cstddef>
 #include <cstdint>
@@ -77,9 +78,10 @@ class Interpolator {
 
   // The speed limits of what is queued are about to change (a live feed override): cuts the
   // running piece at the first point from the next tick on where it cruises (a = 0, j = 0),
-  // or else (or when the override does not scale its run: rapids, G63) lets it run to its end, and returns that point, from which the next piece will
+  // or else (or when the override does not scale its run, rapids and G63, unless `every_run`:
+  // a feed hold stops those too) lets it run to its end, and returns that point, from which the next piece will
   // start whatever the new plan is. Deterministic: it depends on the ticks taken so far.
-  Commitment commitForReplan(const LookAhead& queue);
+  Commitment commitForReplan(const LookAhead& queue, bool every_run = false);
 
   const AxisValues& position() const { return position_; }
   // The rapid limits (kept by reference) were changed: a rapid planned ahead is stale.

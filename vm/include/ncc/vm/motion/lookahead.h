@@ -17,8 +17,9 @@
 // velocity (see Interpolator).
 //
 // Live feed override (setFeedScale): every run's speed limit is its planned limit, at most
-// its programmed feed times the scale. A change re-plans the whole window; entries may fall,
-// but never below what the motion already under way can brake to (entry floors). Two fixed-capacity rings hold segments and runs, allocated in
+// its programmed feed times the scale. Feed hold (setHold): every speed limit is 0. A change
+// re-plans the whole window; entries may fall, but never below what the motion already under
+// way can brake to (entry floors). Two fixed-capacity rings hold segments and runs, allocated in
 // the constructor; nothing allocates or throws afterwards.
 #include <cstddef>
 #include <cstdint>
@@ -97,6 +98,11 @@ class LookAhead {
   // previous plan had, so every geometric and junction limit still holds). O(queued runs).
   void setFeedScale(double scale, const Commitment& committed);
   double feedScale() const { return feed_scale_; }
+  // Feed hold: while held every run's speed limit is 0, so the path brakes to rest as the
+  // limits allow (through as many runs as that takes) and stays there; released, the window
+  // is planned as before. Re-plans like setFeedScale.
+  void setHold(bool held, const Commitment& committed);
+  bool held() const { return held_; }
 
   Run& frontRun() { return runAt(0); }
   QueuedSegment& frontSegment() { return segmentAt(0); }
@@ -133,6 +139,9 @@ class LookAhead {
   }
   Run& runAt(std::size_t i) { return runs_[(run_head_ + i) % runs_.size()]; }
   const Run& runAt(std::size_t i) const { return runs_[(run_head_ + i) % runs_.size()]; }
+  // After a change of the speed limits: the whole window again, with entry floors from
+  // `committed` on (setFeedScale).
+  void replan(const Commitment& committed);
   // `full`: every run, not only up to the first unchanged entry.
   void backwardPass(bool full = false);
   // Run i's junction limit under the feed scale: also at most its and the previous run's speed.
@@ -149,6 +158,7 @@ class LookAhead {
   double window_length_ = 0.0;
   double queued_length_ = 0.0;  // lengths of the segments behind the front one
   double feed_scale_ = 1.0;
+  bool held_ = false;
 };
 
 }  // namespace ncc::vm::motion

@@ -64,6 +64,12 @@ class MotionPlanner {
   // is taken as 0.1 %.
   void setFeedOverride(double feed);
   double feedOverride() const { return feed_override_ * queue_.feedScale(); }
+  // Feed hold (the operator's button), between ticks: the path brakes to rest along the
+  // programmed path as the limits allow, rapids included (a non-linear G00 and a dwell under
+  // way finish first), and stands there; released, it goes on from there. Re-plans like
+  // setFeedOverride. Deterministic like it.
+  void setFeedHold(bool held);
+  bool feedHold() const { return queue_.held(); }
   // The path comes to rest at the end of the last queued segment (M00/M01).
   void stop();
   // No more input: setpoint() returns false once everything queued has run.

@@ -1,0 +1,113 @@
+// Feed hold (MotionPlanner::setFeedHold): the path brakes to rest on the programmed path,
+// stands, and goes on when released; the program time grows by exactly the time held on a
+// long line; rapids stop too; a hold before the start keeps the path at its start. The random
+// suite holds random programs at random ticks (random_suite_test.cpp).
+#include <cmath>
+
+#include "gtest/gtest.h"
+#include "motion_test_util.h"
+#include "ncc/vm/motion/planner.h"
+
+namespace ncc::vm::motion {
+namespace {
+
+using namespace motion_test;
+
+constexpr double kT = 0.001;  // default IPO cycle
+
+// Holds before tick `from`, releases before tick `to`.
+PlannerHook holdBetween(uint64_t from, uint64_t to) {
+  return [=](uint64_t k, MotionPlanner& planner) {
+    if (k == from) planner.setFeedHold(true);
+    if (k == to) planner.setFeedHold(false);
+  };
+}
+
+void expectWithinLimits(const MachineConfig& m, const Trace& t) {
+  const Worst w = check(m, t);
+  constexpr double kTolerance = 1e-6;
+  EXPECT_LE(w.velocity, 1.0 + kTolerance);
+  EXPECT_LE(w.acceleration, 1.0 + kTolerance);
+  EXPECT_LE(w.jerk, 1.0 + kTolerance);
+}
+
+// Ticks in [from, to) whose setpoint equals the previous one.
+uint64_t standingTicks(const Trace& t, uint64_t from, uint64_t to) {
+  uint64_t n = 0;
+  for (uint64_t k = std::max<uint64_t>(from, 1); k < to && k < t.ticks(); ++k)
+    if (t.points[k] == t.points[k - 1]) ++n;
+  return n;
+}
+
+TEST(FeedHold, StopsOnThePathAndGoesOnWhenReleased) {
+  // G01 X600 at F6000: held at 2 s, released at 3 s. The brake (about 0.09 s) ends long
+  // before the release, so the path loses exactly the second held: it runs from rest after
+  // the release as it ran into the stop, ramp for ramp.
+  const MachineConfig m = defaultMachine();
+  const std::vector<MotionPrimitive> prog = {line(xyz(0, 0, 0), xyz(600, 0, 0), 6000.0)};
+  const Trace plain = run(m, prog);
+  const Trace held = run(m, prog, 1024, 50'000'000, false, holdBetween(2000, 3000));
+  expectWithinLimits(m, held);
+  EXPECT_EQ(held.points.back(), xyz(600, 0, 0));
+  // Standing still from the end of the brake to the release, on the line.
+  EXPECT_GE(standingTicks(held, 2100, 3000), 890u);
+  EXPECT_EQ(held.points[2500][1], 0.0);
+  EXPECT_NEAR(held.points[2500][0], 200.0, 1.0);
+  EXPECT_NEAR(static_cast<double>(held.ticks()) * kT,
+              static_cast<double>(plain.ticks()) * kT + 1.0, 1.5 * kT);
+}
+
+TEST(FeedHold, StopsRapidsToo) {
+  const MachineConfig m = defaultMachine();
+  const std::vector<MotionPrimitive> prog = {rapid(xyz(0, 0, 0), xyz(2000, 0, 0))};
+  const Trace held = run(m, prog, 1024, 50'000'000, false, holdBetween(1500, 2500));
+  expectWithinLimits(m, held);
+  EXPECT_GE(standingTicks(held, 1500, 2500), 700u);
+  EXPECT_EQ(held.points.back(), xyz(2000, 0, 0));
+}
+
+TEST(FeedHold, HeldBeforeTheStartStaysAtTheStart) {
+  const MachineConfig m = defaultMachine();
+  const std::vector<MotionPrimitive> prog = {line(xyz(0, 0, 0), xyz(50, 0, 0), 3000.0)};
+  const Trace held = run(m, prog, 1024, 50'000'000, false, holdBetween(0, 500));
+  for (uint64_t k = 0; k < 500; ++k) ASSERT_EQ(held.points[k], xyz(0, 0, 0)) << k;
+  EXPECT_GT(held.points[700][0], 0.0);
+  EXPECT_EQ(held.points.back(), xyz(50, 0, 0));
+  EXPECT_EQ(held.ticks(), run(m, prog).ticks() + 500);
+}
+
+TEST(FeedHold, ReleasedWhileBrakingAndHeldAgain) {
+  // Released 30 ms into the brake, held again 200 ms later, released for good: every limit
+  // holds, the path stands twice and ends exactly.
+  const MachineConfig m = defaultMachine();
+  const std::vector<MotionPrimitive> prog = {line(xyz(0, 0, 0), xyz(400, 0, 0), 6000.0)};
+  auto knob = [](uint64_t k, MotionPlanner& planner) {
+    if (k == 1000 || k == 1230) planner.setFeedHold(true);
+    if (k == 1030 || k == 1800) planner.setFeedHold(false);
+  };
+  const Trace t = run(m, prog, 1024, 50'000'000, false, knob);
+  expectWithinLimits(m, t);
+  EXPECT_GE(standingTicks(t, 1230, 1800), 400u);
+  EXPECT_EQ(t.points.back(), xyz(400, 0, 0));
+}
+
+TEST(FeedHold, ThroughAChainOfShortSegments) {
+  // A 10 um chain at F6000 along a gentle wave (about 58 mm/s where it is held): the brake
+  // runs over hundreds of segments, in runs of different limits (each ends at a = 0), and
+  // takes about 250 ms; the path then stands until the release.
+  const MachineConfig m = defaultMachine();
+  std::vector<MotionPrimitive> prog;
+  AxisValues p = xyz(0, 0, 0);
+  for (int i = 1; i <= 20000; ++i) {
+    const AxisValues q = xyz(0.01 * i, 0.0001 * std::sin(0.01 * i), 0);
+    prog.push_back(line(p, q, 6000.0));
+    p = q;
+  }
+  const Trace t = run(m, prog, 1024, 50'000'000, false, holdBetween(1000, 1400));
+  expectWithinLimits(m, t);
+  EXPECT_EQ(standingTicks(t, 1300, 1400), 100u);
+  EXPECT_EQ(t.points.back(), p);
+}
+
+}  // namespace
+}  // namespace ncc::vm::motion
