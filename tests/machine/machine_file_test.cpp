@@ -370,6 +370,9 @@ TEST(MachineFile, AxisLimitErrors) {
   EXPECT_EQ(onlyError("[machine]\nlookahead_segments = 8\n"),
             "machine.toml:2:22: error[NCC0306]: 'lookahead_segments' must be at least 16 and at "
             "most 16384, not 8");
+  EXPECT_EQ(onlyError("[machine]\nlookahead_segments = 16385\n"),
+            "machine.toml:2:22: error[NCC0306]: 'lookahead_segments' must be at least 16 and at "
+            "most 16384, not 16385");
   EXPECT_EQ(onlyError("[machine]\nlookahead_segments = 100.5\n"),
             "machine.toml:2:22: error[NCC0303]: wrong type for 'lookahead_segments': expected an "
             "integer, found a float");
