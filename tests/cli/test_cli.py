@@ -204,7 +204,8 @@ class CliTest(unittest.TestCase):
         up = seconds("--feed-override=50", "--feed-override-at", "1=100")
         self.assertAlmostEqual(up - full, 0.5, delta=0.1)
         out = os.path.join(self.dir, "turned.csv")
-        for bad in ("1", "x=50", "1=0", "1=250", "-1=50", "1=50%", "inf=50"):
+        for bad in ("1", "x=50", "1=0", "1=250", "-1=50", "1=50%", "inf=50", "1=0x32", "0x1=50",
+                    " 1=50", "+1=50", "1=50 "):
             proc = ncc("run", prog, "--feed-override-at", bad, "--emit=trace", "-o", out)
             self.assertEqual(proc.returncode, 2, bad)
             self.assertIn("--feed-override-at '%s'" % bad, proc.stderr)
@@ -224,7 +225,7 @@ class CliTest(unittest.TestCase):
         full = seconds()
         held = seconds("--feed-hold-at", "1=2", "--feed-hold-at", "9=1")
         self.assertAlmostEqual(held - full, 2.0, delta=0.002)
-        for bad in ("1", "1=-2", "x=1", "nan=1"):
+        for bad in ("1", "1=-2", "x=1", "nan=1", "1=0x2"):
             proc = ncc("run", prog, "--feed-hold-at", bad)
             self.assertEqual(proc.returncode, 2, bad)
             self.assertIn("--feed-hold-at '%s'" % bad, proc.stderr)

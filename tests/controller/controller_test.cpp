@@ -209,6 +209,55 @@ TEST(Controller, FeedHoldStopsThePathUntilReleased) {
   EXPECT_EQ(ctl->statistics().limit_violations, 0);
 }
 
+TEST(Controller, OperatorRequestsGiveTheSameTraceInBothLoops) {
+  // Feed override turns and feed holds take effect at the next prepare(), whenever they were
+  // requested since the one before. The simple loop requests before tick k (whose prepare()
+  // applies it); the real-time loop requests the same right after the prepare() that
+  // precedes tick k - 1, a whole tick earlier and after that prepare() pulled its events.
+  // With a shallow window the queue changes between those points, so applying a request at
+  // once would re-plan a different queue; latched, both loops give the same trace bit for bit.
+  MachineConfig m = defaultMachine();
+  bytecode::Assembler a = assemblerFor(m);
+  for (int i = 1; i <= 600; ++i)
+    a.line(xyz(0.05 * i, 2.0 * std::sin(0.02 * i), 0), i % 200 < 100 ? 6000.0 : 3000.0);
+  a.op(bytecode::Opcode::End);
+  const bytecode::Program prog = a.finish();
+  auto request = [](vm::Controller& ctl, uint64_t k) {
+    if (k % 37 == 0) ctl.setFeedOverride(0.1 + 0.07 * static_cast<double>(k % 13));
+    if (k % 400 == 150) ctl.setFeedHold(true);
+    if (k % 400 == 260) ctl.setFeedHold(false);
+  };
+  auto trace = [&](bool prepare_in_tick) {
+    vm::ControllerOptions options;
+    options.window_capacity = 48;
+    options.prepare_in_tick = prepare_in_tick;
+    bytecode::Error error;
+    std::unique_ptr<vm::Controller> ctl = vm::Controller::create(prog, m, error, options);
+    EXPECT_TRUE(ctl) << error.message;
+    std::vector<AxisValues> points;
+    TickOutput out;
+    if (!prepare_in_tick) {
+      request(*ctl, 0);
+      ctl->prepare();  // precedes tick 0
+      request(*ctl, 1);
+    }
+    for (uint64_t k = 0; k < 200'000; ++k) {
+      if (prepare_in_tick) request(*ctl, k);
+      if (ctl->tick(out) != TickStatus::Running) break;
+      points.push_back(out.commanded);
+      if (!prepare_in_tick) {
+        ctl->prepare();  // precedes tick k + 1
+        request(*ctl, k + 2);
+      }
+    }
+    EXPECT_EQ(ctl->status(), TickStatus::Finished);
+    return points;
+  };
+  const std::vector<AxisValues> simple = trace(true), realtime = trace(false);
+  ASSERT_GT(simple.size(), 1000u);
+  EXPECT_EQ(simple, realtime);
+}
+
 TEST(Controller, FeedPerRevolutionUsesTheSpindleSpeed) {
   MachineConfig m = defaultMachine();
   bytecode::Assembler a = assemblerFor(m);

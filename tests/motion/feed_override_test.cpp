@@ -122,6 +122,28 @@ TEST(FeedOverride, LeavesG63AndRapidsAlone) {
   EXPECT_EQ(fnv1a(g00, 3), fnv1a(g00_plain, 3));
 }
 
+TEST(FeedOverride, LeavesAG63TapAloneAfterAMoveItScales) {
+  // Approach at the tapping feed, then tap in the same direction (G63): the two are
+  // collinear with the same limits, but the knob scales only the approach, so they must not
+  // share a run. (They did in the first version: the tap ran at half speed.)
+  const MachineConfig m = defaultMachine();
+  MotionPrimitive approach = line(xyz(0, 0, 10), xyz(0, 0, 2), 600.0);
+  MotionPrimitive tap = line(xyz(0, 0, 2), xyz(0, 0, -20), 600.0);
+  tap.fixed_override = true;
+  const Trace t = run(m, {approach, tap}, 1024, 50'000'000, false, turnAt(0, 0.5));
+  uint64_t in_tap = 0;
+  for (uint64_t k = 1; k < t.ticks(); ++k) {
+    if (t.points[k][2] < -5.0 && t.points[k][2] > -15.0) {
+      EXPECT_NEAR((t.points[k - 1][2] - t.points[k][2]) / kT, 10.0, 1e-9) << k;
+      ++in_tap;
+    }
+    if (t.points[k][2] > 4.0 && t.points[k][2] < 8.0) {
+      EXPECT_NEAR((t.points[k - 1][2] - t.points[k][2]) / kT, 5.0, 1e-9) << k;
+    }
+  }
+  EXPECT_GT(in_tap, 900u);
+}
+
 TEST(FeedOverride, ClampedToTheRangeItWasPlannedFor) {
   const MachineConfig m = defaultMachine();
   MotionPlanner planner(m, 64);

@@ -1,13 +1,15 @@
 // `ncc run IN [--emit=moves|vars] [-o FILE]` (IN is a source program or a .ncb file) and
 // `ncc dis FILE.ncb`.
 #include <algorithm>
+#include <charconv>
 #include <cmath>
 #include <iostream>
 #include <string>
+#include <string_view>
+#include <system_error>
 #include <vector>
 
 #include "absl/strings/match.h"
-#include "absl/strings/numbers.h"
 #include "absl/strings/str_split.h"
 #include "absl/strings/str_format.h"
 #include "cli.h"
@@ -34,17 +36,28 @@ struct RunArgs {
   std::vector<std::string> feed_hold_at;      // "SECONDS=DURATION", as given
 };
 
+// A plain decimal number (digits, '.', an exponent, a leading '-'): no hex, no whitespace,
+// no '+', nothing after it. SimpleAtod would take "0x32" as 50.
+bool parseDecimal(std::string_view text, double& value) {
+  const char* end = text.data() + text.size();
+  const auto [ptr, ec] = std::from_chars(text.data(), end, value, std::chars_format::general);
+  return ec == std::errc() && ptr == end && std::isfinite(value);
+}
+
+// "A=B" with both plain decimal numbers.
+bool parsePair(const std::string& text, double& first, double& second) {
+  const std::vector<std::string> parts = absl::StrSplit(text, absl::MaxSplits('=', 1));
+  return parts.size() == 2 && parseDecimal(parts[0], first) && parseDecimal(parts[1], second);
+}
+
 // --feed-override-at SECONDS=PERCENT: the turns of the feed override knob, in time order (a
 // stable sort: turns at the same time apply in the order given). False with a message on
 // stderr for a malformed or out-of-range value.
 bool parseFeedOverrideTurns(const std::vector<std::string>& given,
                             std::vector<driver::FeedOverrideTurn>& turns) {
   for (const std::string& text : given) {
-    const std::vector<std::string> parts = absl::StrSplit(text, absl::MaxSplits('=', 1));
     double seconds = 0.0, percent = 0.0;
-    if (parts.size() != 2 || !absl::SimpleAtod(parts[0], &seconds) ||
-        !absl::SimpleAtod(parts[1], &percent) || !std::isfinite(seconds) || seconds < 0.0 ||
-        !(percent >= 1.0 && percent <= 200.0)) {
+    if (!parsePair(text, seconds, percent) || seconds < 0.0 || !(percent >= 1.0 && percent <= 200.0)) {
       std::cerr << "ncc: error: --feed-override-at '" << text
                 << "': expected SECONDS=PERCENT with SECONDS >= 0 and PERCENT in 1..200\n";
       return false;
@@ -111,11 +124,8 @@ void reportAlarm(driver::Session& session, const bytecode::Program& program, con
 // stderr for a malformed, negative or overlapping one.
 bool parseFeedHolds(const std::vector<std::string>& given, std::vector<driver::FeedHoldSpan>& holds) {
   for (const std::string& text : given) {
-    const std::vector<std::string> parts = absl::StrSplit(text, absl::MaxSplits('=', 1));
     double seconds = 0.0, duration = 0.0;
-    if (parts.size() != 2 || !absl::SimpleAtod(parts[0], &seconds) ||
-        !absl::SimpleAtod(parts[1], &duration) || !std::isfinite(seconds) || seconds < 0.0 ||
-        !std::isfinite(duration) || duration < 0.0) {
+    if (!parsePair(text, seconds, duration) || seconds < 0.0 || duration < 0.0) {
       std::cerr << "ncc: error: --feed-hold-at '" << text
                 << "': expected SECONDS=DURATION, both in seconds, >= 0\n";
       return false;

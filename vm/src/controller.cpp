@@ -91,8 +91,20 @@ std::string_view Controller::fileName(uint32_t file) const {
 
 void Controller::prepare() noexcept {
   if (status_ != TickStatus::Running) return;
+  // The operator's requests first, at this fixed point of the cycle: the same calls between
+  // the same ticks re-plan the same queue in either loop.
+  if (pending_feed_hold_) planner_.setFeedHold(*pending_feed_hold_);
+  if (pending_feed_override_) planner_.setFeedOverride(*pending_feed_override_);
+  pending_feed_hold_.reset();
+  pending_feed_override_.reset();
   pullEvents();
   planner_.planAhead();
+}
+
+double Controller::feedOverride() const {
+  if (!pending_feed_override_) return planner_.feedOverride();
+  return std::clamp(*pending_feed_override_, motion::MotionPlanner::kMinFeedOverride,
+                    planner_.maxFeedOverride());
 }
 
 // Feeds the planner while it wants more: motion, S (feed per revolution, dwell in

@@ -37,7 +37,10 @@ void LookAhead::push(const QueuedSegment& segment, MotionPrimitive::Kind kind,
                     entry_limit >= (1.0 - kSameLimit) * std::min(limits.velocity, last->limits.velocity) &&
                     close(limits.velocity, last->limits.velocity) &&
                     close(limits.acceleration, last->limits.acceleration) &&
-                    close(limits.jerk, last->limits.jerk);
+                    close(limits.jerk, last->limits.jerk) &&
+                    // One speed under a live feed override: a G63 tap (not scaled) or a
+                    // different F must not share a run with what it scales.
+                    segment.feed_limit == last->feed_limit;
   QueuedSegment& slot = segmentAt(segment_count_);
   slot = segment;
   ++segment_count_;
@@ -46,7 +49,6 @@ void LookAhead::push(const QueuedSegment& segment, MotionPrimitive::Kind kind,
     last->length += length;
     ++last->segments;
     last->stop_after = stop_after;
-    last->feed_limit = std::min(last->feed_limit, segment.feed_limit);
   } else {
     Run& run = runAt(run_count_);
     run = Run{};

@@ -1,7 +1,8 @@
 #pragma once
 // Look-ahead over queued segments, grouped into runs.
 //
-// A run is a chain of consecutive segments of the same kind with (nearly) equal path limits
+// A run is a chain of consecutive segments of the same kind and programmed feed
+// (QueuedSegment::feed_limit) with (nearly) equal path limits
 // whose junctions do not bind (tangent or collinear, junction limit >= the run's velocity
 // limit): a 10 um G01 chain along a line, an arc split into pieces. The S-curve is planned
 // over a run as one 1-D path, so a chain of tiny segments accelerates like one long segment;
@@ -52,7 +53,7 @@ struct Run {
   double entry_limit = 0.0;    // junction velocity limit at its start (0: from rest)
   double entry_planned = 0.0;  // backward pass result
   bool stop_after = false;     // ends at rest whatever follows (G09/G61, M00, dwell...)
-  double feed_limit = std::numeric_limits<double>::infinity();  // lowest of its segments'
+  double feed_limit = std::numeric_limits<double>::infinity();  // its segments' (all equal)
   // Lowest entry the motion under way can brake to (set by setFeedScale, 0 otherwise).
   double entry_floor = 0.0;
   double entry_before = 0.0;  // entry_planned before the last setFeedScale
