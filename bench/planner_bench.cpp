@@ -3,6 +3,7 @@
 //   build/bench/planner_bench
 #include <benchmark/benchmark.h>
 
+#include <chrono>
 #include <cmath>
 #include <numbers>
 #include <vector>
@@ -92,6 +93,41 @@ void BM_Ticks(benchmark::State& state) {
   state.counters["ticks/s"] = benchmark::Counter(static_cast<double>(ticks), benchmark::Counter::kIsRate);
 }
 BENCHMARK(BM_Ticks)->Unit(benchmark::kMillisecond);
+
+// A feed override turn (MotionPlanner::setFeedOverride) with N segments queued, each its own
+// run (a zig-zag of 1 mm lines whose corners stop): the re-plan of the whole window, which
+// vm::Controller runs in prepare(). Time is per turn; `ns/queued_run` per run re-planned; the
+// peer, measured in the same run, is pushing those N segments into the window
+// (`turn/push_window`: how many window fills one turn costs).
+void BM_FeedOverrideTurn(benchmark::State& state) {
+  const ncc::MachineConfig machine = ncc::defaultMachine();
+  const auto segments = static_cast<std::size_t>(state.range(0));
+  ncc::vm::motion::MotionPlanner planner(machine, segments + 16);
+  planner.setOverrides(1.0, 1.0, 1.0);
+  std::vector<MotionPrimitive> prog;
+  AxisValues p{};
+  for (std::size_t i = 1; i <= segments; ++i) {
+    AxisValues q = p;
+    q[0] += 1.0;
+    q[1] = (i % 2 == 0) ? 0.0 : 1.0;
+    prog.push_back(line(p, q, 30000.0));
+    p = q;
+  }
+  const auto fill_start = std::chrono::steady_clock::now();
+  for (const MotionPrimitive& m : prog) planner.push(m);
+  const double fill_ns = std::chrono::duration<double, std::nano>(std::chrono::steady_clock::now() - fill_start).count();
+  double knob = 0.5;
+  const auto turns_start = std::chrono::steady_clock::now();
+  for (auto _ : state) {
+    planner.setFeedOverride(knob);
+    knob = knob == 0.5 ? 0.9 : 0.5;
+  }
+  const double turn_ns = std::chrono::duration<double, std::nano>(std::chrono::steady_clock::now() - turns_start).count() /
+                         static_cast<double>(state.iterations());
+  state.counters["ns/queued_run"] = turn_ns / static_cast<double>(planner.queued());
+  state.counters["turn/push_window"] = turn_ns / fill_ns;
+}
+BENCHMARK(BM_FeedOverrideTurn)->Arg(256)->Arg(1024)->Arg(4096);
 
 }  // namespace
 
