@@ -100,6 +100,60 @@ TEST(RampEnvelope, WidenedLimitsHoldAtEveryReachableState) {
   EXPECT_GT(widened, 50);  // the envelope usually finds a faster pair
 }
 
+TEST(RampEnvelope, CircleLimitsHoldAtEveryOrientation) {
+  // A circle in a coordinate plane (tangent and normal bounds 1 on both plane axes, rotation
+  // -v^3 k^2 T along the tangent): the budget and the envelope take the rotation with the
+  // tangential jerk (rotation_along_tangent). Ground truth, independent of both forms: each
+  // plane axis at every orientation phi of the circle, a_i = a_t cos(phi) - v^2 k sin(phi) and
+  // j_i = (j_t - v^3 k^2) cos(phi) - 3 v k a_t sin(phi), for both signs of a_t and j_t.
+  Random rng(11);
+  for (int trial = 0; trial < 200; ++trial) {
+    const double kappa = 1.0 / rng.uniform(0.5, 100.0), rate = kappa * kappa;
+    const RampEnvelope::Axis axes[2] = {
+        {1.0, 1.0, rng.uniform(800.0, 4000.0), rng.uniform(10000.0, 80000.0)},
+        {1.0, 1.0, rng.uniform(800.0, 4000.0), rng.uniform(10000.0, 80000.0)}};
+    double top = rng.uniform(5.0, 300.0);
+    for (const auto& x : axes) {
+      top = std::min(top, std::sqrt(kCentripetalShare * x.acceleration / kappa));
+      top = std::min(top, std::cbrt(x.jerk / 3.0 / rate));
+    }
+    const double c = top * top * kappa, cross = 3.0 * top * kappa, rotation = top * top * top * rate;
+    RampEnvelope env(top, kappa, rate, /*rotation_along_tangent=*/true);
+    TangentialBudget budget;
+    double a0 = 1e300;
+    for (const auto& x : axes) {
+      env.add(x);
+      budget.add({1.0, cross, x.jerk - rotation, cross, x.jerk, rotation});
+      a0 = std::min(a0, std::max(x.acceleration - c, std::sqrt(x.acceleration * x.acceleration - c * c)));
+    }
+    double j0 = INFINITY;
+    budget.split(top, a0, j0);
+    ASSERT_GT(a0, 0.0);
+    ASSERT_GT(j0, 0.0);
+    double a = a0, j = j0;
+    env.widen(a, j);
+    for (const double limit_a : {a0, a}) {
+      const double limit_j = limit_a == a0 ? j0 : j;
+      for (int s = 0; s <= 200; ++s) {
+        const double v = std::min(top, top * s / 200.0);
+        const double alpha = std::min(limit_a, std::sqrt(2.0 * limit_j * (top - v)));
+        for (double at : {alpha, -alpha, 0.5 * alpha})
+          for (double jt : {limit_j, -limit_j})
+            for (int k = 0; k < 72; ++k) {
+              const double phi = 2.0 * std::numbers::pi * k / 72.0;
+              const double acc = at * std::cos(phi) - v * v * kappa * std::sin(phi);
+              const double jerk =
+                  (jt - v * v * v * rate) * std::cos(phi) - 3.0 * v * kappa * at * std::sin(phi);
+              for (const auto& x : axes) {
+                ASSERT_LE(std::abs(acc), x.acceleration * (1 + 1e-9)) << trial << " v " << v;
+                ASSERT_LE(std::abs(jerk), x.jerk * (1 + 1e-9)) << trial << " v " << v;
+              }
+            }
+      }
+    }
+  }
+}
+
 TEST(RampEnvelope, SmallFastCircleGainsAndKeepsEveryLimit) {
   // G2 circles of r 3..25 mm at F3000..F9000 from rest: the planned time against the
   // rest-to-rest S-curve over the circle at full axis limits (a lower bound within 0.3 % on

@@ -90,7 +90,9 @@ SegmentLimits segmentLimits(const PathSegment& path, const AxisLimits& axes, boo
   // either is: the sum of the parts' shares, a_t t_i + v^2 k q_i, and the norm of the whole
   // vector, sqrt(a_t^2 + (v^2 k)^2) (the tangent and the normal are orthogonal).
   TangentialBudget budget;
-  RampEnvelope envelope(v, kappa, rate);
+  // A plane circle, or a chain line planned as one: the rotation term lies along the tangent.
+  const bool circle = in_chain || path.isPlaneCircle();
+  RampEnvelope envelope(v, kappa, rate, circle);
   const double centripetal = curved ? v * v * kappa : 0.0;
   const double cross = curved ? 3.0 * v * kappa : 0.0;  // the cross term 3 v a_t k, per a_t
   const double rotation = curved ? v * v * v * rate : 0.0;
@@ -105,8 +107,10 @@ SegmentLimits segmentLimits(const PathSegment& path, const AxisLimits& axes, boo
       a_i = std::max(a_i, std::sqrt(acc * acc - centripetal * centripetal));
     lim.acceleration = std::min(lim.acceleration, a_i);
     const double jerk = kSmoothJerkShare * axes.jerk[i] - q[i] * wiggle_jerk;
-    budget.add({t[i], cross * q[i], jerk - rotation * q[i],
-                curved && q[i] > 0.0 ? cross : 0.0, curved && q[i] > 0.0 ? jerk - rotation : 0.0});
+    const bool norm = curved && q[i] > 0.0;
+    budget.add({t[i], cross * q[i], jerk - rotation * q[i], norm ? cross : 0.0,
+                norm ? (circle ? jerk : jerk - rotation) : 0.0,
+                norm && circle ? rotation : 0.0});
     if (curved) {
       envelope.add({t[i], q[i], acc, jerk});
       speed_share = std::max({speed_share, centripetal * q[i] / acc, rotation * q[i] / jerk});
@@ -138,7 +142,8 @@ double TangentialBudget::jerkAt(double a) const {
     // Norm form: sqrt(j^2 + (m a)^2) <= J''.
     if (x.norm_cross > 0.0 && x.norm_jerk_left >= x.norm_cross * a) {
       const double m = x.norm_cross * a;
-      allowed = std::max(allowed, std::sqrt(x.norm_jerk_left * x.norm_jerk_left - m * m));
+      allowed = std::max(allowed, std::sqrt(x.norm_jerk_left * x.norm_jerk_left - m * m) -
+                                      x.norm_rotation);
     }
     j = std::min(j, allowed);
   }

@@ -38,10 +38,11 @@ bool RampEnvelope::holds(double a, double j) const {
       const bool acceleration_ok =
           alpha * x.tangent + centripetal * x.normal <= x.acceleration ||
           (on_plane && alpha * alpha + centripetal * centripetal <= x.acceleration * x.acceleration);
-      const bool jerk_ok =
-          j * x.tangent + (cross + rotation) * x.normal <= x.jerk ||
-          (on_plane && rotation <= x.jerk &&
-           j * j + cross * cross <= (x.jerk - rotation) * (x.jerk - rotation));
+      const bool norm_ok =
+          on_plane && rotation <= x.jerk &&
+          (along_tangent_ ? (j + rotation) * (j + rotation) + cross * cross <= x.jerk * x.jerk
+                          : j * j + cross * cross <= (x.jerk - rotation) * (x.jerk - rotation));
+      const bool jerk_ok = j * x.tangent + (cross + rotation) * x.normal <= x.jerk || norm_ok;
       if (!acceleration_ok || !jerk_ok) return false;
     }
   }
@@ -91,16 +92,21 @@ double RampEnvelope::jerkBound(double a) const {
                              : (b > 0.0 ? left / b : kInf);
         sum = std::min(s * s, j_switch);
       }
-      // Norm form: j^2 + (c3 alpha)^2 <= (J - rotation)^2.
+      // Norm form: (j + r)^2 + (c3 alpha)^2 <= J^2 with r = rotation along the tangent, else
+      // j^2 + (c3 alpha)^2 <= (J - rotation)^2 (r = 0, J - rotation for J).
       double norm = -kInf;
       if (on_plane && rotation <= x.jerk) {
-        const double c = (x.jerk - rotation) * (x.jerk - rotation);
-        if (c3 * a * c3 * a <= c && std::sqrt(c - c3 * a * c3 * a) >= j_switch) {
-          norm = std::sqrt(c - c3 * a * c3 * a);
+        const double r = along_tangent_ ? rotation : 0.0;
+        const double top = along_tangent_ ? x.jerk : x.jerk - rotation;
+        const double c = top * top;
+        if (c3 * a * c3 * a <= c && std::sqrt(c - c3 * a * c3 * a) - r >= j_switch) {
+          norm = std::sqrt(c - c3 * a * c3 * a) - r;
         } else {
-          // j^2 + e j - c <= 0 with e = 2 D c3^2.
+          // j^2 + (2r + e) j + r^2 - c <= 0 with e = 2 D c3^2 (alpha^2 = 2 j D).
           const double e = 2.0 * d * c3 * c3;
-          norm = std::min(2.0 * c / (e + std::sqrt(e * e + 4.0 * c)), j_switch);
+          const double b = 2.0 * r + e;
+          const double g = c - r * r;
+          norm = std::min(2.0 * g / (b + std::sqrt(b * b + 4.0 * g)), j_switch);
         }
       }
       const double best = std::max(sum, norm);

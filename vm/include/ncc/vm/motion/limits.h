@@ -73,6 +73,10 @@ class TangentialBudget {
     double jerk_left;       // J'_i
     double norm_cross;      // 3 v k (0: no norm form for this axis)
     double norm_jerk_left;  // J''_i
+    // Rotation along the tangent (a circle, RampEnvelope): the norm form is then
+    // sqrt(j_t^2 ...) + this <= J''_i, i.e. (j_t + r)^2 + (3 v k a_t)^2 <= J''_i^2 with J''_i
+    // the whole smooth share. 0 otherwise (J''_i already has v^3 rho taken off).
+    double norm_rotation = 0.0;
   };
   // Golden-section steps of split(): the optimum's time to about 1e-4.
   static constexpr int kSplitSteps = 24;

@@ -58,6 +58,11 @@ class PathSegment {
   // 1 for a plain arc, < 1 for a helix). Lines: 0.
   double radius() const { return r0_; }
   double planeShare() const { return plane_share_; }
+  // A circle in its plane (an arc without helix or spiral part): its rotation term,
+  // d3x/ds3 = -k^2 T, lies along the tangent.
+  bool isPlaneCircle() const {
+    return shape_ == Shape::Arc && plane_share_ == 1.0 && r0_ == r1_;
+  }
 
  private:
   Shape shape_ = Shape::Dwell;

@@ -34,9 +34,12 @@ class RampEnvelope {
   static constexpr int kJerkSteps = 12;
 
   // A curve with top speed `top`, curvature bound `curvature` and curvature-rate bound
-  // `rate` (|d3x/ds3|).
-  RampEnvelope(double top, double curvature, double rate)
-      : top_(top), curvature_(curvature), rate_(rate) {}
+  // `rate` (|d3x/ds3|). `rotation_along_tangent`: the curve is a circle (a plane arc, or a
+  // chain line planned as one), whose rotation term v^3 d3x/ds3 = -v^3 k^2 T combines with
+  // the tangential jerk exactly: the norm form is then (j + v^3 rho)^2 + (3 v k a)^2 <= J^2
+  // (the worst sign, j_t = -j), not sqrt(j^2 + (3 v k a)^2) <= J - v^3 rho.
+  RampEnvelope(double top, double curvature, double rate, bool rotation_along_tangent = false)
+      : top_(top), curvature_(curvature), rate_(rate), along_tangent_(rotation_along_tangent) {}
   void add(const Axis& axis);
 
   // (acceleration, jerk) in: limits that already hold at the top speed (TangentialBudget's);
@@ -65,6 +68,7 @@ class RampEnvelope {
   double largestJerk(double a, double floor, double cap) const;
 
   double top_, curvature_, rate_;
+  bool along_tangent_;
   std::array<Axis, kMaxAxes> axes_{};
   int count_ = 0;
 };
