@@ -183,18 +183,21 @@ class CliTest(unittest.TestCase):
             self.assertEqual(proc.returncode, 2, bad)
             self.assertIn("override", proc.stderr)
 
+    def long_line_seconds(self, prog, *extra):
+        # `ncc run` of a G01 X300 program that completes on X300: its program time.
+        proc = ncc("run", prog, *extra)
+        self.assertEqual(proc.returncode, 0, proc.stderr)
+        self.assertIn("status             completed", proc.stdout)
+        self.assertIn("final position     X300.0", proc.stdout)
+        return float(re.search(r"program time +(\d+\.\d+) s", proc.stdout).group(1))
+
     def test_run_feed_override_turned_during_the_run(self):
         # G01 X300 at F6000 (100 mm/s): turned to 50 % at 1 s, the remaining 200 mm or so run
         # at half speed, about 2 s longer; turned back to 100 % at 2 s, the second in between
         # covers 50 mm instead of 100: 0.5 s longer. Written unsorted, the turns apply in
         # time order. A bad turn is a usage error naming it, and writes no output file.
         prog = self.write("long300.nc", "G21 G90 G94 G17\nG01 X300. F6000.\nM30\n")
-        def seconds(*extra):
-            proc = ncc("run", prog, *extra)
-            self.assertEqual(proc.returncode, 0, proc.stderr)
-            self.assertIn("status             completed", proc.stdout)
-            self.assertIn("final position     X300.0", proc.stdout)
-            return float(re.search(r"program time +(\d+\.\d+) s", proc.stdout).group(1))
+        seconds = lambda *extra: self.long_line_seconds(prog, *extra)
         full = seconds()
         halved = seconds("--feed-override-at", "1=50")
         self.assertAlmostEqual(halved - full, 2.0, delta=0.1)
@@ -216,12 +219,7 @@ class CliTest(unittest.TestCase):
         # path, goes on, and the run takes 2 s longer; overlapping or malformed holds are usage
         # errors naming the value.
         prog = self.write("hold300.nc", "G21 G90 G94 G17\nG01 X300. F6000.\nM30\n")
-        def seconds(*extra):
-            proc = ncc("run", prog, *extra)
-            self.assertEqual(proc.returncode, 0, proc.stderr)
-            self.assertIn("status             completed", proc.stdout)
-            self.assertIn("final position     X300.0", proc.stdout)
-            return float(re.search(r"program time +(\d+\.\d+) s", proc.stdout).group(1))
+        seconds = lambda *extra: self.long_line_seconds(prog, *extra)
         full = seconds()
         held = seconds("--feed-hold-at", "1=2", "--feed-hold-at", "9=1")
         self.assertAlmostEqual(held - full, 2.0, delta=0.002)

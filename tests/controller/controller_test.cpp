@@ -139,16 +139,21 @@ TEST(Controller, LookAheadDepthComesFromTheMachine) {
   EXPECT_LT(topSpeed(4096, 256).top, 90.0);
 }
 
+// G01 X300 at F6000 from the origin.
+bytecode::Program longLine(const MachineConfig& m) {
+  bytecode::Assembler a = assemblerFor(m);
+  a.line(xyz(300, 0, 0), 6000.0);
+  a.op(bytecode::Opcode::End);
+  return a.finish();
+}
+
 TEST(Controller, FeedOverrideTurnedDuringTheRun) {
   // G01 X300 at F6000 on the default machine: at 100 % it cruises at 100 mm/s; the operator
   // turns the knob to 40 % at t = 1 s, then to 120 % at t = 2 s (the run is planned for
   // 120 %). The path speed follows, the program ends where it should, and the knob reports
   // what it was turned to. Without a planned maximum the knob stops at the start value.
-  MachineConfig m = defaultMachine();
-  bytecode::Assembler a = assemblerFor(m);
-  a.line(xyz(300, 0, 0), 6000.0);
-  a.op(bytecode::Opcode::End);
-  const bytecode::Program prog = a.finish();
+  const MachineConfig m = defaultMachine();
+  const bytecode::Program prog = longLine(m);
   vm::ControllerOptions options;
   options.max_feed_override = 1.2;
   bytecode::Error error;
@@ -180,11 +185,8 @@ TEST(Controller, FeedHoldStopsThePathUntilReleased) {
   // G01 X300 at F6000, held at 1 s and released at 2.5 s: the path stands on the line
   // meanwhile (Running, zero speed, the same setpoint), the run takes 1.5 s longer and ends
   // on X300 without a limit violation.
-  MachineConfig m = defaultMachine();
-  bytecode::Assembler a = assemblerFor(m);
-  a.line(xyz(300, 0, 0), 6000.0);
-  a.op(bytecode::Opcode::End);
-  const bytecode::Program prog = a.finish();
+  const MachineConfig m = defaultMachine();
+  const bytecode::Program prog = longLine(m);
   bytecode::Error error;
   std::unique_ptr<vm::Controller> plain = vm::Controller::create(prog, m, error);
   std::unique_ptr<vm::Controller> ctl = vm::Controller::create(prog, m, error);

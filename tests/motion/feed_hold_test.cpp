@@ -23,14 +23,6 @@ PlannerHook holdBetween(uint64_t from, uint64_t to) {
   };
 }
 
-void expectWithinLimits(const MachineConfig& m, const Trace& t) {
-  const Worst w = check(m, t);
-  constexpr double kTolerance = 1e-6;
-  EXPECT_LE(w.velocity, 1.0 + kTolerance);
-  EXPECT_LE(w.acceleration, 1.0 + kTolerance);
-  EXPECT_LE(w.jerk, 1.0 + kTolerance);
-}
-
 // Ticks in [from, to) whose setpoint equals the previous one.
 uint64_t standingTicks(const Trace& t, uint64_t from, uint64_t to) {
   uint64_t n = 0;

@@ -30,14 +30,6 @@ PlannerHook turnAt(uint64_t at, double value) {
   };
 }
 
-void expectWithinLimits(const MachineConfig& m, const Trace& t) {
-  const Worst w = check(m, t);
-  constexpr double kTolerance = 1e-6;
-  EXPECT_LE(w.velocity, 1.0 + kTolerance);
-  EXPECT_LE(w.acceleration, 1.0 + kTolerance);
-  EXPECT_LE(w.jerk, 1.0 + kTolerance);
-}
-
 TEST(FeedOverride, TurnedDownWhileCruisingBrakesToTheNewSpeed) {
   const MachineConfig m = defaultMachine();
   const double L = 600.0, v = 100.0, half = 50.0;  // F6000, then 50 %

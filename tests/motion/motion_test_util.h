@@ -8,6 +8,7 @@
 #include <functional>
 #include <vector>
 
+#include "gtest/gtest.h"
 #include "ncc/machine/machine_config.h"
 #include "ncc/vm/events.h"
 #include "ncc/vm/motion/planner.h"
@@ -168,6 +169,14 @@ inline Worst check(const MachineConfig& m, const Trace& t) {
 // Numerical tolerance of the finite-difference check: positions are exact to ~1e-13 mm,
 // which reads as 8e-13 / T^3 = 8e-4 mm/s^3 of jerk; 1e-6 relative covers it with margin.
 constexpr double kTolerance = 1e-6;
+
+// Every sampled setpoint within the machine's axis limits (check(), kTolerance).
+inline void expectWithinLimits(const MachineConfig& m, const Trace& t) {
+  const Worst w = check(m, t);
+  EXPECT_LE(w.velocity, 1.0 + kTolerance);
+  EXPECT_LE(w.acceleration, 1.0 + kTolerance);
+  EXPECT_LE(w.jerk, 1.0 + kTolerance);
+}
 
 // Rest-to-rest time over L at path limits v, a, j: the four closed forms of docs/planner.md.
 inline double restToRestTime(double L, double v, double a, double j) {

@@ -165,6 +165,27 @@ class Generator {
   AxisValues pos_{};
 };
 
+// The suite's checks on one run: every sampled limit (the worst ratios also go into
+// `overall`), the program's end point, and every point where the path stops (exact stop,
+// dwell) sampled exactly.
+void expectLimitsAndExactEnds(const MachineConfig& m, const std::vector<MotionPrimitive>& prog,
+                              const Trace& t, uint64_t seed, Worst& overall) {
+  const Worst w = check(m, t);
+  EXPECT_LE(w.velocity, 1.0 + kTolerance) << "seed " << seed;
+  EXPECT_LE(w.acceleration, 1.0 + kTolerance) << "seed " << seed;
+  EXPECT_LE(w.jerk, 1.0 + kTolerance) << "seed " << seed;
+  overall.velocity = std::max(overall.velocity, w.velocity);
+  overall.acceleration = std::max(overall.acceleration, w.acceleration);
+  overall.jerk = std::max(overall.jerk, w.jerk);
+  EXPECT_EQ(t.points.back(), prog.back().to) << "seed " << seed;
+  for (std::size_t i = 0; i < prog.size(); ++i) {
+    const bool stops = prog[i].exact_stop || (i + 1 < prog.size() && prog[i + 1].kind == Kind::Dwell);
+    if (!stops) continue;
+    EXPECT_NE(std::find(t.points.begin(), t.points.end(), prog[i].to), t.points.end())
+        << "seed " << seed << " primitive " << i;
+  }
+}
+
 TEST(RandomSuite, NoLimitViolationsAndExactEnds) {
   const MachineConfig m = testMachine();
   Worst overall;
@@ -175,21 +196,7 @@ TEST(RandomSuite, NoLimitViolationsAndExactEnds) {
     const Trace t = run(m, prog);
     ASSERT_GT(t.ticks(), 0u);
     total_ticks += t.ticks();
-    const Worst w = check(m, t);
-    EXPECT_LE(w.velocity, 1.0 + kTolerance) << "seed " << seed;
-    EXPECT_LE(w.acceleration, 1.0 + kTolerance) << "seed " << seed;
-    EXPECT_LE(w.jerk, 1.0 + kTolerance) << "seed " << seed;
-    overall.velocity = std::max(overall.velocity, w.velocity);
-    overall.acceleration = std::max(overall.acceleration, w.acceleration);
-    overall.jerk = std::max(overall.jerk, w.jerk);
-    // Exact ends: the program end, and every point where the path stops (exact stop, dwell).
-    EXPECT_EQ(t.points.back(), prog.back().to) << "seed " << seed;
-    for (std::size_t i = 0; i < prog.size(); ++i) {
-      const bool stops = prog[i].exact_stop || (i + 1 < prog.size() && prog[i + 1].kind == Kind::Dwell);
-      if (!stops) continue;
-      EXPECT_NE(std::find(t.points.begin(), t.points.end(), prog[i].to), t.points.end())
-          << "seed " << seed << " primitive " << i;
-    }
+    expectLimitsAndExactEnds(m, prog, t, seed, overall);
   }
   std::printf("random suite: %llu ticks; worst ratio to axis limit: v %.9f a %.9f j %.9f\n",
               static_cast<unsigned long long>(total_ticks), overall.velocity,
@@ -237,20 +244,7 @@ TEST(RandomSuite, LiveFeedOverrideKeepsEveryLimit) {
     const Trace ahead = run(m, prog, window, 50'000'000, true, knob, setup);
     ASSERT_GT(t.ticks(), 0u);
     EXPECT_EQ(fnv1a(t, 3), fnv1a(ahead, 3)) << "seed " << seed;
-    const Worst w = check(m, t);
-    EXPECT_LE(w.velocity, 1.0 + kTolerance) << "seed " << seed;
-    EXPECT_LE(w.acceleration, 1.0 + kTolerance) << "seed " << seed;
-    EXPECT_LE(w.jerk, 1.0 + kTolerance) << "seed " << seed;
-    overall.velocity = std::max(overall.velocity, w.velocity);
-    overall.acceleration = std::max(overall.acceleration, w.acceleration);
-    overall.jerk = std::max(overall.jerk, w.jerk);
-    EXPECT_EQ(t.points.back(), prog.back().to) << "seed " << seed;
-    for (std::size_t i = 0; i < prog.size(); ++i) {
-      const bool stops = prog[i].exact_stop || (i + 1 < prog.size() && prog[i + 1].kind == Kind::Dwell);
-      if (!stops) continue;
-      EXPECT_NE(std::find(t.points.begin(), t.points.end(), prog[i].to), t.points.end())
-          << "seed " << seed << " primitive " << i;
-    }
+    expectLimitsAndExactEnds(m, prog, t, seed, overall);
     if (t.ticks() > run(m, prog, window).ticks()) ++slower;
   }
   // Turned mostly below 100 % (and planned for 200 % on odd seeds): most runs take longer.
@@ -287,20 +281,7 @@ TEST(RandomSuite, FeedHoldKeepsEveryLimit) {
     const Trace ahead = run(m, prog, window, 50'000'000, true, knob);
     ASSERT_GT(t.ticks(), 0u);
     EXPECT_EQ(fnv1a(t, 3), fnv1a(ahead, 3)) << "seed " << seed;
-    const Worst w = check(m, t);
-    EXPECT_LE(w.velocity, 1.0 + kTolerance) << "seed " << seed;
-    EXPECT_LE(w.acceleration, 1.0 + kTolerance) << "seed " << seed;
-    EXPECT_LE(w.jerk, 1.0 + kTolerance) << "seed " << seed;
-    overall.velocity = std::max(overall.velocity, w.velocity);
-    overall.acceleration = std::max(overall.acceleration, w.acceleration);
-    overall.jerk = std::max(overall.jerk, w.jerk);
-    EXPECT_EQ(t.points.back(), prog.back().to) << "seed " << seed;
-    for (std::size_t i = 0; i < prog.size(); ++i) {
-      const bool stops = prog[i].exact_stop || (i + 1 < prog.size() && prog[i + 1].kind == Kind::Dwell);
-      if (!stops) continue;
-      EXPECT_NE(std::find(t.points.begin(), t.points.end(), prog[i].to), t.points.end())
-          << "seed " << seed << " primitive " << i;
-    }
+    expectLimitsAndExactEnds(m, prog, t, seed, overall);
     for (std::size_t k = 1; k < t.ticks(); ++k)
       if (t.points[k] == t.points[k - 1] && t.infos[k].idle) ++held_ticks;
   }

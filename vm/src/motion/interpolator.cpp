@@ -180,6 +180,17 @@ void Interpolator::planNextPiece(const LookAhead& queue, bool closed) {
   }
 }
 
+void Interpolator::passFinishedSegments(LookAhead& queue, double s, SetpointInfo& info) {
+  const Run& run = queue.frontRun();
+  while (run.segments > 1) {
+    const QueuedSegment& seg = queue.frontSegment();
+    if (s <= seg.run_offset + seg.path.length()) break;
+    position_ = seg.path.to();
+    queue.popSegment();
+    ++info.segments_finished;
+  }
+}
+
 Commitment Interpolator::commitForReplan(const LookAhead& queue, bool every_run) {
   if (!running_) return {piece_start_, resync_ ? 0.0 : exit_velocity_};
   const Run& run = queue.run(0);
@@ -216,14 +227,7 @@ bool Interpolator::setpoint(uint64_t k, LookAhead& queue, bool closed, AxisValue
     if (!running_ && resync_ && queue.held()) {
       // Feed hold, at rest: stand where the path stopped (run offset piece_start_) until it is
       // released.
-      Run& run = queue.frontRun();
-      while (run.segments > 1) {
-        const QueuedSegment& seg = queue.frontSegment();
-        if (piece_start_ <= seg.run_offset + seg.path.length()) break;
-        position_ = seg.path.to();
-        queue.popSegment();
-        ++info.segments_finished;
-      }
+      passFinishedSegments(queue, piece_start_, info);
       const QueuedSegment& seg = queue.frontSegment();
       seg.path.position(piece_start_ - seg.run_offset, out);
       return true;
@@ -246,14 +250,7 @@ bool Interpolator::setpoint(uint64_t k, LookAhead& queue, bool closed, AxisValue
     const bool at_piece_end = st.s >= profile_.length;
     const double s = at_piece_end ? piece_end_ : piece_start_ + st.s;
     const bool at_run_end = at_piece_end && piece_end_ == run.length;
-    // Walk past finished segments of this run.
-    while (run.segments > 1) {
-      const QueuedSegment& seg = queue.frontSegment();
-      if (s <= seg.run_offset + seg.path.length()) break;
-      position_ = seg.path.to();
-      queue.popSegment();
-      ++info.segments_finished;
-    }
+    passFinishedSegments(queue, s, info);
     if (per_axis_ && !piece_done) {
       rapid_.position(tau, out);
       const AxisRapidMotion motion = rapid_.pathMotion(tau);

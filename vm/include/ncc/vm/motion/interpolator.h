@@ -111,6 +111,8 @@ class Interpolator {
   // Whether rapid_ahead_ is the non-linear rapid of `seg` (bit-identical end points).
   bool rapidAheadFor(const QueuedSegment& seg) const;
   void startPiece(LookAhead& queue, bool closed);
+  // Pops the front run's segments that end before run offset s (its last one stays).
+  void passFinishedSegments(LookAhead& queue, double s, SetpointInfo& info);
 
   AxisValues position_;  // end of the last finished segment
   double cycle_;
