@@ -223,7 +223,7 @@ class CliTest(unittest.TestCase):
         full = seconds()
         held = seconds("--feed-hold-at", "1=2", "--feed-hold-at", "9=1")
         self.assertAlmostEqual(held - full, 2.0, delta=0.002)
-        for bad in ("1", "1=-2", "x=1", "nan=1", "1=0x2"):
+        for bad in ("1", "1=-2", "x=1", "nan=1", "1=0x2", "1=0", "1=1e7"):
             proc = ncc("run", prog, "--feed-hold-at", bad)
             self.assertEqual(proc.returncode, 2, bad)
             self.assertIn("--feed-hold-at '%s'" % bad, proc.stderr)

@@ -139,10 +139,10 @@ TEST(Controller, LookAheadDepthComesFromTheMachine) {
   EXPECT_LT(topSpeed(4096, 256).top, 90.0);
 }
 
-// G01 X300 at F6000 from the origin.
+// G01 X300 at F6000 from the origin, on line 5.
 bytecode::Program longLine(const MachineConfig& m) {
   bytecode::Assembler a = assemblerFor(m);
-  a.line(xyz(300, 0, 0), 6000.0);
+  a.at(1, 5).line(xyz(300, 0, 0), 6000.0);
   a.op(bytecode::Opcode::End);
   return a.finish();
 }
@@ -207,6 +207,7 @@ TEST(Controller, FeedHoldStopsThePathUntilReleased) {
     ASSERT_EQ(ticks[k].path_velocity, 0.0) << k;
   }
   EXPECT_GT(ticks[1200].commanded[0], 90.0);
+  EXPECT_EQ(ticks[2000].where.line, 5u);  // held, it still names the block it stands in
   EXPECT_EQ(ticks.back().commanded, xyz(300, 0, 0));
   EXPECT_EQ(ctl->statistics().limit_violations, 0);
 }

@@ -58,6 +58,20 @@ TEST(FeedHold, StopsRapidsToo) {
   EXPECT_EQ(held.points.back(), xyz(2000, 0, 0));
 }
 
+TEST(FeedHold, PressedWhileAcceleratingStopsAtOnce) {
+  // A G00 along X (rapid 500 mm/s) held 20 ms after it starts, in its jerk-up phase: the
+  // ramp goes into its jerk-down phase on the next tick and the path brakes from there, at
+  // rest within a millimetre. (The first version finished the ramp to 500 mm/s first and
+  // stopped 147 mm on.)
+  const MachineConfig m = defaultMachine();
+  const std::vector<MotionPrimitive> prog = {rapid(xyz(0, 0, 0), xyz(2000, 0, 0))};
+  const Trace held = run(m, prog, 1024, 50'000'000, false, holdBetween(20, 1000));
+  expectWithinLimits(m, held);
+  EXPECT_EQ(standingTicks(held, 200, 1000), 800u);
+  EXPECT_LT(held.points[500][0], 1.0);
+  EXPECT_EQ(held.points.back(), xyz(2000, 0, 0));
+}
+
 TEST(FeedHold, HeldBeforeTheStartStaysAtTheStart) {
   const MachineConfig m = defaultMachine();
   const std::vector<MotionPrimitive> prog = {line(xyz(0, 0, 0), xyz(50, 0, 0), 3000.0)};

@@ -120,14 +120,19 @@ void reportAlarm(driver::Session& session, const bytecode::Program& program, con
 }
 
 // --emit=summary and --emit=trace: the program through the planner, interpolator and servo.
+// Longest simulated feed hold: every held tick is simulated.
+constexpr double kMaxFeedHoldSeconds = 86400.0;
+
 // --feed-hold-at SECONDS=DURATION: the feed holds, in time order. False with a message on
 // stderr for a malformed, negative or overlapping one.
 bool parseFeedHolds(const std::vector<std::string>& given, std::vector<driver::FeedHoldSpan>& holds) {
   for (const std::string& text : given) {
     double seconds = 0.0, duration = 0.0;
-    if (!parsePair(text, seconds, duration) || seconds < 0.0 || duration < 0.0) {
+    if (!parsePair(text, seconds, duration) || seconds < 0.0 || !(duration > 0.0) ||
+        duration > kMaxFeedHoldSeconds) {
       std::cerr << "ncc: error: --feed-hold-at '" << text
-                << "': expected SECONDS=DURATION, both in seconds, >= 0\n";
+                << "': expected SECONDS=DURATION in seconds, SECONDS >= 0 and DURATION above 0 "
+                   "and at most 86400 (a day)\n";
       return false;
     }
     holds.push_back({seconds, duration});

@@ -191,25 +191,41 @@ void Interpolator::passFinishedSegments(LookAhead& queue, double s, SetpointInfo
   }
 }
 
-Commitment Interpolator::commitForReplan(const LookAhead& queue, bool every_run) {
+Commitment Interpolator::commitForReplan(const LookAhead& queue, double old_limit,
+                                         double new_limit) {
   if (!running_) return {piece_start_, resync_ ? 0.0 : exit_velocity_};
   const Run& run = queue.run(0);
   if (per_axis_ || run.kind == MotionPrimitive::Kind::Dwell) return {run.length, 0.0};
-  // A run the feed override does not scale (a rapid, G63) runs on as planned.
-  if (!every_run && !std::isfinite(run.feed_limit)) return {piece_end_, profile_.v_end};
-  // Local time of the next tick; the cruise of the running piece spans [c0, c1).
-  const double next = static_cast<double>(last_tick_ + 1 - start_tick_) * cycle_ - phase_;
-  const double c0 = profile_.accel.duration;
-  const double c1 = c0 + profile_.t_cruise;
-  const double cut = std::max(next, c0);
-  if (!(profile_.t_cruise > 0.0 && cut < c1)) return {piece_end_, profile_.v_end};
-  // End the piece at `cut`, cruising: every state before it is unchanged.
   SCurveProfile& p = profile_;
-  p.t_cruise = cut - c0;
+  // Its speed limit stays (a rapid under a feed override, a G63 tap): it runs on as planned.
+  if (new_limit == old_limit) return {piece_end_, p.v_end};
+  // Local time of the next tick; the start ramp of the running piece spans [0, c0), its
+  // cruise [c0, c1).
+  const double next = static_cast<double>(last_tick_ + 1 - start_tick_) * cycle_ - phase_;
+  const double c0 = p.accel.duration;
+  const double c1 = c0 + p.t_cruise;
+  const VelocityRamp& ramp = p.accel;
+  if (new_limit < p.v_peak && next < c0 && ramp.v_to > ramp.v_from &&
+      next < ramp.t_jerk + ramp.t_accel) {
+    // Accelerating, not yet in the jerk-down phase: end the ramp as early as a = 0 allows
+    // (its jerk-down phase from `next` on), so that it does not first run up to a speed it
+    // must brake from (a feed hold pressed while a G00 accelerates would otherwise travel on to
+    // top speed). The ramp up to `next` is unchanged: the same jerk, the same phases.
+    const double peak_a = ramp.jerk * ramp.t_jerk;
+    const double gain = next < ramp.t_jerk ? ramp.jerk * next * next : peak_a * next;
+    p.accel = VelocityRamp::fromGain(ramp.v_from, gain, peak_a, ramp.jerk);
+    p.v_peak = p.accel.v_to;
+    p.t_cruise = 0.0;
+  } else if (p.t_cruise > 0.0 && std::max(next, c0) < c1) {
+    p.t_cruise = std::max(next, c0) - c0;  // end the piece at the cut, cruising
+  } else {
+    return {piece_end_, p.v_end};  // braking to its end, or ramping to it: runs on
+  }
+  // Every state before the new end is unchanged.
   p.decel = VelocityRamp::make(p.v_peak, p.v_peak, 1.0, 1.0);
   p.v_end = p.v_peak;
   p.length = p.accel.distance + p.v_peak * p.t_cruise;
-  p.duration = c0 + p.t_cruise;
+  p.duration = p.accel.duration + p.t_cruise;
   duration_ = p.duration;
   piece_end_ = piece_start_ + p.length;
   piece_ends_run_ = false;
@@ -230,6 +246,8 @@ bool Interpolator::setpoint(uint64_t k, LookAhead& queue, bool closed, AxisValue
       passFinishedSegments(queue, piece_start_, info);
       const QueuedSegment& seg = queue.frontSegment();
       seg.path.position(piece_start_ - seg.run_offset, out);
+      info.kind = queue.frontRun().kind;
+      info.where = seg.where;
       return true;
     }
     if (!running_) {

@@ -13,6 +13,11 @@ constexpr double kSameLimit = 1e-9;
 
 bool close(double a, double b) { return std::abs(a - b) <= kSameLimit * std::max(a, b); }
 
+// A feed move the feed override does not scale: G63 tapping.
+bool isTap(const Run& run) {
+  return run.kind != MotionPrimitive::Kind::Rapid && !std::isfinite(run.feed_limit);
+}
+
 }  // namespace
 
 LookAhead::LookAhead(std::size_t capacity, double window_length)
@@ -38,9 +43,10 @@ void LookAhead::push(const QueuedSegment& segment, MotionPrimitive::Kind kind,
                     close(limits.velocity, last->limits.velocity) &&
                     close(limits.acceleration, last->limits.acceleration) &&
                     close(limits.jerk, last->limits.jerk) &&
-                    // One speed under a live feed override: a G63 tap (not scaled) or a
-                    // different F must not share a run with what it scales.
-                    segment.feed_limit == last->feed_limit;
+                    // A G63 tap (the feed override does not scale it) never shares a run
+                    // with a move it scales. Scaled moves of different F do (their limits are
+                    // equal: the axes cap both); the run takes the lower F under the knob.
+                    std::isfinite(segment.feed_limit) == std::isfinite(last->feed_limit);
   QueuedSegment& slot = segmentAt(segment_count_);
   slot = segment;
   ++segment_count_;
@@ -49,6 +55,7 @@ void LookAhead::push(const QueuedSegment& segment, MotionPrimitive::Kind kind,
     last->length += length;
     ++last->segments;
     last->stop_after = stop_after;
+    last->feed_limit = std::min(last->feed_limit, segment.feed_limit);
   } else {
     Run& run = runAt(run_count_);
     run = Run{};
@@ -73,11 +80,15 @@ void LookAhead::stopAfterLast() {
   ++version_;
 }
 
-double LookAhead::velocity(std::size_t i) const {
+double LookAhead::velocity(std::size_t i) const { return velocityWith(i, feed_scale_, held_); }
+
+double LookAhead::velocityWith(std::size_t i, double scale, bool held) const {
   const Run& run = runAt(i);
-  if (held_) return 0.0;
-  if (feed_scale_ == 1.0) return run.limits.velocity;
-  return std::max(std::min(run.limits.velocity, run.feed_limit * feed_scale_), kMinPathVelocity);
+  // Feed hold stops everything but a G63 tap, which must not stop mid-thread while the
+  // spindle turns (FANUC: feed hold is invalid in tapping mode); the hold acts after it.
+  if (held && !isTap(run)) return 0.0;
+  if (scale == 1.0) return run.limits.velocity;
+  return std::max(std::min(run.limits.velocity, run.feed_limit * scale), kMinPathVelocity);
 }
 
 double LookAhead::entryLimit(std::size_t i) const {

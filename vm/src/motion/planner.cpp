@@ -39,7 +39,7 @@ void MotionPlanner::setOverrides(double feed, double rapid, double max_feed) {
   const double top =
       std::isfinite(max_feed) ? std::clamp(max_feed, kMinFeedOverride, kMaxFeedOverride) : live;
   feed_override_ = std::max(live, top);
-  queue_.setFeedScale(live / feed_override_, interpolator_.commitForReplan(queue_));
+  queue_.setFeedScale(live / feed_override_, commitFor(live / feed_override_, queue_.held()));
   const double r = std::isfinite(rapid) ? std::clamp(rapid, 1e-3, 1.0) : 1.0;
   for (int i = 0; i < limits_.count; ++i) rapid_limits_.rapid_velocity[i] = r * limits_.rapid_velocity[i];
   interpolator_.rapidLimitsChanged();
@@ -49,12 +49,17 @@ void MotionPlanner::setFeedOverride(double feed) {
   if (!std::isfinite(feed)) return;
   const double scale = std::clamp(feed, kMinFeedOverride, feed_override_) / feed_override_;
   if (scale == queue_.feedScale()) return;
-  queue_.setFeedScale(scale, interpolator_.commitForReplan(queue_));
+  queue_.setFeedScale(scale, commitFor(scale, queue_.held()));
+}
+
+Commitment MotionPlanner::commitFor(double scale, bool held) {
+  if (queue_.empty()) return interpolator_.commitForReplan(queue_, 0.0, 0.0);
+  return interpolator_.commitForReplan(queue_, queue_.velocity(0), queue_.velocityWith(0, scale, held));
 }
 
 void MotionPlanner::setFeedHold(bool held) {
   if (held == queue_.held()) return;
-  queue_.setHold(held, interpolator_.commitForReplan(queue_, /*every_run=*/held));
+  queue_.setHold(held, commitFor(queue_.feedScale(), held));
 }
 
 bool MotionPlanner::push(const MotionPrimitive& m) {

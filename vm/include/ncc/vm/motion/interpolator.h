@@ -76,12 +76,14 @@ class Interpolator {
   static constexpr int kPlannedAhead = 2;
   void planNextPiece(const LookAhead& queue, bool closed);
 
-  // The speed limits of what is queued are about to change (a live feed override): cuts the
-  // running piece at the first point from the next tick on where it cruises (a = 0, j = 0),
-  // or else (or when the override does not scale its run, rapids and G63, unless `every_run`:
-  // a feed hold stops those too) lets it run to its end, and returns that point, from which the next piece will
-  // start whatever the new plan is. Deterministic: it depends on the ticks taken so far.
-  Commitment commitForReplan(const LookAhead& queue, bool every_run = false);
+  // The speed limits of what is queued are about to change (a live feed override, a feed
+  // hold): the front run's goes from `old_limit` to `new_limit`. Unchanged, the running piece
+  // runs on. Else it is shortened: a cruise ends at the next tick, and when the new limit is
+  // below the piece's peak, a ramp up under way ends as early as a = 0 allows (its jerk-down
+  // phase starts at the next tick); a piece that brakes, or is in its last jerk phase, runs
+  // to its end. Returns where the next piece will start, whatever the new plan is.
+  // Deterministic: it depends on the ticks taken so far.
+  Commitment commitForReplan(const LookAhead& queue, double old_limit, double new_limit);
 
   const AxisValues& position() const { return position_; }
   // The rapid limits (kept by reference) were changed: a rapid planned ahead is stale.

@@ -1,8 +1,8 @@
 #pragma once
 // Look-ahead over queued segments, grouped into runs.
 //
-// A run is a chain of consecutive segments of the same kind and programmed feed
-// (QueuedSegment::feed_limit) with (nearly) equal path limits
+// A run is a chain of consecutive segments of the same kind (a G63 tap apart from moves the
+// feed override scales) with (nearly) equal path limits
 // whose junctions do not bind (tangent or collinear, junction limit >= the run's velocity
 // limit): a 10 um G01 chain along a line, an arc split into pieces. The S-curve is planned
 // over a run as one 1-D path, so a chain of tiny segments accelerates like one long segment;
@@ -53,7 +53,7 @@ struct Run {
   double entry_limit = 0.0;    // junction velocity limit at its start (0: from rest)
   double entry_planned = 0.0;  // backward pass result
   bool stop_after = false;     // ends at rest whatever follows (G09/G61, M00, dwell...)
-  double feed_limit = std::numeric_limits<double>::infinity();  // its segments' (all equal)
+  double feed_limit = std::numeric_limits<double>::infinity();  // lowest of its segments'
   // Lowest entry the motion under way can brake to (set by setFeedScale, 0 otherwise).
   double entry_floor = 0.0;
   double entry_before = 0.0;  // entry_planned before the last setFeedScale
@@ -91,17 +91,19 @@ class LookAhead {
   MotionPrimitive::Kind lastKind() const { return runAt(run_count_ - 1).kind; }
   bool lastStops() const { return runAt(run_count_ - 1).stop_after; }
   const SegmentLimits& lastLimits() const { return runAt(run_count_ - 1).limits; }
-  // Run i's speed limit under the live feed override (its planned limit when the scale is 1).
+  // Run i's speed limit under the live feed override and feed hold (its planned limit when the
+  // scale is 1 and nothing is held); velocityWith: under the given ones.
   double velocity(std::size_t i) const;
+  double velocityWith(std::size_t i, double scale, bool held) const;
   // A live feed override, as a factor on every run's feed_limit (1: as planned). Re-plans the
   // whole window from `committed` on: each later junction gets a floor, the lowest velocity
   // braking as hard as the limits allow reaches from there (all of them at most what the
   // previous plan had, so every geometric and junction limit still holds). O(queued runs).
   void setFeedScale(double scale, const Commitment& committed);
   double feedScale() const { return feed_scale_; }
-  // Feed hold: while held every run's speed limit is 0, so the path brakes to rest as the
-  // limits allow (through as many runs as that takes) and stays there; released, the window
-  // is planned as before. Re-plans like setFeedScale.
+  // Feed hold: while held every run's speed limit is 0 (a G63 tap's apart), so the path
+  // brakes to rest as the limits allow (through as many runs as that takes) and stays there;
+  // released, the window is planned as before. Re-plans like setFeedScale.
   void setHold(bool held, const Commitment& committed);
   bool held() const { return held_; }
 

@@ -107,6 +107,9 @@ class MotionPlanner {
   // After endOfProgram(): queues the held line once the ring has room. True when nothing more
   // will be queued (the last run is final).
   bool closeInput();
+  // Where the motion under way is committed to before the speed limits change to those of
+  // `scale` and `held` (Interpolator::commitForReplan).
+  Commitment commitFor(double scale, bool held);
 
   AxisLimits limits_;
   AxisLimits rapid_limits_;  // limits_ with the rapid override applied to the rapid speeds
