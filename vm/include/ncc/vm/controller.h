@@ -125,7 +125,7 @@ class Controller {
   // prepare()), which re-plans the queued window before pulling more events: the work is
   // linear in the queued runs (about 70 ns each: planner_bench BM_FeedOverrideTurn), in the
   // preparation, never in the tick's real-time part; no allocation. The motion under way
-  // changes speed from its next constant-speed stretch on, within every axis limit
+  // changes speed from the next tick on, within every axis limit
   // (MotionPlanner::setFeedOverride). Deterministic: the same calls between the same ticks
   // give the same trace in both loops. Reads back the value requested.
   void setFeedOverride(double feed) noexcept {

@@ -58,10 +58,11 @@ class MotionPlanner {
   void setOverrides(double feed, double rapid, double max_feed = 0.0);
   // The operator turns the feed override knob during the run, between ticks (fraction,
   // clamped to [0.1 %, max_feed]; not G63 tapping, not rapids). The queued path is re-planned
-  // at once (O(queued runs)); the motion under way changes speed from its next constant-speed
-  // stretch on (a ramp under way is finished first), within every axis limit. Deterministic:
-  // the same calls before the same ticks give the same setpoints. 0 % is not a feed hold: it
-  // is taken as 0.1 %.
+  // at once (O(queued runs)); the motion under way changes speed from the next tick on (a
+  // cruise is cut there; a ramp up ends early when the new limit is below its peak; a brake
+  // runs to its end), within every axis limit (Interpolator::commitForReplan).
+  // Deterministic: the same calls before the same ticks give the same setpoints. 0 % is not a
+  // feed hold: it is taken as 0.1 %.
   void setFeedOverride(double feed);
   double feedOverride() const { return feed_override_ * queue_.feedScale(); }
   // The highest the feed override may be turned to (setOverrides' max_feed).
@@ -69,9 +70,9 @@ class MotionPlanner {
   static constexpr double kMinFeedOverride = 1e-3;
   static constexpr double kMaxFeedOverride = 2.0;
   // Feed hold (the operator's button), between ticks: the path brakes to rest along the
-  // programmed path as the limits allow, rapids included (a non-linear G00 and a dwell under
-  // way finish first), and stands there; released, it goes on from there. Re-plans like
-  // setFeedOverride. Deterministic like it.
+  // programmed path as the limits allow, rapids included (a non-linear G00, a G63 tap and a
+  // dwell under way finish first), and stands there; released, it goes on from there.
+  // Re-plans like setFeedOverride. Deterministic like it.
   void setFeedHold(bool held);
   bool feedHold() const { return queue_.held(); }
   // The path comes to rest at the end of the last queued segment (M00/M01).
