@@ -85,7 +85,8 @@ double LookAhead::velocity(std::size_t i) const { return velocityWith(i, feed_sc
 double LookAhead::velocityWith(std::size_t i, double scale, bool held) const {
   const Run& run = runAt(i);
   // Feed hold stops everything but a G63 tap, which must not stop mid-thread while the
-  // spindle turns (FANUC: feed hold is invalid in tapping mode); the hold acts after it.
+  // spindle turns (Mazak G63: no feed hold; Siemens ISO G63: a block stop); the hold acts
+  // after it.
   if (held && !isTap(run)) return 0.0;
   if (scale == 1.0) return run.limits.velocity;
   return std::max(std::min(run.limits.velocity, run.feed_limit * scale), kMinPathVelocity);
