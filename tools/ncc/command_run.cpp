@@ -50,9 +50,16 @@ bool parsePair(const std::string& text, double& first, double& second) {
   return parts.size() == 2 && parseDecimal(parts[0], first) && parseDecimal(parts[1], second);
 }
 
-// --feed-override-at SECONDS=PERCENT: the turns of the feed override knob, in time order (a
-// stable sort: turns at the same time apply in the order given). False with a message on
-// stderr for a malformed or out-of-range value.
+// Operator events in time order; a stable sort, so events at the same time keep the order
+// given.
+template <class Event>
+void sortBySeconds(std::vector<Event>& events) {
+  std::stable_sort(events.begin(), events.end(),
+                   [](const Event& a, const Event& b) { return a.seconds < b.seconds; });
+}
+
+// --feed-override-at SECONDS=PERCENT: the turns of the feed override knob, in time order.
+// False with a message on stderr for a malformed or out-of-range value.
 bool parseFeedOverrideTurns(const std::vector<std::string>& given,
                             std::vector<driver::FeedOverrideTurn>& turns) {
   for (const std::string& text : given) {
@@ -64,8 +71,35 @@ bool parseFeedOverrideTurns(const std::vector<std::string>& given,
     }
     turns.push_back({seconds, percent / 100.0});
   }
-  std::stable_sort(turns.begin(), turns.end(),
-                   [](const auto& a, const auto& b) { return a.seconds < b.seconds; });
+  sortBySeconds(turns);
+  return true;
+}
+
+// Longest simulated feed hold: every held tick is simulated.
+constexpr double kMaxFeedHoldSeconds = 86400.0;
+
+// --feed-hold-at SECONDS=DURATION: the feed holds, in time order. False with a message on
+// stderr for a malformed, negative or overlapping one.
+bool parseFeedHolds(const std::vector<std::string>& given, std::vector<driver::FeedHoldSpan>& holds) {
+  for (const std::string& text : given) {
+    double seconds = 0.0, duration = 0.0;
+    if (!parsePair(text, seconds, duration) || seconds < 0.0 || !(duration > 0.0) ||
+        duration > kMaxFeedHoldSeconds) {
+      std::cerr << "ncc: error: --feed-hold-at '" << text
+                << "': expected SECONDS=DURATION in seconds, SECONDS >= 0 and DURATION above 0 "
+                   "and at most 86400 (a day)\n";
+      return false;
+    }
+    holds.push_back({seconds, duration});
+  }
+  sortBySeconds(holds);
+  for (std::size_t i = 1; i < holds.size(); ++i) {
+    if (holds[i].seconds < holds[i - 1].seconds + holds[i - 1].duration) {
+      std::cerr << "ncc: error: --feed-hold-at: the holds at " << holds[i - 1].seconds << " s and "
+                << holds[i].seconds << " s overlap\n";
+      return false;
+    }
+  }
   return true;
 }
 
@@ -120,35 +154,6 @@ void reportAlarm(driver::Session& session, const bytecode::Program& program, con
 }
 
 // --emit=summary and --emit=trace: the program through the planner, interpolator and servo.
-// Longest simulated feed hold: every held tick is simulated.
-constexpr double kMaxFeedHoldSeconds = 86400.0;
-
-// --feed-hold-at SECONDS=DURATION: the feed holds, in time order. False with a message on
-// stderr for a malformed, negative or overlapping one.
-bool parseFeedHolds(const std::vector<std::string>& given, std::vector<driver::FeedHoldSpan>& holds) {
-  for (const std::string& text : given) {
-    double seconds = 0.0, duration = 0.0;
-    if (!parsePair(text, seconds, duration) || seconds < 0.0 || !(duration > 0.0) ||
-        duration > kMaxFeedHoldSeconds) {
-      std::cerr << "ncc: error: --feed-hold-at '" << text
-                << "': expected SECONDS=DURATION in seconds, SECONDS >= 0 and DURATION above 0 "
-                   "and at most 86400 (a day)\n";
-      return false;
-    }
-    holds.push_back({seconds, duration});
-  }
-  std::stable_sort(holds.begin(), holds.end(),
-                   [](const auto& a, const auto& b) { return a.seconds < b.seconds; });
-  for (std::size_t i = 1; i < holds.size(); ++i) {
-    if (holds[i].seconds < holds[i - 1].seconds + holds[i - 1].duration) {
-      std::cerr << "ncc: error: --feed-hold-at: the holds at " << holds[i - 1].seconds << " s and "
-                << holds[i].seconds << " s overlap\n";
-      return false;
-    }
-  }
-  return true;
-}
-
 int runSimulation(driver::Session& session, const bytecode::Program& program, const RunArgs& args) {
   PendingOutput output;
   if (!output.open(args.output)) return kUsage;

@@ -103,8 +103,7 @@ void Controller::prepare() noexcept {
 
 double Controller::feedOverride() const {
   if (!pending_feed_override_) return planner_.feedOverride();
-  return std::clamp(*pending_feed_override_, motion::MotionPlanner::kMinFeedOverride,
-                    planner_.maxFeedOverride());
+  return planner_.feedOverrideWithin(*pending_feed_override_);
 }
 
 // Feeds the planner while it wants more: motion, S (feed per revolution, dwell in

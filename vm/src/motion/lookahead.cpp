@@ -142,12 +142,9 @@ void LookAhead::replan(const Commitment& committed) {
   // braking through many short runs is ill-conditioned (each run's error grows in the next),
   // so each floor is capped at the previous entry: from there the previous plan, made
   // backwards, is exactly feasible.
+  // (The front run's own entry needs none: the interpolator starts it from the actual speed.)
   double v = committed.velocity;
   double rest = runAt(0).length - committed.offset;
-  if (!front_started_ && committed.offset <= 0.0) {
-    runAt(0).entry_floor = v;
-    runAt(0).entry_planned = std::max(runAt(0).entry_planned, v);
-  }
   for (std::size_t i = 0; i + 1 < run_count_ && v > 0.0; ++i) {
     const Run& run = runAt(i);
     Run& next = runAt(i + 1);

@@ -47,7 +47,7 @@ void MotionPlanner::setOverrides(double feed, double rapid, double max_feed) {
 
 void MotionPlanner::setFeedOverride(double feed) {
   if (!std::isfinite(feed)) return;
-  const double scale = std::clamp(feed, kMinFeedOverride, feed_override_) / feed_override_;
+  const double scale = feedOverrideWithin(feed) / feed_override_;
   if (scale == queue_.feedScale()) return;
   queue_.setFeedScale(scale, commitFor(scale, queue_.held()));
 }

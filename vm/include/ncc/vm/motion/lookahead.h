@@ -15,13 +15,13 @@
 // pass stops at the first entry that does not change (earlier ones depend only on it).
 //
 // Forward pass: the interpolator plans one profile ("piece") at a time from the actual
-// velocity (see Interpolator).
+// velocity (see Interpolator). Two fixed-capacity rings hold segments and runs, allocated in
+// the constructor; nothing allocates or throws afterwards.
 //
 // Live feed override (setFeedScale): every run's speed limit is its planned limit, at most
 // its programmed feed times the scale. Feed hold (setHold): every speed limit is 0. A change
 // re-plans the whole window; entries may fall, but never below what the motion already under
-// way can brake to (entry floors). Two fixed-capacity rings hold segments and runs, allocated in
-// the constructor; nothing allocates or throws afterwards.
+// way can brake to (entry floors).
 #include <cstddef>
 #include <cstdint>
 #include <limits>

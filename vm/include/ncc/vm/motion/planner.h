@@ -18,6 +18,7 @@
 //
 // Overrides (docs/planner.md, "Overrides"): the feed override may be turned during the run
 // (setFeedOverride); the rapid override is set before it.
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 
@@ -65,10 +66,10 @@ class MotionPlanner {
   // feed hold: it is taken as 0.1 %.
   void setFeedOverride(double feed);
   double feedOverride() const { return feed_override_ * queue_.feedScale(); }
-  // The highest the feed override may be turned to (setOverrides' max_feed).
-  double maxFeedOverride() const { return feed_override_; }
-  static constexpr double kMinFeedOverride = 1e-3;
-  static constexpr double kMaxFeedOverride = 2.0;
+  // What setFeedOverride(feed) turns the knob to: clamped to [0.1 %, max_feed].
+  double feedOverrideWithin(double feed) const {
+    return std::clamp(feed, kMinFeedOverride, feed_override_);
+  }
   // Feed hold (the operator's button), between ticks: the path brakes to rest along the
   // programmed path as the limits allow, rapids included (a non-linear G00, a G63 tap and a
   // dwell under way finish first), and stands there; released, it goes on from there.
@@ -114,6 +115,8 @@ class MotionPlanner {
 
   AxisLimits limits_;
   AxisLimits rapid_limits_;  // limits_ with the rapid override applied to the rapid speeds
+  static constexpr double kMinFeedOverride = 1e-3;
+  static constexpr double kMaxFeedOverride = 2.0;
   double feed_override_ = 1.0;  // the one moves are planned with: the highest the knob may reach
   LookAhead queue_;
   ContinuousPath path_;
