@@ -231,6 +231,28 @@ class CliTest(unittest.TestCase):
         self.assertEqual(proc.returncode, 2)
         self.assertIn("overlap", proc.stderr)
 
+    def test_run_blends_line_arc_corners_within_the_tolerance(self):
+        # G64 at F600: a line, a half circle R5 entered at 90 degrees, a line, another half
+        # circle. With corner_tolerance 0 every corner stops; with 0.1 and 1 mm the corners are
+        # blended (a shorter path) and the program gets faster; the end point is exact.
+        prog = self.write("arcs.nc", "G21 G17 G90 G64\nG00 X0 Y0 Z0\nG01 X10. F600.\n"
+                          "G02 X20. Y0 R5.\nG01 X30.\nG03 X40. Y0 R5.\nG01 X50.\nM30\n")
+        times, paths = [], []
+        for tol in ("0", "0.1", "1"):
+            machine = self.write("m%s.toml" % tol, "[machine]\ncorner_tolerance = %s\n" % tol)
+            proc = ncc("run", prog, "--machine", machine)
+            self.assertEqual(proc.returncode, 0, proc.stderr)
+            self.assertIn("status             completed", proc.stdout)
+            self.assertIn("final position     X50.0", proc.stdout)
+            times.append(float(re.search(r"program time +(\d+\.\d+) s", proc.stdout).group(1)))
+            paths.append(float(re.search(r"path length +(\d+\.\d+) mm feed", proc.stdout).group(1)))
+        # Programmed: 30 mm of lines and two half circles of R5.
+        self.assertAlmostEqual(paths[0], 30.0 + 10.0 * math.pi + 0.0, delta=0.001)
+        self.assertLess(paths[1], paths[0] - 0.1)
+        self.assertLess(paths[2], paths[1] - 1.0)
+        self.assertLess(times[1], times[0] - 0.1)
+        self.assertLess(times[2], times[1] - 0.1)
+
     def test_run_lookahead_depth_from_the_machine_file(self):
         # A circle r10 in 0.01 mm chords at F6000: 64 segments (0.64 mm) cannot hold the
         # braking distance from F; lookahead_segments = 4096 can, so the circle runs faster.

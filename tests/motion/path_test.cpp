@@ -52,5 +52,61 @@ TEST(Path, FullCircleAndHelix) {
   EXPECT_NEAR(t[2], 3.0 / helix.length(), 1e-12);
 }
 
+TEST(Path, PartIsTheSamePathBetweenItsEnds) {
+  // A helix piece and a line piece follow the whole segment at the same path length.
+  const PathSegment helix =
+      PathSegment::arc(xyz(5, 0, 0), xyz(0, 5, 2), 3, 0, 1, 0, 0, false, 1);
+  const PathSegment line = PathSegment::line(xyz(0, 0, 0), xyz(3, 4, 12), 3);
+  for (const PathSegment* whole : {&helix, &line}) {
+    const double s0 = 0.3 * whole->length(), s1 = 0.8 * whole->length();
+    const PathSegment piece = whole->part(s0, s1);
+    EXPECT_NEAR(piece.length(), s1 - s0, 1e-12);
+    for (int k = 0; k <= 10; ++k) {
+      const double s = (s1 - s0) * k / 10.0;
+      AxisValues a, b, ta, tb;
+      piece.position(s, a);
+      whole->position(s0 + s, b);
+      piece.tangent(s, ta);
+      whole->tangent(s0 + s, tb);
+      for (int i = 0; i < 3; ++i) {
+        EXPECT_NEAR(a[i], b[i], 1e-12) << k;
+        EXPECT_NEAR(ta[i], tb[i], 1e-12) << k;
+      }
+    }
+  }
+  // The whole segment is itself, bit for bit.
+  AxisValues a, b;
+  helix.part(0.0, helix.length()).position(1.234, a);
+  helix.position(1.234, b);
+  EXPECT_EQ(a, b);
+  // A piece of a plane circle is a plane circle.
+  const PathSegment circle = PathSegment::arc(xyz(5, 0, 0), xyz(-5, 0, 0), 3, 0, 1, 0, 0, false, 0);
+  EXPECT_TRUE(circle.part(1.0, 2.0).isPlaneCircle());
+}
+
+TEST(Path, DistanceToLinesAndCircleArcs) {
+  const PathSegment line = PathSegment::line(xyz(0, 0, 0), xyz(10, 0, 0), 3);
+  EXPECT_DOUBLE_EQ(line.distanceTo(xyz(4, 3, 0)), 3.0);
+  EXPECT_DOUBLE_EQ(line.distanceTo(xyz(13, 4, 0)), 5.0);  // beyond the end: to the end
+  EXPECT_DOUBLE_EQ(line.distanceTo(xyz(-3, 0, 4)), 5.0);
+  // Quarter circle R5 from (5, 0) to (0, 5), counter-clockwise, and the same clockwise back.
+  const PathSegment ccw = PathSegment::arc(xyz(5, 0, 0), xyz(0, 5, 0), 3, 0, 1, 0, 0, false, 0);
+  const PathSegment cw = PathSegment::arc(xyz(0, 5, 0), xyz(5, 0, 0), 3, 0, 1, 0, 0, true, 0);
+  const double d = 5.0 / std::sqrt(2.0);
+  for (const PathSegment* arc : {&ccw, &cw}) {
+    EXPECT_NEAR(arc->distanceTo(xyz(2 * d, 2 * d, 0)), 5.0, 1e-12);  // outside, in the wedge
+    EXPECT_NEAR(arc->distanceTo(xyz(0.2 * d, 0.2 * d, 0)), 4.0, 1e-12);
+    EXPECT_NEAR(arc->distanceTo(xyz(d, d, 3)), 3.0, 1e-12);  // off the plane
+    // Outside the wedge: to the nearer end, not to the circle.
+    EXPECT_NEAR(arc->distanceTo(xyz(5, -1, 0)), 1.0, 1e-12);
+    EXPECT_NEAR(arc->distanceTo(xyz(-5, 0, 0)), std::hypot(5.0, 5.0), 1e-12);
+  }
+  // Not a plane circle of less than half a turn: no distance.
+  const PathSegment helix = PathSegment::arc(xyz(5, 0, 0), xyz(0, 5, 1), 3, 0, 1, 0, 0, false, 0);
+  EXPECT_TRUE(std::isinf(helix.distanceTo(xyz(0, 0, 0))));
+  const PathSegment three_quarters = PathSegment::arc(xyz(5, 0, 0), xyz(0, -5, 0), 3, 0, 1, 0, 0, false, 0);
+  EXPECT_TRUE(std::isinf(three_quarters.distanceTo(xyz(0, 0, 0))));
+}
+
 }  // namespace
 }  // namespace ncc::vm::motion

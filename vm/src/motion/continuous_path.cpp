@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "ncc/vm/motion/corner_blend.h"
+#include "ncc/vm/motion/curve_corner.h"
 #include "ncc/vm/motion/scurve.h"
 
 namespace ncc::vm::motion {
@@ -106,18 +107,42 @@ double ContinuousPath::wiggleAllowance(const AxisValues& involved) const {
   return delta == kInf ? 0.0 : delta;
 }
 
-void ContinuousPath::queueHeld(const AxisValues& end, double end_curvature,
+PathSegment ContinuousPath::heldPart(const AxisValues& end, double end_trim) const {
+  if (held_.arc) return held_arc_.part(held_.start_trim, held_arc_.length() - end_trim);
+  return PathSegment::line(held_.start, end, limits_.count);
+}
+
+PathSegment ContinuousPath::heldProgrammed() const {
+  return held_.arc ? held_arc_ : PathSegment::line(held_.from, held_.end, limits_.count);
+}
+
+AxisValues ContinuousPath::involvedAxes(const HeldMove& next, const PathSegment& next_path) const {
+  AxisValues a = held_.direction, b = next.direction;
+  if (held_.arc) held_arc_.maxTangent(a);
+  if (next.arc) next_path.maxTangent(b);
+  AxisValues involved{};
+  for (int i = 0; i < limits_.count; ++i) involved[i] = (a[i] != 0.0 || b[i] != 0.0) ? 1.0 : 0.0;
+  return involved;
+}
+
+void ContinuousPath::queueHeld(const AxisValues& end, double end_trim, double end_curvature,
                                double end_sagitta, const AxisValues& next_direction,
                                bool stop_after, bool end_at_rest) {
   const int n = limits_.count;
   QueuedSegment seg;
   seg.where = held_.where;
-  seg.path = PathSegment::line(held_.start, end, n);
+  seg.path = heldPart(end, end_trim);
   seg.exact_stop = stop_after && held_.exact_stop;
   seg.feed_limit = held_.feed_limit;
   if (!(seg.path.length() > kNegligibleLength)) {
-    // Trimmed away by the blends at both ends (they meet tangentially with zero curvature).
+    // Trimmed away by the blends at both ends (they meet with the same tangent and curvature).
     if (stop_after) queue_.stopAfterLast();
+    return;
+  }
+  if (held_.arc) {
+    SegmentLimits limits = segmentLimits(seg.path, limits_, false, held_.feed);
+    limits.velocity = std::max(limits.velocity, kMinPathVelocity);
+    enqueue(seg, MotionPrimitive::Kind::Arc, limits, held_.start_limit, stop_after);
     return;
   }
   ChainShape chain;
@@ -169,54 +194,110 @@ SegmentLimits ContinuousPath::chainLimits(const PathSegment& line, double feed,
 
 void ContinuousPath::flush(bool at_rest) {
   if (!held_.active) return;
-  queueHeld(held_.end, 0.0, 0.0, AxisValues{}, false, at_rest);
+  queueHeld(held_.end, 0.0, 0.0, 0.0, AxisValues{}, false, at_rest);
   held_.active = false;
 }
 
-bool ContinuousPath::line(const AxisValues& from, const AxisValues& to, double feed,
-                          double feed_limit, bool exact_stop, const SourcePosition& where) {
+bool ContinuousPath::blendCorner(HeldMove& next, const PathSegment& next_path, double theta,
+                                 double unblended, double chain_end) {
   const int n = limits_.count;
-  const PathSegment programmed = PathSegment::line(from, to, n);
+  const HeldMove& a = held_;
+  const double tolerance = limits_.corner_tolerance;
+  if (!(tolerance > 0.0 && theta > 0.0 && theta <= CornerBlend::kMaxTurn)) return false;
+  double trim = 0.0;
+  AxisValues b_from = a.end, b_to = a.end;
+  CornerBlend curve;
+  if (!a.arc && !next.arc) {
+    // Two lines: d from the tolerance, at most half of each line.
+    trim = std::min({tolerance / (CornerBlend::kDeviationFactor * std::sin(0.5 * theta)),
+                     0.5 * a.length, 0.5 * next.length});
+    for (int i = 0; i < n; ++i) {
+      b_from[i] = a.end[i] - trim * a.direction[i];
+      b_to[i] = a.end[i] + trim * next.direction[i];
+    }
+    curve = CornerBlend::make(a.end, a.direction, next.direction, trim, n);
+  } else {
+    // A tangent junction with an arc keeps its exact geometry (passed at the junction
+    // velocity); a corner is fitted.
+    if (theta <= kCornerAngle) return false;
+    const std::optional<CurveCorner> fit =
+        fitCurveCorner(heldProgrammed(), next_path, tolerance, n);
+    if (!fit) return false;
+    trim = fit->trim;
+    b_from = fit->from;
+    b_to = fit->to;
+    curve = fit->curve;
+  }
+  QueuedSegment blend;
+  blend.where = next.where;
+  blend.feed_limit = std::min(a.feed_limit, next.feed_limit);
+  blend.path = PathSegment::blend(b_from, b_to, curve, n);
+  SegmentLimits bl = segmentLimits(blend.path, limits_, false, std::min(a.feed, next.feed));
+  bl.velocity = std::max(bl.velocity, kMinPathVelocity);
+  // Worth it if faster than the alternative: the kink's speed, or a stop.
+  const Weakest w = weakest(involvedAxes(next, next_path));
+  const double path_accel = w.acceleration, path_jerk = kSmoothJerkShare * w.jerk;
+  const double speed = std::min(a.feed, next.feed);
+  const bool beats_stop =
+      blendCost(speed, path_accel, path_jerk, bl.velocity, blend.path.length(), trim) <
+      stopCost(speed, path_accel, path_jerk);
+  if (!(bl.velocity > unblended && (unblended > 0.0 || beats_stop))) return false;
+  queueHeld(b_from, trim, 0.0, 0.0, next.direction, false);
+  // The blend starts exactly where the trimmed move ended (also when the blends on both sides
+  // left nothing of it).
+  const QueuedSegment* last = queue_.lastSegment();
+  if (last != nullptr) blend.path = PathSegment::blend(last->path.to(), b_to, curve, n);
+  enqueue(blend, MotionPrimitive::Kind::Line, bl, chain_end, false);
+  next.start = b_to;
+  next.start_trim = trim;
+  next.start_limit = kInf;  // G2 junction: same tangent and curvature
+  return true;
+}
+
+bool ContinuousPath::move(const PathSegment& programmed, double feed, double feed_limit,
+                          bool exact_stop, const SourcePosition& where) {
+  const int n = limits_.count;
   if (!(programmed.length() > 0.0)) return false;
-  HeldLine next;
+  HeldMove next;
   next.active = true;
-  next.start = from;
-  next.end = to;
+  next.arc = programmed.shape() == PathSegment::Shape::Arc;
+  next.from = programmed.from();
+  next.start = programmed.from();
+  next.end = programmed.to();
   next.feed = feed;
   next.feed_limit = feed_limit;
   next.where = where;
   next.exact_stop = exact_stop;
   next.length = programmed.length();
   programmed.tangent(0.0, next.direction);
+  programmed.tangent(next.length, next.end_direction);
 
   if (!held_.active) {
-    // The junction with whatever is queued (an arc, or nothing): the plain rule; 0 from rest
-    // (nothing queued, a stop, a dwell or a rapid before it).
+    // The junction with whatever is queued (a rapid, or nothing): the plain rule; 0 from
+    // rest (nothing queued, a stop, a dwell or a rapid before it).
     next.start_limit = joinsMoving(MotionPrimitive::Kind::Line)
                            ? junctionVelocity(queue_.lastSegment()->path, programmed, limits_)
                            : 0.0;
   } else {
-    const HeldLine& a = held_;
-    const double theta = turnAngle(a.direction, next.direction, n);
-    AxisValues involved{};
-    for (int i = 0; i < n; ++i)
-      involved[i] = (a.direction[i] != 0.0 || next.direction[i] != 0.0) ? 1.0 : 0.0;
+    const HeldMove& a = held_;
+    const double theta = turnAngle(a.end_direction, next.direction, n);
+    const AxisValues involved = involvedAxes(next, programmed);
+    const bool lines = !a.arc && !next.arc;
     const double kappa = 2.0 * std::sin(0.5 * theta) / (0.5 * (a.length + next.length));
     const double longest = std::max(a.length, next.length);
     const double sagitta = longest * longest * kappa / 8.0;
-    const double tolerance = limits_.corner_tolerance;
 
-    // A turn the kink rule passes at full speed needs nothing else (collinear lines, and
-    // tiny turns between long lines).
-    const PathSegment held_line = PathSegment::line(a.start, a.end, n);
-    const double kink = theta <= kCornerAngle ? junctionVelocity(held_line, programmed, limits_) : 0.0;
+    // A turn the kink rule passes at full speed needs nothing else (collinear lines, tangent
+    // arcs, and tiny turns between long lines).
+    const double kink =
+        theta <= kCornerAngle ? junctionVelocity(heldPart(a.end, 0.0), programmed, limits_) : 0.0;
     const bool kink_free = a.start_curvature == 0.0 && kink >= std::max(a.feed, feed);
     if (kink_free) {
-      queueHeld(a.end, 0.0, 0.0, next.direction, false);
+      queueHeld(a.end, 0.0, 0.0, 0.0, next.direction, false);
       next.start_limit = kink;
-    } else if (theta <= kChainMaxTurn && sagitta <= wiggleAllowance(involved)) {
+    } else if (lines && theta <= kChainMaxTurn && sagitta <= wiggleAllowance(involved)) {
       // Chain vertex: passed as is, both lines planned as the curve through it.
-      queueHeld(a.end, kappa, sagitta, next.direction, false);
+      queueHeld(a.end, 0.0, kappa, sagitta, next.direction, false);
       next.start_limit = kInf;
       next.start_curvature = kappa;
       next.start_sagitta = sagitta;
@@ -225,53 +306,18 @@ bool ContinuousPath::line(const AxisValues& from, const AxisValues& to, double f
       // with the curvature step where a chain ends here.
       const double chain_end = curvatureStepLimit(a.start_curvature, involved);
       const double unblended = std::min(kink, chain_end);
-      // The blend candidate: d from the tolerance, at most half of each line.
-      bool blended = false;
-      if (tolerance > 0.0 && theta > 0.0 && theta <= CornerBlend::kMaxTurn) {
-        const double d = std::min({tolerance / (CornerBlend::kDeviationFactor * std::sin(0.5 * theta)),
-                                   0.5 * a.length, 0.5 * next.length});
-        AxisValues b_from = a.end, b_to = a.end;
-        for (int i = 0; i < n; ++i) {
-          b_from[i] = a.end[i] - d * a.direction[i];
-          b_to[i] = a.end[i] + d * next.direction[i];
-        }
-        const CornerBlend curve = CornerBlend::make(a.end, a.direction, next.direction, d, n);
-        QueuedSegment blend;
-        blend.where = where;
-        blend.feed_limit = std::min(a.feed_limit, feed_limit);
-        blend.path = PathSegment::blend(b_from, b_to, curve, n);
-        SegmentLimits bl = segmentLimits(blend.path, limits_, false, std::min(a.feed, feed));
-        bl.velocity = std::max(bl.velocity, kMinPathVelocity);
-        // Worth it if faster than the alternative: the kink's speed, or a stop.
-        const Weakest w = weakest(involved);
-        const double path_accel = w.acceleration, path_jerk = kSmoothJerkShare * w.jerk;
-        const double speed = std::min(a.feed, feed);
-        const bool beats_stop =
-            blendCost(speed, path_accel, path_jerk, bl.velocity, blend.path.length(), d) <
-            stopCost(speed, path_accel, path_jerk);
-        if (bl.velocity > unblended && (unblended > 0.0 || beats_stop)) {
-          queueHeld(b_from, 0.0, 0.0, next.direction, false);
-          // The blend starts exactly where the trimmed line ended (also when the blends on
-          // both sides left nothing of the line).
-          const QueuedSegment* last = queue_.lastSegment();
-          if (last != nullptr) blend.path = PathSegment::blend(last->path.to(), b_to, curve, n);
-          enqueue(blend, MotionPrimitive::Kind::Line, bl, chain_end, false);
-          next.start = b_to;
-          next.start_limit = kInf;  // G2 junction: same tangent, zero curvature
-          blended = true;
-        }
-      }
-      if (!blended) {
+      if (!blendCorner(next, programmed, theta, unblended, chain_end)) {
         const bool stop = unblended <= 0.0;
-        queueHeld(a.end, 0.0, 0.0, next.direction, stop);
+        queueHeld(a.end, 0.0, 0.0, 0.0, next.direction, stop);
         next.start_limit = unblended;
       }
     }
-    next.previous_direction = a.direction;
+    next.previous_direction = a.end_direction;
   }
   held_ = next;
+  if (next.arc) held_arc_ = programmed;
   if (exact_stop) {
-    queueHeld(held_.end, 0.0, 0.0, AxisValues{}, true);
+    queueHeld(held_.end, 0.0, 0.0, 0.0, AxisValues{}, true);
     held_.active = false;
   }
   return true;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace ncc::vm::motion {
 namespace {
@@ -71,16 +72,16 @@ void planeCurve(double cos_t, double sin_t, double d, std::array<double, 6>& px,
                    B::kOuter * d * sin_t});
 }
 
-// Largest curvature and curvature rate sqrt(k'^2 + k^4) of the d = 1 curve, sampled.
-void sampleBounds(double theta, double& curvature, double& curvature_rate) {
-  std::array<double, 6> px, py;
-  planeCurve(std::cos(theta), std::sin(theta), 1.0, px, py);
+// Largest curvature and curvature rate sqrt(k'^2 + k^4) of the plane curve (px, py) at
+// `samples` + 1 equal steps of its parameter.
+void sampleCurveBounds(const std::array<double, 6>& px, const std::array<double, 6>& py,
+                       int samples, double& curvature, double& curvature_rate) {
   const auto vx = differentiate(px), vy = differentiate(py);
   const auto ax = differentiate(vx), ay = differentiate(vy);
   const auto jx = differentiate(ax), jy = differentiate(ay);
   curvature = curvature_rate = 0.0;
-  for (int k = 0; k <= kBoundSamples; ++k) {
-    const double t = static_cast<double>(k) / kBoundSamples;
+  for (int k = 0; k <= samples; ++k) {
+    const double t = static_cast<double>(k) / samples;
     const double x1 = horner(vx, t), y1 = horner(vy, t);
     const double x2 = horner(ax, t), y2 = horner(ay, t);
     const double x3 = horner(jx, t), y3 = horner(jy, t);
@@ -91,10 +92,21 @@ void sampleBounds(double theta, double& curvature, double& curvature_rate) {
     const double dkappa_dt =
         ((x1 * y3 - y1 * x3) * sp2 - 3.0 * cross * (x1 * x2 + y1 * y2)) / (sp2 * sp2 * sp);
     const double dkappa_ds = dkappa_dt / sp;
+    if (!std::isfinite(dkappa_ds)) {  // a cusp (join() with extreme ends): unbounded
+      curvature = curvature_rate = std::numeric_limits<double>::infinity();
+      return;
+    }
     curvature = std::max(curvature, std::abs(kappa));
     curvature_rate = std::max(
         curvature_rate, std::sqrt(dkappa_ds * dkappa_ds + kappa * kappa * kappa * kappa));
   }
+}
+
+// The same for the d = 1 corner blend of turning angle theta.
+void sampleBounds(double theta, double& curvature, double& curvature_rate) {
+  std::array<double, 6> px, py;
+  planeCurve(std::cos(theta), std::sin(theta), 1.0, px, py);
+  sampleCurveBounds(px, py, kBoundSamples, curvature, curvature_rate);
 }
 
 const UnitBounds& unitBounds() {
@@ -136,27 +148,7 @@ CornerBlend CornerBlend::make(const AxisValues& corner, const AxisValues& u_in,
     b.plane_share_[i] = std::min(1.0, std::hypot(b.e1_[i], b.e2_[i]));
   }
   planeCurve(cos_t, sin_t, d, b.px_, b.py_);
-  b.vx_ = differentiate(b.px_);
-  b.vy_ = differentiate(b.py_);
-  b.ax_ = differentiate(b.vx_);
-  b.ay_ = differentiate(b.vy_);
-
-  b.s_table_[0] = 0.0;
-  for (int k = 0; k < kTableSteps; ++k) {
-    const double t0 = static_cast<double>(k) / kTableSteps;
-    const double t1 = static_cast<double>(k + 1) / kTableSteps;
-    b.s_table_[k + 1] = b.s_table_[k] + b.arcLength(t0, t1);
-  }
-
-  for (int k = 0; k <= kTableSteps; ++k) {
-    const double t = static_cast<double>(k) / kTableSteps;
-    double dx, dy;
-    b.derivative(t, dx, dy);
-    const double sp2 = dx * dx + dy * dy;
-    b.speed_table_[k] = std::sqrt(sp2);
-    // t''(s) = -(c' . c'') / |c'|^4
-    b.dtds2_table_[k] = -(dx * horner(b.ax_, t) + dy * horner(b.ay_, t)) / (sp2 * sp2);
-  }
+  b.buildTables();
 
   // Curvature bounds: the d = 1 table at theta, scaled.
   const double theta = std::atan2(sin_t, cos_t);
@@ -169,6 +161,68 @@ CornerBlend CornerBlend::make(const AxisValues& corner, const AxisValues& u_in,
   b.max_curvature_rate_ =
       scale * std::max(unit.curvature_rate[lo], unit.curvature_rate[lo + 1]) / (d * d);
   return b;
+}
+
+CornerBlend CornerBlend::join(const AxisValues& origin, const AxisValues& e1,
+                              const AxisValues& e2, const PlaneEnd& start, const PlaneEnd& end,
+                              double handle_start, double handle_end, int axis_count) {
+  CornerBlend b;
+  b.axis_count_ = axis_count;
+  b.corner_ = origin;
+  b.e1_ = e1;
+  b.e2_ = e2;
+  for (int i = 0; i < axis_count; ++i) b.plane_share_[i] = std::min(1.0, std::hypot(e1[i], e2[i]));
+  // Control points P0..P5. The second derivative at an end is 20 times the third control
+  // point's sideways offset from the tangent (the handles along it cancel), so an offset of
+  // 1.25 k h^2 towards the normal gives curvature k with a handle h: k = 0.8 offset / h^2.
+  const double h0 = handle_start, h1 = handle_end;
+  const double g0 = 1.25 * start.curvature * h0 * h0, g1 = 1.25 * end.curvature * h1 * h1;
+  const std::array<double, 6> bx = {start.x,
+                                    start.x + h0 * start.tx,
+                                    start.x + 2.0 * h0 * start.tx - g0 * start.ty,
+                                    end.x - 2.0 * h1 * end.tx - g1 * end.ty,
+                                    end.x - h1 * end.tx,
+                                    end.x};
+  const std::array<double, 6> by = {start.y,
+                                    start.y + h0 * start.ty,
+                                    start.y + 2.0 * h0 * start.ty + g0 * start.tx,
+                                    end.y - 2.0 * h1 * end.ty + g1 * end.tx,
+                                    end.y - h1 * end.ty,
+                                    end.y};
+  b.px_ = powerBasis(bx);
+  b.py_ = powerBasis(by);
+  b.buildTables();
+  b.interpolation_exact_ = false;
+  // No table for an asymmetric shape: sampled, finer than the table's samples.
+  double curvature = 0.0, rate = 0.0;
+  sampleCurveBounds(b.px_, b.py_, 4 * kBoundSamples, curvature, rate);
+  b.max_curvature_ = kBoundMargin * curvature;
+  b.max_curvature_rate_ = kBoundMargin * rate;
+  return b;
+}
+
+void CornerBlend::buildTables() {
+  vx_ = differentiate(px_);
+  vy_ = differentiate(py_);
+  ax_ = differentiate(vx_);
+  ay_ = differentiate(vy_);
+
+  s_table_[0] = 0.0;
+  for (int k = 0; k < kTableSteps; ++k) {
+    const double t0 = static_cast<double>(k) / kTableSteps;
+    const double t1 = static_cast<double>(k + 1) / kTableSteps;
+    s_table_[k + 1] = s_table_[k] + arcLength(t0, t1);
+  }
+
+  for (int k = 0; k <= kTableSteps; ++k) {
+    const double t = static_cast<double>(k) / kTableSteps;
+    double dx, dy;
+    derivative(t, dx, dy);
+    const double sp2 = dx * dx + dy * dy;
+    speed_table_[k] = std::sqrt(sp2);
+    // t''(s) = -(c' . c'') / |c'|^4
+    dtds2_table_[k] = -(dx * horner(ax_, t) + dy * horner(ay_, t)) / (sp2 * sp2);
+  }
 }
 
 void CornerBlend::derivative(double t, double& dx, double& dy) const {

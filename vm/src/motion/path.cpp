@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 
 namespace ncc::vm::motion {
@@ -80,6 +81,55 @@ PathSegment PathSegment::dwell(const AxisValues& at, int axis_count) {
   p.from_ = at;
   p.to_ = at;
   return p;
+}
+
+PathSegment PathSegment::part(double s0, double s1) const {
+  if ((s0 <= 0.0 && s1 >= length_) || (shape_ != Shape::Line && shape_ != Shape::Arc)) return *this;
+  PathSegment p = *this;
+  position(s0, p.from_);
+  position(s1, p.to_);
+  if (shape_ == Shape::Line) return line(p.from_, p.to_, axis_count_);
+  // An arc: the same angle and radius per unit of s.
+  const double f0 = s0 / length_, f1 = s1 / length_;
+  p.theta0_ = theta0_ + sweep_ * f0;
+  p.sweep_ = sweep_ * (f1 - f0);
+  p.r0_ = r0_ + (r1_ - r0_) * f0;
+  p.r1_ = r0_ + (r1_ - r0_) * f1;
+  for (int i = 0; i < axis_count_; ++i) p.delta_[i] = delta_[i] * (f1 - f0);
+  p.length_ = length_ * (f1 - f0);
+  return p;
+}
+
+double PathSegment::distanceTo(const AxisValues& q) const {
+  const auto distance = [&](const AxisValues& p) {
+    double sum = 0.0;
+    for (int i = 0; i < axis_count_; ++i) sum += (q[i] - p[i]) * (q[i] - p[i]);
+    return std::sqrt(sum);
+  };
+  if (shape_ == Shape::Line) {
+    double along = 0.0;
+    for (int i = 0; i < axis_count_; ++i) along += (q[i] - from_[i]) * delta_[i];
+    const double f = length_ > 0.0 ? std::clamp(along / (length_ * length_), 0.0, 1.0) : 0.0;
+    AxisValues p = from_;
+    for (int i = 0; i < axis_count_; ++i) p[i] = from_[i] + delta_[i] * f;
+    return distance(p);
+  }
+  if (!isPlaneCircle() || !(std::abs(sweep_) < std::numbers::pi))
+    return std::numeric_limits<double>::infinity();
+  double off_plane = 0.0;
+  for (int i = 0; i < axis_count_; ++i)
+    if (i != axis1_ && i != axis2_) off_plane += (q[i] - from_[i]) * (q[i] - from_[i]);
+  // Within the arc's wedge (seen from the centre): the distance to the circle; else to the
+  // nearer end.
+  const double qx = q[axis1_] - cx_, qy = q[axis2_] - cy_;
+  const double ax = from_[axis1_] - cx_, ay = from_[axis2_] - cy_;
+  const double bx = to_[axis1_] - cx_, by = to_[axis2_] - cy_;
+  const double side = sweep_ > 0.0 ? 1.0 : -1.0;
+  if (side * (ax * qy - ay * qx) >= 0.0 && side * (qx * by - qy * bx) >= 0.0) {
+    const double radial = std::hypot(qx, qy) - r0_;
+    return std::sqrt(radial * radial + off_plane);
+  }
+  return std::min(distance(from_), distance(to_));
 }
 
 void PathSegment::position(double s, AxisValues& out) const {

@@ -27,7 +27,7 @@ double windowLength(const AxisLimits& l) {
 MotionPlanner::MotionPlanner(const MachineConfig& machine, std::size_t window_capacity)
     : limits_(AxisLimits::from(machine)),
       rapid_limits_(limits_),
-      queue_(std::max<std::size_t>(window_capacity, 2 * ContinuousPath::kSlotsPerLine),
+      queue_(std::max<std::size_t>(window_capacity, 2 * ContinuousPath::kSlotsPerMove),
              windowLength(limits_)),
       path_(limits_, queue_),
       interpolator_(machine.start_position, rapid_limits_) {
@@ -94,23 +94,23 @@ bool MotionPlanner::push(const MotionPrimitive& m) {
   // What a live feed override scales (setFeedOverride): not rapids, not G63.
   const double feed_limit =
       rapid || m.fixed_override ? std::numeric_limits<double>::infinity() : feed;
-  if (m.kind == MotionPrimitive::Kind::Line) {
-    // A line that does not move counts only for its exact stop.
-    if (!path_.line(m.from, m.to, feed, feed_limit, m.exact_stop, m.where) && m.exact_stop) stop();
+  if (m.kind == MotionPrimitive::Kind::Line || m.kind == MotionPrimitive::Kind::Arc) {
+    const PathSegment programmed =
+        m.kind == MotionPrimitive::Kind::Line
+            ? PathSegment::line(m.from, m.to, n)
+            : PathSegment::arc(m.from, m.to, n, m.axis1, m.axis2, m.center[m.axis1],
+                               m.center[m.axis2], m.cw, m.extra_turns);
+    // A move that does not move counts only for its exact stop.
+    if (!path_.move(programmed, feed, feed_limit, m.exact_stop, m.where) && m.exact_stop) stop();
     return true;
   }
   QueuedSegment seg;
   seg.where = m.where;
   seg.feed_limit = feed_limit;
   seg.exact_stop = m.exact_stop;
-  if (m.kind == MotionPrimitive::Kind::Arc) {
-    seg.path = PathSegment::arc(m.from, m.to, n, m.axis1, m.axis2, m.center[m.axis1],
-                                m.center[m.axis2], m.cw, m.extra_turns);
-  } else {
-    seg.path = PathSegment::line(m.from, m.to, n);
-  }
+  seg.path = PathSegment::line(m.from, m.to, n);
   const bool moves = seg.path.length() > 0.0;
-  // The held line ends at rest before a rapid that moves; an arc may join it moving.
+  // The held move ends at rest before a rapid that moves.
   path_.flush(rapid && moves);
   if (!moves) {  // nothing moves: only its exact stop counts
     if (m.exact_stop) stop();

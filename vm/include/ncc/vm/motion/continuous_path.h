@@ -1,22 +1,24 @@
 #pragma once
-// G64 continuous-path mode: how consecutive feed lines meet (docs/planner.md, "Corners").
+// G64 continuous-path mode: how consecutive feed moves meet (docs/planner.md, "Corners").
 //
-// A feed line is held back until the next primitive shows what happens at its end vertex
-// (turning angle theta between the two lines):
-//  - chain: both lines are short enough that the polygon stays within a few nanometres of a
-//    smooth curve through its vertices (a CAM-tessellated circle or spline). The vertex is
-//    passed as is and the lines are planned as that curve (curvature from the circle through
-//    the vertices, limits.h ChainShape); the rest of the polygon's deviation is budgeted as
-//    "wiggle" in the sampled acceleration and jerk.
+// A feed move (a line or an arc) is held back until the next primitive shows what happens at
+// its end (turning angle theta between the end tangent and the next move's start tangent):
+//  - chain (lines only): both lines are short enough that the polygon stays within a few
+//    nanometres of a smooth curve through its vertices (a CAM-tessellated circle or spline).
+//    The vertex is passed as is and the lines are planned as that curve (curvature from the
+//    circle through the vertices, limits.h ChainShape); the rest of the polygon's deviation is
+//    budgeted as "wiggle" in the sampled acceleration and jerk.
 //  - blend: the corner is replaced by a curvature-continuous CornerBlend that stays within
-//    the machine's corner tolerance, trimming at most half of each line, when passing the
+//    the machine's corner tolerance, trimming at most half of each move, when passing the
 //    blend is faster than stopping (with a small tolerance and a low jerk limit a blend is
-//    passed at a crawl, and a jerk-limited stop is quicker);
-//  - kink: a small turn (<= kCornerAngle) passed at the junction velocity of limits.h, when
-//    that is faster than a blend (long lines, tiny turn);
+//    passed at a crawl, and a jerk-limited stop is quicker). Between two lines its trim has a
+//    closed form (CornerBlend::make); where an arc meets a line or an arc, in the arc's plane,
+//    it is fitted (curve_corner.h);
+//  - kink: a small turn (<= kCornerAngle), or a tangent junction with a curvature step, passed
+//    at the junction velocity of limits.h when that is faster than a blend;
 //  - stop: reversals, a zero corner tolerance, or a turn too large to blend.
-// Held lines never reach the look-ahead half-decided: each one is queued exactly once, when
-// its end vertex is known or nothing can follow (flush).
+// Held moves never reach the look-ahead half-decided: each one is queued exactly once, when
+// its end is known or nothing can follow (flush).
 #include <array>
 #include <cstddef>
 
@@ -29,17 +31,17 @@ namespace ncc::vm::motion {
 
 class ContinuousPath {
  public:
-  // Queue slots one line() may fill: the held line, a blend, and the new line if it stops.
-  static constexpr std::size_t kSlotsPerLine = 3;
+  // Queue slots one move() may fill: the held move, a blend, and the new move if it stops.
+  static constexpr std::size_t kSlotsPerMove = 3;
 
   ContinuousPath(const AxisLimits& limits, LookAhead& queue) : limits_(limits), queue_(queue) {}
 
-  // A feed line from `from` to `to` at `feed` mm/s (caller checks the queue has
-  // kSlotsPerLine free slots). `feed_limit`: what a live feed override scales
+  // A feed move, `programmed` a line or an arc, at `feed` mm/s (caller checks the queue has
+  // kSlotsPerMove free slots). `feed_limit`: what a live feed override scales
   // (QueuedSegment::feed_limit). False, taking nothing, when it does not move.
-  bool line(const AxisValues& from, const AxisValues& to, double feed, double feed_limit,
-            bool exact_stop, const SourcePosition& where);
-  // Something other than a feed line follows (or nothing will): queue the held line up to its
+  bool move(const PathSegment& programmed, double feed, double feed_limit, bool exact_stop,
+            const SourcePosition& where);
+  // Something other than a feed move follows (or nothing will): queue the held move up to its
   // programmed end point. `at_rest`: the path stops there (a stop, a dwell, a rapid or the
   // program's end follows).
   void flush(bool at_rest);
@@ -52,11 +54,15 @@ class ContinuousPath {
                const SegmentLimits& limits, double vertex_limit, bool stop_after);
 
  private:
-  struct HeldLine {
+  struct HeldMove {
     bool active = false;
+    bool arc = false;        // an arc (its geometry: held_arc_), else a line
+    AxisValues from{};       // programmed start point
     AxisValues start{};      // where its queued part starts (after a blend: the blend's end)
+    double start_trim = 0.0; // path length a blend took off its start
     AxisValues end{};        // programmed end point
-    AxisValues direction{};  // unit
+    AxisValues direction{};  // unit tangent at its start (a line's direction)
+    AxisValues end_direction{};  // unit tangent at its end
     double length = 0.0;     // programmed length
     double feed = 0.0;       // mm/s
     double feed_limit = 0.0; // QueuedSegment::feed_limit
@@ -65,14 +71,29 @@ class ContinuousPath {
     double start_limit = 0.0;      // junction velocity limit at `start`
     double start_curvature = 0.0;  // chain curvature at its start vertex (0: not a chain vertex)
     double start_sagitta = 0.0;    // the polygon's deviation from the chain's curve there
-    AxisValues previous_direction{};  // of the line before it (zero if none)
+    AxisValues previous_direction{};  // end tangent of the move before it (zero if none)
   };
 
-  // Queues the held line from its start to `end`, planned with the chain curvature of its two
-  // vertices (end_curvature: 0 when its end is not a chain vertex). `end_at_rest`: the path
-  // stops at `end` (stop_after, or what follows starts from rest).
-  void queueHeld(const AxisValues& end, double end_curvature, double end_sagitta,
-                 const AxisValues& next_direction, bool stop_after, bool end_at_rest = false);
+  // Queues the held move from its start to `end` (an arc: to `end_trim` before its programmed
+  // end), a line planned with the chain curvature of its two vertices (end_curvature: 0 when
+  // its end is not a chain vertex). `end_at_rest`: the path stops at `end` (stop_after, or
+  // what follows starts from rest).
+  void queueHeld(const AxisValues& end, double end_trim, double end_curvature,
+                 double end_sagitta, const AxisValues& next_direction, bool stop_after,
+                 bool end_at_rest = false);
+  // What is left of the held move from its start to `end_trim` before its programmed end
+  // (a line: to `end`).
+  PathSegment heldPart(const AxisValues& end, double end_trim) const;
+  // The held move as programmed.
+  PathSegment heldProgrammed() const;
+  // The axes the held move or `next` (programmed as `next_path`) moves (1), and those it
+  // does not (0).
+  AxisValues involvedAxes(const HeldMove& next, const PathSegment& next_path) const;
+  // The blend of the held move's corner with `next` (programmed as `next_path`), queued with
+  // the held move up to it when it is faster than `unblended`; the blend's end is where `next`
+  // then starts.
+  bool blendCorner(HeldMove& next, const PathSegment& next_path, double theta, double unblended,
+                   double chain_end);
   // The lowest acceleration and jerk limits among the axes in `involved` (infinite if none):
   // what a path through those axes may use.
   struct Weakest {
@@ -100,7 +121,10 @@ class ContinuousPath {
 
   const AxisLimits& limits_;
   LookAhead& queue_;
-  HeldLine held_;
+  HeldMove held_;
+  // The held arc as programmed. Apart from held_: a PathSegment is large (a blend's tables),
+  // and copying one per line would cost a fifth of the planning rate.
+  PathSegment held_arc_;
   struct ChainLimits {
     bool valid = false;
     double feed = 0.0, curvature = 0.0, sagitta = 0.0;

@@ -1,6 +1,6 @@
 #pragma once
 // The G64 corner blend: a curvature-continuous (G2) curve that replaces a corner between two
-// lines, parametrised by its own path length.
+// lines, or where an arc meets a line or another arc, parametrised by its own path length.
 //
 // A quintic Bezier in the plane of the two lines. Its control points sit on the lines at
 // distances d, 0.6 d and 0.2 d from the corner P (three on the incoming line, three on the
@@ -12,6 +12,11 @@
 // (tests/motion/corner_blend_test.cpp checks it on samples). The control point spacing was
 // chosen for the lowest peak curvature and curvature rate at a given deviation
 // (docs/planner.md, "Corner blending").
+//
+// A corner with an arc (join()) is the same kind of quintic, no longer symmetric: at each end
+// the handle runs along the tangent, and the third control point leaves it sideways by what
+// gives the curve the arc's curvature there (curve_corner.h chooses the trim and checks the
+// deviation). Its curvature bounds are sampled for each blend instead of tabulated.
 //
 // Arc length: a table of s at 32 equal steps of the Bezier parameter (5-point Gauss-Legendre
 // per step), inverted by quintic Hermite interpolation (and, for turns above 3 degrees, a
@@ -47,6 +52,19 @@ class CornerBlend {
   static CornerBlend make(const AxisValues& corner, const AxisValues& u_in,
                           const AxisValues& u_out, double d, int axis_count);
 
+  // One end of a blend made by join(), in the plane's coordinates: position, unit tangent,
+  // and signed curvature (positive: turning from e1 towards e2).
+  struct PlaneEnd {
+    double x = 0.0, y = 0.0, tx = 1.0, ty = 0.0, curvature = 0.0;
+  };
+  // The blend from `start` to `end` in the plane through `origin` spanned by the orthonormal
+  // `e1`, `e2`, matching position, tangent and curvature at both ends. `handle_start` and
+  // `handle_end` (> 0): the tangent handles' lengths, 0.4 of each end's distance from the
+  // corner in make()'s shape.
+  static CornerBlend join(const AxisValues& origin, const AxisValues& e1, const AxisValues& e2,
+                          const PlaneEnd& start, const PlaneEnd& end, double handle_start,
+                          double handle_end, int axis_count);
+
   double length() const { return s_table_[kTableSteps]; }
   // At path length s in (0, length): position, unit tangent, curvature vector d2x/ds2.
   void position(double s, AxisValues& out) const;
@@ -62,6 +80,8 @@ class CornerBlend {
   double planeShare(int axis) const { return plane_share_[axis]; }
 
  private:
+  // The derivatives and the arc-length tables of the plane curve px_, py_ (make(), join()).
+  void buildTables();
   // Bezier parameter t at path length s.
   double parameterAt(double s) const;
   // Derivative of the plane curve at t, and its norm.

@@ -31,6 +31,14 @@ class PathSegment {
   // Standing still at `at` (a dwell).
   static PathSegment dwell(const AxisValues& at, int axis_count);
 
+  // The piece between path lengths s0 < s1 of a line or an arc, parametrised like this
+  // segment (an arc keeps its centre, so a piece of a circle is a circle); the whole segment
+  // for (0, length). Its ends are position(s0) and position(s1).
+  PathSegment part(double s0, double s1) const;
+  // Distance from q to a line, or to a plane circle of less than half a turn (infinite for
+  // other shapes): what checks a blend against the programmed path.
+  double distanceTo(const AxisValues& q) const;
+
   Shape shape() const { return shape_; }
   double length() const { return length_; }
   int axisCount() const { return axis_count_; }
@@ -60,6 +68,9 @@ class PathSegment {
   double planeShare() const { return plane_share_; }
   // A circle in its plane (an arc without helix or spiral part): its rotation term,
   // d3x/ds3 = -k^2 T, lies along the tangent.
+  // Arcs: the plane's axes.
+  int planeAxis1() const { return axis1_; }
+  int planeAxis2() const { return axis2_; }
   bool isPlaneCircle() const {
     return shape_ == Shape::Arc && plane_share_ == 1.0 && r0_ == r1_;
   }

@@ -41,7 +41,7 @@ class MotionPlanner {
   // path is shorter than the braking distance from top speed.
   bool canAccept() const { return hasRoom() && queue_.wantsMore(); }
   // True while the ring has room for any primitive (push succeeds).
-  bool hasRoom() const { return queue_.room() >= ContinuousPath::kSlotsPerLine; }
+  bool hasRoom() const { return queue_.room() >= ContinuousPath::kSlotsPerMove; }
 
   // Takes one primitive (its `from` must be where the previous one ended). False when the
   // ring is too full; nothing is taken then.

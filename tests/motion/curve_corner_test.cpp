@@ -1,0 +1,250 @@
+// G64 corners where an arc meets a line or another arc (curve_corner.h): the fitted blend
+// meets both sides with their position, tangent and curvature and stays within the corner
+// tolerance; through the planner such corners are passed moving, within the tolerance and the
+// axis limits, and faster than stopping.
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "gtest/gtest.h"
+#include "motion_test_util.h"
+#include "ncc/vm/motion/curve_corner.h"
+
+namespace ncc::vm::motion {
+namespace {
+
+using namespace motion_test;
+
+constexpr double kPi = std::numbers::pi;
+
+// Distance from p to a programmed primitive, worked out here without PathSegment: a line, or
+// a plane (X, Y) arc of less than a full turn.
+double toPrimitive(const AxisValues& p, const MotionPrimitive& m) {
+  if (m.kind != Kind::Arc) return toSegment(p, m.from, m.to);
+  const double cx = m.center[0], cy = m.center[1];
+  const double r = std::hypot(m.from[0] - cx, m.from[1] - cy);
+  const double a0 = std::atan2(m.from[1] - cy, m.from[0] - cx);
+  double sweep = std::atan2(m.to[1] - cy, m.to[0] - cx) - a0;
+  if (m.cw && sweep >= 0.0) sweep -= 2.0 * kPi;
+  if (!m.cw && sweep <= 0.0) sweep += 2.0 * kPi;
+  // The angle of p from the start, in the arc's direction, in [0, 2pi).
+  double a = std::atan2(p[1] - cy, p[0] - cx) - a0;
+  if (m.cw) a = -a;
+  a = std::fmod(std::fmod(a, 2.0 * kPi) + 2.0 * kPi, 2.0 * kPi);
+  const double off_plane = p[2] - m.from[2];
+  if (a <= std::abs(sweep)) return std::hypot(std::hypot(p[0] - cx, p[1] - cy) - r, off_plane);
+  return std::min(distance(p, m.from), distance(p, m.to));
+}
+
+double worstDeviation(const Trace& t, const std::vector<MotionPrimitive>& prog) {
+  double worst = 0.0;
+  for (const AxisValues& p : t.points) {
+    double best = 1e300;
+    for (const MotionPrimitive& m : prog) best = std::min(best, toPrimitive(p, m));
+    worst = std::max(worst, best);
+  }
+  return worst;
+}
+
+// A contour of 90-degree corners between lines and half circles (R 5), every kind of corner
+// once: line-arc at (10, 0), arc-line at (20, 0), line-arc at (30, 0), arc-arc at (40, 0),
+// arc-line at (45, 5).
+std::vector<MotionPrimitive> mixedContour(double feed) {
+  return {line(xyz(0, 0, 0), xyz(10, 0, 0), feed),
+          arc(xyz(10, 0, 0), xyz(20, 0, 0), 0, 1, 15, 0, false, feed),
+          line(xyz(20, 0, 0), xyz(30, 0, 0), feed),
+          arc(xyz(30, 0, 0), xyz(40, 0, 0), 0, 1, 35, 0, true, feed),
+          arc(xyz(40, 0, 0), xyz(45, 5, 0), 0, 1, 40, 5, false, feed),
+          line(xyz(45, 5, 0), xyz(55, 5, 0), feed)};
+}
+
+// The path segments of the contour's corners: (incoming, outgoing) as PathSegments.
+PathSegment segmentOf(const MotionPrimitive& m) {
+  if (m.kind != Kind::Arc) return PathSegment::line(m.from, m.to, 3);
+  return PathSegment::arc(m.from, m.to, 3, m.axis1, m.axis2, m.center[m.axis1],
+                          m.center[m.axis2], m.cw, 0);
+}
+
+double dot3(const AxisValues& a, const AxisValues& b) {
+  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
+
+TEST(CurveCorner, MeetsBothSidesWithTheirTangentAndCurvature) {
+  const std::vector<MotionPrimitive> prog = mixedContour(1000.0);
+  for (std::size_t i = 0; i + 1 < prog.size(); ++i) {
+    const PathSegment in = segmentOf(prog[i]), out = segmentOf(prog[i + 1]);
+    for (double tol : {0.001, 0.05, 0.5}) {
+      const auto fit = fitCurveCorner(in, out, tol, 3);
+      ASSERT_TRUE(fit.has_value()) << i << " " << tol;
+      const CornerBlend& b = fit->curve;
+      const double d = fit->trim;
+      EXPECT_GT(d, 0.0);
+      AxisValues p, expected, t_b, t_s, k_b, k_s;
+      // Start: where the incoming side is trimmed.
+      b.position(0.0, p);
+      in.position(in.length() - d, expected);
+      EXPECT_LT(distance(p, expected), 1e-9) << i;
+      EXPECT_LT(distance(fit->from, expected), 1e-12) << i;
+      b.tangent(0.0, t_b);
+      in.tangent(in.length() - d, t_s);
+      EXPECT_NEAR(dot3(t_b, t_s), 1.0, 1e-9) << i;
+      b.curvature(0.0, k_b);
+      in.curvature(in.length() - d, k_s);
+      EXPECT_LT(distance(k_b, k_s), 1e-6 * (1.0 / d)) << i;
+      // End: where the outgoing side starts again.
+      b.position(b.length(), p);
+      out.position(d, expected);
+      EXPECT_LT(distance(p, expected), 1e-9) << i;
+      EXPECT_LT(distance(fit->to, expected), 1e-12) << i;
+      b.tangent(b.length(), t_b);
+      out.tangent(d, t_s);
+      EXPECT_NEAR(dot3(t_b, t_s), 1.0, 1e-9) << i;
+      b.curvature(b.length(), k_b);
+      out.curvature(d, k_s);
+      EXPECT_LT(distance(k_b, k_s), 1e-6 * (1.0 / d)) << i;
+    }
+  }
+}
+
+TEST(CurveCorner, StaysWithinToleranceAndItsCurvatureBounds) {
+  const std::vector<MotionPrimitive> prog = mixedContour(1000.0);
+  for (std::size_t i = 0; i + 1 < prog.size(); ++i) {
+    const PathSegment in = segmentOf(prog[i]), out = segmentOf(prog[i + 1]);
+    for (double tol : {0.001, 0.05, 0.5, 2.0}) {
+      const auto fit = fitCurveCorner(in, out, tol, 3);
+      ASSERT_TRUE(fit.has_value()) << i << " " << tol;
+      const CornerBlend& b = fit->curve;
+      double worst = 0.0, curvature = 0.0, rate = 0.0;
+      AxisValues p, k, k_prev{};
+      constexpr int kSamples = 4000;
+      const double ds = b.length() / kSamples;
+      for (int s = 0; s <= kSamples; ++s) {
+        b.position(s * ds, p);
+        worst = std::max(worst, std::min(toPrimitive(p, prog[i]), toPrimitive(p, prog[i + 1])));
+        b.curvature(s * ds, k);
+        curvature = std::max(curvature, std::sqrt(dot3(k, k)));
+        if (s > 0) {
+          AxisValues dk = k;
+          for (int a = 0; a < 3; ++a) dk[a] = (k[a] - k_prev[a]) / ds;
+          rate = std::max(rate, std::sqrt(dot3(dk, dk)));
+        }
+        k_prev = k;
+      }
+      EXPECT_LE(worst, tol) << i << " " << tol;
+      // The corner is really cut: more than a third of the tolerance, unless the trim is
+      // capped by half a radian of the R 5 arc (2.5 mm).
+      if (fit->trim < 2.5) {
+        EXPECT_GT(worst, 0.3 * tol) << i << " " << tol;
+      }
+      EXPECT_LE(curvature, b.maxCurvature()) << i << " " << tol;
+      // |dk/ds| is the in-plane part of the curvature rate sqrt(k'^2 + k^4) the bound covers.
+      EXPECT_LE(rate, b.maxCurvatureRate() * (1.0 + 1e-3)) << i << " " << tol;
+    }
+  }
+}
+
+TEST(CurveCorner, KeepsCornersOutsideAPlaneContour) {
+  const AxisValues o = xyz(0, 0, 0);
+  const PathSegment in = PathSegment::line(xyz(-10, 0, 0), o, 3);
+  const PathSegment arc_xy = PathSegment::arc(o, xyz(10, 0, 0), 3, 0, 1, 5, 0, false, 0);
+  // Zero tolerance, and a reversal.
+  EXPECT_FALSE(fitCurveCorner(in, arc_xy, 0.0, 3).has_value());
+  const PathSegment back = PathSegment::arc(o, xyz(0, 10, 0), 3, 0, 1, 0, 5, true, 0);
+  EXPECT_FALSE(fitCurveCorner(in, back, 0.1, 3).has_value());
+  // A helix, and a line leaving the arc's plane.
+  const PathSegment helix = PathSegment::arc(o, xyz(10, 0, 1), 3, 0, 1, 5, 0, false, 0);
+  EXPECT_FALSE(fitCurveCorner(in, helix, 0.1, 3).has_value());
+  const PathSegment climbing = PathSegment::line(xyz(-10, 0, -1), o, 3);
+  EXPECT_FALSE(fitCurveCorner(climbing, arc_xy, 0.1, 3).has_value());
+  // Arcs of two planes.
+  const PathSegment arc_xz = PathSegment::arc(xyz(-10, 0, 0), o, 3, 2, 0, 0, -5, false, 0);
+  EXPECT_FALSE(fitCurveCorner(arc_xz, arc_xy, 0.1, 3).has_value());
+  // The same corner in the plane is blended.
+  EXPECT_TRUE(fitCurveCorner(in, arc_xy, 0.1, 3).has_value());
+}
+
+TEST(CurveCorners, ArePassedMovingWithinToleranceAndLimits) {
+  MachineConfig stop = defaultMachine();
+  stop.corner_tolerance = 0.0;
+  const std::vector<MotionPrimitive> prog = mixedContour(600.0);
+  const uint64_t stop_ticks = run(stop, prog).ticks();
+  uint64_t previous = stop_ticks;
+  for (double tol : {0.1, 1.0}) {
+    MachineConfig m = defaultMachine();
+    m.corner_tolerance = tol;
+    const Trace t = run(m, prog);
+    const double dev = worstDeviation(t, prog);
+    EXPECT_LE(dev, tol * (1.0 + 1e-9)) << tol;
+    EXPECT_GT(dev, 0.3 * tol) << tol;
+    expectWithinLimits(m, t);
+    EXPECT_EQ(t.points.back(), prog.back().to);
+    // Never at rest between the start and the end, and faster with a larger tolerance.
+    for (std::size_t k = 5; k + 5 < t.ticks(); ++k) EXPECT_NE(t.points[k], t.points[k - 1]) << k;
+    EXPECT_LT(t.ticks(), previous) << tol;
+    previous = t.ticks();
+  }
+}
+
+TEST(CurveCorners, TangentArcsKeepTheirExactPath) {
+  // Line, tangent half circle, tangent line: no corner to cut, whatever the tolerance.
+  const std::vector<MotionPrimitive> prog = {
+      line(xyz(0, 0, 0), xyz(10, 0, 0), 1200.0),
+      arc(xyz(10, 0, 0), xyz(10, 10, 0), 0, 1, 10, 5, false, 1200.0),
+      line(xyz(10, 10, 0), xyz(0, 10, 0), 1200.0)};
+  MachineConfig exact = defaultMachine();
+  exact.corner_tolerance = 0.0;
+  MachineConfig loose = defaultMachine();
+  loose.corner_tolerance = 1.0;
+  const Trace a = run(exact, prog), b = run(loose, prog);
+  EXPECT_EQ(a.points, b.points);
+  EXPECT_LE(worstDeviation(b, prog), 1e-9);
+}
+
+// Random plane contours of lines and arcs (R 0.5..20 mm, 10..300 degrees) meeting at random
+// turns (a quarter tangent), some lines climbing out of the plane, feeds 100..8000 mm/min; half
+// on a machine with 10x the jerk (where far more corners are worth blending), some with a
+// 16-segment window or planning ahead.
+TEST(CurveCorners, RandomContoursKeepLimitsAndTolerance) {
+  for (uint64_t seed = 1; seed <= 12; ++seed) {
+    Random rng(seed);
+    MachineConfig m = defaultMachine();
+    m.axes[1].max_acceleration = 3000.0;
+    for (int a = 0; a < 3; ++a) m.axes[a].max_jerk *= (seed % 2 == 0 ? 10.0 : 1.0);
+    m.corner_tolerance = seed % 3 == 0 ? 0.005 : seed % 3 == 1 ? 0.05 : 0.5;
+    std::vector<MotionPrimitive> prog;
+    AxisValues p{};
+    double heading = 0.0;
+    int arcs = 0;
+    for (int i = 0; i < 40; ++i) {
+      if (rng.below(4) != 0) heading += (rng.below(2) == 0 ? 1.0 : -1.0) * rng.uniform(0.0, 175.0) * kPi / 180.0;
+      const double feed = rng.uniform(100.0, 8000.0);
+      if (rng.below(2) == 0) {
+        const double r = std::exp(rng.uniform(std::log(0.5), std::log(20.0)));
+        const double sweep = rng.uniform(10.0, 300.0) * kPi / 180.0;
+        const bool cw = rng.below(2) == 0;
+        const double side = cw ? -1.0 : 1.0;  // centre to the left for counter-clockwise
+        const double cx = p[0] - side * r * std::sin(heading), cy = p[1] + side * r * std::cos(heading);
+        const double a0 = std::atan2(p[1] - cy, p[0] - cx), a1 = a0 + side * sweep;
+        const AxisValues q = xyz(cx + r * std::cos(a1), cy + r * std::sin(a1), p[2]);
+        prog.push_back(arc(p, q, 0, 1, cx, cy, cw, feed));
+        heading += side * sweep;
+        p = q;
+        ++arcs;
+      } else {
+        const double len = std::exp(rng.uniform(std::log(0.05), std::log(20.0)));
+        const double dz = rng.below(10) == 0 ? rng.uniform(-1.0, 1.0) : 0.0;
+        const AxisValues q = xyz(p[0] + len * std::cos(heading), p[1] + len * std::sin(heading), p[2] + dz);
+        prog.push_back(line(p, q, feed));
+        p = q;
+      }
+    }
+    ASSERT_GT(arcs, 10) << seed;
+    const Trace t = run(m, prog, seed % 4 == 1 ? 16 : 1024, 50'000'000, seed % 5 == 0);
+    expectWithinLimits(m, t);
+    EXPECT_LE(worstDeviation(t, prog), m.corner_tolerance * (1.0 + 1e-9)) << "seed " << seed;
+    EXPECT_EQ(t.points.back(), prog.back().to) << "seed " << seed;
+  }
+}
+
+}  // namespace
+}  // namespace ncc::vm::motion

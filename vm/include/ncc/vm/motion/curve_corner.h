@@ -1,0 +1,37 @@
+#pragma once
+// The G64 blend of a corner where an arc meets a line or another arc (continuous_path.h).
+//
+// Both sides lose the same path length d (the trim); a CornerBlend::join() runs from the end of
+// what is left of the incoming segment to the start of what is left of the outgoing one,
+// matching position, tangent and curvature at both ends, so the path stays curvature
+// continuous. A corner between two lines has a closed form for the largest d the corner
+// tolerance allows (CornerBlend::make); here the arcs' curvature bends the blend, so d starts
+// from that closed form and shrinks until the blend, sampled, stays within the tolerance of
+// the programmed corner (with a margin for the curve between samples).
+//
+// Made for plane contours: the arcs are circles of one plane (no helix, no spiral) and the
+// lines lie in that plane. Anything else keeps its corner (nullopt).
+#include <optional>
+
+#include "ncc/machine/axes.h"
+#include "ncc/vm/motion/corner_blend.h"
+#include "ncc/vm/motion/path.h"
+
+namespace ncc::vm::motion {
+
+struct CurveCorner {
+  double trim = 0.0;       // path length taken off the end of `in` and the start of `out`
+  AxisValues from{}, to{};  // the blend's ends: in.position(in.length() - trim), out.position(trim)
+  CornerBlend curve;
+};
+
+// Share of the corner tolerance the sampled blend may use.
+inline constexpr double kCurveCornerToleranceShare = 0.97;
+
+// The blend of the corner between the end of `in` and the start of `out` (lines or arcs, at
+// least one an arc), within `tolerance` of them, trimming at most half of either and at most
+// half a radian of an arc. nullopt when the corner cannot be blended that way.
+std::optional<CurveCorner> fitCurveCorner(const PathSegment& in, const PathSegment& out,
+                                          double tolerance, int axis_count);
+
+}  // namespace ncc::vm::motion

@@ -1,0 +1,107 @@
+#include "ncc/vm/motion/curve_corner.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace ncc::vm::motion {
+namespace {
+
+// Deviation samples along the blend, and attempts at a smaller trim.
+constexpr int kDeviationSamples = 64;
+constexpr int kAttempts = 12;
+constexpr double kFirstTrimScale = 1.5;
+
+// The plane of the corner (the arc's, or both arcs'), when both segments lie in it.
+struct Plane {
+  int a1 = 0, a2 = 1;
+};
+
+bool liesIn(const PathSegment& seg, const Plane& plane, int axis_count) {
+  if (seg.shape() == PathSegment::Shape::Arc) {
+    const bool same_axes = (seg.planeAxis1() == plane.a1 && seg.planeAxis2() == plane.a2) ||
+                           (seg.planeAxis1() == plane.a2 && seg.planeAxis2() == plane.a1);
+    return seg.isPlaneCircle() && same_axes;
+  }
+  if (seg.shape() != PathSegment::Shape::Line) return false;
+  for (int i = 0; i < axis_count; ++i)
+    if (i != plane.a1 && i != plane.a2 && seg.from()[i] != seg.to()[i]) return false;
+  return true;
+}
+
+// The segment's end state at path length s in the plane's coordinates (origin `corner`).
+CornerBlend::PlaneEnd planeEnd(const PathSegment& seg, double s, const AxisValues& corner,
+                               const Plane& plane) {
+  AxisValues p, t, k;
+  seg.position(s, p);
+  seg.tangent(s, t);
+  seg.curvature(s, k);
+  CornerBlend::PlaneEnd e;
+  e.x = p[plane.a1] - corner[plane.a1];
+  e.y = p[plane.a2] - corner[plane.a2];
+  e.tx = t[plane.a1];
+  e.ty = t[plane.a2];
+  e.curvature = e.tx * k[plane.a2] - e.ty * k[plane.a1];
+  return e;
+}
+
+// Largest trim the side may give: half of it, and half a radian of an arc (beyond, the
+// blend would replace a good part of the arc's turn).
+double trimLimit(const PathSegment& seg) {
+  const double half = 0.5 * seg.length();
+  return seg.shape() == PathSegment::Shape::Arc ? std::min(half, 0.5 * seg.radius()) : half;
+}
+
+}  // namespace
+
+std::optional<CurveCorner> fitCurveCorner(const PathSegment& in, const PathSegment& out,
+                                          double tolerance, int axis_count) {
+  if (!(tolerance > 0.0)) return std::nullopt;
+  const PathSegment& arc = in.shape() == PathSegment::Shape::Arc ? in : out;
+  if (arc.shape() != PathSegment::Shape::Arc) return std::nullopt;
+  const Plane plane{arc.planeAxis1(), arc.planeAxis2()};
+  if (!liesIn(in, plane, axis_count) || !liesIn(out, plane, axis_count)) return std::nullopt;
+
+  AxisValues t_in, t_out;
+  in.tangent(in.length(), t_in);
+  out.tangent(0.0, t_out);
+  const double cos_t = t_in[plane.a1] * t_out[plane.a1] + t_in[plane.a2] * t_out[plane.a2];
+  const double sin_t = std::abs(t_in[plane.a1] * t_out[plane.a2] - t_in[plane.a2] * t_out[plane.a1]);
+  const double theta = std::atan2(sin_t, cos_t);
+  if (!(theta > 0.0) || theta > CornerBlend::kMaxTurn) return std::nullopt;
+
+  const AxisValues& corner = in.to();
+  AxisValues e1{}, e2{};
+  e1[plane.a1] = 1.0;
+  e2[plane.a2] = 1.0;
+  // Start above the two-line blend's trim for this turn (an arc bending towards the corner's
+  // inside lets the blend come closer to it; one bending away costs attempts), within each
+  // side's share.
+  double d = std::min({kFirstTrimScale * tolerance /
+                           (CornerBlend::kDeviationFactor * std::sin(0.5 * theta)),
+                       trimLimit(in), trimLimit(out)});
+  for (int attempt = 0; attempt < kAttempts && d > 0.0; ++attempt) {
+    CurveCorner c;
+    c.trim = d;
+    in.position(in.length() - d, c.from);
+    out.position(d, c.to);
+    const CornerBlend::PlaneEnd start = planeEnd(in, in.length() - d, corner, plane);
+    const CornerBlend::PlaneEnd end = planeEnd(out, d, corner, plane);
+    c.curve = CornerBlend::join(corner, e1, e2, start, end, 0.4 * d, 0.4 * d, axis_count);
+    // The programmed path the blend replaces, and the blend's largest distance from it.
+    const PathSegment in_part = in.part(in.length() - d, in.length());
+    const PathSegment out_part = out.part(0.0, d);
+    double worst = std::isfinite(c.curve.maxCurvatureRate()) ? 0.0 : tolerance * 1e3;
+    AxisValues q;
+    for (int k = 1; k < kDeviationSamples && worst <= tolerance; ++k) {
+      c.curve.position(c.curve.length() * k / kDeviationSamples, q);
+      worst = std::max(worst, std::min(in_part.distanceTo(q), out_part.distanceTo(q)));
+    }
+    const double allowed = kCurveCornerToleranceShare * tolerance;
+    if (worst <= allowed) return c;
+    // The deviation grows about in proportion to the trim.
+    d *= std::clamp(0.95 * allowed / worst, 0.25, 0.95);
+  }
+  return std::nullopt;
+}
+
+}  // namespace ncc::vm::motion
