@@ -27,15 +27,18 @@ SimulationResult simulate(const bytecode::Program& program, const MachineConfig&
   uint64_t written = 0;  // ticks in the trace so far
   vm::TickStatus status;
   // The knob turns and feed holds due by the next tick's time (ticks_taken * T), in order.
-  std::size_t next_turn = 0, next_hold = 0;
+  std::size_t next_turn = 0, next_rapid_turn = 0, next_hold = 0;
   bool holding = false;
   uint64_t ticks_taken = 0;
   const std::vector<FeedOverrideTurn>& turns = settings.feed_override_turns;
+  const std::vector<RapidOverrideTurn>& rapid_turns = settings.rapid_override_turns;
   const std::vector<FeedHoldSpan>& holds = settings.feed_holds;
   for (;;) {
     const double now = static_cast<double>(ticks_taken++) * controller->cycleSeconds();
     while (next_turn < turns.size() && turns[next_turn].seconds <= now)
       controller->setFeedOverride(turns[next_turn++].feed);
+    while (next_rapid_turn < rapid_turns.size() && rapid_turns[next_rapid_turn].seconds <= now)
+      controller->setRapidOverride(rapid_turns[next_rapid_turn++].rapid);
     while (next_hold < holds.size()) {
       const FeedHoldSpan& hold = holds[next_hold];
       if (!holding && hold.seconds <= now) {

@@ -214,6 +214,35 @@ class CliTest(unittest.TestCase):
             self.assertIn("--feed-override-at '%s'" % bad, proc.stderr)
             self.assertFalse(os.path.exists(out), bad)
 
+    def test_run_rapid_override_turned_during_the_run(self):
+        # A linear G00 X2000 at 500 mm/s (path a 2000 mm/s2, j 45000 mm/s3): 4.294 s. Turned
+        # to 25 % at 1 s, it brakes 500 -> 125 mm/s (0.232 s, 72.5 mm) and runs the rest at
+        # 125 mm/s: 1 + 0.232 + 1494.4 / 125 + 0.107 (the stop) = 13.294 s, 9.0 s longer.
+        # Turned back at 2 s, the second in between covers about 125 mm instead of 500: 0.75 s
+        # longer. A non-linear G00 under way finishes at its speed. Bad values are usage
+        # errors naming them.
+        prog = self.write("rapid2000.nc", "G21 G90 G17\nG00 X2000.\nM30\n")
+        linear = self.write("linear.toml", '[machine.params]\nrapid_type = "linear"\n')
+        per_axis = self.write("per_axis.toml", '[machine.params]\nrapid_type = "per_axis"\n')
+
+        def seconds(machine, *extra):
+            proc = ncc("run", prog, "--machine", machine, *extra)
+            self.assertEqual(proc.returncode, 0, proc.stderr)
+            self.assertIn("final position     X2000.0", proc.stdout)
+            return float(re.search(r"program time +(\d+\.\d+) s", proc.stdout).group(1))
+
+        full = seconds(linear)
+        slowed = seconds(linear, "--rapid-override-at", "1=25")
+        self.assertAlmostEqual(full, 4.294, delta=0.002)
+        self.assertAlmostEqual(slowed - full, 9.0, delta=0.003)
+        back = seconds(linear, "--rapid-override-at", "2=100", "--rapid-override-at", "1=25")
+        self.assertAlmostEqual(back - full, 0.75, delta=0.05)
+        self.assertEqual(seconds(per_axis, "--rapid-override-at", "1=25"), seconds(per_axis))
+        for bad in ("1", "1=0", "1=150", "x=50", "-1=50", "1=0x32"):
+            proc = ncc("run", prog, "--rapid-override-at", bad)
+            self.assertEqual(proc.returncode, 2, bad)
+            self.assertIn("--rapid-override-at '%s'" % bad, proc.stderr)
+
     def test_run_feed_hold_during_the_run(self):
         # Held at 1 s for 2 s, and at 5 s (after the end) for 1 s: the long line stops on its
         # path, goes on, and the run takes 2 s longer; overlapping or malformed holds are usage

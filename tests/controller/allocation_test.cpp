@@ -48,9 +48,9 @@ TEST(ControllerAllocation, TickAllocatesNothing) {
 }
 
 // The operator turns the feed override knob every 50 ticks (Controller::setFeedOverride, a
-// re-plan of the whole window) and holds the feed for 300 of every 700 ticks: nothing
-// allocates either.
-TEST(ControllerAllocation, FeedOverrideAndFeedHoldAllocateNothing) {
+// re-plan of the whole window), the rapid override every 70, and holds the feed for 300 of
+// every 700 ticks: nothing allocates either.
+TEST(ControllerAllocation, OverridesAndFeedHoldAllocateNothing) {
   const MachineConfig m = defaultMachine();
   vm::ControllerOptions options;
   options.window_capacity = 256;
@@ -61,6 +61,7 @@ TEST(ControllerAllocation, FeedOverrideAndFeedHoldAllocateNothing) {
   uint64_t ticks = 0;
   for (;;) {
     if (ticks % 50 == 0) ctl->setFeedOverride(0.2 + 0.1 * static_cast<double>((ticks / 50) % 13));
+    if (ticks % 70 == 0) ctl->setRapidOverride(0.1 + 0.1 * static_cast<double>((ticks / 70) % 10));
     if (ticks % 700 == 0) ctl->setFeedHold(true);
     if (ticks % 700 == 300) ctl->setFeedHold(false);
     if (ctl->tick(out) != vm::TickStatus::Running) break;

@@ -181,6 +181,34 @@ TEST(Controller, FeedOverrideTurnedDuringTheRun) {
   EXPECT_DOUBLE_EQ(capped->feedOverride(), 1.0);
 }
 
+TEST(Controller, RapidOverrideTurnedDuringTheRun) {
+  // A linear G00 X2000 on the default machine (500 mm/s): turned to 30 % at 1 s and back to
+  // 100 % at 3 s, the path speed follows; the knob reads back what was requested (clamped to
+  // 100 %), and the run ends on X2000 without a limit violation.
+  const MachineConfig m = defaultMachine();
+  bytecode::Assembler a = assemblerFor(m);
+  a.rapid(xyz(2000, 0, 0)).op(bytecode::Opcode::End);
+  const bytecode::Program prog = a.finish();
+  bytecode::Error error;
+  std::unique_ptr<vm::Controller> ctl = vm::Controller::create(prog, m, error);
+  ASSERT_TRUE(ctl) << error.message;
+  std::vector<TickOutput> ticks;
+  TickOutput out;
+  for (uint64_t k = 0;; ++k) {
+    if (k == 1000) ctl->setRapidOverride(0.3);
+    if (k == 3000) ctl->setRapidOverride(1.7);
+    if (ctl->tick(out) != TickStatus::Running) break;
+    ticks.push_back(out);
+  }
+  ASSERT_GT(ticks.size(), 3500u);
+  EXPECT_NEAR(ticks[900].path_velocity, 500.0, 1e-9);
+  EXPECT_NEAR(ticks[2900].path_velocity, 150.0, 1e-9);
+  EXPECT_NEAR(ticks[3400].path_velocity, 500.0, 1e-9);
+  EXPECT_DOUBLE_EQ(ctl->rapidOverride(), 1.0);
+  EXPECT_EQ(ticks.back().commanded, xyz(2000, 0, 0));
+  EXPECT_EQ(ctl->statistics().limit_violations, 0);
+}
+
 TEST(Controller, FeedHoldStopsThePathUntilReleased) {
   // G01 X300 at F6000, held at 1 s and released at 2.5 s: the path stands on the line
   // meanwhile (Running, zero speed, the same setpoint), the run takes 1.5 s longer and ends
@@ -213,7 +241,7 @@ TEST(Controller, FeedHoldStopsThePathUntilReleased) {
 }
 
 TEST(Controller, OperatorRequestsGiveTheSameTraceInBothLoops) {
-  // Feed override turns and feed holds take effect at the next prepare(), whenever they were
+  // Feed and rapid override turns and feed holds take effect at the next prepare(), whenever they were
   // requested since the one before. The simple loop requests before tick k (whose prepare()
   // applies it); the real-time loop requests the same right after the prepare() that
   // precedes tick k - 1, a whole tick earlier and after that prepare() pulled its events.
@@ -221,12 +249,16 @@ TEST(Controller, OperatorRequestsGiveTheSameTraceInBothLoops) {
   // once would re-plan a different queue; latched, both loops give the same trace bit for bit.
   MachineConfig m = defaultMachine();
   bytecode::Assembler a = assemblerFor(m);
-  for (int i = 1; i <= 600; ++i)
-    a.line(xyz(0.05 * i, 2.0 * std::sin(0.02 * i), 0), i % 200 < 100 ? 6000.0 : 3000.0);
+  for (int i = 1; i <= 600; ++i) {
+    const AxisValues p = xyz(0.05 * i, 2.0 * std::sin(0.02 * i), 0);
+    if (i % 150 == 0) a.rapid(xyz(p[0], p[1], 40)).rapid(xyz(p[0] + 30, p[1], 40)).rapid(p);
+    a.line(p, i % 200 < 100 ? 6000.0 : 3000.0);
+  }
   a.op(bytecode::Opcode::End);
   const bytecode::Program prog = a.finish();
   auto request = [](vm::Controller& ctl, uint64_t k) {
     if (k % 37 == 0) ctl.setFeedOverride(0.1 + 0.07 * static_cast<double>(k % 13));
+    if (k % 53 == 0) ctl.setRapidOverride(0.2 + 0.1 * static_cast<double>(k % 9));
     if (k % 400 == 150) ctl.setFeedHold(true);
     if (k % 400 == 260) ctl.setFeedHold(false);
   };

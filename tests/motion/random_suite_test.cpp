@@ -255,6 +255,39 @@ TEST(RandomSuite, LiveFeedOverrideKeepsEveryLimit) {
               static_cast<unsigned long long>(kSeeds));
 }
 
+// The operator turns the rapid override at seeded random ticks (from a start of 100 % or
+// 25 %): every sampled limit holds, every stop lands, planning ahead changes no setpoint.
+TEST(RandomSuite, LiveRapidOverrideKeepsEveryLimit) {
+  const MachineConfig m = testMachine();
+  Worst overall;
+  int changed = 0;
+  constexpr uint64_t kSeeds = 12;
+  for (uint64_t seed = 1; seed <= kSeeds; ++seed) {
+    Generator gen(200 + seed);
+    const std::vector<MotionPrimitive> prog = gen.program(30);
+    const int every = seed % 3 == 0 ? 15 : 120;
+    const std::size_t window = seed % 4 == 0 ? 48 : 1024;
+    auto knob = [seed, every](uint64_t k, vm::motion::MotionPlanner& planner) {
+      Random r(seed * 1000003 + k);
+      if (r.below(every) == 0) planner.setRapidOverride(r.uniform(0.05, 1.0));
+    };
+    const double start = seed % 2 == 0 ? 0.25 : 1.0;
+    auto setup = [start](vm::motion::MotionPlanner& planner) { planner.setOverrides(1.0, start); };
+    const Trace t = run(m, prog, window, 50'000'000, false, knob, setup);
+    const Trace ahead = run(m, prog, window, 50'000'000, true, knob, setup);
+    ASSERT_GT(t.ticks(), 0u);
+    EXPECT_EQ(fnv1a(t, 3), fnv1a(ahead, 3)) << "seed " << seed;
+    expectLimitsAndExactEnds(m, prog, t, seed, overall);
+    if (t.ticks() != run(m, prog, window).ticks()) ++changed;
+  }
+  // Most programs have rapids: the knob changes their time.
+  EXPECT_GE(changed, static_cast<int>(kSeeds) / 2);
+  std::printf("live rapid override: worst ratio to axis limit: v %.9f a %.9f j %.9f; %d of %llu "
+              "runs changed\n",
+              overall.velocity, overall.acceleration, overall.jerk, changed,
+              static_cast<unsigned long long>(kSeeds));
+}
+
 // The operator presses and releases feed hold at seeded random ticks (and turns the feed
 // override): the path brakes to rest on its path and goes on, every sampled limit holds, every
 // stop lands, planning ahead changes no setpoint, and the program ends where it should. (While

@@ -33,6 +33,7 @@ struct RunArgs {
   double feed_override = 100.0;   // %
   double rapid_override = 100.0;  // %
   std::vector<std::string> feed_override_at;  // "SECONDS=PERCENT", as given
+  std::vector<std::string> rapid_override_at;  // "SECONDS=PERCENT", as given
   std::vector<std::string> feed_hold_at;      // "SECONDS=DURATION", as given
 };
 
@@ -58,15 +59,19 @@ void sortBySeconds(std::vector<Event>& events) {
                    [](const Event& a, const Event& b) { return a.seconds < b.seconds; });
 }
 
-// --feed-override-at SECONDS=PERCENT: the turns of the feed override knob, in time order.
-// False with a message on stderr for a malformed or out-of-range value.
-bool parseFeedOverrideTurns(const std::vector<std::string>& given,
-                            std::vector<driver::FeedOverrideTurn>& turns) {
+// --feed-override-at / --rapid-override-at SECONDS=PERCENT: the turns of an override, in
+// time order, PERCENT in 1..`max_percent`. False with a message on stderr for a malformed or
+// out-of-range value.
+template <class Turn>
+bool parseOverrideTurns(const char* option, double max_percent,
+                        const std::vector<std::string>& given, std::vector<Turn>& turns) {
   for (const std::string& text : given) {
     double seconds = 0.0, percent = 0.0;
-    if (!parsePair(text, seconds, percent) || seconds < 0.0 || !(percent >= 1.0 && percent <= 200.0)) {
-      std::cerr << "ncc: error: --feed-override-at '" << text
-                << "': expected SECONDS=PERCENT with SECONDS >= 0 and PERCENT in 1..200\n";
+    if (!parsePair(text, seconds, percent) || seconds < 0.0 ||
+        !(percent >= 1.0 && percent <= max_percent)) {
+      std::cerr << "ncc: error: " << option << " '" << text
+                << "': expected SECONDS=PERCENT with SECONDS >= 0 and PERCENT in 1.." << max_percent
+                << "\n";
       return false;
     }
     turns.push_back({seconds, percent / 100.0});
@@ -170,7 +175,10 @@ int runSimulation(driver::Session& session, const bytecode::Program& program, co
   options.max_steps = args.max_steps;
   options.feed_override = args.feed_override / 100.0;
   options.rapid_override = args.rapid_override / 100.0;
-  if (!parseFeedOverrideTurns(args.feed_override_at, options.feed_override_turns) ||
+  if (!parseOverrideTurns("--feed-override-at", 200.0, args.feed_override_at,
+                          options.feed_override_turns) ||
+      !parseOverrideTurns("--rapid-override-at", 100.0, args.rapid_override_at,
+                          options.rapid_override_turns) ||
       !parseFeedHolds(args.feed_hold_at, options.feed_holds))
     return kUsage;
   driver::SimulationResult sim = driver::simulate(program, session.machine(), trace.get(), options);
@@ -270,13 +278,16 @@ void addRunCommand(CLI::App& app, int& exit_code) {
       ->check(CLI::Range(1.0, 200.0))
       ->capture_default_str();
   cmd->add_option("--rapid-override", args->rapid_override,
-                  "rapid override for the simulated run, % of the axes' rapid speeds (static)")
+                  "rapid override at the start of the simulated run, % of the axes' rapid speeds")
       ->check(CLI::Range(1.0, 100.0))
       ->capture_default_str();
   cmd->add_option("--feed-override-at", args->feed_override_at,
                   "SECONDS=PERCENT: the operator turns the feed override to PERCENT (1..200) at "
                   "that time of the simulated run (repeatable); moves are planned for the "
                   "highest feed override of the run");
+  cmd->add_option("--rapid-override-at", args->rapid_override_at,
+                  "SECONDS=PERCENT: the operator turns the rapid override to PERCENT (1..100) at "
+                  "that time of the simulated run (repeatable)");
   cmd->add_option("--feed-hold-at", args->feed_hold_at,
                   "SECONDS=DURATION: the operator holds the feed at that time of the simulated "
                   "run and releases it DURATION seconds later (repeatable): the path brakes to "

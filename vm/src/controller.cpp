@@ -95,8 +95,10 @@ void Controller::prepare() noexcept {
   // the same ticks re-plan the same queue in either loop.
   if (pending_feed_hold_) planner_.setFeedHold(*pending_feed_hold_);
   if (pending_feed_override_) planner_.setFeedOverride(*pending_feed_override_);
+  if (pending_rapid_override_) planner_.setRapidOverride(*pending_rapid_override_);
   pending_feed_hold_.reset();
   pending_feed_override_.reset();
+  pending_rapid_override_.reset();
   pullEvents();
   planner_.planAhead();
 }

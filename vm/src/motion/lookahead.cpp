@@ -80,21 +80,26 @@ void LookAhead::stopAfterLast() {
   ++version_;
 }
 
-double LookAhead::velocity(std::size_t i) const { return velocityWith(i, feed_scale_, held_); }
+double LookAhead::velocity(std::size_t i) const { return velocityWith(i, scales_); }
 
-double LookAhead::velocityWith(std::size_t i, double scale, bool held) const {
+double LookAhead::velocityWith(std::size_t i, const SpeedScales& scales) const {
   const Run& run = runAt(i);
   // Feed hold stops everything but a G63 tap, which must not stop mid-thread while the
   // spindle turns (Mazak G63: no feed hold; Siemens ISO G63: a block stop); the hold acts
   // after it.
-  if (held && !isTap(run)) return 0.0;
-  if (scale == 1.0) return run.limits.velocity;
-  return std::max(std::min(run.limits.velocity, run.feed_limit * scale), kMinPathVelocity);
+  if (scales.held && !isTap(run)) return 0.0;
+  if (run.kind == MotionPrimitive::Kind::Rapid) {
+    // A rapid's limits are a line's: only its speed depends on the rapid override.
+    if (scales.rapid == 1.0) return run.limits.velocity;
+    return std::max(run.limits.velocity * scales.rapid, kMinPathVelocity);
+  }
+  if (scales.feed == 1.0) return run.limits.velocity;
+  return std::max(std::min(run.limits.velocity, run.feed_limit * scales.feed), kMinPathVelocity);
 }
 
 double LookAhead::entryLimit(std::size_t i) const {
   const Run& run = runAt(i);
-  if (feed_scale_ == 1.0 && !held_) return run.entry_limit;
+  if (scales_ == SpeedScales{}) return run.entry_limit;
   double limit = std::min(run.entry_limit, velocity(i));
   if (i > 0) limit = std::min(limit, velocity(i - 1));
   return limit;
@@ -116,13 +121,8 @@ void LookAhead::backwardPass(bool full) {
   }
 }
 
-void LookAhead::setFeedScale(double scale, const Commitment& committed) {
-  feed_scale_ = scale;
-  replan(committed);
-}
-
-void LookAhead::setHold(bool held, const Commitment& committed) {
-  held_ = held;
+void LookAhead::setScales(const SpeedScales& scales, const Commitment& committed) {
+  scales_ = scales;
   replan(committed);
 }
 

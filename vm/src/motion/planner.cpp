@@ -39,27 +39,45 @@ void MotionPlanner::setOverrides(double feed, double rapid, double max_feed) {
   const double top =
       std::isfinite(max_feed) ? std::clamp(max_feed, kMinFeedOverride, kMaxFeedOverride) : live;
   feed_override_ = std::max(live, top);
-  queue_.setFeedScale(live / feed_override_, commitFor(live / feed_override_, queue_.held()));
-  const double r = std::isfinite(rapid) ? std::clamp(rapid, 1e-3, 1.0) : 1.0;
-  for (int i = 0; i < limits_.count; ++i) rapid_limits_.rapid_velocity[i] = r * limits_.rapid_velocity[i];
-  interpolator_.rapidLimitsChanged();
+  SpeedScales scales = queue_.scales();
+  scales.feed = live / feed_override_;
+  scales.rapid = std::isfinite(rapid) ? rapidOverrideWithin(rapid) : 1.0;
+  changeScales(scales);
 }
 
 void MotionPlanner::setFeedOverride(double feed) {
   if (!std::isfinite(feed)) return;
-  const double scale = feedOverrideWithin(feed) / feed_override_;
-  if (scale == queue_.feedScale()) return;
-  queue_.setFeedScale(scale, commitFor(scale, queue_.held()));
+  SpeedScales scales = queue_.scales();
+  scales.feed = feedOverrideWithin(feed) / feed_override_;
+  changeScales(scales);
 }
 
-Commitment MotionPlanner::commitFor(double scale, bool held) {
-  if (queue_.empty()) return interpolator_.commitForReplan(queue_, 0.0, 0.0);
-  return interpolator_.commitForReplan(queue_, queue_.velocity(0), queue_.velocityWith(0, scale, held));
+void MotionPlanner::setRapidOverride(double rapid) {
+  if (!std::isfinite(rapid)) return;
+  SpeedScales scales = queue_.scales();
+  scales.rapid = rapidOverrideWithin(rapid);
+  changeScales(scales);
 }
 
 void MotionPlanner::setFeedHold(bool held) {
-  if (held == queue_.held()) return;
-  queue_.setHold(held, commitFor(queue_.feedScale(), held));
+  SpeedScales scales = queue_.scales();
+  scales.held = held;
+  changeScales(scales);
+}
+
+void MotionPlanner::changeScales(const SpeedScales& scales) {
+  if (scales.rapid != queue_.scales().rapid) {
+    for (int i = 0; i < limits_.count; ++i)
+      rapid_limits_.rapid_velocity[i] = scales.rapid * limits_.rapid_velocity[i];
+    interpolator_.rapidLimitsChanged();
+  }
+  if (scales == queue_.scales()) return;
+  queue_.setScales(scales, commitFor(scales));
+}
+
+Commitment MotionPlanner::commitFor(const SpeedScales& scales) {
+  if (queue_.empty()) return interpolator_.commitForReplan(queue_, 0.0, 0.0);
+  return interpolator_.commitForReplan(queue_, queue_.velocity(0), queue_.velocityWith(0, scales));
 }
 
 bool MotionPlanner::push(const MotionPrimitive& m) {
@@ -116,14 +134,14 @@ bool MotionPlanner::push(const MotionPrimitive& m) {
     if (m.exact_stop) stop();
     return true;
   }
-  if (rapid && m.per_axis && AxisRapid::possible(m.from, m.to, rapid_limits_)) {
+  if (rapid && m.per_axis && AxisRapid::possible(m.from, m.to, limits_)) {
     // Non-linear positioning: its own piece, from rest to rest (interpolator.h).
     seg.per_axis = true;
     queue_.stopAfterLast();
-    queue_.push(seg, m.kind, segmentLimits(seg.path, rapid_limits_, true, feed), 0.0, true, 0.0);
+    queue_.push(seg, m.kind, segmentLimits(seg.path, limits_, true, feed), 0.0, true, 0.0);
     return true;
   }
-  SegmentLimits limits = segmentLimits(seg.path, rapid ? rapid_limits_ : limits_, rapid, feed);
+  SegmentLimits limits = segmentLimits(seg.path, limits_, rapid, feed);
   limits.velocity = std::max(limits.velocity, kMinPathVelocity);
   const QueuedSegment* prev = queue_.lastSegment();
   const double vertex = prev != nullptr ? junctionVelocity(prev->path, seg.path, limits_) : 0.0;

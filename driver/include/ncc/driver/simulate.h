@@ -28,6 +28,13 @@ struct FeedOverrideTurn {
   double feed = 1.0;
 };
 
+// The operator turns the rapid override to `rapid` (fraction) at `seconds` into the run:
+// applied before the first tick at or after that time.
+struct RapidOverrideTurn {
+  double seconds = 0.0;
+  double rapid = 1.0;
+};
+
 // The operator holds the feed (feed hold) at `seconds` into the run and releases it
 // `duration` seconds later.
 struct FeedHoldSpan {
@@ -43,6 +50,8 @@ struct SimulationOptions {
   // Turns of the feed override during the run, in time order. Moves are planned for the
   // highest feed override of the run (vm::ControllerOptions::max_feed_override).
   std::vector<FeedOverrideTurn> feed_override_turns;
+  // Turns of the rapid override during the run, in time order.
+  std::vector<RapidOverrideTurn> rapid_override_turns;
   // Feed holds, in time order, not overlapping.
   std::vector<FeedHoldSpan> feed_holds;
 };

@@ -73,6 +73,7 @@ struct ControllerOptions {
   // Operator overrides at the start of the run (MotionPlanner::setOverrides): feed 0..2
   // (200 %), rapid 0..1. `max_feed_override` (0: `feed_override`) is the highest the feed
   // override may be turned to during the run (setFeedOverride); moves are planned for it.
+  // The rapid override may be turned anywhere in 0..1 (setRapidOverride).
   double feed_override = 1.0;
   double rapid_override = 1.0;
   double max_feed_override = 0.0;
@@ -132,6 +133,17 @@ class Controller {
     if (std::isfinite(feed)) pending_feed_override_ = feed;
   }
   double feedOverride() const;
+  // The operator turns the rapid override (fraction, clamped to [0.001, 1]), likewise from
+  // the next prepare(): linear rapids change speed from the next tick on; a non-linear G00
+  // under way finishes at its speed (MotionPlanner::setRapidOverride). Reads back the value
+  // requested.
+  void setRapidOverride(double rapid) noexcept {
+    if (std::isfinite(rapid)) pending_rapid_override_ = rapid;
+  }
+  double rapidOverride() const {
+    return pending_rapid_override_ ? motion::MotionPlanner::rapidOverrideWithin(*pending_rapid_override_)
+                                   : planner_.rapidOverride();
+  }
   // Feed hold (the operator's button), likewise from the next prepare(): the path brakes to
   // rest along the programmed path within every limit and stands there until released
   // (MotionPlanner::setFeedHold). The run goes on ticking (Running) meanwhile.
@@ -171,6 +183,7 @@ class Controller {
   motion::MotionPlanner planner_;
   // Operator requests since the last prepare(), applied there before the events are pulled.
   std::optional<double> pending_feed_override_;
+  std::optional<double> pending_rapid_override_;
   std::optional<bool> pending_feed_hold_;
   ServoModel servo_;
   StatisticsAccumulator stats_;

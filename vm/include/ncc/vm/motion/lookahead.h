@@ -18,8 +18,9 @@
 // velocity (see Interpolator). Two fixed-capacity rings hold segments and runs, allocated in
 // the constructor; nothing allocates or throws afterwards.
 //
-// Live feed override (setFeedScale): every run's speed limit is its planned limit, at most
-// its programmed feed times the scale. Feed hold (setHold): every speed limit is 0. A change
+// The operator's live controls (setScales): under the feed override every run's speed limit
+// is its planned limit, at most its programmed feed times the feed scale; a rapid run's is its
+// planned limit times the rapid scale; under feed hold every speed limit is 0. A change
 // re-plans the whole window; entries may fall, but never below what the motion already under
 // way can brake to (entry floors).
 #include <cstddef>
@@ -32,6 +33,14 @@
 #include "ncc/vm/motion/path.h"
 
 namespace ncc::vm::motion {
+
+// The operator's live controls as factors on the planned speed limits.
+struct SpeedScales {
+  double feed = 1.0;   // on each run's feed_limit: the live feed override over the planned one
+  double rapid = 1.0;  // on each rapid run's limit: the live rapid override over the planned one
+  bool held = false;   // feed hold: every speed limit 0 (a G63 tap's apart)
+  bool operator==(const SpeedScales&) const = default;
+};
 
 struct QueuedSegment {
   PathSegment path;
@@ -54,9 +63,9 @@ struct Run {
   double entry_planned = 0.0;  // backward pass result
   bool stop_after = false;     // ends at rest whatever follows (G09/G61, M00, dwell...)
   double feed_limit = std::numeric_limits<double>::infinity();  // lowest of its segments'
-  // Lowest entry the motion under way can brake to (set by setFeedScale, 0 otherwise).
+  // Lowest entry the motion under way can brake to (set by setScales, 0 otherwise).
   double entry_floor = 0.0;
-  double entry_before = 0.0;  // entry_planned before the last setFeedScale
+  double entry_before = 0.0;  // entry_planned before the last setScales
 };
 
 // Where the motion under way is committed to when the speed limits change: at run offset
@@ -91,21 +100,20 @@ class LookAhead {
   MotionPrimitive::Kind lastKind() const { return runAt(run_count_ - 1).kind; }
   bool lastStops() const { return runAt(run_count_ - 1).stop_after; }
   const SegmentLimits& lastLimits() const { return runAt(run_count_ - 1).limits; }
-  // Run i's speed limit under the live feed override and feed hold (its planned limit when the
-  // scale is 1 and nothing is held); velocityWith: under the given ones.
+  // Run i's speed limit under the live scales (its planned limit under SpeedScales{});
+  // velocityWith: under the given ones.
   double velocity(std::size_t i) const;
-  double velocityWith(std::size_t i, double scale, bool held) const;
-  // A live feed override, as a factor on every run's feed_limit (1: as planned). Re-plans the
-  // whole window from `committed` on: each later junction gets a floor, the lowest velocity
-  // braking as hard as the limits allow reaches from there (all of them at most what the
-  // previous plan had, so every geometric and junction limit still holds). O(queued runs).
-  void setFeedScale(double scale, const Commitment& committed);
-  double feedScale() const { return feed_scale_; }
-  // Feed hold: while held every run's speed limit is 0 (a G63 tap's apart), so the path
-  // brakes to rest as the limits allow (through as many runs as that takes) and stays there;
-  // released, the window is planned as before. Re-plans like setFeedScale.
-  void setHold(bool held, const Commitment& committed);
-  bool held() const { return held_; }
+  double velocityWith(std::size_t i, const SpeedScales& scales) const;
+  // The operator's live controls. Re-plans the whole window from `committed` on: each later
+  // junction gets a floor, the lowest velocity braking as hard as the limits allow reaches
+  // from there (all of them at most what the previous plan had, so every geometric and
+  // junction limit still holds). O(queued runs). Under feed hold the path brakes to rest as
+  // the limits allow (through as many runs as that takes) and stays there; released, the
+  // window is planned as before.
+  void setScales(const SpeedScales& scales, const Commitment& committed);
+  const SpeedScales& scales() const { return scales_; }
+  double feedScale() const { return scales_.feed; }
+  bool held() const { return scales_.held; }
 
   Run& frontRun() { return runAt(0); }
   QueuedSegment& frontSegment() { return segmentAt(0); }
@@ -143,11 +151,12 @@ class LookAhead {
   Run& runAt(std::size_t i) { return runs_[(run_head_ + i) % runs_.size()]; }
   const Run& runAt(std::size_t i) const { return runs_[(run_head_ + i) % runs_.size()]; }
   // After a change of the speed limits: the whole window again, with entry floors from
-  // `committed` on (setFeedScale).
+  // `committed` on (setScales).
   void replan(const Commitment& committed);
   // `full`: every run, not only up to the first unchanged entry.
   void backwardPass(bool full = false);
-  // Run i's junction limit under the feed scale: also at most its and the previous run's speed.
+  // Run i's junction limit under the live scales: also at most its and the previous run's
+  // speed.
   double entryLimit(std::size_t i) const;
 
   std::vector<QueuedSegment> segments_;
@@ -160,8 +169,7 @@ class LookAhead {
   uint64_t version_ = 0;
   double window_length_ = 0.0;
   double queued_length_ = 0.0;  // lengths of the segments behind the front one
-  double feed_scale_ = 1.0;
-  bool held_ = false;
+  SpeedScales scales_;
 };
 
 }  // namespace ncc::vm::motion

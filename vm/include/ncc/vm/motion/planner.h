@@ -16,8 +16,8 @@
 // G64 (continuous_path.h): feed lines are held back one primitive so that their end vertex
 // can be blended within the corner tolerance or passed as part of a smooth chain.
 //
-// Overrides (docs/planner.md, "Overrides"): the feed override may be turned during the run
-// (setFeedOverride); the rapid override is set before it.
+// Overrides (docs/planner.md, "Overrides and feed hold"): the feed and rapid overrides may be
+// turned during the run (setFeedOverride, setRapidOverride).
 #include <algorithm>
 #include <cstddef>
 #include <cstdint>
@@ -70,6 +70,16 @@ class MotionPlanner {
   double feedOverrideWithin(double feed) const {
     return std::clamp(feed, kMinFeedOverride, feed_override_);
   }
+  // The operator turns the rapid override during the run, between ticks (fraction, clamped
+  // to [0.1 %, 100 %]). Rapids are planned at 100 % and the override scales their speed limit
+  // only (their acceleration and jerk are a line's), so a turn up never breaks a limit.
+  // Re-plans like setFeedOverride; a non-linear G00 under way (its own axis profiles)
+  // finishes at the speed it started with, the next one takes the new override.
+  void setRapidOverride(double rapid);
+  double rapidOverride() const { return queue_.scales().rapid; }
+  static double rapidOverrideWithin(double rapid) {
+    return std::clamp(rapid, kMinRapidOverride, 1.0);
+  }
   // Feed hold (the operator's button), between ticks: the path brakes to rest along the
   // programmed path as the limits allow, rapids included (a non-linear G00, a G63 tap and a
   // dwell under way finish first), and stands there; released, it goes on from there.
@@ -110,11 +120,16 @@ class MotionPlanner {
   // will be queued (the last run is final).
   bool closeInput();
   // Where the motion under way is committed to before the speed limits change to those of
-  // `scale` and `held` (Interpolator::commitForReplan).
-  Commitment commitFor(double scale, bool held);
+  // `scales` (Interpolator::commitForReplan).
+  Commitment commitFor(const SpeedScales& scales);
+  // Applies `scales` to the queue (re-planned from where the motion under way commits to).
+  void changeScales(const SpeedScales& scales);
 
-  AxisLimits limits_;
-  AxisLimits rapid_limits_;  // limits_ with the rapid override applied to the rapid speeds
+  AxisLimits limits_;  // what every segment is planned with (rapids at 100 %)
+  // limits_ with the live rapid override applied to the rapid speeds: a non-linear G00's axis
+  // profiles (Interpolator).
+  AxisLimits rapid_limits_;
+  static constexpr double kMinRapidOverride = 1e-3;
   static constexpr double kMinFeedOverride = 1e-3;
   static constexpr double kMaxFeedOverride = 2.0;
   double feed_override_ = 1.0;  // the one moves are planned with: the highest the knob may reach

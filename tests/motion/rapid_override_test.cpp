@@ -1,0 +1,117 @@
+// The rapid override turned during the run (MotionPlanner::setRapidOverride): a linear G00 is
+// cut where it cruises and brakes to the new speed (the program time is the closed form of
+// that), a turn up from a lower start reaches the full rapid speed, feed moves are left alone,
+// a non-linear G00 under way finishes at its speed and the next one takes the new override.
+// The random suite turns it on random programs (random_suite_test.cpp).
+#include <cmath>
+#include <limits>
+
+#include "gtest/gtest.h"
+#include "motion_test_util.h"
+#include "ncc/vm/motion/axis_rapid.h"
+#include "ncc/vm/motion/planner.h"
+#include "ncc/vm/motion/scurve.h"
+
+namespace ncc::vm::motion {
+namespace {
+
+using namespace motion_test;
+
+constexpr double kT = 0.001;                       // default IPO cycle
+constexpr double kA = 2000.0;                      // default axis acceleration
+constexpr double kJ = kSmoothJerkShare * 50000.0;  // a line's path jerk on the default machine
+constexpr double kRapid = 500.0;                   // default rapid speed, mm/s
+
+double speedAt(const Trace& t, uint64_t k) { return (t.points[k][0] - t.points[k - 1][0]) / kT; }
+
+// Turns the rapid override to `value` before tick `at`.
+PlannerHook rapidAt(uint64_t at, double value) {
+  return [=](uint64_t k, MotionPlanner& planner) {
+    if (k == at) planner.setRapidOverride(value);
+  };
+}
+
+TEST(RapidOverride, TurnedDownWhileCruisingBrakesToTheNewSpeed) {
+  const MachineConfig m = defaultMachine();
+  const double L = 2000.0, slow = 0.25 * kRapid;
+  const Trace t = run(m, {rapid(xyz(0, 0, 0), xyz(L, 0, 0))}, 1024, 50'000'000, false,
+                      rapidAt(1000, 0.25));
+  EXPECT_EQ(t.points.back(), xyz(L, 0, 0));
+  expectWithinLimits(m, t);
+  EXPECT_NEAR(speedAt(t, 990), kRapid, 1e-9);
+  // Cut at t = 1 s (the next tick), then a brake 500 -> 125 mm/s at a = 0 on both ends.
+  const VelocityRamp up = VelocityRamp::make(0.0, kRapid, kA, kJ);
+  const VelocityRamp brake = VelocityRamp::make(slow, kRapid, kA, kJ);
+  const VelocityRamp stop = VelocityRamp::make(0.0, slow, kA, kJ);
+  const uint64_t settled = 1000 + static_cast<uint64_t>(std::ceil(brake.duration / kT)) + 1;
+  for (uint64_t k = settled; k < settled + 100; ++k) EXPECT_NEAR(speedAt(t, k), slow, 1e-9) << k;
+  const double cut_s = up.distance + kRapid * (1.0 - up.duration);
+  const double expected = 1.0 + brake.duration +
+                          (L - cut_s - brake.distance - stop.distance) / slow + stop.duration;
+  EXPECT_NEAR(static_cast<double>(t.ticks()) * kT, expected + kT, 1.5 * kT);
+}
+
+TEST(RapidOverride, TurnedUpFromALowerStartReachesTheFullRapid) {
+  // Planned at 100 % whatever the start: from 25 % the knob may go to 100 % at once.
+  const MachineConfig m = defaultMachine();
+  const Trace t = run(m, {rapid(xyz(0, 0, 0), xyz(2000, 0, 0))}, 1024, 50'000'000, false,
+                      rapidAt(1500, 1.0),
+                      [](MotionPlanner& planner) { planner.setOverrides(1.0, 0.25); });
+  EXPECT_EQ(t.points.back(), xyz(2000, 0, 0));
+  expectWithinLimits(m, t);
+  EXPECT_NEAR(speedAt(t, 1490), 0.25 * kRapid, 1e-9);
+  const VelocityRamp up = VelocityRamp::make(0.25 * kRapid, kRapid, kA, kJ);
+  const uint64_t settled = 1500 + static_cast<uint64_t>(std::ceil(up.duration / kT)) + 1;
+  for (uint64_t k = settled; k < settled + 100; ++k) EXPECT_NEAR(speedAt(t, k), kRapid, 1e-9) << k;
+}
+
+TEST(RapidOverride, LeavesFeedMovesAlone) {
+  const MachineConfig m = defaultMachine();
+  const std::vector<MotionPrimitive> prog = {line(xyz(0, 0, 0), xyz(300, 0, 0), 6000.0)};
+  EXPECT_EQ(run(m, prog, 1024, 50'000'000, false, rapidAt(500, 0.1)).points, run(m, prog).points);
+}
+
+TEST(RapidOverride, NonLinearG00UnderWayFinishesAndTheNextTakesIt) {
+  // Two per-axis G00 of 300 mm; turned to 50 % during the first, the first runs as planned
+  // and the second takes the profile of a 250 mm/s rapid.
+  const MachineConfig m = defaultMachine();
+  MotionPrimitive first = rapid(xyz(0, 0, 0), xyz(300, 0, 0));
+  MotionPrimitive second = rapid(xyz(300, 0, 0), xyz(600, 0, 0));
+  first.per_axis = second.per_axis = true;
+  const Trace plain = run(m, {first, second});
+  const Trace turned = run(m, {first, second}, 1024, 50'000'000, false, rapidAt(200, 0.5));
+  EXPECT_EQ(turned.points.back(), xyz(600, 0, 0));
+  expectWithinLimits(m, turned);
+  AxisLimits full = AxisLimits::from(m);
+  AxisLimits half = full;
+  for (int i = 0; i < half.count; ++i) half.rapid_velocity[i] *= 0.5;
+  const double one = AxisRapid::make(first.from, first.to, full).duration();
+  const double other = AxisRapid::make(second.from, second.to, half).duration();
+  // The first ends where it did without the turn.
+  const auto arrival = [](const Trace& t) {
+    for (uint64_t k = 0; k < t.ticks(); ++k)
+      if (t.points[k][0] == 300.0) return k;
+    return t.ticks();
+  };
+  EXPECT_EQ(arrival(turned), arrival(plain));
+  EXPECT_NEAR(static_cast<double>(arrival(turned)) * kT, one, 1.5 * kT);
+  // The second is the half-speed profile (each G00 waits for the in-position window: the
+  // difference of the two runs is the difference of the second moves' durations).
+  const double full_second = AxisRapid::make(second.from, second.to, full).duration();
+  EXPECT_NEAR(static_cast<double>(turned.ticks() - plain.ticks()) * kT, other - full_second, 2.0 * kT);
+}
+
+TEST(RapidOverride, ClampedToAtMost100Percent) {
+  MotionPlanner planner(defaultMachine(), 64);
+  planner.setRapidOverride(1.5);
+  EXPECT_EQ(planner.rapidOverride(), 1.0);
+  planner.setRapidOverride(0.0);
+  EXPECT_GT(planner.rapidOverride(), 0.0);
+  planner.setRapidOverride(std::numeric_limits<double>::quiet_NaN());
+  EXPECT_GT(planner.rapidOverride(), 0.0);
+  planner.setRapidOverride(0.3);
+  EXPECT_EQ(planner.rapidOverride(), 0.3);
+}
+
+}  // namespace
+}  // namespace ncc::vm::motion
