@@ -199,33 +199,11 @@ Commitment Interpolator::commitForReplan(const LookAhead& queue, double old_limi
   SCurveProfile& p = profile_;
   // Its speed limit stays (a rapid under a feed override, a G63 tap): it runs on as planned.
   if (new_limit == old_limit) return {piece_end_, p.v_end};
-  // Local time of the next tick; the start ramp of the running piece spans [0, c0), its
-  // cruise [c0, c1).
+  // Local time of the next tick. A ramp up under way ends early when the new limit is below
+  // its peak, so that it does not first run up to a speed it must brake from (a feed hold
+  // pressed while a G00 accelerates would otherwise travel on to top speed); a cruise is cut.
   const double next = static_cast<double>(last_tick_ + 1 - start_tick_) * cycle_ - phase_;
-  const double c0 = p.accel.duration;
-  const double c1 = c0 + p.t_cruise;
-  const VelocityRamp& ramp = p.accel;
-  if (new_limit < p.v_peak && next < c0 && ramp.v_to > ramp.v_from &&
-      next < ramp.t_jerk + ramp.t_accel) {
-    // Accelerating, not yet in the jerk-down phase: end the ramp as early as a = 0 allows
-    // (its jerk-down phase from `next` on), so that it does not first run up to a speed it
-    // must brake from (a feed hold pressed while a G00 accelerates would otherwise travel on to
-    // top speed). The ramp up to `next` is unchanged: the same jerk, the same phases.
-    const double peak_a = ramp.jerk * ramp.t_jerk;
-    const double gain = next < ramp.t_jerk ? ramp.jerk * next * next : peak_a * next;
-    p.accel = VelocityRamp::fromGain(ramp.v_from, gain, peak_a, ramp.jerk);
-    p.v_peak = p.accel.v_to;
-    p.t_cruise = 0.0;
-  } else if (p.t_cruise > 0.0 && std::max(next, c0) < c1) {
-    p.t_cruise = std::max(next, c0) - c0;  // end the piece at the cut, cruising
-  } else {
-    return {piece_end_, p.v_end};  // braking to its end, or ramping to it: runs on
-  }
-  // Every state before the new end is unchanged.
-  p.decel = VelocityRamp::make(p.v_peak, p.v_peak, 1.0, 1.0);
-  p.v_end = p.v_peak;
-  p.length = p.accel.distance + p.v_peak * p.t_cruise;
-  p.duration = p.accel.duration + p.t_cruise;
+  if (!cutProfile(p, next, new_limit)) return {piece_end_, p.v_end};  // braking: runs on
   duration_ = p.duration;
   piece_end_ = piece_start_ + p.length;
   piece_ends_run_ = false;

@@ -247,4 +247,30 @@ PathState SCurveProfile::at(double t) const {
   return {length - back.s, back.v, -back.a, back.j};
 }
 
+bool cutProfile(SCurveProfile& p, double next, double limit) {
+  // The start ramp spans [0, c0), the cruise [c0, c1).
+  const double c0 = p.accel.duration;
+  const double c1 = c0 + p.t_cruise;
+  const VelocityRamp& ramp = p.accel;
+  if (limit < p.v_peak && next < c0 && ramp.v_to > ramp.v_from &&
+      next < ramp.t_jerk + ramp.t_accel) {
+    // Accelerating, not yet in the jerk-down phase: the ramp up to `next` is unchanged (the
+    // same jerk, the same phases), and from `next` on it is its jerk-down phase.
+    const double peak_a = ramp.jerk * ramp.t_jerk;
+    const double gain = next < ramp.t_jerk ? ramp.jerk * next * next : peak_a * next;
+    p.accel = VelocityRamp::fromGain(ramp.v_from, gain, peak_a, ramp.jerk);
+    p.v_peak = p.accel.v_to;
+    p.t_cruise = 0.0;
+  } else if (p.t_cruise > 0.0 && std::max(next, c0) < c1) {
+    p.t_cruise = std::max(next, c0) - c0;  // end at the cut, cruising
+  } else {
+    return false;
+  }
+  p.decel = VelocityRamp::make(p.v_peak, p.v_peak, 1.0, 1.0);
+  p.v_end = p.v_peak;
+  p.length = p.accel.distance + p.v_peak * p.t_cruise;
+  p.duration = p.accel.duration + p.t_cruise;
+  return true;
+}
+
 }  // namespace ncc::vm::motion

@@ -72,4 +72,12 @@ struct SCurveProfile {
 SCurveProfile planProfile(double length, double v_start, double v_end, double v_max,
                           double a_max, double j_max);
 
+// Cuts a profile under way for a new speed limit `limit` from its local time `next` (the next
+// tick) on: a ramp up that has not reached its jerk-down phase goes into it at `next` when
+// `limit` is below its peak (ending as early as a = 0 allows); else a cruise ends at `next`
+// (or where it begins). The profile then ends there at a = 0 (v_end = v_peak, no braking
+// ramp, length and duration shortened); every state before is unchanged. False, the profile
+// untouched, when it is braking or in its last jerk phase: it runs on to its end.
+bool cutProfile(SCurveProfile& p, double next, double limit);
+
 }  // namespace ncc::vm::motion
