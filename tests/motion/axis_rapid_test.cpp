@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <vector>
 #include <cstring>
 
 #include "allocation_counter.h"
@@ -207,6 +208,79 @@ TEST(AxisRapid, SampledAxisLimitsHold) {
   EXPECT_GT(overall.velocity, 0.99);
   EXPECT_GT(overall.acceleration, 0.99);
   EXPECT_GT(overall.jerk, 0.85);
+}
+
+// A live rapid override and feed hold (replan) at random ticks: every sampled axis limit
+// holds (against the full rapid speed), no axis leaves the box between `from` and `to`, and
+// every axis lands exactly on `to` (once released, or under a hold pressed while it was
+// already braking to its end).
+TEST(AxisRapid, RandomReplansKeepSampledLimitsAndLand) {
+  const AxisLimits limits[] = {equalLimits(), mixedLimits()};
+  motion_test::Random rng(7);
+  Worst overall;
+  int replans = 0, holds = 0;
+  for (const AxisLimits& l : limits) {
+    const double T = l.ipo_cycle;
+    for (int m = 0; m < 60; ++m) {
+      AxisValues from{}, to{};
+      for (int i = 0; i < l.count; ++i) {
+        const double scale = rng.below(4) == 0 ? 1.0 : 400.0;
+        from[i] = rng.uniform(-200, 200);
+        to[i] = from[i] + rng.uniform(-scale, scale);
+      }
+      AxisRapid r = AxisRapid::make(from, to, l);
+      ASSERT_TRUE(r.valid());
+      const double phase = rng.uniform(0.0, T);
+      const int every = m % 2 == 0 ? 20 : 150;
+      bool held = false;
+      std::vector<AxisValues> samples;
+      for (int k = 0; k < 200000; ++k) {
+        const double t = (k - 2) * T - phase;
+        AxisValues p;
+        r.position(t, p);
+        samples.push_back(p);
+        if (t > r.duration() + 3 * T) break;
+        if (t > 0.0 && rng.below(every) == 0) {
+          AxisLimits turned = l;
+          const double knob = rng.uniform(0.05, 1.0);
+          for (int i = 0; i < l.count; ++i) turned.rapid_velocity[i] *= knob;
+          held = !held && rng.below(3) == 0;
+          holds += held ? 1 : 0;
+          r.replan(t + T, turned, held);
+          ++replans;
+        }
+        // A hold never lasts: released within 300 ticks.
+        if (held && rng.below(300) == 0) {
+          r.replan(t + T, l, false);
+          held = false;
+        }
+      }
+      ASSERT_EQ(samples.back(), to) << "move " << m;
+      for (std::size_t k = 0; k < samples.size(); ++k) {
+        for (int i = 0; i < l.count; ++i) {
+          EXPECT_GE(samples[k][i], std::min(from[i], to[i])) << m;
+          EXPECT_LE(samples[k][i], std::max(from[i], to[i])) << m;
+          if (k >= 1)
+            overall.velocity = std::max(overall.velocity,
+                std::abs(samples[k][i] - samples[k - 1][i]) / T / l.rapid_velocity[i]);
+          if (k >= 2)
+            overall.acceleration = std::max(overall.acceleration,
+                std::abs(samples[k][i] - 2 * samples[k - 1][i] + samples[k - 2][i]) / (T * T) /
+                    l.acceleration[i]);
+          if (k >= 3)
+            overall.jerk = std::max(overall.jerk,
+                std::abs(samples[k][i] - 3 * samples[k - 1][i] + 3 * samples[k - 2][i] -
+                         samples[k - 3][i]) / (T * T * T) / l.jerk[i]);
+        }
+      }
+    }
+  }
+  std::printf("axis rapid replans: %d (%d holds); worst ratio to axis limit: v %.9f a %.9f j %.9f\n",
+              replans, holds, overall.velocity, overall.acceleration, overall.jerk);
+  EXPECT_GT(holds, 20);
+  EXPECT_LE(overall.velocity, 1.0 + kTolerance);
+  EXPECT_LE(overall.acceleration, 1.0 + kTolerance);
+  EXPECT_LE(overall.jerk, 1.0 + kTolerance);
 }
 
 TEST(AxisRapid, DogLegYFinishesFirstXContinuesAlone) {

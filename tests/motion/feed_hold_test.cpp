@@ -58,6 +58,32 @@ TEST(FeedHold, StopsRapidsToo) {
   EXPECT_EQ(held.points.back(), xyz(2000, 0, 0));
 }
 
+TEST(FeedHold, StopsANonLinearRapidOnEveryAxis) {
+  // A per-axis G00 to (2000, 300, 50), held at 1 s while X still cruises (Y and Z have
+  // arrived), released at 2 s: X brakes to rest and stands, the run takes the held second
+  // longer, and every axis ends exactly on its target. Held again during its braking after
+  // the release and released, it still lands.
+  const MachineConfig m = defaultMachine();
+  MotionPrimitive g00 = rapid(xyz(0, 0, 0), xyz(2000, 300, 50));
+  g00.per_axis = true;
+  const Trace plain = run(m, {g00});
+  const Trace held = run(m, {g00}, 1024, 50'000'000, false, holdBetween(1000, 2000));
+  expectWithinLimits(m, held);
+  EXPECT_EQ(held.points.back(), g00.to);
+  EXPECT_GE(standingTicks(held, 1000, 2000), 700u);  // after a 0.29 s brake from 500 mm/s
+  EXPECT_LT(held.points[1500][0], 2000.0);
+  EXPECT_EQ(held.points[1500][1], 300.0);
+  // Exactly one second more, like a line: the start from rest mirrors the brake.
+  EXPECT_NEAR(static_cast<double>(held.ticks() - plain.ticks()) * kT, 1.0, 1.5 * kT);
+  auto twice = [](uint64_t k, MotionPlanner& planner) {
+    if (k == 300 || k == 1230) planner.setFeedHold(true);
+    if (k == 1200 || k == 1260) planner.setFeedHold(false);
+  };
+  const Trace again = run(m, {g00}, 1024, 50'000'000, false, twice);
+  expectWithinLimits(m, again);
+  EXPECT_EQ(again.points.back(), g00.to);
+}
+
 TEST(FeedHold, PressedWhileAcceleratingStopsAtOnce) {
   // A G00 along X (rapid 500 mm/s) held 20 ms after it starts, in its jerk-up phase: the
   // ramp goes into its jerk-down phase on the next tick and the path brakes from there, at

@@ -1,7 +1,7 @@
 // The rapid override turned during the run (MotionPlanner::setRapidOverride): a linear G00 is
 // cut where it cruises and brakes to the new speed (the program time is the closed form of
 // that), a turn up from a lower start reaches the full rapid speed, feed moves are left alone,
-// a non-linear G00 under way finishes at its speed and the next one takes the new override.
+// a non-linear G00 under way re-plans its axis profiles at once.
 // The random suite turns it on random programs (random_suite_test.cpp).
 #include <cmath>
 #include <limits>
@@ -71,9 +71,10 @@ TEST(RapidOverride, LeavesFeedMovesAlone) {
   EXPECT_EQ(run(m, prog, 1024, 50'000'000, false, rapidAt(500, 0.1)).points, run(m, prog).points);
 }
 
-TEST(RapidOverride, NonLinearG00UnderWayFinishesAndTheNextTakesIt) {
-  // Two per-axis G00 of 300 mm; turned to 50 % during the first, the first runs as planned
-  // and the second takes the profile of a 250 mm/s rapid.
+TEST(RapidOverride, NonLinearG00TakesItAtOnce) {
+  // Two per-axis G00 of 300 mm. Turned to 50 % at 0.2 s, while the first accelerates: its
+  // ramp goes into its jerk-down phase at once, brakes to 250 mm/s, cruises there and stops
+  // on X300; the second runs as a 250 mm/s rapid.
   const MachineConfig m = defaultMachine();
   MotionPrimitive first = rapid(xyz(0, 0, 0), xyz(300, 0, 0));
   MotionPrimitive second = rapid(xyz(300, 0, 0), xyz(600, 0, 0));
@@ -82,23 +83,33 @@ TEST(RapidOverride, NonLinearG00UnderWayFinishesAndTheNextTakesIt) {
   const Trace turned = run(m, {first, second}, 1024, 50'000'000, false, rapidAt(200, 0.5));
   EXPECT_EQ(turned.points.back(), xyz(600, 0, 0));
   expectWithinLimits(m, turned);
-  AxisLimits full = AxisLimits::from(m);
-  AxisLimits half = full;
-  for (int i = 0; i < half.count; ++i) half.rapid_velocity[i] *= 0.5;
-  const double one = AxisRapid::make(first.from, first.to, full).duration();
-  const double other = AxisRapid::make(second.from, second.to, half).duration();
-  // The first ends where it did without the turn.
-  const auto arrival = [](const Trace& t) {
+  // The first: up to 0.2 s unchanged; the ramp ends at a = 0 from there (v = 2000 * 0.2
+  // minus the jerk phase's share), brakes to 250 and cruises.
+  for (uint64_t k = 1; k <= 200; ++k) EXPECT_EQ(turned.points[k], plain.points[k]) << k;
+  const SCurveProfile whole = planProfile(300.0, 0.0, 0.0, kRapid, kA, kJ);
+  SCurveProfile cut = whole;
+  ASSERT_TRUE(cutProfile(cut, 0.2, 0.5 * kRapid));
+  const VelocityRamp brake = VelocityRamp::make(0.5 * kRapid, cut.v_end, kA, kJ);
+  const SCurveProfile rest =
+      planProfile(300.0 - cut.length - brake.distance, 0.5 * kRapid, 0.0, 0.5 * kRapid, kA, kJ);
+  const double arrival = cut.duration + brake.duration + rest.duration;
+  const auto arrived = [](const Trace& t) {
     for (uint64_t k = 0; k < t.ticks(); ++k)
       if (t.points[k][0] == 300.0) return k;
     return t.ticks();
   };
-  EXPECT_EQ(arrival(turned), arrival(plain));
-  EXPECT_NEAR(static_cast<double>(arrival(turned)) * kT, one, 1.5 * kT);
-  // The second is the half-speed profile (each G00 waits for the in-position window: the
-  // difference of the two runs is the difference of the second moves' durations).
+  EXPECT_NEAR(static_cast<double>(arrived(turned)) * kT, arrival, 1.5 * kT);
+  const uint64_t cruising = static_cast<uint64_t>((cut.duration + brake.duration) / kT) + 5;
+  for (uint64_t k = cruising; k < cruising + 50; ++k)
+    EXPECT_NEAR(speedAt(turned, k), 0.5 * kRapid, 1e-9) << k;
+  // The second: the half-speed profile (both runs wait the same in-position time).
+  AxisLimits full = AxisLimits::from(m);
+  AxisLimits half = full;
+  for (int i = 0; i < half.count; ++i) half.rapid_velocity[i] *= 0.5;
+  const double slow_second = AxisRapid::make(second.from, second.to, half).duration();
   const double full_second = AxisRapid::make(second.from, second.to, full).duration();
-  EXPECT_NEAR(static_cast<double>(turned.ticks() - plain.ticks()) * kT, other - full_second, 2.0 * kT);
+  EXPECT_NEAR(static_cast<double>((turned.ticks() - arrived(turned)) - (plain.ticks() - arrived(plain))) * kT,
+              slow_second - full_second, 2.0 * kT);
 }
 
 TEST(RapidOverride, ClampedToAtMost100Percent) {

@@ -195,14 +195,25 @@ Commitment Interpolator::commitForReplan(const LookAhead& queue, double old_limi
                                          double new_limit) {
   if (!running_) return {piece_start_, resync_ ? 0.0 : exit_velocity_};
   const Run& run = queue.run(0);
-  if (per_axis_ || run.kind == MotionPrimitive::Kind::Dwell) return {run.length, 0.0};
+  // Local time of the next tick.
+  const double next = static_cast<double>(last_tick_ + 1 - start_tick_) * cycle_ - phase_;
+  if (per_axis_) {
+    // A non-linear G00 re-plans its own axis profiles (a live rapid override, feed hold: a
+    // limit of 0); it ends at rest on its run's end either way.
+    if (new_limit != old_limit) {
+      rapid_.replan(next, limits_, !(new_limit > 0.0));
+      duration_ = rapid_.duration();
+      ++pieces_changed_;
+    }
+    return {run.length, 0.0};
+  }
+  if (run.kind == MotionPrimitive::Kind::Dwell) return {run.length, 0.0};
   SCurveProfile& p = profile_;
   // Its speed limit stays (a rapid under a feed override, a G63 tap): it runs on as planned.
   if (new_limit == old_limit) return {piece_end_, p.v_end};
-  // Local time of the next tick. A ramp up under way ends early when the new limit is below
-  // its peak, so that it does not first run up to a speed it must brake from (a feed hold
-  // pressed while a G00 accelerates would otherwise travel on to top speed); a cruise is cut.
-  const double next = static_cast<double>(last_tick_ + 1 - start_tick_) * cycle_ - phase_;
+  // A ramp up under way ends early when the new limit is below its peak, so that it does not
+  // first run up to a speed it must brake from (a feed hold pressed while a G00 accelerates
+  // would otherwise travel on to top speed); a cruise is cut.
   if (!cutProfile(p, next, new_limit)) return {piece_end_, p.v_end};  // braking: runs on
   duration_ = p.duration;
   piece_end_ = piece_start_ + p.length;

@@ -134,8 +134,8 @@ class Controller {
   }
   double feedOverride() const;
   // The operator turns the rapid override (fraction, clamped to [0.001, 1]), likewise from
-  // the next prepare(): linear rapids change speed from the next tick on; a non-linear G00
-  // under way finishes at its speed (MotionPlanner::setRapidOverride). Reads back the value
+  // the next prepare(): rapids change speed from the next tick on, a non-linear G00 on each
+  // axis (MotionPlanner::setRapidOverride). Reads back the value
   // requested.
   void setRapidOverride(double rapid) noexcept {
     if (std::isfinite(rapid)) pending_rapid_override_ = rapid;

@@ -8,8 +8,14 @@
 // takes as long as the slowest axis. Axes without travel stand still; rotary axes are plain
 // axes here (deg, deg/s, ...).
 //
-// Fixed-size storage (one profile per axis slot), no allocation, no throw; every result is a
-// pure function of the inputs to make() and of t.
+// The operator may change the speeds while it runs (replan(): a live rapid override, feed
+// hold and its release): each axis then cuts its profile under way like a path piece
+// (cutProfile) and goes on with new legs from there: a brake to rest under hold, else a
+// brake to the new speed and a profile to `to`. An axis has at most kLegs legs; after the
+// last it stands where it ended (at `to` once arrived).
+//
+// Fixed-size storage (kLegs profiles per axis slot), no allocation, no throw; every result is
+// a pure function of the inputs to make(), of the replan() calls and of t.
 #include <array>
 
 #include "ncc/machine/axes.h"
@@ -42,12 +48,20 @@ class AxisRapid {
   const AxisValues& from() const { return from_; }
   const AxisValues& to() const { return to_; }
 
-  // The slowest axis' time: when the last axis arrives.
+  // The slowest axis' time: when the last axis arrives (infinite while an axis stands short
+  // of `to` under a feed hold).
   double duration() const { return duration_; }
-  // When axis i arrives (0 for axes without travel).
-  double axisDuration(int axis) const { return profiles_[axis].duration; }
-  // Axis i's 1-D profile over |to_i - from_i| (unsigned; the direction is applied on top).
-  const SCurveProfile& axisProfile(int axis) const { return profiles_[axis]; }
+  // When axis i arrives (0 for axes without travel; infinite while it stands short of `to`).
+  double axisDuration(int axis) const;
+  // Axis i's first leg (the whole 1-D profile over |to_i - from_i| until a replan(); unsigned:
+  // the direction is applied on top).
+  const SCurveProfile& axisProfile(int axis) const { return legs_[axis][0].profile; }
+
+  // From local time `next` (the next tick) on: under `held`, every axis brakes to rest as its
+  // limits allow and stands; else each goes on to `to` at its rapid speed in `limits`. An
+  // axis braking to its end, or in the last jerk phase of a ramp without cruise, runs on to the
+  // end of that profile first. Everything before `next` is unchanged.
+  void replan(double next, const AxisLimits& limits, bool held);
 
   // Axis positions at time t from the start, t clamped to [0, duration()]. Axis i gives
   // to[i] bit-exactly once t >= axisDuration(i) (so everything is `to` for t >= duration()),
@@ -64,14 +78,30 @@ class AxisRapid {
   double pathSpeed(double t) const { return pathMotion(t).velocity; }
 
  private:
+  // One stretch of an axis' motion: `profile` from local time t0, at distance s0 from `from`.
+  struct Leg {
+    double t0 = 0.0, s0 = 0.0;
+    SCurveProfile profile;
+    double end() const { return t0 + profile.duration; }
+  };
+  // A leg now, the first after make(), a cut one and the two a replan() adds after it.
+  static constexpr int kLegs = 3;
+
   double clampTime(double t) const;
+  // Axis i's unsigned 1-D state at t (distance from from[i]).
+  PathState legState(int axis, double t) const;
+  void updateDuration();
 
   bool valid_ = true;
+  bool replanned_ = false;  // legs beyond the first profile: the general evaluation
   int count_ = 0;
   AxisValues from_{};
   AxisValues to_{};
   std::array<double, kMaxAxes> sign_{};  // +1 / -1 per moving axis, 0 for standing axes
-  std::array<SCurveProfile, kMaxAxes> profiles_{};
+  std::array<double, kMaxAxes> travel_{};  // |to - from|
+  std::array<std::array<Leg, kLegs>, kMaxAxes> legs_{};
+  std::array<int, kMaxAxes> leg_count_{};
+  std::array<bool, kMaxAxes> stops_short_{};  // held: it stands short of `to` after its legs
   double duration_ = 0.0;
 };
 

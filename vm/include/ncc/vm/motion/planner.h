@@ -73,16 +73,17 @@ class MotionPlanner {
   // The operator turns the rapid override during the run, between ticks (fraction, clamped
   // to [0.1 %, 100 %]). Rapids are planned at 100 % and the override scales their speed limit
   // only (their acceleration and jerk are a line's), so a turn up never breaks a limit.
-  // Re-plans like setFeedOverride; a non-linear G00 under way (its own axis profiles)
-  // finishes at the speed it started with, the next one takes the new override.
+  // Re-plans like setFeedOverride; a non-linear G00 under way re-plans its own axis profiles
+  // (AxisRapid::replan).
   void setRapidOverride(double rapid);
   double rapidOverride() const { return queue_.scales().rapid; }
   static double rapidOverrideWithin(double rapid) {
     return std::clamp(rapid, kMinRapidOverride, 1.0);
   }
   // Feed hold (the operator's button), between ticks: the path brakes to rest along the
-  // programmed path as the limits allow, rapids included (a non-linear G00, a G63 tap and a
-  // dwell under way finish first), and stands there; released, it goes on from there.
+  // programmed path as the limits allow, rapids included (a non-linear G00 stops each axis on
+  // its own; a G63 tap and a dwell under way finish first), and stands there; released, it
+  // goes on from there.
   // Re-plans like setFeedOverride. Deterministic like it.
   void setFeedHold(bool held);
   bool feedHold() const { return queue_.held(); }
