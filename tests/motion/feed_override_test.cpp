@@ -16,12 +16,6 @@ namespace {
 
 using namespace motion_test;
 
-constexpr double kT = 0.001;                     // default IPO cycle
-constexpr double kA = 2000.0;                    // default axis acceleration
-constexpr double kJ = kSmoothJerkShare * 50000.0;  // a line's path jerk on the default machine
-
-// Path speed along X between ticks k - 1 and k.
-double speedAt(const Trace& t, uint64_t k) { return (t.points[k][0] - t.points[k - 1][0]) / kT; }
 
 // Turns the knob to `value` before tick `at`.
 PlannerHook turnAt(uint64_t at, double value) {
@@ -37,22 +31,22 @@ TEST(FeedOverride, TurnedDownWhileCruisingBrakesToTheNewSpeed) {
                       turnAt(2000, 0.5));
   EXPECT_EQ(t.points.back(), xyz(L, 0, 0));
   expectWithinLimits(m, t);
-  EXPECT_NEAR(speedAt(t, 1990), v, 1e-9);
+  EXPECT_NEAR(speedAlongX(t, 1990), v, 1e-9);
   // Cut at t = 2 s (the next tick), then a brake 100 -> 50 mm/s at a = 0 on both ends.
-  const VelocityRamp up = VelocityRamp::make(0.0, v, kA, kJ);
-  const VelocityRamp brake = VelocityRamp::make(half, v, kA, kJ);
-  const VelocityRamp stop = VelocityRamp::make(0.0, half, kA, kJ);
-  const uint64_t settled = 2000 + static_cast<uint64_t>(std::ceil(brake.duration / kT)) + 1;
-  for (uint64_t k = settled; k < settled + 100; ++k) EXPECT_NEAR(speedAt(t, k), half, 1e-9) << k;
+  const VelocityRamp up = VelocityRamp::make(0.0, v, kDefaultA, kDefaultLineJ);
+  const VelocityRamp brake = VelocityRamp::make(half, v, kDefaultA, kDefaultLineJ);
+  const VelocityRamp stop = VelocityRamp::make(0.0, half, kDefaultA, kDefaultLineJ);
+  const uint64_t settled = 2000 + static_cast<uint64_t>(std::ceil(brake.duration / kDefaultT)) + 1;
+  for (uint64_t k = settled; k < settled + 100; ++k) EXPECT_NEAR(speedAlongX(t, k), half, 1e-9) << k;
   for (uint64_t k = 2001; k < settled; ++k) {
-    EXPECT_LT(speedAt(t, k), v);
-    EXPECT_GT(speedAt(t, k), half);
+    EXPECT_LT(speedAlongX(t, k), v);
+    EXPECT_GT(speedAlongX(t, k), half);
   }
   const double cut_s = up.distance + v * (2.0 - up.duration);
   const double expected = 2.0 + brake.duration +
                           (L - cut_s - brake.distance - stop.distance) / half + stop.duration;
   // The end is sampled on the first tick at or after it, plus the stop sample.
-  EXPECT_NEAR(static_cast<double>(t.ticks()) * kT, expected + kT, 1.5 * kT);
+  EXPECT_NEAR(static_cast<double>(t.ticks()) * kDefaultT, expected + kDefaultT, 1.5 * kDefaultT);
 }
 
 TEST(FeedOverride, TurnedUpAcceleratesToTheNewSpeed) {
@@ -62,10 +56,10 @@ TEST(FeedOverride, TurnedUpAcceleratesToTheNewSpeed) {
                       [](MotionPlanner& planner) { planner.setOverrides(0.5, 1.0, 1.0); });
   EXPECT_EQ(t.points.back(), xyz(600, 0, 0));
   expectWithinLimits(m, t);
-  EXPECT_NEAR(speedAt(t, 1990), 50.0, 1e-9);
-  const VelocityRamp up = VelocityRamp::make(50.0, 100.0, kA, kJ);
-  const uint64_t settled = 2000 + static_cast<uint64_t>(std::ceil(up.duration / kT)) + 1;
-  for (uint64_t k = settled; k < settled + 100; ++k) EXPECT_NEAR(speedAt(t, k), 100.0, 1e-9) << k;
+  EXPECT_NEAR(speedAlongX(t, 1990), 50.0, 1e-9);
+  const VelocityRamp up = VelocityRamp::make(50.0, 100.0, kDefaultA, kDefaultLineJ);
+  const uint64_t settled = 2000 + static_cast<uint64_t>(std::ceil(up.duration / kDefaultT)) + 1;
+  for (uint64_t k = settled; k < settled + 100; ++k) EXPECT_NEAR(speedAlongX(t, k), 100.0, 1e-9) << k;
 }
 
 TEST(FeedOverride, TurnedDownDuringARampEndsTheRampAtOnce) {
@@ -78,10 +72,10 @@ TEST(FeedOverride, TurnedDownDuringARampEndsTheRampAtOnce) {
   EXPECT_EQ(t.points.back(), xyz(300, 0, 0));
   expectWithinLimits(m, t);
   double top = 0.0;
-  for (uint64_t k = 1; k < 400; ++k) top = std::max(top, speedAt(t, k));
+  for (uint64_t k = 1; k < 400; ++k) top = std::max(top, speedAlongX(t, k));
   EXPECT_LE(top, 50.0 + 1e-9);
   EXPECT_NEAR(t.infos[61].velocity, 40.5, 0.6);  // the shortened ramp's end, about 60 ms
-  for (uint64_t k = 400; k < 500; ++k) EXPECT_NEAR(speedAt(t, k), 50.0, 1e-9) << k;
+  for (uint64_t k = 400; k < 500; ++k) EXPECT_NEAR(speedAlongX(t, k), 50.0, 1e-9) << k;
 }
 
 TEST(FeedOverride, TurnedDownNearAStopStillLandsOnIt) {
@@ -92,9 +86,9 @@ TEST(FeedOverride, TurnedDownNearAStopStillLandsOnIt) {
   first.exact_stop = true;
   const std::vector<MotionPrimitive> prog = {first, line(xyz(50, 0, 0), xyz(50, 40, 0), 6000.0)};
   const Trace plain = run(m, prog);
-  const VelocityRamp up = VelocityRamp::make(0.0, 100.0, kA, kJ);
+  const VelocityRamp up = VelocityRamp::make(0.0, 100.0, kDefaultA, kDefaultLineJ);
   const uint64_t brake_starts =
-      static_cast<uint64_t>((up.duration + (50.0 - 2.0 * up.distance) / 100.0) / kT);
+      static_cast<uint64_t>((up.duration + (50.0 - 2.0 * up.distance) / 100.0) / kDefaultT);
   for (uint64_t before : {20u, 2u}) {
     const Trace t = run(m, prog, 1024, 50'000'000, false, turnAt(brake_starts - before, 0.3));
     expectWithinLimits(m, t);
@@ -109,7 +103,7 @@ TEST(FeedOverride, LeavesG63AndRapidsAlone) {
   MotionPrimitive tap = line(xyz(0, 0, 0), xyz(0, 0, -300), 6000.0);
   tap.fixed_override = true;  // G63: F / S is the tap's pitch
   const Trace g63 = run(m, {tap}, 1024, 50'000'000, false, turnAt(1000, 0.5));
-  EXPECT_NEAR((g63.points[1500][2] - g63.points[1501][2]) / kT, 100.0, 1e-9);
+  EXPECT_NEAR((g63.points[1500][2] - g63.points[1501][2]) / kDefaultT, 100.0, 1e-9);
   const Trace g00 = run(m, {rapid(xyz(0, 0, 0), xyz(2000, 0, 0))}, 1024, 50'000'000, false,
                         turnAt(1000, 0.5));
   const Trace g00_plain = run(m, {rapid(xyz(0, 0, 0), xyz(2000, 0, 0))});
@@ -128,11 +122,11 @@ TEST(FeedOverride, LeavesAG63TapAloneAfterAMoveItScales) {
   uint64_t in_tap = 0;
   for (uint64_t k = 1; k < t.ticks(); ++k) {
     if (t.points[k][2] < -5.0 && t.points[k][2] > -15.0) {
-      EXPECT_NEAR((t.points[k - 1][2] - t.points[k][2]) / kT, 10.0, 1e-9) << k;
+      EXPECT_NEAR((t.points[k - 1][2] - t.points[k][2]) / kDefaultT, 10.0, 1e-9) << k;
       ++in_tap;
     }
     if (t.points[k][2] > 4.0 && t.points[k][2] < 8.0) {
-      EXPECT_NEAR((t.points[k - 1][2] - t.points[k][2]) / kT, 5.0, 1e-9) << k;
+      EXPECT_NEAR((t.points[k - 1][2] - t.points[k][2]) / kDefaultT, 5.0, 1e-9) << k;
     }
   }
   EXPECT_GT(in_tap, 900u);

@@ -166,6 +166,17 @@ inline Worst check(const MachineConfig& m, const Trace& t) {
   return w;
 }
 
+// The default machine (defaultMachine()) in path units, for closed forms: its IPO cycle, axis
+// acceleration, and a line's path jerk (the smooth share of the axis jerk).
+inline constexpr double kDefaultT = 0.001;
+inline constexpr double kDefaultA = 2000.0;
+inline constexpr double kDefaultLineJ = vm::motion::kSmoothJerkShare * 50000.0;
+
+// Path speed along X between ticks k - 1 and k of a trace sampled every kDefaultT.
+inline double speedAlongX(const Trace& t, uint64_t k) {
+  return (t.points[k][0] - t.points[k - 1][0]) / kDefaultT;
+}
+
 // Numerical tolerance of the finite-difference check: positions are exact to ~1e-13 mm,
 // which reads as 8e-13 / T^3 = 8e-4 mm/s^3 of jerk; 1e-6 relative covers it with margin.
 constexpr double kTolerance = 1e-6;

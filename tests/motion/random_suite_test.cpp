@@ -186,6 +186,20 @@ void expectLimitsAndExactEnds(const MachineConfig& m, const std::vector<MotionPr
   }
 }
 
+// A run with the operator at the controls (`knob` before each tick, `setup` once): the same
+// setpoints with and without planning ahead, and the suite's checks. Returns the trace.
+Trace runOperated(const MachineConfig& m, const std::vector<MotionPrimitive>& prog,
+                  std::size_t window, const PlannerHook& knob,
+                  const std::function<void(vm::motion::MotionPlanner&)>& setup, uint64_t seed,
+                  Worst& overall) {
+  const Trace t = run(m, prog, window, 50'000'000, false, knob, setup);
+  const Trace ahead = run(m, prog, window, 50'000'000, true, knob, setup);
+  EXPECT_GT(t.ticks(), 0u);
+  EXPECT_EQ(fnv1a(t, 3), fnv1a(ahead, 3)) << "seed " << seed;
+  expectLimitsAndExactEnds(m, prog, t, seed, overall);
+  return t;
+}
+
 TEST(RandomSuite, NoLimitViolationsAndExactEnds) {
   const MachineConfig m = testMachine();
   Worst overall;
@@ -240,11 +254,7 @@ TEST(RandomSuite, LiveFeedOverrideKeepsEveryLimit) {
       if (r.below(every) == 0) planner.setFeedOverride(r.uniform(0.05, top));
     };
     auto setup = [top](vm::motion::MotionPlanner& planner) { planner.setOverrides(1.0, 1.0, top); };
-    const Trace t = run(m, prog, window, 50'000'000, false, knob, setup);
-    const Trace ahead = run(m, prog, window, 50'000'000, true, knob, setup);
-    ASSERT_GT(t.ticks(), 0u);
-    EXPECT_EQ(fnv1a(t, 3), fnv1a(ahead, 3)) << "seed " << seed;
-    expectLimitsAndExactEnds(m, prog, t, seed, overall);
+    const Trace t = runOperated(m, prog, window, knob, setup, seed, overall);
     if (t.ticks() > run(m, prog, window).ticks()) ++slower;
   }
   // Turned mostly below 100 % (and planned for 200 % on odd seeds): most runs take longer.
@@ -273,11 +283,7 @@ TEST(RandomSuite, LiveRapidOverrideKeepsEveryLimit) {
     };
     const double start = seed % 2 == 0 ? 0.25 : 1.0;
     auto setup = [start](vm::motion::MotionPlanner& planner) { planner.setOverrides(1.0, start); };
-    const Trace t = run(m, prog, window, 50'000'000, false, knob, setup);
-    const Trace ahead = run(m, prog, window, 50'000'000, true, knob, setup);
-    ASSERT_GT(t.ticks(), 0u);
-    EXPECT_EQ(fnv1a(t, 3), fnv1a(ahead, 3)) << "seed " << seed;
-    expectLimitsAndExactEnds(m, prog, t, seed, overall);
+    const Trace t = runOperated(m, prog, window, knob, setup, seed, overall);
     if (t.ticks() != run(m, prog, window).ticks()) ++changed;
   }
   // Most programs have rapids: the knob changes their time.
@@ -310,11 +316,7 @@ TEST(RandomSuite, FeedHoldKeepsEveryLimit) {
       if (roll == 1) planner.setFeedOverride(r.uniform(0.05, 1.0));
       if (k > 4'000'000) planner.setFeedHold(false);  // never held for good
     };
-    const Trace t = run(m, prog, window, 50'000'000, false, knob);
-    const Trace ahead = run(m, prog, window, 50'000'000, true, knob);
-    ASSERT_GT(t.ticks(), 0u);
-    EXPECT_EQ(fnv1a(t, 3), fnv1a(ahead, 3)) << "seed " << seed;
-    expectLimitsAndExactEnds(m, prog, t, seed, overall);
+    const Trace t = runOperated(m, prog, window, knob, {}, seed, overall);
     for (std::size_t k = 1; k < t.ticks(); ++k)
       if (t.points[k] == t.points[k - 1] && t.infos[k].idle) ++held_ticks;
   }

@@ -17,12 +17,7 @@ namespace {
 
 using namespace motion_test;
 
-constexpr double kT = 0.001;                       // default IPO cycle
-constexpr double kA = 2000.0;                      // default axis acceleration
-constexpr double kJ = kSmoothJerkShare * 50000.0;  // a line's path jerk on the default machine
-constexpr double kRapid = 500.0;                   // default rapid speed, mm/s
-
-double speedAt(const Trace& t, uint64_t k) { return (t.points[k][0] - t.points[k - 1][0]) / kT; }
+constexpr double kRapid = 500.0;  // default rapid speed, mm/s
 
 // Turns the rapid override to `value` before tick `at`.
 PlannerHook rapidAt(uint64_t at, double value) {
@@ -38,17 +33,17 @@ TEST(RapidOverride, TurnedDownWhileCruisingBrakesToTheNewSpeed) {
                       rapidAt(1000, 0.25));
   EXPECT_EQ(t.points.back(), xyz(L, 0, 0));
   expectWithinLimits(m, t);
-  EXPECT_NEAR(speedAt(t, 990), kRapid, 1e-9);
+  EXPECT_NEAR(speedAlongX(t, 990), kRapid, 1e-9);
   // Cut at t = 1 s (the next tick), then a brake 500 -> 125 mm/s at a = 0 on both ends.
-  const VelocityRamp up = VelocityRamp::make(0.0, kRapid, kA, kJ);
-  const VelocityRamp brake = VelocityRamp::make(slow, kRapid, kA, kJ);
-  const VelocityRamp stop = VelocityRamp::make(0.0, slow, kA, kJ);
-  const uint64_t settled = 1000 + static_cast<uint64_t>(std::ceil(brake.duration / kT)) + 1;
-  for (uint64_t k = settled; k < settled + 100; ++k) EXPECT_NEAR(speedAt(t, k), slow, 1e-9) << k;
+  const VelocityRamp up = VelocityRamp::make(0.0, kRapid, kDefaultA, kDefaultLineJ);
+  const VelocityRamp brake = VelocityRamp::make(slow, kRapid, kDefaultA, kDefaultLineJ);
+  const VelocityRamp stop = VelocityRamp::make(0.0, slow, kDefaultA, kDefaultLineJ);
+  const uint64_t settled = 1000 + static_cast<uint64_t>(std::ceil(brake.duration / kDefaultT)) + 1;
+  for (uint64_t k = settled; k < settled + 100; ++k) EXPECT_NEAR(speedAlongX(t, k), slow, 1e-9) << k;
   const double cut_s = up.distance + kRapid * (1.0 - up.duration);
   const double expected = 1.0 + brake.duration +
                           (L - cut_s - brake.distance - stop.distance) / slow + stop.duration;
-  EXPECT_NEAR(static_cast<double>(t.ticks()) * kT, expected + kT, 1.5 * kT);
+  EXPECT_NEAR(static_cast<double>(t.ticks()) * kDefaultT, expected + kDefaultT, 1.5 * kDefaultT);
 }
 
 TEST(RapidOverride, TurnedUpFromALowerStartReachesTheFullRapid) {
@@ -59,10 +54,10 @@ TEST(RapidOverride, TurnedUpFromALowerStartReachesTheFullRapid) {
                       [](MotionPlanner& planner) { planner.setOverrides(1.0, 0.25); });
   EXPECT_EQ(t.points.back(), xyz(2000, 0, 0));
   expectWithinLimits(m, t);
-  EXPECT_NEAR(speedAt(t, 1490), 0.25 * kRapid, 1e-9);
-  const VelocityRamp up = VelocityRamp::make(0.25 * kRapid, kRapid, kA, kJ);
-  const uint64_t settled = 1500 + static_cast<uint64_t>(std::ceil(up.duration / kT)) + 1;
-  for (uint64_t k = settled; k < settled + 100; ++k) EXPECT_NEAR(speedAt(t, k), kRapid, 1e-9) << k;
+  EXPECT_NEAR(speedAlongX(t, 1490), 0.25 * kRapid, 1e-9);
+  const VelocityRamp up = VelocityRamp::make(0.25 * kRapid, kRapid, kDefaultA, kDefaultLineJ);
+  const uint64_t settled = 1500 + static_cast<uint64_t>(std::ceil(up.duration / kDefaultT)) + 1;
+  for (uint64_t k = settled; k < settled + 100; ++k) EXPECT_NEAR(speedAlongX(t, k), kRapid, 1e-9) << k;
 }
 
 TEST(RapidOverride, LeavesFeedMovesAlone) {
@@ -86,30 +81,30 @@ TEST(RapidOverride, NonLinearG00TakesItAtOnce) {
   // The first: up to 0.2 s unchanged; the ramp ends at a = 0 from there (v = 2000 * 0.2
   // minus the jerk phase's share), brakes to 250 and cruises.
   for (uint64_t k = 1; k <= 200; ++k) EXPECT_EQ(turned.points[k], plain.points[k]) << k;
-  const SCurveProfile whole = planProfile(300.0, 0.0, 0.0, kRapid, kA, kJ);
+  const SCurveProfile whole = planProfile(300.0, 0.0, 0.0, kRapid, kDefaultA, kDefaultLineJ);
   SCurveProfile cut = whole;
   ASSERT_TRUE(cutProfile(cut, 0.2, 0.5 * kRapid));
-  const VelocityRamp brake = VelocityRamp::make(0.5 * kRapid, cut.v_end, kA, kJ);
+  const VelocityRamp brake = VelocityRamp::make(0.5 * kRapid, cut.v_end, kDefaultA, kDefaultLineJ);
   const SCurveProfile rest =
-      planProfile(300.0 - cut.length - brake.distance, 0.5 * kRapid, 0.0, 0.5 * kRapid, kA, kJ);
+      planProfile(300.0 - cut.length - brake.distance, 0.5 * kRapid, 0.0, 0.5 * kRapid, kDefaultA, kDefaultLineJ);
   const double arrival = cut.duration + brake.duration + rest.duration;
   const auto arrived = [](const Trace& t) {
     for (uint64_t k = 0; k < t.ticks(); ++k)
       if (t.points[k][0] == 300.0) return k;
     return t.ticks();
   };
-  EXPECT_NEAR(static_cast<double>(arrived(turned)) * kT, arrival, 1.5 * kT);
-  const uint64_t cruising = static_cast<uint64_t>((cut.duration + brake.duration) / kT) + 5;
+  EXPECT_NEAR(static_cast<double>(arrived(turned)) * kDefaultT, arrival, 1.5 * kDefaultT);
+  const uint64_t cruising = static_cast<uint64_t>((cut.duration + brake.duration) / kDefaultT) + 5;
   for (uint64_t k = cruising; k < cruising + 50; ++k)
-    EXPECT_NEAR(speedAt(turned, k), 0.5 * kRapid, 1e-9) << k;
+    EXPECT_NEAR(speedAlongX(turned, k), 0.5 * kRapid, 1e-9) << k;
   // The second: the half-speed profile (both runs wait the same in-position time).
   AxisLimits full = AxisLimits::from(m);
   AxisLimits half = full;
   for (int i = 0; i < half.count; ++i) half.rapid_velocity[i] *= 0.5;
   const double slow_second = AxisRapid::make(second.from, second.to, half).duration();
   const double full_second = AxisRapid::make(second.from, second.to, full).duration();
-  EXPECT_NEAR(static_cast<double>((turned.ticks() - arrived(turned)) - (plain.ticks() - arrived(plain))) * kT,
-              slow_second - full_second, 2.0 * kT);
+  EXPECT_NEAR(static_cast<double>((turned.ticks() - arrived(turned)) - (plain.ticks() - arrived(plain))) * kDefaultT,
+              slow_second - full_second, 2.0 * kDefaultT);
 }
 
 TEST(RapidOverride, ClampedToAtMost100Percent) {
