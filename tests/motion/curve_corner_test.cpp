@@ -200,6 +200,77 @@ TEST(CurveCorners, TangentArcsKeepTheirExactPath) {
   EXPECT_LE(worstDeviation(b, prog), 1e-9);
 }
 
+// Found in review: the deviation peaks in a sharp ridge where the nearest side changes, which
+// fell between the 63 samples (a 92 degree arc-arc corner sampled at 0.970 of the tolerance
+// peaked at 1.016 of it; a 93 degree line-arc corner left it by 0.6 % in the trace).
+TEST(CurveCorner, StaysWithinToleranceBetweenItsSamples) {
+  const std::vector<MotionPrimitive> arcs = {  // exact circles (x^2 + y^2 = 1105^2, scaled)
+      arc(xyz(0.46484375, -0.27392578125, 0), xyz(-0.46484375, 0.27392578125, 0), 0, 1, 0, 0, true, 60.0),
+      arc(xyz(-0.46484375, 0.27392578125, 0), xyz(-0.4775390625, -0.20849609375, 0), 0, 1,
+          -0.591796875, 0.035888671875, false, 60.0)};
+  const double tol = 0.02469;
+  const auto fit = fitCurveCorner(segmentOf(arcs[0]), segmentOf(arcs[1]), tol, 3);
+  ASSERT_TRUE(fit.has_value());
+  double worst = 0.0;
+  AxisValues p;
+  for (int k = 0; k <= 4000; ++k) {
+    fit->curve.position(fit->curve.length() * k / 4000, p);
+    worst = std::max(worst, std::min(toPrimitive(p, arcs[0]), toPrimitive(p, arcs[1])));
+  }
+  EXPECT_LE(worst, tol);
+  MachineConfig m = defaultMachine();
+  m.corner_tolerance = tol;
+  EXPECT_LE(worstDeviation(run(m, arcs), arcs), tol);
+
+  const AxisValues p0 = xyz(2.1328125, 0.330078125, 0);
+  const std::vector<MotionPrimitive> line_arc = {
+      line(xyz(-20.260771253408112 + 17.239132881164551, 13.080752142558183 - 13.864596366882324, 0), p0, 600.0),
+      arc(p0, xyz(-1.595703125, -1.453125, 0), 0, 1, 0, 0, true, 600.0)};
+  m.corner_tolerance = 0.1924;
+  EXPECT_LE(worstDeviation(run(m, line_arc), line_arc), m.corner_tolerance);
+}
+
+// Found in review: only arcs whose two radii were bit-identical were blended, so an end point
+// rounded to 1 um, a centre from R or a work offset kept the corner.
+TEST(CurveCorners, ArcsWithSlightlyDifferentRadiiAreBlended) {
+  const std::vector<MotionPrimitive> prog = mixedContour(600.0);
+  std::vector<MotionPrimitive> moved = prog;
+  for (MotionPrimitive& p : moved)
+    for (AxisValues* v : {&p.from, &p.to, &p.center}) {
+      (*v)[0] += 0.1;
+      (*v)[1] += 0.3;
+    }
+  MachineConfig m = defaultMachine();
+  m.corner_tolerance = 0.1;
+  const Trace a = run(m, prog), b = run(m, moved);
+  EXPECT_NEAR(static_cast<double>(a.ticks()), static_cast<double>(b.ticks()), 2.0);
+  EXPECT_LE(worstDeviation(b, moved), m.corner_tolerance * (1.0 + 1e-9));
+  // G02 X14.33 Y2.5 I0 J5: the end radius is 4.99998.
+  const std::vector<MotionPrimitive> rounded = {
+      line(xyz(0, 0, 0), xyz(10, 0, 0), 600.0),
+      arc(xyz(10, 0, 0), xyz(14.33, 2.5, 0), 0, 1, 10, 5, false, 600.0),
+      line(xyz(14.33, 2.5, 0), xyz(30, 20, 0), 600.0)};
+  MachineConfig stop = defaultMachine();
+  stop.corner_tolerance = 0.0;
+  const Trace blended = run(m, rounded);
+  EXPECT_LT(blended.ticks(), run(stop, rounded).ticks());
+  expectWithinLimits(m, blended);
+  EXPECT_LE(worstDeviation(blended, rounded), m.corner_tolerance * (1.0 + 1e-9));
+}
+
+// Found in review: the blend-or-stop estimate took the lower feed for both sides, so the trim
+// taken off a fast move and run at the slow feed was not counted: a fast arc into a slow line
+// ran 38 % slower blended than stopping.
+TEST(CurveCorners, BlendBetweenDifferentFeedsIsNotSlowerThanStopping) {
+  const std::vector<MotionPrimitive> prog = {
+      arc(xyz(0, 0, 0), xyz(20, 20, 0), 0, 1, 0, 20, false, 3000.0),
+      line(xyz(20, 20, 0), xyz(22, 40, 0), 300.0)};
+  MachineConfig m = defaultMachine(), stop = defaultMachine();
+  m.corner_tolerance = 0.5;
+  stop.corner_tolerance = 0.0;
+  EXPECT_LE(run(m, prog).ticks(), run(stop, prog).ticks() * 102 / 100);
+}
+
 // Random plane contours of lines and arcs (R 0.5..20 mm, 10..300 degrees) meeting at random
 // turns (a quarter tangent), some lines climbing out of the plane, feeds 100..8000 mm/min; half
 // on a machine with 10x the jerk (where far more corners are worth blending), some with a

@@ -71,16 +71,22 @@ void ContinuousPath::enqueue(const QueuedSegment& segment, MotionPrimitive::Kind
 }
 
 // A ramp between v and V takes t and covers (v + V) / 2 * t: against cruising at V it loses
-// t * (V - v) / (2V). A stop has two such ramps from v = 0.
-double ContinuousPath::stopCost(double speed, double accel, double jerk) {
-  return VelocityRamp::make(0.0, speed, accel, jerk).duration;
+// t * (V - v) / (2V). A stop has two such ramps from v = 0, one at each side's feed.
+double ContinuousPath::rampCost(double from, double to, double accel, double jerk) {
+  return VelocityRamp::make(from, to, accel, jerk).duration * (to - from) / (2.0 * to);
 }
 
-double ContinuousPath::blendCost(double speed, double accel, double jerk, double blend_speed,
-                                 double blend_length, double trim) {
-  const double v = std::min(blend_speed, speed);
-  const double ramps = VelocityRamp::make(v, speed, accel, jerk).duration * (speed - v) / speed;
-  return ramps + blend_length / v - 2.0 * trim / speed;
+double ContinuousPath::stopCost(double speed_in, double speed_out, double accel, double jerk) {
+  return rampCost(0.0, speed_in, accel, jerk) + rampCost(0.0, speed_out, accel, jerk);
+}
+
+double ContinuousPath::blendCost(double speed_in, double speed_out, double accel, double jerk,
+                                 double blend_speed, double blend_length, double trim) {
+  // The trim comes off each side at its own feed (a blend after a fast move and before a
+  // slow one runs the fast move's share at the slow speed).
+  const double v = std::min({blend_speed, speed_in, speed_out});
+  return rampCost(v, speed_in, accel, jerk) + rampCost(v, speed_out, accel, jerk) +
+         blend_length / v - trim / speed_in - trim / speed_out;
 }
 
 ContinuousPath::Weakest ContinuousPath::weakest(const AxisValues& involved) const {
@@ -237,10 +243,9 @@ bool ContinuousPath::blendCorner(HeldMove& next, const PathSegment& next_path, d
   // Worth it if faster than the alternative: the kink's speed, or a stop.
   const Weakest w = weakest(involvedAxes(next, next_path));
   const double path_accel = w.acceleration, path_jerk = kSmoothJerkShare * w.jerk;
-  const double speed = std::min(a.feed, next.feed);
   const bool beats_stop =
-      blendCost(speed, path_accel, path_jerk, bl.velocity, blend.path.length(), trim) <
-      stopCost(speed, path_accel, path_jerk);
+      blendCost(a.feed, next.feed, path_accel, path_jerk, bl.velocity, blend.path.length(), trim) <
+      stopCost(a.feed, next.feed, path_accel, path_jerk);
   if (!(bl.velocity > unblended && (unblended > 0.0 || beats_stop))) return false;
   queueHeld(b_from, trim, 0.0, 0.0, next.direction, false);
   // The blend starts exactly where the trimmed move ended (also when the blends on both sides

@@ -1,6 +1,7 @@
 #include "ncc/vm/motion/curve_corner.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 namespace ncc::vm::motion {
@@ -8,6 +9,8 @@ namespace {
 
 // Deviation samples along the blend, and attempts at a smaller trim.
 constexpr int kDeviationSamples = 64;
+// Golden-section steps refining the largest samples (to 1e-8 of the sample spacing).
+constexpr int kRefineSteps = 40;
 constexpr int kAttempts = 12;
 constexpr double kFirstTrimScale = 1.5;
 
@@ -16,16 +19,59 @@ struct Plane {
   int a1 = 0, a2 = 1;
 };
 
+// A line's travel off the plane below this (mm) is rounding: the blend keeps the corner's
+// off-plane coordinates, a step far below any servo's resolution.
+constexpr double kOffPlane = 1e-9;
+
 bool liesIn(const PathSegment& seg, const Plane& plane, int axis_count) {
   if (seg.shape() == PathSegment::Shape::Arc) {
     const bool same_axes = (seg.planeAxis1() == plane.a1 && seg.planeAxis2() == plane.a2) ||
                            (seg.planeAxis1() == plane.a2 && seg.planeAxis2() == plane.a1);
-    return seg.isPlaneCircle() && same_axes;
+    // In the plane (no helix); the end radius may differ from the start radius (a spiral:
+    // rounded end points, a centre from R, a work offset).
+    return seg.planeShare() == 1.0 && same_axes;
   }
   if (seg.shape() != PathSegment::Shape::Line) return false;
   for (int i = 0; i < axis_count; ++i)
-    if (i != plane.a1 && i != plane.a2 && seg.from()[i] != seg.to()[i]) return false;
+    if (i != plane.a1 && i != plane.a2 && std::abs(seg.from()[i] - seg.to()[i]) > kOffPlane)
+      return false;
   return true;
+}
+
+// Distance of the blend's point at path length s from the programmed path it replaces.
+double deviationAt(const CornerBlend& curve, double s, const PathSegment& in_part,
+                   const PathSegment& out_part) {
+  AxisValues q;
+  curve.position(s, q);
+  return std::min(in_part.distanceTo(q), out_part.distanceTo(q));
+}
+
+// The largest deviation in [lo, hi] around a sampled local maximum, by golden-section search:
+// the deviation peaks in a sharp ridge where the nearest side changes from the incoming to the
+// outgoing move, which falls between samples (a 92 degree arc-arc corner sampled at 0.970 of
+// the tolerance peaked at 1.006).
+double refinedPeak(const CornerBlend& curve, double lo, double hi, const PathSegment& in_part,
+                   const PathSegment& out_part) {
+  constexpr double kGolden = 0.6180339887498949;
+  double a = lo, b = hi;
+  double x1 = b - kGolden * (b - a), x2 = a + kGolden * (b - a);
+  double f1 = deviationAt(curve, x1, in_part, out_part), f2 = deviationAt(curve, x2, in_part, out_part);
+  for (int i = 0; i < kRefineSteps; ++i) {
+    if (f1 < f2) {
+      a = x1;
+      x1 = x2;
+      f1 = f2;
+      x2 = a + kGolden * (b - a);
+      f2 = deviationAt(curve, x2, in_part, out_part);
+    } else {
+      b = x2;
+      x2 = x1;
+      f2 = f1;
+      x1 = b - kGolden * (b - a);
+      f1 = deviationAt(curve, x1, in_part, out_part);
+    }
+  }
+  return std::max(f1, f2);
 }
 
 // The segment's end state at path length s in the plane's coordinates (origin `corner`).
@@ -91,10 +137,18 @@ std::optional<CurveCorner> fitCurveCorner(const PathSegment& in, const PathSegme
     const PathSegment in_part = in.part(in.length() - d, in.length());
     const PathSegment out_part = out.part(0.0, d);
     double worst = std::isfinite(c.curve.maxCurvatureRate()) ? 0.0 : tolerance * 1e3;
-    AxisValues q;
+    const double step = c.curve.length() / kDeviationSamples;
+    std::array<double, kDeviationSamples + 1> samples{};  // 0 at both ends, on the path
     for (int k = 1; k < kDeviationSamples && worst <= tolerance; ++k) {
-      c.curve.position(c.curve.length() * k / kDeviationSamples, q);
-      worst = std::max(worst, std::min(in_part.distanceTo(q), out_part.distanceTo(q)));
+      samples[k] = deviationAt(c.curve, step * k, in_part, out_part);
+      worst = std::max(worst, samples[k]);
+    }
+    // The true peaks lie between samples: refine around every sampled local maximum within
+    // reach of the tolerance.
+    for (int k = 1; k < kDeviationSamples && worst <= tolerance; ++k) {
+      if (samples[k] >= samples[k - 1] && samples[k] >= samples[k + 1] &&
+          samples[k] > 0.5 * tolerance)
+        worst = std::max(worst, refinedPeak(c.curve, step * (k - 1), step * (k + 1), in_part, out_part));
     }
     const double allowed = kCurveCornerToleranceShare * tolerance;
     if (worst <= allowed) return c;

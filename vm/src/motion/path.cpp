@@ -114,19 +114,22 @@ double PathSegment::distanceTo(const AxisValues& q) const {
     for (int i = 0; i < axis_count_; ++i) p[i] = from_[i] + delta_[i] * f;
     return distance(p);
   }
-  if (!isPlaneCircle() || !(std::abs(sweep_) < std::numbers::pi))
+  if (plane_share_ != 1.0 || !(std::abs(sweep_) < std::numbers::pi))
     return std::numeric_limits<double>::infinity();
   double off_plane = 0.0;
   for (int i = 0; i < axis_count_; ++i)
     if (i != axis1_ && i != axis2_) off_plane += (q[i] - from_[i]) * (q[i] - from_[i]);
-  // Within the arc's wedge (seen from the centre): the distance to the circle; else to the
-  // nearer end.
+  // Within the arc's wedge (seen from the centre): the radial distance to the arc (to the
+  // circle; on a spiral, to its radius at that angle, at least the true distance); else to
+  // the nearer end.
   const double qx = q[axis1_] - cx_, qy = q[axis2_] - cy_;
   const double ax = from_[axis1_] - cx_, ay = from_[axis2_] - cy_;
   const double bx = to_[axis1_] - cx_, by = to_[axis2_] - cy_;
   const double side = sweep_ > 0.0 ? 1.0 : -1.0;
   if (side * (ax * qy - ay * qx) >= 0.0 && side * (qx * by - qy * bx) >= 0.0) {
-    const double radial = std::hypot(qx, qy) - r0_;
+    const double angle = std::atan2(std::abs(ax * qy - ay * qx), ax * qx + ay * qy);
+    const double r = r0_ + (r1_ - r0_) * std::min(angle / std::abs(sweep_), 1.0);
+    const double radial = std::hypot(qx, qy) - r;
     return std::sqrt(radial * radial + off_plane);
   }
   return std::min(distance(from_), distance(to_));

@@ -103,12 +103,15 @@ class ContinuousPath {
   // Highest speed at which the curvature may change by `step` (1/mm) within one cycle: the
   // acceleration step v^2 step reads as a jerk v^2 step / T on the axes in `involved`.
   double curvatureStepLimit(double step, const AxisValues& involved) const;
-  // Time a corner costs against passing it at `speed` (path acceleration `accel`, jerk
-  // `jerk`): stopping there, or slowing to `blend_speed` for a blend of `blend_length` that
-  // replaces 2 * `trim` of the lines. Decides between the two.
-  static double stopCost(double speed, double accel, double jerk);
-  static double blendCost(double speed, double accel, double jerk, double blend_speed,
-                          double blend_length, double trim);
+  // Time a corner costs against passing it at the feeds of the moves on either side
+  // (`speed_in`, `speed_out`; path acceleration `accel`, jerk `jerk`): stopping there, or
+  // slowing to `blend_speed` for a blend of `blend_length` that replaces `trim` of each move.
+  // Decides between the two.
+  static double stopCost(double speed_in, double speed_out, double accel, double jerk);
+  static double blendCost(double speed_in, double speed_out, double accel, double jerk,
+                          double blend_speed, double blend_length, double trim);
+  // What a ramp from `from` up to `to` loses against cruising at `to`.
+  static double rampCost(double from, double to, double accel, double jerk);
   // Whether a segment of `kind` queued now joins the path while it moves (else it starts from
   // rest: nothing queued, or a stop, a dwell or a change between feed and rapid before it).
   bool joinsMoving(MotionPrimitive::Kind kind) const;
