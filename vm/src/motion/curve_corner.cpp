@@ -13,6 +13,9 @@ constexpr int kDeviationSamples = 64;
 constexpr int kRefineSteps = 40;
 constexpr int kAttempts = 12;
 constexpr double kFirstTrimScale = 1.5;
+// A fit below this share of the allowed deviation grows its trim, at most kGrowths times.
+constexpr double kFillShare = 0.8;
+constexpr int kGrowths = 3;
 
 // The plane of the corner (the arc's, or both arcs'), when both segments lie in it.
 struct Plane {
@@ -122,9 +125,12 @@ std::optional<CurveCorner> fitCurveCorner(const PathSegment& in, const PathSegme
   // Start above the two-line blend's trim for this turn (an arc bending towards the corner's
   // inside lets the blend come closer to it; one bending away costs attempts), within each
   // side's share.
-  double d = std::min({kFirstTrimScale * tolerance /
-                           (CornerBlend::kDeviationFactor * std::sin(0.5 * theta)),
-                       trimLimit(in), trimLimit(out)});
+  const double cap = std::min(trimLimit(in), trimLimit(out));
+  double d = std::min(kFirstTrimScale * tolerance /
+                          (CornerBlend::kDeviationFactor * std::sin(0.5 * theta)),
+                      cap);
+  std::optional<CurveCorner> fits;  // the largest trim found within the tolerance
+  int growths = 0;
   for (int attempt = 0; attempt < kAttempts && d > 0.0; ++attempt) {
     CurveCorner c;
     c.trim = d;
@@ -151,11 +157,20 @@ std::optional<CurveCorner> fitCurveCorner(const PathSegment& in, const PathSegme
         worst = std::max(worst, refinedPeak(c.curve, step * (k - 1), step * (k + 1), in_part, out_part));
     }
     const double allowed = kCurveCornerToleranceShare * tolerance;
-    if (worst <= allowed) return c;
     // The deviation grows about in proportion to the trim.
+    if (worst <= allowed) {
+      fits = c;
+      // Well inside the tolerance (large turns, where the start value, measured to the corner
+      // point, is cautious): a larger trim cuts the corner as far as allowed.
+      if (worst >= kFillShare * allowed || d >= cap || growths == kGrowths) return fits;
+      d = std::min(cap, d * std::min(0.95 * allowed / std::max(worst, 1e-300), 2.0));
+      ++growths;
+      continue;
+    }
+    if (fits) return fits;  // grown too far: the last trim that fit
     d *= std::clamp(0.95 * allowed / worst, 0.25, 0.95);
   }
-  return std::nullopt;
+  return fits;
 }
 
 }  // namespace ncc::vm::motion
