@@ -8,35 +8,10 @@
 namespace ncc::vm::motion {
 namespace {
 
-// Junction velocities this close to a speed limit count as not binding (rounding).
+// Limits this close count as equal for joining a run (direction rounding in long chains).
 constexpr double kSameLimit = 1e-9;
-// Limits this close are the same but for rounding (the direction of a 10 um line along a
-// gentle wave moves a line's limits by 1e-9 from one vertex to the next): a run whose
-// profile is under way keeps its limits when such a segment joins it.
-constexpr double kRounding = 1e-8;
-// Limits this close join one run, which takes the lower of each. Along a chain of tiny
-// segments passed as kinks the direction changes a little at every vertex, and with it each
-// line's limits (A_i / |t_i| for an axis at 45 degrees moves by 1 % over a 0.01 rad turn;
-// along a gentle wave by 1e-9): split at every such step, a 10 um chain became runs of
-// 0.2 mm, each ending at a = 0, and the path crawled at half its feed.
-constexpr double kJoinBand = 0.01;
 
-bool close(double a, double b) { return std::abs(a - b) <= kJoinBand * std::max(a, b); }
-
-// Whether `run` and a segment of `length` with `limits` are so short that a run boundary
-// between them (a = 0 there) would cost more than running both at the lower limits: within
-// their joint length, a profile with a = 0 at both ends could not gain more than
-// kShortRunGain of the lower velocity limit. Short segments of different limits (a CAM feed
-// that changes every 10 um, a chain whose curvature steps fast) otherwise make runs too short
-// to accelerate in: alternating F5000 / F5100 on 10 um crawled at 15 mm/s.
-constexpr double kShortRunGain = 0.1;
-bool tooShortToSplit(const Run& run, const SegmentLimits& limits, double length) {
-  const double v_lo = std::min(run.limits.velocity, limits.velocity);
-  const double a = std::min(run.limits.acceleration, limits.acceleration);
-  const double j = std::min(run.limits.jerk, limits.jerk);
-  if (!(a > 0.0 && j > 0.0 && v_lo > 0.0)) return false;
-  return reachableGain(v_lo, run.length + length, a, j) <= kShortRunGain * v_lo;
-}
+bool close(double a, double b) { return std::abs(a - b) <= kSameLimit * std::max(a, b); }
 
 // A feed move the feed override does not scale: G63 tapping.
 bool isTap(const Run& run) {
@@ -65,17 +40,9 @@ void LookAhead::push(const QueuedSegment& segment, MotionPrimitive::Kind kind,
   const bool join = last != nullptr && !dwell && last->kind == kind && !last->stop_after &&
                     last->segments > 0 &&
                     entry_limit >= (1.0 - kSameLimit) * std::min(limits.velocity, last->limits.velocity) &&
-                    ((close(limits.velocity, last->limits.velocity) &&
-                      close(limits.acceleration, last->limits.acceleration) &&
-                      close(limits.jerk, last->limits.jerk)) ||
-                     tooShortToSplit(*last, limits, length)) &&
-                    // The piece under way in the front run was planned with its limits and
-                    // exits at the next run's entry: those two runs' limits must not fall
-                    // (beyond rounding, which they keep).
-                    (run_count_ > 2 || !front_started_ ||
-                     (limits.velocity >= (1.0 - kRounding) * last->limits.velocity &&
-                      limits.acceleration >= (1.0 - kRounding) * last->limits.acceleration &&
-                      limits.jerk >= (1.0 - kRounding) * last->limits.jerk)) &&
+                    close(limits.velocity, last->limits.velocity) &&
+                    close(limits.acceleration, last->limits.acceleration) &&
+                    close(limits.jerk, last->limits.jerk) &&
                     // A G63 tap (the feed override does not scale it) never shares a run
                     // with a move it scales. Scaled moves of different F do (their limits are
                     // equal: the axes cap both); the run takes the lower F under the knob.
@@ -89,11 +56,6 @@ void LookAhead::push(const QueuedSegment& segment, MotionPrimitive::Kind kind,
     ++last->segments;
     last->stop_after = stop_after;
     last->feed_limit = std::min(last->feed_limit, segment.feed_limit);
-    if (run_count_ > 2 || !front_started_) {
-      last->limits.velocity = std::min(last->limits.velocity, limits.velocity);
-      last->limits.acceleration = std::min(last->limits.acceleration, limits.acceleration);
-      last->limits.jerk = std::min(last->limits.jerk, limits.jerk);
-    }
   } else {
     Run& run = runAt(run_count_);
     run = Run{};
