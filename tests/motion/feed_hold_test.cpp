@@ -84,6 +84,36 @@ TEST(FeedHold, StopsANonLinearRapidOnEveryAxis) {
   EXPECT_EQ(again.points.back(), g00.to);
 }
 
+// Found in review: a second request before the same tick kept the legs the first one had
+// added to a non-linear G00, so the motion depended on their order (through the Controller, a
+// release and a rapid turn in one prepare()).
+TEST(FeedHold, NonLinearG00SameTickRequestsDoNotDependOnOrder) {
+  const MachineConfig m = defaultMachine();
+  MotionPrimitive g00 = rapid(xyz(0, 0, 0), xyz(2000, 0, 0));
+  g00.per_axis = true;
+  auto setup = [](MotionPlanner& p) { p.setOverrides(1.0, 0.3); };
+  const Trace release_first = run(m, {g00}, 1024, 50'000'000, false, [](uint64_t k, MotionPlanner& p) {
+    if (k == 500) p.setFeedHold(true);
+    if (k == 1500) { p.setFeedHold(false); p.setRapidOverride(1.0); }  // the Controller's order
+  }, setup);
+  const Trace turn_first = run(m, {g00}, 1024, 50'000'000, false, [](uint64_t k, MotionPlanner& p) {
+    if (k == 500) p.setFeedHold(true);
+    if (k == 1500) { p.setRapidOverride(1.0); p.setFeedHold(false); }
+  }, setup);
+  EXPECT_EQ(release_first.points, turn_first.points);
+  auto stopAt = [&](const PlannerHook& at1500) {
+    const Trace t = run(m, {g00}, 1024, 50'000'000, false, [&](uint64_t k, MotionPlanner& p) {
+      at1500(k, p);
+      if (k == 3000) p.setFeedHold(false);
+    });
+    return t.points[2500][0];
+  };
+  const double hold = stopAt([](uint64_t k, MotionPlanner& p) { if (k == 1500) p.setFeedHold(true); });
+  const double turn_hold = stopAt([](uint64_t k, MotionPlanner& p) {
+    if (k == 1500) { p.setRapidOverride(0.1); p.setFeedHold(true); } });
+  EXPECT_NEAR(turn_hold, hold, 1e-9);
+}
+
 TEST(FeedHold, PressedWhileAcceleratingStopsAtOnce) {
   // A G00 along X (rapid 500 mm/s) held 20 ms after it starts, in its jerk-up phase: the
   // ramp goes into its jerk-down phase on the next tick and the path brakes from there, at

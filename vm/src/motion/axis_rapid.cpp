@@ -70,6 +70,12 @@ void AxisRapid::replan(double next, const AxisLimits& limits, bool held) {
     // is already at rest; the new legs follow it.
     int c = n - 1;
     for (int k = 0; k < n; ++k) {
+      // A leg that has not begun (added by a request before the same tick) is replaced, not
+      // kept: two requests between the same ticks give the same motion in either order.
+      if (k > 0 && legs[k].t0 >= next) {
+        c = k - 1;
+        break;
+      }
       if (next < legs[k].end()) {
         c = k;
         break;

@@ -60,7 +60,8 @@ class AxisRapid {
   // From local time `next` (the next tick) on: under `held`, every axis brakes to rest as its
   // limits allow and stands; else each goes on to `to` at its rapid speed in `limits`. An
   // axis braking to its end, or in the last jerk phase of a ramp without cruise, runs on to the
-  // end of that profile first. Everything before `next` is unchanged.
+  // end of that profile first. Results for t >= `next` are as before until `next`; earlier
+  // times are no longer kept (legs that ended are dropped), which the interpolator never asks.
   void replan(double next, const AxisLimits& limits, bool held);
 
   // Axis positions at time t from the start, t clamped to [0, duration()]. Axis i gives
