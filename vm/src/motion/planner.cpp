@@ -104,49 +104,52 @@ bool MotionPlanner::push(const MotionPrimitive& m) {
     queue_.push(seg, m.kind, SegmentLimits{}, 0.0, true, std::max(seconds, 0.0));
     return true;
   }
-  const bool rapid = m.kind == MotionPrimitive::Kind::Rapid;
+  if (m.kind == MotionPrimitive::Kind::Rapid) {
+    pushRapid(m);
+    return true;
+  }
   // G63 (tapping without an encoder): the tap's pitch is F / S, so the feed runs at 100 %.
   const double override = m.fixed_override ? 1.0 : feed_override_;
-  double feed = (m.feed_per_rev ? m.feed * spindle_rpm_ / 60.0 : m.feed / 60.0) * override;
-  if (!rapid) feed = std::max(feed, kMinPathVelocity);
-  // What a live feed override scales (setFeedOverride): not rapids, not G63.
-  const double feed_limit =
-      rapid || m.fixed_override ? std::numeric_limits<double>::infinity() : feed;
-  if (m.kind == MotionPrimitive::Kind::Line || m.kind == MotionPrimitive::Kind::Arc) {
-    const PathSegment programmed =
-        m.kind == MotionPrimitive::Kind::Line
-            ? PathSegment::line(m.from, m.to, n)
-            : PathSegment::arc(m.from, m.to, n, m.axis1, m.axis2, m.center[m.axis1],
-                               m.center[m.axis2], m.cw, m.extra_turns);
-    // A move that does not move counts only for its exact stop.
-    if (!path_.move(programmed, feed, feed_limit, m.exact_stop, m.where) && m.exact_stop) stop();
-    return true;
-  }
-  QueuedSegment seg;
+  const double feed = std::max(
+      (m.feed_per_rev ? m.feed * spindle_rpm_ / 60.0 : m.feed / 60.0) * override, kMinPathVelocity);
+  // What a live feed override scales (setFeedOverride): not G63.
+  const double feed_limit = m.fixed_override ? std::numeric_limits<double>::infinity() : feed;
+  const PathSegment programmed =
+      m.kind == MotionPrimitive::Kind::Line
+          ? PathSegment::line(m.from, m.to, n)
+          : PathSegment::arc(m.from, m.to, n, m.axis1, m.axis2, m.center[m.axis1],
+                             m.center[m.axis2], m.cw, m.extra_turns);
+  // A move that does not move counts only for its exact stop.
+  if (!path_.move(programmed, feed, feed_limit, m.exact_stop, m.where) && m.exact_stop) stop();
+  return true;
+}
+
+void MotionPlanner::pushRapid(const MotionPrimitive& m) {
+  QueuedSegment seg;  // the feed override does not scale it: feed_limit stays infinite
   seg.where = m.where;
-  seg.feed_limit = feed_limit;
   seg.exact_stop = m.exact_stop;
-  seg.path = PathSegment::line(m.from, m.to, n);
+  seg.path = PathSegment::line(m.from, m.to, limits_.count);
   const bool moves = seg.path.length() > 0.0;
   // The held move ends at rest before a rapid that moves.
-  path_.flush(rapid && moves);
+  path_.flush(moves);
   if (!moves) {  // nothing moves: only its exact stop counts
     if (m.exact_stop) stop();
-    return true;
+    return;
   }
-  if (rapid && m.per_axis && AxisRapid::possible(m.from, m.to, limits_)) {
+  // Planned at the axes' full rapid speeds; the rapid override scales them (SpeedScales).
+  const SegmentLimits limits = segmentLimits(seg.path, limits_, true, 0.0);
+  if (m.per_axis && AxisRapid::possible(m.from, m.to, limits_)) {
     // Non-linear positioning: its own piece, from rest to rest (interpolator.h).
     seg.per_axis = true;
     queue_.stopAfterLast();
-    queue_.push(seg, m.kind, segmentLimits(seg.path, limits_, true, feed), 0.0, true, 0.0);
-    return true;
+    queue_.push(seg, m.kind, limits, 0.0, true, 0.0);
+    return;
   }
-  SegmentLimits limits = segmentLimits(seg.path, limits_, rapid, feed);
-  limits.velocity = std::max(limits.velocity, kMinPathVelocity);
+  SegmentLimits linear = limits;
+  linear.velocity = std::max(linear.velocity, kMinPathVelocity);
   const QueuedSegment* prev = queue_.lastSegment();
   const double vertex = prev != nullptr ? junctionVelocity(prev->path, seg.path, limits_) : 0.0;
-  path_.enqueue(seg, m.kind, limits, vertex, m.exact_stop);
-  return true;
+  path_.enqueue(seg, m.kind, linear, vertex, m.exact_stop);
 }
 
 bool MotionPlanner::accept(const Event& event) {

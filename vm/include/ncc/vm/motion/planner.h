@@ -120,6 +120,9 @@ class MotionPlanner {
   // After endOfProgram(): queues the held line once the ring has room. True when nothing more
   // will be queued (the last run is final).
   bool closeInput();
+  // push() of a G00: a linear one joins the path like a line; a non-linear one is its own
+  // piece, from rest to rest.
+  void pushRapid(const MotionPrimitive& m);
   // Where the motion under way is committed to before the speed limits change to those of
   // `scales` (Interpolator::commitForReplan).
   Commitment commitFor(const SpeedScales& scales);
