@@ -13,17 +13,6 @@ namespace {
 
 using namespace motion_test;
 
-// Largest distance of any setpoint from the programmed polyline.
-double worstDeviation(const Trace& t, const std::vector<MotionPrimitive>& prog) {
-  double worst = 0.0;
-  for (const AxisValues& p : t.points) {
-    double best = 1e300;
-    for (const MotionPrimitive& m : prog) best = std::min(best, toSegment(p, m.from, m.to));
-    worst = std::max(worst, best);
-  }
-  return worst;
-}
-
 std::vector<MotionPrimitive> square(double feed) {
   return {line(xyz(0, 0, 0), xyz(10, 0, 0), feed), line(xyz(10, 0, 0), xyz(10, 10, 0), feed),
           line(xyz(10, 10, 0), xyz(0, 10, 0), feed), line(xyz(0, 10, 0), xyz(0, 0, 0), feed)};

@@ -17,35 +17,6 @@ using namespace motion_test;
 
 constexpr double kPi = std::numbers::pi;
 
-// Distance from p to a programmed primitive, worked out here without PathSegment: a line, or
-// a plane (X, Y) arc of less than a full turn.
-double toPrimitive(const AxisValues& p, const MotionPrimitive& m) {
-  if (m.kind != Kind::Arc) return toSegment(p, m.from, m.to);
-  const double cx = m.center[0], cy = m.center[1];
-  const double r = std::hypot(m.from[0] - cx, m.from[1] - cy);
-  const double a0 = std::atan2(m.from[1] - cy, m.from[0] - cx);
-  double sweep = std::atan2(m.to[1] - cy, m.to[0] - cx) - a0;
-  if (m.cw && sweep >= 0.0) sweep -= 2.0 * kPi;
-  if (!m.cw && sweep <= 0.0) sweep += 2.0 * kPi;
-  // The angle of p from the start, in the arc's direction, in [0, 2pi).
-  double a = std::atan2(p[1] - cy, p[0] - cx) - a0;
-  if (m.cw) a = -a;
-  a = std::fmod(std::fmod(a, 2.0 * kPi) + 2.0 * kPi, 2.0 * kPi);
-  const double off_plane = p[2] - m.from[2];
-  if (a <= std::abs(sweep)) return std::hypot(std::hypot(p[0] - cx, p[1] - cy) - r, off_plane);
-  return std::min(distance(p, m.from), distance(p, m.to));
-}
-
-double worstDeviation(const Trace& t, const std::vector<MotionPrimitive>& prog) {
-  double worst = 0.0;
-  for (const AxisValues& p : t.points) {
-    double best = 1e300;
-    for (const MotionPrimitive& m : prog) best = std::min(best, toPrimitive(p, m));
-    worst = std::max(worst, best);
-  }
-  return worst;
-}
-
 // A contour of 90-degree corners between lines and half circles (R 5), every kind of corner
 // once: line-arc at (10, 0), arc-line at (20, 0), line-arc at (30, 0), arc-arc at (40, 0),
 // arc-line at (45, 5).
