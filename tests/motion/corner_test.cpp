@@ -171,6 +171,41 @@ TEST(Corners, ZeroLengthRapidDoesNotEndAChainAtRest) {
   EXPECT_EQ(t.points.back(), prog.back().to);
 }
 
+TEST(Corners, ChainNextToAStopTakesNoWiggleFromTheAxesBeyondIt) {
+  // A line through X, Y and a slow Z reverses (a stop) into a gently curving chain in XY
+  // whose polygon deviates from its curve by 0.1 um: more than Z's wiggle budget
+  // (kWiggleJerkShare of its jerk, 3.4e-8 mm) but well within X's and Y's. Z does not move on
+  // the chain, and its first vertex is a stop, so Z takes no wiggle there. Counting the line
+  // before the stop as the chain's neighbour gave the first chain line negative acceleration
+  // and jerk limits: it crept at 1 mm/min after a 0.22 um step, 27.6 x the jerk limit
+  // (review fuzz seed 179).
+  MachineConfig m = defaultMachine();
+  m.axes[0].max_acceleration = 1862.0;
+  m.axes[0].max_jerk = 15529.0;
+  m.axes[1].max_acceleration = 1872.0;
+  m.axes[1].max_jerk = 165963.0;
+  m.axes[2].max_acceleration = 55.5;
+  m.axes[2].max_jerk = 679.5;
+  const double chord = 0.01, feed = 3000.0;
+  const double turn = 8.0 * 3e-7 / chord;  // sagitta c * turn / 8 = 0.3 um
+  std::vector<MotionPrimitive> prog;
+  AxisValues p = xyz(0.05, 0.02, 0.002);
+  prog.push_back(line(xyz(0, 0, 0), p, feed));
+  double heading = std::numbers::pi;  // back along -X: a reversal, so a stop
+  for (int i = 0; i < 200; ++i) {
+    heading += turn;
+    const AxisValues q = xyz(p[0] + chord * std::cos(heading), p[1] + chord * std::sin(heading), p[2]);
+    prog.push_back(line(p, q, feed));
+    p = q;
+  }
+  const Trace t = run(m, prog, 64);
+  expectWithinLimits(m, t);
+  EXPECT_EQ(t.points.back(), prog.back().to);
+  // No creep: 2 mm of chain at up to 50 mm/s, limited by the 64-segment window (0.64 mm),
+  // takes well under a second; creeping through one 10 um line at 1 mm/min alone took 0.6 s.
+  EXPECT_LT(t.ticks(), 400u);
+}
+
 // Random 3-D polylines: segment lengths from 5 um to 20 mm, turns from 0 to 175 degrees,
 // feeds 100..8000 mm/min, on a machine with unequal axes.
 TEST(Corners, RandomPolylinesKeepLimitsAndTolerance) {

@@ -32,10 +32,10 @@ double roundUp(double x, double steps) {
 }
 // A chain line's limits are rounded down to a 4.4 % grid, so that neighbouring lines have
 // equal limits and join one run. Its shape is rounded up, so that its lines share one shape
-// and their limits are computed once: the curvature on a 1.1 % grid; the sagitta (the
-// polygon's wiggle, which takes at most a fifth of the jerk) on a 19 % grid, since it changes
-// with every chord length.
-constexpr double kLimitGridSteps = 16.0, kCurvatureGridSteps = 64.0, kSagittaGridSteps = 4.0;
+// and their limits are computed once: the curvature on a 1.1 % grid; the wiggle (the
+// polygon's deviation from the curve, at most a fifth of the jerk) on a 19 % grid, since it
+// changes with every chord length.
+constexpr double kLimitGridSteps = 16.0, kCurvatureGridSteps = 64.0, kWiggleGridSteps = 4.0;
 
 double dot(const AxisValues& a, const AxisValues& b, int n) {
   double s = 0.0;
@@ -104,13 +104,16 @@ double ContinuousPath::curvatureStepLimit(double step, const AxisValues& involve
   return std::sqrt(kJunctionJerkShare * weakest(involved).jerk * limits_.ipo_cycle / step);
 }
 
-double ContinuousPath::wiggleAllowance(const AxisValues& involved) const {
+bool ContinuousPath::wiggleFits(const AxisValues& wiggle) const {
   // limits.h: 2 delta / T^2 of acceleration and 4 delta / T^3 of jerk.
   const double T = limits_.ipo_cycle;
-  const Weakest w = weakest(involved);
-  const double delta = std::min(kWiggleJerkShare * w.jerk * T * T * T / 4.0,
-                                kWiggleAccelerationShare * w.acceleration * T * T / 2.0);
-  return delta == kInf ? 0.0 : delta;
+  for (int i = 0; i < limits_.count; ++i) {
+    if (wiggle[i] == 0.0) continue;
+    const double allowed = std::min(kWiggleJerkShare * limits_.jerk[i] * T * T * T / 4.0,
+                                    kWiggleAccelerationShare * limits_.acceleration[i] * T * T / 2.0);
+    if (!(wiggle[i] <= allowed)) return false;
+  }
+  return true;
 }
 
 PathSegment ContinuousPath::heldPart(const AxisValues& end, double end_trim) const {
@@ -132,7 +135,7 @@ AxisValues ContinuousPath::involvedAxes(const HeldMove& next, const PathSegment&
 }
 
 void ContinuousPath::queueHeld(const AxisValues& end, double end_trim, double end_curvature,
-                               double end_sagitta, const AxisValues& next_direction,
+                               const AxisValues& end_wiggle, const AxisValues& next_direction,
                                bool stop_after, bool end_at_rest) {
   const int n = limits_.count;
   QueuedSegment seg;
@@ -153,10 +156,14 @@ void ContinuousPath::queueHeld(const AxisValues& end, double end_trim, double en
   }
   ChainShape chain;
   chain.curvature = roundUp(std::max(held_.start_curvature, end_curvature), kCurvatureGridSteps);
-  chain.sagitta = roundUp(std::max(held_.start_sagitta, end_sagitta), kSagittaGridSteps);
+  // The chain's curve turns towards the neighbours across chain vertices only: at any other
+  // vertex (a stop, a kink, a blend) the line's own direction is where it starts or ends.
+  const bool chain_start = held_.start_curvature > 0.0, chain_end = end_curvature > 0.0;
   for (int i = 0; i < n; ++i) {
-    const bool moves = held_.direction[i] != 0.0 || held_.previous_direction[i] != 0.0 ||
-                       next_direction[i] != 0.0;
+    chain.wiggle[i] = roundUp(std::max(held_.start_wiggle[i], end_wiggle[i]), kWiggleGridSteps);
+    const bool moves = held_.direction[i] != 0.0 ||
+                       (chain_start && held_.previous_direction[i] != 0.0) ||
+                       (chain_end && next_direction[i] != 0.0);
     chain.involved[i] = moves ? 1.0 : 0.0;
   }
   SegmentLimits limits = chain.curvature > 0.0 ? chainLimits(seg.path, held_.feed, chain)
@@ -188,19 +195,19 @@ SegmentLimits ContinuousPath::chainLimits(const PathSegment& line, double feed,
   // every involved axis (limits.h), whatever its direction.
   for (const ChainLimits& c : chain_cache_) {
     if (c.valid && c.feed == feed && c.curvature == chain.curvature &&
-        c.sagitta == chain.sagitta && c.involved == chain.involved)
+        c.wiggle == chain.wiggle && c.involved == chain.involved)
       return c.limits;
   }
   ChainLimits& slot = chain_cache_[chain_cache_next_];
   chain_cache_next_ = (chain_cache_next_ + 1) % chain_cache_.size();
-  slot = {true, feed, chain.curvature, chain.sagitta, chain.involved,
+  slot = {true, feed, chain.curvature, chain.wiggle, chain.involved,
           segmentLimits(line, limits_, false, feed, chain)};
   return slot.limits;
 }
 
 void ContinuousPath::flush(bool at_rest) {
   if (!held_.active) return;
-  queueHeld(held_.end, 0.0, 0.0, 0.0, AxisValues{}, false, at_rest);
+  queueHeld(held_.end, 0.0, 0.0, AxisValues{}, AxisValues{}, false, at_rest);
   held_.active = false;
 }
 
@@ -247,7 +254,7 @@ bool ContinuousPath::blendCorner(HeldMove& next, const PathSegment& next_path, d
       blendCost(a.feed, next.feed, path_accel, path_jerk, bl.velocity, blend.path.length(), trim) <
       stopCost(a.feed, next.feed, path_accel, path_jerk);
   if (!(bl.velocity > unblended && (unblended > 0.0 || beats_stop))) return false;
-  queueHeld(b_from, trim, 0.0, 0.0, next.direction, false);
+  queueHeld(b_from, trim, 0.0, AxisValues{}, next.direction, false);
   // The blend starts exactly where the trimmed move ended (also when the blends on both sides
   // left nothing of it).
   const QueuedSegment* last = queue_.lastSegment();
@@ -290,7 +297,12 @@ bool ContinuousPath::move(const PathSegment& programmed, double feed, double fee
     const bool lines = !a.arc && !next.arc;
     const double kappa = 2.0 * std::sin(0.5 * theta) / (0.5 * (a.length + next.length));
     const double longest = std::max(a.length, next.length);
+    // The polygon's deviation from the curve through the vertex, along the axes the turn
+    // moves (its normal's): the sagitta.
     const double sagitta = longest * longest * kappa / 8.0;
+    AxisValues wiggle{};
+    for (int i = 0; i < n; ++i)
+      wiggle[i] = next.direction[i] != a.end_direction[i] ? sagitta : 0.0;
 
     // A turn the kink rule passes at full speed needs nothing else (collinear lines, tangent
     // arcs, and tiny turns between long lines).
@@ -298,14 +310,14 @@ bool ContinuousPath::move(const PathSegment& programmed, double feed, double fee
         theta <= kCornerAngle ? junctionVelocity(heldPart(a.end, 0.0), programmed, limits_) : 0.0;
     const bool kink_free = a.start_curvature == 0.0 && kink >= std::max(a.feed, feed);
     if (kink_free) {
-      queueHeld(a.end, 0.0, 0.0, 0.0, next.direction, false);
+      queueHeld(a.end, 0.0, 0.0, AxisValues{}, next.direction, false);
       next.start_limit = kink;
-    } else if (lines && theta <= kChainMaxTurn && sagitta <= wiggleAllowance(involved)) {
+    } else if (lines && theta <= kChainMaxTurn && wiggleFits(wiggle)) {
       // Chain vertex: passed as is, both lines planned as the curve through it.
-      queueHeld(a.end, 0.0, kappa, sagitta, next.direction, false);
+      queueHeld(a.end, 0.0, kappa, wiggle, next.direction, false);
       next.start_limit = kInf;
       next.start_curvature = kappa;
-      next.start_sagitta = sagitta;
+      next.start_wiggle = wiggle;
     } else {
       // Candidates that keep the geometry: the kink rule (small turns), else a stop; both
       // with the curvature step where a chain ends here.
@@ -313,7 +325,7 @@ bool ContinuousPath::move(const PathSegment& programmed, double feed, double fee
       const double unblended = std::min(kink, chain_end);
       if (!blendCorner(next, programmed, theta, unblended, chain_end)) {
         const bool stop = unblended <= 0.0;
-        queueHeld(a.end, 0.0, 0.0, 0.0, next.direction, stop);
+        queueHeld(a.end, 0.0, 0.0, AxisValues{}, next.direction, stop);
         next.start_limit = unblended;
       }
     }
@@ -322,7 +334,7 @@ bool ContinuousPath::move(const PathSegment& programmed, double feed, double fee
   held_ = next;
   if (next.arc) held_arc_ = programmed;
   if (exact_stop) {
-    queueHeld(held_.end, 0.0, 0.0, 0.0, AxisValues{}, true);
+    queueHeld(held_.end, 0.0, 0.0, AxisValues{}, AxisValues{}, true);
     held_.active = false;
   }
   return true;

@@ -55,8 +55,9 @@ SegmentLimits segmentLimits(const PathSegment& path, const AxisLimits& axes, boo
   }
   const bool curved = kappa > 0.0;
   const double T = axes.ipo_cycle;
-  const double wiggle_jerk = in_chain ? 4.0 * chain.sagitta / (T * T * T) : 0.0;
-  const double wiggle_acc = in_chain ? 2.0 * chain.sagitta / (T * T) : 0.0;
+  // The polygon's wiggle along axis i, in its sampled jerk and acceleration (limits.h).
+  auto wiggleJerk = [&](int i) { return in_chain ? 4.0 * chain.wiggle[i] / (T * T * T) : 0.0; };
+  auto wiggleAcc = [&](int i) { return in_chain ? 2.0 * chain.wiggle[i] / (T * T) : 0.0; };
   // The share of the smooth jerk the curvature's rotation (v^3 r) may take at top speed. A
   // blend is short and passed near constant speed, so it gives the rotation more.
   const double rotation_share = path.shape() == PathSegment::Shape::Blend ? 2.0 / 3.0 : 1.0 / 3.0;
@@ -68,7 +69,7 @@ SegmentLimits segmentLimits(const PathSegment& path, const AxisLimits& axes, boo
       lim.velocity = std::min(lim.velocity, (rapid ? axes.rapid_velocity[i] : axes.feed_velocity[i]) / t[i]);
     if (!curved || q[i] == 0.0) continue;
     lim.velocity = std::min(lim.velocity, std::sqrt(kCentripetalShare * axes.acceleration[i] / (kappa * q[i])));
-    const double smooth = kSmoothJerkShare * axes.jerk[i] - q[i] * wiggle_jerk;
+    const double smooth = kSmoothJerkShare * axes.jerk[i] - wiggleJerk(i);
     lim.velocity = std::min(lim.velocity, std::cbrt(rotation_share * smooth / (rate * q[i])));
   }
   if (curved && axes.chord_tolerance > 0.0) {
@@ -99,14 +100,14 @@ SegmentLimits segmentLimits(const PathSegment& path, const AxisLimits& axes, boo
   double speed_share = 0.0;  // largest share of an axis limit the speed-dependent terms take
   for (int i = 0; i < axes.count; ++i) {
     if (t[i] == 0.0 && (!curved || q[i] == 0.0)) continue;
-    const double acc = axes.acceleration[i] - q[i] * wiggle_acc;
+    const double acc = axes.acceleration[i] - wiggleAcc(i);
     double a_i = kInf;
     if (t[i] > 0.0) a_i = (acc - centripetal * q[i]) / t[i];
     else if (acc < centripetal * q[i]) a_i = -kInf;
     if (curved && q[i] > 0.0 && acc >= centripetal)
       a_i = std::max(a_i, std::sqrt(acc * acc - centripetal * centripetal));
     lim.acceleration = std::min(lim.acceleration, a_i);
-    const double jerk = kSmoothJerkShare * axes.jerk[i] - q[i] * wiggle_jerk;
+    const double jerk = kSmoothJerkShare * axes.jerk[i] - wiggleJerk(i);
     const bool norm = curved && q[i] > 0.0;
     budget.add({t[i], cross * q[i], jerk - rotation * q[i], norm ? cross : 0.0,
                 norm ? (circle ? jerk : jerk - rotation) : 0.0,

@@ -70,17 +70,18 @@ class ContinuousPath {
     bool exact_stop = false;       // G09/G61
     double start_limit = 0.0;      // junction velocity limit at `start`
     double start_curvature = 0.0;  // chain curvature at its start vertex (0: not a chain vertex)
-    double start_sagitta = 0.0;    // the polygon's deviation from the chain's curve there
+    AxisValues start_wiggle{};     // the polygon's deviation from the chain's curve there,
+                                   // per axis (ChainShape::wiggle)
     AxisValues previous_direction{};  // end tangent of the move before it (zero if none)
   };
 
   // Queues the held move from its start to `end` (an arc: to `end_trim` before its programmed
-  // end), a line planned with the chain curvature of its two vertices (end_curvature: 0 when
-  // its end is not a chain vertex). `end_at_rest`: the path stops at `end` (stop_after, or
-  // what follows starts from rest).
+  // end), a line planned with the chain curvature and wiggle of its two vertices
+  // (end_curvature: 0 when its end is not a chain vertex). `end_at_rest`: the path stops at
+  // `end` (stop_after, or what follows starts from rest).
   void queueHeld(const AxisValues& end, double end_trim, double end_curvature,
-                 double end_sagitta, const AxisValues& next_direction, bool stop_after,
-                 bool end_at_rest = false);
+                 const AxisValues& end_wiggle, const AxisValues& next_direction,
+                 bool stop_after, bool end_at_rest = false);
   // What is left of the held move from its start to `end_trim` before its programmed end
   // (a line: to `end`).
   PathSegment heldPart(const AxisValues& end, double end_trim) const;
@@ -115,11 +116,12 @@ class ContinuousPath {
   // Whether a segment of `kind` queued now joins the path while it moves (else it starts from
   // rest: nothing queued, or a stop, a dwell or a change between feed and rapid before it).
   bool joinsMoving(MotionPrimitive::Kind kind) const;
-  // Largest polygon deviation (mm) a chain may have on the axes in `involved`.
-  double wiggleAllowance(const AxisValues& involved) const;
+  // Whether a chain's polygon may deviate from its curve by `wiggle` (per axis, mm): within
+  // kWiggleJerkShare of each axis' jerk and kWiggleAccelerationShare of its acceleration.
+  bool wiggleFits(const AxisValues& wiggle) const;
   // segmentLimits of a chain line, kept for later lines of the same shape: on fast curves
   // they take a search over the ramp envelope (ramp_envelope.h), several microseconds, and a
-  // chain's lines share curvature and sagitta (rounded up to a grid).
+  // chain's lines share curvature and wiggle (rounded up to a grid).
   SegmentLimits chainLimits(const PathSegment& line, double feed, const ChainShape& chain);
 
   const AxisLimits& limits_;
@@ -130,8 +132,8 @@ class ContinuousPath {
   PathSegment held_arc_;
   struct ChainLimits {
     bool valid = false;
-    double feed = 0.0, curvature = 0.0, sagitta = 0.0;
-    AxisValues involved{};
+    double feed = 0.0, curvature = 0.0;
+    AxisValues wiggle{}, involved{};
     SegmentLimits limits;
   };
   std::array<ChainLimits, 32> chain_cache_{};  // the last shapes seen, replaced in turn

@@ -101,12 +101,13 @@ struct SegmentLimits {
 };
 
 // A line that is part of a smooth chain of short lines (continuous_path.h): the curvature of
-// the curve the chain follows near it, the polygon's largest distance from that curve (its
-// sagitta, mm), and per axis 1 if the axis moves on it or on a neighbour (the curve's tangent
-// and normal may point along it), else 0.
+// the curve the chain follows near it; per axis, the polygon's largest distance from that
+// curve along the axis ("wiggle", mm: the sagitta on the axes its vertices turn, 0 on the
+// others); and per axis 1 if the axis moves on it or on a neighbour across a chain vertex
+// (the curve's tangent and normal may point along it), else 0.
 struct ChainShape {
   double curvature = 0.0;
-  double sagitta = 0.0;
+  AxisValues wiggle{};
   AxisValues involved{};
 };
 
