@@ -88,6 +88,32 @@ TEST(Corners, BlendIsChosenOnlyWhenFasterThanStopping) {
   }
 }
 
+TEST(Corners, BlendTooTightForTheAxesStops) {
+  // A 0.22 um line along X, whose jerk limit is 35 mm/s^3, then a turn of 90 degrees into Y
+  // and Z (review fuzz, extreme axis-limit ratios). The largest blend (half the short line)
+  // has so much curvature that X's jerk caps its speed at 0.004 mm/s, below the slowest speed
+  // anything is planned with (1 mm/min). Passed at that floor it reached 4.9x X's jerk limit;
+  // the corner must stop, like with no corner tolerance.
+  MachineConfig m = defaultMachine();
+  m.corner_tolerance = 0.01;
+  auto set = [&](int i, double v, double a, double j) {
+    m.axes[i].max_velocity = m.axes[i].rapid_velocity = v * 60.0;
+    m.axes[i].max_acceleration = a;
+    m.axes[i].max_jerk = j;
+  };
+  set(0, 9321.05, 26412.2, 35.3085);
+  set(1, 365.246, 2.21014, 3.18667e6);
+  set(2, 3.40538, 2.16001, 105.447);
+  const AxisValues a = xyz(-188.789978, 404.67095, 213.275792);
+  const AxisValues b = xyz(-188.789755, 404.67095, 213.275792);
+  const AxisValues c = xyz(-188.789755, 275.281984, 188.417888);
+  const std::vector<MotionPrimitive> prog = {line(a, b, 3229.25), line(b, c, 1667.03)};
+  const Trace t = run(m, prog);
+  expectWithinLimits(m, t);
+  EXPECT_EQ(t.points.back(), c);
+  EXPECT_NE(std::find(t.points.begin(), t.points.end(), b), t.points.end());  // it stops at b
+}
+
 TEST(Corners, CollinearSplitHasNoSlowdown) {
   const MachineConfig m = defaultMachine();
   const Trace straight = run(m, {line(xyz(0, 0, 0), xyz(10, 0, 0), 3000.0),
