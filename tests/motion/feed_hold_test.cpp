@@ -154,9 +154,10 @@ TEST(FeedHold, ReleasedWhileBrakingAndHeldAgain) {
 }
 
 TEST(FeedHold, ThroughAChainOfShortSegments) {
-  // A 10 um chain at F6000 along a gentle wave (about 58 mm/s where it is held): the brake
-  // runs over hundreds of segments, in runs of different limits (each ends at a = 0), and
-  // takes about 250 ms; the path then stands until the release.
+  // A 10 um chain at F6000 along a gentle wave (100 mm/s where it is held): the brake runs
+  // over hundreds of segments in one run (their limits differ by rounding only) and takes
+  // 95 ms, like a line; the path then stands until the release. (Split into runs at every
+  // rounding step, it ran at 58 mm/s and took 250 ms to stop.)
   const MachineConfig m = defaultMachine();
   std::vector<MotionPrimitive> prog;
   AxisValues p = xyz(0, 0, 0);
@@ -167,7 +168,7 @@ TEST(FeedHold, ThroughAChainOfShortSegments) {
   }
   const Trace t = run(m, prog, 1024, 50'000'000, false, holdBetween(1000, 1400));
   expectWithinLimits(m, t);
-  EXPECT_EQ(standingTicks(t, 1300, 1400), 100u);
+  EXPECT_EQ(standingTicks(t, 1100, 1400), 300u);
   EXPECT_EQ(t.points.back(), p);
 }
 

@@ -93,6 +93,49 @@ TEST(Planner, CollinearMicroSegmentsReachProgrammedFeed) {
   EXPECT_EQ(t.points.back(), p);
 }
 
+// 10 um chains whose neighbouring segments differ a little in their limits: along a gentle
+// wave (the direction, and with it each line's limits, changes by 1e-9 at every vertex), and
+// with F alternating between 5000 and 5100 every segment (a CAM feed optimiser's output).
+// Such segments join runs (taking the lower limits), so the path runs at its feed: split at
+// every change, the runs were too short to accelerate in (the wave crawled at 57 mm/s, the
+// alternating feeds at 15 mm/s). A feed hold stops them like a plain line.
+std::vector<MotionPrimitive> microChain(bool alternating_feed) {
+  std::vector<MotionPrimitive> prog;
+  AxisValues p{};
+  for (int i = 1; i <= 20000; ++i) {
+    const AxisValues q = xyz(0.01 * i, 0.0001 * std::sin(0.01 * i), 0);
+    prog.push_back(line(p, q, alternating_feed ? (i % 2 == 1 ? 5000.0 : 5100.0) : 6000.0));
+    p = q;
+  }
+  return prog;
+}
+
+TEST(Planner, MicroSegmentsOfSlightlyDifferentLimitsRunAtFeed) {
+  const MachineConfig m = defaultMachine();
+  for (const bool alternating : {false, true}) {
+    const std::vector<MotionPrimitive> prog = microChain(alternating);
+    const double feed = alternating ? 5000.0 / 60.0 : 100.0;
+    const Trace t = run(m, prog, 1024, 400'000);
+    expectWithinLimits(m, t);
+    EXPECT_EQ(t.points.back(), prog.back().to);
+    uint64_t at_feed = 0;
+    for (uint64_t k = 300; k < 2000; ++k)
+      if (std::abs(t.infos[k].velocity - feed) < 1e-9) ++at_feed;
+    EXPECT_EQ(at_feed, 1700u) << alternating;
+    // Feed hold at 1 s: at rest within the time a plain line needs from that speed (its
+    // S-curve brake, 0.09 s from 100 mm/s; with mixed runs a little more).
+    auto hold = [](uint64_t k, MotionPlanner& planner) {
+      if (k == 1000) planner.setFeedHold(true);
+    };
+    const Trace held = run(m, prog, 1024, 1400, false, hold);
+    expectWithinLimits(m, held);
+    uint64_t moving = 0;
+    for (uint64_t k = 1000; k < held.ticks(); ++k)
+      if (held.points[k] != held.points[k - 1]) ++moving;
+    EXPECT_LE(moving, alternating ? 140u : 96u) << alternating;
+  }
+}
+
 TEST(Planner, DwellHoldsPositionAndExactStopIsSampled) {
   const MachineConfig m = defaultMachine();
   const AxisValues a = xyz(0, 0, 0), b = xyz(3.3, 1.1, 0), c = xyz(5.0, 1.1, 0.7);

@@ -8,10 +8,36 @@
 namespace ncc::vm::motion {
 namespace {
 
-// Limits this close count as equal for joining a run (direction rounding in long chains).
+// Junction velocities and limits this close count as equal (rounding): a segment whose
+// limits are this little below its run's joins without lowering them.
 constexpr double kSameLimit = 1e-9;
+// Limits this close join one run, which takes the lower of each. Along a chain of tiny
+// segments passed as kinks the direction changes a little at every vertex, and with it each
+// line's limits (A_i / |t_i| for an axis at 45 degrees moves by 1 % over a 0.01 rad turn;
+// along a gentle wave by 1e-9 per vertex): split at every such step, a 10 um chain became
+// runs of 0.2 mm, each ending at a = 0, braking through them took far longer than through one
+// run, and the path crawled at half its feed.
+constexpr double kJoinBand = 0.01;
 
-bool close(double a, double b) { return std::abs(a - b) <= kSameLimit * std::max(a, b); }
+bool close(double a, double b) { return std::abs(a - b) <= kJoinBand * std::max(a, b); }
+
+// Whether `run` and a segment of `length` with `limits` are so short that a run boundary
+// between them (a = 0 there) would cost more than running both at the lower limits: within
+// their joint length, a profile with a = 0 at both ends could not gain more than
+// kShortRunGain of the lower velocity limit. Short segments of different limits (a CAM feed
+// that changes every 10 um, a chain whose curvature steps fast) otherwise make runs too short
+// to accelerate in: alternating F5000 / F5100 on 10 um crawled at 15 mm/s.
+constexpr double kShortRunGain = 0.1;
+bool tooShortToSplit(const Run& run, const SegmentLimits& limits, double length) {
+  const double v_lo = std::min(run.limits.velocity, limits.velocity);
+  const double a = std::min(run.limits.acceleration, limits.acceleration);
+  const double j = std::min(run.limits.jerk, limits.jerk);
+  if (!(a > 0.0 && j > 0.0 && v_lo > 0.0)) return false;
+  return reachableGain(v_lo, run.length + length, a, j) <= kShortRunGain * v_lo;
+}
+
+// `limit` is below `run_limit` by more than rounding.
+bool below(double limit, double run_limit) { return limit < (1.0 - kSameLimit) * run_limit; }
 
 // A feed move the feed override does not scale: G63 tapping.
 bool isTap(const Run& run) {
@@ -29,6 +55,49 @@ const QueuedSegment* LookAhead::lastSegment() const {
   return segment_count_ == 0 ? nullptr : &segmentAt(segment_count_ - 1);
 }
 
+bool LookAhead::lowersLast(const QueuedSegment& segment, const SegmentLimits& limits) const {
+  const Run& last = runAt(run_count_ - 1);
+  return below(limits.velocity, last.limits.velocity) ||
+         below(limits.acceleration, last.limits.acceleration) ||
+         below(limits.jerk, last.limits.jerk) || segment.feed_limit < last.feed_limit;
+}
+
+bool LookAhead::joinsLast(const QueuedSegment& segment, MotionPrimitive::Kind kind,
+                          const SegmentLimits& limits, double entry_limit) const {
+  const Run& last = runAt(run_count_ - 1);
+  const double length = segment.path.length();
+  if (last.kind != kind || last.stop_after || last.segments == 0) return false;
+  // The junction must not bind.
+  if (entry_limit < (1.0 - kSameLimit) * std::min(limits.velocity, last.limits.velocity))
+    return false;
+  // A G63 tap (the feed override does not scale it) never shares a run with a move it
+  // scales. Scaled moves of different F do (their limits are equal: the axes cap both); the
+  // run takes the lower F under the knob.
+  if (std::isfinite(segment.feed_limit) != std::isfinite(last.feed_limit)) return false;
+  const bool near = (close(limits.velocity, last.limits.velocity) &&
+                     close(limits.acceleration, last.limits.acceleration) &&
+                     close(limits.jerk, last.limits.jerk)) ||
+                    tooShortToSplit(last, limits, length);
+  if (!near) return false;
+  if (!lowersLast(segment, limits)) return true;
+  // Lowering the run's limits must not touch what the motion under way is committed to. A
+  // piece running in it was planned with them: never while it is the front run and started.
+  if (run_count_ == 1 && front_started_) return false;
+  // Its planned entry (the exit a piece under way in the run before it may be committed to)
+  // must stay within its new speed limit under the live scales, and a stop from there must
+  // still fit within it: then the backward pass gives it no lower entry, and no earlier entry
+  // changes.
+  Run lowered = last;
+  lowered.limits.velocity = std::min(last.limits.velocity, limits.velocity);
+  lowered.limits.acceleration = std::min(last.limits.acceleration, limits.acceleration);
+  lowered.limits.jerk = std::min(last.limits.jerk, limits.jerk);
+  lowered.feed_limit = std::min(last.feed_limit, segment.feed_limit);
+  const double entry = last.entry_planned;
+  return entry <= speedLimit(lowered, scales_) &&
+         reachableVelocity(0.0, last.length + length, lowered.limits.acceleration,
+                           lowered.limits.jerk) >= entry;
+}
+
 void LookAhead::push(const QueuedSegment& segment, MotionPrimitive::Kind kind,
                      const SegmentLimits& limits, double entry_limit, bool stop_after,
                      double dwell_seconds) {
@@ -37,16 +106,7 @@ void LookAhead::push(const QueuedSegment& segment, MotionPrimitive::Kind kind,
   if (segment_count_ > 0) queued_length_ += length;
   const bool dwell = kind == MotionPrimitive::Kind::Dwell;
   Run* last = run_count_ > 0 ? &runAt(run_count_ - 1) : nullptr;
-  const bool join = last != nullptr && !dwell && last->kind == kind && !last->stop_after &&
-                    last->segments > 0 &&
-                    entry_limit >= (1.0 - kSameLimit) * std::min(limits.velocity, last->limits.velocity) &&
-                    close(limits.velocity, last->limits.velocity) &&
-                    close(limits.acceleration, last->limits.acceleration) &&
-                    close(limits.jerk, last->limits.jerk) &&
-                    // A G63 tap (the feed override does not scale it) never shares a run
-                    // with a move it scales. Scaled moves of different F do (their limits are
-                    // equal: the axes cap both); the run takes the lower F under the knob.
-                    std::isfinite(segment.feed_limit) == std::isfinite(last->feed_limit);
+  const bool join = last != nullptr && !dwell && joinsLast(segment, kind, limits, entry_limit);
   QueuedSegment& slot = segmentAt(segment_count_);
   slot = segment;
   ++segment_count_;
@@ -55,6 +115,12 @@ void LookAhead::push(const QueuedSegment& segment, MotionPrimitive::Kind kind,
     last->length += length;
     ++last->segments;
     last->stop_after = stop_after;
+    if (lowersLast(segment, limits)) {
+      last->limits.velocity = std::min(last->limits.velocity, limits.velocity);
+      last->limits.acceleration = std::min(last->limits.acceleration, limits.acceleration);
+      last->limits.jerk = std::min(last->limits.jerk, limits.jerk);
+      last->entry_limit = std::min(last->entry_limit, last->limits.velocity);
+    }
     last->feed_limit = std::min(last->feed_limit, segment.feed_limit);
   } else {
     Run& run = runAt(run_count_);
@@ -83,7 +149,10 @@ void LookAhead::stopAfterLast() {
 double LookAhead::velocity(std::size_t i) const { return velocityWith(i, scales_); }
 
 double LookAhead::velocityWith(std::size_t i, const SpeedScales& scales) const {
-  const Run& run = runAt(i);
+  return speedLimit(runAt(i), scales);
+}
+
+double LookAhead::speedLimit(const Run& run, const SpeedScales& scales) {
   // Feed hold stops everything but a G63 tap, which must not stop mid-thread while the
   // spindle turns (Mazak G63: no feed hold; Siemens ISO G63: a block stop); the hold acts
   // after it.

@@ -2,10 +2,11 @@
 // Look-ahead over queued segments, grouped into runs.
 //
 // A run is a chain of consecutive segments of the same kind (a G63 tap apart from moves the
-// feed override scales) with (nearly) equal path limits
-// whose junctions do not bind (tangent or collinear, junction limit >= the run's velocity
-// limit): a 10 um G01 chain along a line, an arc split into pieces. The S-curve is planned
-// over a run as one 1-D path, so a chain of tiny segments accelerates like one long segment;
+// feed override scales) whose junctions do not bind (tangent or collinear, junction limit >=
+// the run's velocity limit) and whose limits are within 1 %, or which are too short together
+// to change speed much between their limits (docs/planner.md, "Look-ahead"); the run takes
+// the lowest of each limit: a 10 um G01 chain along a line, an arc split into pieces. The
+// S-curve is planned over a run as one 1-D path, so a chain of tiny segments accelerates like one long segment;
 // profiles start and end at zero acceleration only at run boundaries. A junction between runs
 // passes at a velocity limit (0 at corners and exact stops).
 //
@@ -90,7 +91,10 @@ class LookAhead {
 
   // Appends a segment (caller checks !full()). `entry_limit` is the junction limit with the
   // previous segment; the segment joins the last run when the junction does not bind and
-  // the limits match, else starts a run. Runs the backward pass.
+  // the limits are close or both are short (see the top), else starts a run. A join that
+  // lowers the run's limits is refused where it would lower what the motion under way is
+  // committed to: in the started front run, or below the run's planned entry. Runs the
+  // backward pass.
   void push(const QueuedSegment& segment, MotionPrimitive::Kind kind, const SegmentLimits& limits,
             double entry_limit, bool stop_after, double dwell_seconds);
   // The last queued segment ends at rest.
@@ -150,6 +154,13 @@ class LookAhead {
   }
   Run& runAt(std::size_t i) { return runs_[(run_head_ + i) % runs_.size()]; }
   const Run& runAt(std::size_t i) const { return runs_[(run_head_ + i) % runs_.size()]; }
+  // Whether a segment pushed with these arguments joins the last run (see push), and whether
+  // it lowers that run's limits (beyond rounding) or its programmed feed.
+  bool joinsLast(const QueuedSegment& segment, MotionPrimitive::Kind kind,
+                 const SegmentLimits& limits, double entry_limit) const;
+  bool lowersLast(const QueuedSegment& segment, const SegmentLimits& limits) const;
+  // A run's speed limit under `scales`.
+  static double speedLimit(const Run& run, const SpeedScales& scales);
   // After a change of the speed limits: the whole window again, with entry floors from
   // `committed` on (setScales).
   void replan(const Commitment& committed);
