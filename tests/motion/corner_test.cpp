@@ -114,6 +114,28 @@ TEST(Corners, BlendTooTightForTheAxesStops) {
   EXPECT_NE(std::find(t.points.begin(), t.points.end(), b), t.points.end());  // it stops at b
 }
 
+TEST(Corners, KinkInsideARunLeavesRoomForItsAccelerationStep) {
+  // A line along X, then one turned by 0.008 rad that ends at rest: a kink, passed while
+  // moving, and the two lines' limits are within 1 %, so they share a run, which brakes at
+  // X's full acceleration through the kink. The kink steps X's velocity by v (1 - cos theta)
+  // within a cycle, v (1 - cos theta) / T in X's sampled acceleration on top of the path's:
+  // the run's acceleration must leave room for it (without, 1.0066x X's limit; review fuzz).
+  MachineConfig m = defaultMachine();
+  m.axes[0].max_acceleration = 50.0;
+  m.axes[0].max_jerk = 25000.0;
+  m.axes[1].max_jerk = 5e6;  // the kink's step across the path: within Y's junction share
+  m.corner_tolerance = 0.0;
+  const double theta = 0.008;
+  const AxisValues a = xyz(0, 0, 0), b = xyz(20.0, 0, 0);
+  const AxisValues c = xyz(20.0 + 2.0 * std::cos(theta), 2.0 * std::sin(theta), 0);
+  const std::vector<MotionPrimitive> prog = {line(a, b, 1500.0), line(b, c, 1500.0)};
+  const Trace t = run(m, prog);
+  expectWithinLimits(m, t);
+  EXPECT_EQ(t.points.back(), c);
+  // The path does not stop at the kink.
+  for (std::size_t k = 1; k + 1 < t.ticks(); ++k) EXPECT_GT(t.infos[k].velocity, 0.0) << k;
+}
+
 TEST(Corners, CollinearSplitHasNoSlowdown) {
   const MachineConfig m = defaultMachine();
   const Trace straight = run(m, {line(xyz(0, 0, 0), xyz(10, 0, 0), 3000.0),

@@ -104,6 +104,20 @@ double ContinuousPath::curvatureStepLimit(double step, const AxisValues& involve
   return std::sqrt(kJunctionJerkShare * weakest(involved).jerk * limits_.ipo_cycle / step);
 }
 
+double ContinuousPath::kinkAccelerationLimit(double velocity) const {
+  double limit = kInf;
+  if (!(velocity > 0.0)) return limit;
+  for (int i = 0; i < limits_.count; ++i) {
+    if (held_.start_kink[i] == 0.0) continue;
+    const double tangent =
+        std::max(std::abs(held_.direction[i]), std::abs(held_.previous_direction[i]));
+    const double room =
+        limits_.acceleration[i] - velocity * held_.start_kink[i] / limits_.ipo_cycle;
+    if (tangent > 0.0) limit = std::min(limit, std::max(room, 0.0) / tangent);
+  }
+  return limit;
+}
+
 bool ContinuousPath::wiggleFits(const AxisValues& wiggle) const {
   // limits.h: 2 delta / T^2 of acceleration and 4 delta / T^3 of jerk.
   const double T = limits_.ipo_cycle;
@@ -151,6 +165,8 @@ void ContinuousPath::queueHeld(const AxisValues& end, double end_trim, double en
   if (held_.arc) {
     SegmentLimits limits = segmentLimits(seg.path, limits_, false, held_.feed);
     limits.velocity = std::max(limits.velocity, kMinPathVelocity);
+    limits.acceleration = std::min(limits.acceleration,
+                                   kinkAccelerationLimit(std::min(held_.start_limit, limits.velocity)));
     enqueue(seg, MotionPrimitive::Kind::Arc, limits, held_.start_limit, stop_after);
     return;
   }
@@ -186,6 +202,8 @@ void ContinuousPath::queueHeld(const AxisValues& end, double end_trim, double en
     limits.jerk = roundDown(limits.jerk, kLimitGridSteps);
   }
   limits.velocity = std::max(limits.velocity, kMinPathVelocity);
+  limits.acceleration = std::min(limits.acceleration,
+                                 kinkAccelerationLimit(std::min(held_.start_limit, limits.velocity)));
   enqueue(seg, MotionPrimitive::Kind::Line, limits, held_.start_limit, stop_after);
 }
 
@@ -290,9 +308,13 @@ bool ContinuousPath::move(const PathSegment& programmed, double feed, double fee
   if (!held_.active) {
     // The junction with whatever is queued (a rapid, or nothing): the plain rule; 0 from
     // rest (nothing queued, a stop, a dwell or a rapid before it).
-    next.start_limit = joinsMoving(MotionPrimitive::Kind::Line)
-                           ? junctionVelocity(queue_.lastSegment()->path, programmed, limits_)
-                           : 0.0;
+    if (joinsMoving(MotionPrimitive::Kind::Line)) {
+      const PathSegment& before = queue_.lastSegment()->path;
+      next.start_limit = junctionVelocity(before, programmed, limits_);
+      before.tangent(before.length(), next.previous_direction);
+      for (int i = 0; i < n; ++i)
+        next.start_kink[i] = std::abs(next.direction[i] - next.previous_direction[i]);
+    }
   } else {
     const HeldMove& a = held_;
     const double theta = turnAngle(a.end_direction, next.direction, n);
@@ -312,9 +334,12 @@ bool ContinuousPath::move(const PathSegment& programmed, double feed, double fee
     const double kink =
         theta <= kCornerAngle ? junctionVelocity(heldPart(a.end, 0.0), programmed, limits_) : 0.0;
     const bool kink_free = a.start_curvature == 0.0 && kink >= std::max(a.feed, feed);
+    AxisValues kink_step{};
+    for (int i = 0; i < n; ++i) kink_step[i] = std::abs(next.direction[i] - a.end_direction[i]);
     if (kink_free) {
       queueHeld(a.end, 0.0, 0.0, AxisValues{}, next.direction, false);
       next.start_limit = kink;
+      next.start_kink = kink_step;
     } else if (lines && theta <= kChainMaxTurn && wiggleFits(wiggle)) {
       // Chain vertex: passed as is, both lines planned as the curve through it.
       queueHeld(a.end, 0.0, kappa, wiggle, next.direction, false);
@@ -330,6 +355,7 @@ bool ContinuousPath::move(const PathSegment& programmed, double feed, double fee
         const bool stop = unblended <= 0.0;
         queueHeld(a.end, 0.0, 0.0, AxisValues{}, next.direction, stop);
         next.start_limit = unblended;
+        if (!stop) next.start_kink = kink_step;
       }
     }
     next.previous_direction = a.end_direction;

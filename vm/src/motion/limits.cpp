@@ -225,6 +225,9 @@ double junctionVelocity(const PathSegment& a, const PathSegment& b, const AxisLi
     // A velocity step dv within one cycle reads as a jerk of about dv / T^2.
     const double kink = std::abs(tb[i] - ta[i]);
     if (kink > 0.0) v = std::min(v, budget * T * T / kink);
+    // ... and as an acceleration of dv / T: at most kJunctionAccelerationShare of the axis',
+    // the rest is for the path's (ContinuousPath lowers it where the two moves share a run).
+    if (kink > 0.0) v = std::min(v, kJunctionAccelerationShare * axes.acceleration[i] * T / kink);
     // An acceleration step da reads as a jerk of about da / T.
     const double step = std::abs(kb[i] - ka[i]);
     if (step > 0.0) v = std::min(v, std::sqrt(budget * T / step));

@@ -41,6 +41,9 @@ inline constexpr double kWiggleJerkShare = 0.2;
 inline constexpr double kWiggleAccelerationShare = 0.01;
 // Share of the axis jerk a junction's velocity kink, and its curvature step, may each use.
 inline constexpr double kJunctionJerkShare = 0.5 * (1.0 - kSmoothJerkShare);
+// Share of the axis acceleration a junction's velocity kink may use (it rarely binds: the jerk
+// share above is stricter unless the jerk is over 10^4 times the acceleration per second).
+inline constexpr double kJunctionAccelerationShare = 0.5;
 
 // The machine's axis limits in path units: mm/s, mm/s^2, mm/s^3 (deg for rotary axes).
 struct AxisLimits {
@@ -119,7 +122,8 @@ SegmentLimits segmentLimits(const PathSegment& path, const AxisLimits& axes, boo
 // Highest velocity at which the path may pass from the end of `a` into the start of `b`
 // (both moving segments of the same kind): 0 at a corner (direction change above
 // kCornerAngle), else limited so the velocity kink and the curvature step stay within the
-// junction share of the axis jerk over one IPO cycle. Not included: both segments' own
+// junction share of the axis jerk over one IPO cycle, and the kink within
+// kJunctionAccelerationShare of the axis acceleration. Not included: both segments' own
 // velocity limits (the look-ahead takes the minimum).
 double junctionVelocity(const PathSegment& a, const PathSegment& b, const AxisLimits& axes);
 
