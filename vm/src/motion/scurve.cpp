@@ -255,9 +255,14 @@ bool cutProfile(SCurveProfile& p, double next, double limit) {
   if (limit < p.v_peak && next < c0 && ramp.v_to > ramp.v_from &&
       next < ramp.t_jerk + ramp.t_accel) {
     // Accelerating, not yet in the jerk-down phase: the ramp up to `next` is unchanged (the
-    // same jerk, the same phases), and from `next` on it is its jerk-down phase.
+    // same jerk, the same phases). It ends at the new limit, or where a jerk-down phase from
+    // `next` on ends if that is above the limit: a ramp of the same jerk and peak
+    // acceleration to the lower gain follows the same phases up to `next`. (Ending at once
+    // far below the limit, and accelerating again in a new piece, made a turn early in a
+    // ramp slower than the lower override from the start.)
     const double peak_a = ramp.jerk * ramp.t_jerk;
-    const double gain = next < ramp.t_jerk ? ramp.jerk * next * next : peak_a * next;
+    const double earliest = next < ramp.t_jerk ? ramp.jerk * next * next : peak_a * next;
+    const double gain = std::max(earliest, limit - ramp.v_from);
     p.accel = VelocityRamp::fromGain(ramp.v_from, gain, peak_a, ramp.jerk);
     p.v_peak = p.accel.v_to;
     p.t_cruise = 0.0;
