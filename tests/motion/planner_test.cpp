@@ -136,6 +136,33 @@ TEST(Planner, MicroSegmentsOfSlightlyDifferentLimitsRunAtFeed) {
   }
 }
 
+TEST(Planner, TinyArcKeepsItsOwnSpeedCapBelowTheFloor) {
+  // Arcs of 1 to 0.2 um radius (5 extra turns) on X and Y of 1 mm/s^2 and 10 mm/s^3: the
+  // curvature caps the speed below 1 mm/min, the slowest speed anything is planned with. The
+  // arc keeps its cap; lifted to the floor it reached 11.6x the jerk limit (review). Also with
+  // the feed override turned every 50 ms, which must not lift it either.
+  MachineConfig m = defaultMachine();
+  m.corner_tolerance = 0.0;
+  for (int i = 0; i < 2; ++i) {
+    m.axes[i].max_acceleration = 1.0;
+    m.axes[i].max_jerk = 10.0;
+  }
+  auto knob = [](uint64_t k, MotionPlanner& p) {
+    if (k % 50 == 0) p.setFeedOverride(k % 100 ? 0.3 : 0.9);
+  };
+  for (const double r : {1.0e-3, 0.5e-3, 0.2e-3}) {
+    const std::vector<MotionPrimitive> prog = {
+        line(xyz(-0.01, 0, 0), xyz(0, 0, 0), 1000.0),
+        arc(xyz(0, 0, 0), xyz(r, r, 0), 0, 1, 0.0, r, false, 1000.0, 5),
+        line(xyz(r, r, 0), xyz(r, 0.01, 0), 1000.0)};
+    for (const bool turned : {false, true}) {
+      const Trace t = run(m, prog, 1024, 10'000'000, false, turned ? PlannerHook(knob) : PlannerHook());
+      expectWithinLimits(m, t);
+      EXPECT_EQ(t.points.back(), prog.back().to) << r;
+    }
+  }
+}
+
 TEST(Planner, DwellHoldsPositionAndExactStopIsSampled) {
   const MachineConfig m = defaultMachine();
   const AxisValues a = xyz(0, 0, 0), b = xyz(3.3, 1.1, 0), c = xyz(5.0, 1.1, 0.7);

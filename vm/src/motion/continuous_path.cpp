@@ -164,7 +164,10 @@ void ContinuousPath::queueHeld(const AxisValues& end, double end_trim, double en
   }
   if (held_.arc) {
     SegmentLimits limits = segmentLimits(seg.path, limits_, false, held_.feed);
-    limits.velocity = std::max(limits.velocity, kMinPathVelocity);
+    // The feed is at least kMinPathVelocity, but an arc's own caps may be lower (a radius of
+    // a fraction of a micrometre on weak axes): its acceleration and jerk are budgeted at that
+    // speed, so it keeps it (lifted to the floor, a 0.2 um arc reached 11.6x the jerk limit).
+    if (!(limits.velocity > 0.0)) limits.velocity = kMinPathVelocity;
     limits.acceleration = std::min(limits.acceleration,
                                    kinkAccelerationLimit(std::min(held_.start_limit, limits.velocity)));
     enqueue(seg, MotionPrimitive::Kind::Arc, limits, held_.start_limit, stop_after);

@@ -163,7 +163,10 @@ double LookAhead::speedLimit(const Run& run, const SpeedScales& scales) {
     return std::max(run.limits.velocity * scales.rapid, kMinPathVelocity);
   }
   if (scales.feed == 1.0) return run.limits.velocity;
-  return std::max(std::min(run.limits.velocity, run.feed_limit * scales.feed), kMinPathVelocity);
+  // The floor keeps a tiny override from stopping the path; it never lifts a run above its
+  // own limit (a tiny arc's curvature cap).
+  return std::max(std::min(run.limits.velocity, run.feed_limit * scales.feed),
+                  std::min(kMinPathVelocity, run.limits.velocity));
 }
 
 double LookAhead::entryLimit(std::size_t i) const {

@@ -41,9 +41,10 @@ inline constexpr double kWiggleJerkShare = 0.2;
 inline constexpr double kWiggleAccelerationShare = 0.01;
 // Share of the axis jerk a junction's velocity kink, and its curvature step, may each use.
 inline constexpr double kJunctionJerkShare = 0.5 * (1.0 - kSmoothJerkShare);
-// Share of the axis acceleration a junction's velocity kink may use (it rarely binds: the jerk
-// share above is stricter unless the jerk is over 10^4 times the acceleration per second).
-inline constexpr double kJunctionAccelerationShare = 0.5;
+// Share of the axis acceleration a junction's velocity kink may use, like its jerk share: a
+// short chain may pass several kinks within one cycle. It binds only where the jerk is over
+// 1 / T = 1000 times the acceleration per second (the jerk share binds first otherwise).
+inline constexpr double kJunctionAccelerationShare = kJunctionJerkShare;
 
 // The machine's axis limits in path units: mm/s, mm/s^2, mm/s^3 (deg for rotary axes).
 struct AxisLimits {
