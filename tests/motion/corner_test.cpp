@@ -121,8 +121,7 @@ TEST(Corners, KinkInsideARunLeavesRoomForItsAccelerationStep) {
   // within a cycle, v (1 - cos theta) / T in X's sampled acceleration on top of the path's:
   // the run's acceleration must leave room for it (without, 1.0066x X's limit; review fuzz).
   MachineConfig m = defaultMachine();
-  m.axes[0].max_acceleration = 50.0;
-  m.axes[0].max_jerk = 25000.0;
+  setAxisLimits(m, 0, 50.0, 25000.0);
   m.axes[1].max_jerk = 5e6;  // the kink's step across the path: within Y's junction share
   m.corner_tolerance = 0.0;
   const double theta = 0.008;
@@ -142,8 +141,7 @@ TEST(Corners, KinkStaysWithinTheAccelerationOfAnAxisOfHugeJerk) {
   // acceleration, 5x its limit (review). The kink's acceleration step has its own share.
   MachineConfig m = defaultMachine();
   m.corner_tolerance = 0.0;
-  m.axes[1].max_acceleration = 100.0;
-  m.axes[1].max_jerk = 1e7;
+  setAxisLimits(m, 1, 100.0, 1e7);
   const double theta = 0.009;
   const std::vector<MotionPrimitive> prog = {
       line(xyz(0, 0, 0), xyz(10, 0, 0), 6000.0),
@@ -238,19 +236,16 @@ TEST(Corners, ZeroLengthRapidDoesNotEndAChainAtRest) {
 
 TEST(Corners, ChainNextToAStopTakesNoWiggleFromTheAxesBeyondIt) {
   // A line through X, Y and a slow Z reverses (a stop) into a gently curving chain in XY
-  // whose polygon deviates from its curve by 0.1 um: more than Z's wiggle budget
-  // (kWiggleJerkShare of its jerk, 3.4e-8 mm) but well within X's and Y's. Z does not move on
+  // whose polygon deviates from its curve by 0.3 um: more than Z's whole smooth jerk share
+  // (0.9 J T^3 / 4 = 1.5e-7 mm) but within X's and Y's wiggle budget. Z does not move on
   // the chain, and its first vertex is a stop, so Z takes no wiggle there. Counting the line
   // before the stop as the chain's neighbour gave the first chain line negative acceleration
   // and jerk limits: it crept at 1 mm/min after a 0.22 um step, 27.6 x the jerk limit
   // (review fuzz seed 179).
   MachineConfig m = defaultMachine();
-  m.axes[0].max_acceleration = 1862.0;
-  m.axes[0].max_jerk = 15529.0;
-  m.axes[1].max_acceleration = 1872.0;
-  m.axes[1].max_jerk = 165963.0;
-  m.axes[2].max_acceleration = 55.5;
-  m.axes[2].max_jerk = 679.5;
+  setAxisLimits(m, 0, 1862.0, 15529.0);
+  setAxisLimits(m, 1, 1872.0, 165963.0);
+  setAxisLimits(m, 2, 55.5, 679.5);
   const double chord = 0.01, feed = 3000.0;
   const double turn = 8.0 * 3e-7 / chord;  // sagitta c * turn / 8 = 0.3 um
   std::vector<MotionPrimitive> prog;

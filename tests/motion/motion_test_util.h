@@ -167,6 +167,12 @@ inline Worst check(const MachineConfig& m, const Trace& t) {
   return w;
 }
 
+// Sets one axis' acceleration (mm/s^2) and jerk (mm/s^3) limits: machines with unequal axes.
+inline void setAxisLimits(MachineConfig& m, int axis, double acceleration, double jerk) {
+  m.axes[static_cast<std::size_t>(axis)].max_acceleration = acceleration;
+  m.axes[static_cast<std::size_t>(axis)].max_jerk = jerk;
+}
+
 // The default machine (defaultMachine()) in path units, for closed forms: its IPO cycle, axis
 // acceleration, and a line's path jerk (the smooth share of the axis jerk).
 inline constexpr double kDefaultT = 0.001;

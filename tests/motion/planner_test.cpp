@@ -143,10 +143,8 @@ TEST(Planner, TinyArcKeepsItsOwnSpeedCapBelowTheFloor) {
   // the feed override turned every 50 ms, which must not lift it either.
   MachineConfig m = defaultMachine();
   m.corner_tolerance = 0.0;
-  for (int i = 0; i < 2; ++i) {
-    m.axes[i].max_acceleration = 1.0;
-    m.axes[i].max_jerk = 10.0;
-  }
+  setAxisLimits(m, 0, 1.0, 10.0);
+  setAxisLimits(m, 1, 1.0, 10.0);
   auto knob = [](uint64_t k, MotionPlanner& p) {
     if (k % 50 == 0) p.setFeedOverride(k % 100 ? 0.3 : 0.9);
   };
