@@ -223,7 +223,11 @@ std::vector<ParamSpec> buildRegistry() {
                        "G73 (and high-speed peck) retract amount d, mm (FANUC No.5114; Siemens "
                        "ISO _ZSFR[1], 0 meaning 1 mm)")
                       .range(0, kInf));
-  specs.push_back(Spec("rapid_type", T::String, kIso, "\"linear\"", std::string("linear"),
+  // The default is the dialect's (DialectBehaviour::rapid_type_default); the value here is
+  // only the registry's placeholder.
+  specs.push_back(Spec("rapid_type", T::String, kIso,
+                       "\"per_axis\" in fanuc-m (LRP = 0), \"linear\" in mazak-m and siemens-iso-m",
+                       std::string("linear"),
                        "G00 path: \"linear\" (interpolated straight line) or \"per_axis\" (each "
                        "axis at its own rapid rate, dog-leg) (FANUC No.1401#1 LRP, Mazak F91 "
                        "bit 6)")
