@@ -1,6 +1,7 @@
 // The encoder streams: heap use does not grow with the number of blocks, and a long program
 // still loads, verifies and maps every instruction back to its line.
 #include <malloc.h>
+#include <unistd.h>
 
 #include <filesystem>
 #include <fstream>
@@ -24,8 +25,10 @@ ir::Block lineBlock(uint32_t file, uint32_t line) {
 size_t heapInUse() { return mallinfo2().uordblks; }
 
 TEST(Streaming, HeapDoesNotGrowWithProgramLength) {
-  const std::filesystem::path path =
-      std::filesystem::temp_directory_path() / "ncc_streaming_test.ncb";
+  // One file per process: two test runs on one machine (a CI clone next to a build) must not
+  // write and remove each other's file.
+  const std::filesystem::path path = std::filesystem::temp_directory_path() /
+                                     ("ncc_streaming_test_" + std::to_string(::getpid()) + ".ncb");
   MachineConfig machine = defaultMachine();
   SourceManager sources;
   const uint32_t file = sources.addBuffer("long.nc", "");

@@ -1,6 +1,7 @@
 // The driver's run side: run-time alarms, and the CLI's exit code 3 for an
 // alarm raised by the VM (a program compiled by ncc today has every check done at compile
 // time, so the alarm path is driven by hand-assembled bytecode).
+#include <unistd.h>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -55,7 +56,8 @@ TEST(JsonOutput, NumbersAreRoundedTrimmedAndNeverNegativeZero) {
 #ifdef NCC_CLI_PATH
 TEST(Cli, RunTimeAlarmExitsThreeWithDiagnostic) {
   MachineConfig machine = defaultMachine();
-  std::filesystem::path dir = std::filesystem::temp_directory_path() / "ncc-driver-test";
+  std::filesystem::path dir = std::filesystem::temp_directory_path() /
+                              ("ncc-driver-test-" + std::to_string(::getpid()));
   std::filesystem::create_directories(dir);
   std::filesystem::path source = dir / "refcheck.nc";
   std::ofstream(source) << "G00 X5.\nG27 X5.\n";

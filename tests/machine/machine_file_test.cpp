@@ -2,6 +2,7 @@
 // code, line, column and message (docs/machine-file.md, "Diagnostics").
 #include "ncc/machine/machine_file.h"
 
+#include <unistd.h>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -290,7 +291,8 @@ TEST(MachineFile, MissingFile) {
 }
 
 TEST(MachineFile, LoadsFromDiskAndQuotesTheLine) {
-  auto path = std::filesystem::temp_directory_path() / "ncc_machine_file_test.toml";
+  auto path = std::filesystem::temp_directory_path() /
+              ("ncc_machine_file_test_" + std::to_string(::getpid()) + ".toml");
   {
     std::ofstream out(path);
     out << "[machine]\naxes = [\"X\", \"Z\"]\n[machine.work]\nG54 = [1.0, 2.0, 3.0]\n";
