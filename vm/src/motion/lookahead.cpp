@@ -28,11 +28,15 @@ bool close(double a, double b) { return std::abs(a - b) <= kJoinBand * std::max(
 // that changes every 10 um, a chain whose curvature steps fast) otherwise make runs too short
 // to accelerate in: alternating F5000 / F5100 on 10 um crawled at 15 mm/s.
 constexpr double kShortRunGain = 0.1;
+constexpr double kShortRunSpeedRatio = 0.8;
 bool tooShortToSplit(const Run& run, const SegmentLimits& limits, double length) {
   const double v_lo = std::min(run.limits.velocity, limits.velocity);
   const double a = std::min(run.limits.acceleration, limits.acceleration);
   const double j = std::min(run.limits.jerk, limits.jerk);
   if (!(a > 0.0 && j > 0.0 && v_lo > 0.0)) return false;
+  // Only near speeds: a short slow segment joined to fast ones slows them all (the corpus
+  // program bear took 0.46 % longer than with no such joins; with this bound 0.07 % less).
+  if (v_lo < kShortRunSpeedRatio * std::max(run.limits.velocity, limits.velocity)) return false;
   return reachableGain(v_lo, run.length + length, a, j) <= kShortRunGain * v_lo;
 }
 

@@ -3,10 +3,11 @@
 //
 // A run is a chain of consecutive segments of the same kind (a G63 tap apart from moves the
 // feed override scales) whose junctions do not bind (tangent or collinear, junction limit >=
-// the run's velocity limit) and whose limits are within 1 %, or which are too short together
-// to change speed much between their limits (docs/planner.md, "Look-ahead"); the run takes
-// the lowest of each limit: a 10 um G01 chain along a line, an arc split into pieces. The
-// S-curve is planned over a run as one 1-D path, so a chain of tiny segments accelerates like one long segment;
+// the run's velocity limit) and whose limits are within 1 %, or whose speeds are within 20 %
+// and which are too short together to change speed much (docs/planner.md, "Look-ahead"); the
+// run takes the lowest of each limit: a 10 um G01 chain along a line, an arc split into
+// pieces. The S-curve is planned over a run as one 1-D path, so a chain of tiny segments
+// accelerates like one long segment;
 // profiles start and end at zero acceleration only at run boundaries. A junction between runs
 // passes at a velocity limit (0 at corners and exact stops).
 //
@@ -91,7 +92,7 @@ class LookAhead {
 
   // Appends a segment (caller checks !full()). `entry_limit` is the junction limit with the
   // previous segment; the segment joins the last run when the junction does not bind and
-  // the limits are close or both are short (see the top), else starts a run. A join that
+  // the limits are close or both are short and of near speed (see the top), else starts a run. A join that
   // lowers the run's limits is refused where it would lower what the motion under way is
   // committed to: in the started front run, or below the run's planned entry. Runs the
   // backward pass.
