@@ -151,6 +151,56 @@ TEST(Corners, KinkStaysWithinTheAccelerationOfAnAxisOfHugeJerk) {
   EXPECT_EQ(t.points.back(), prog.back().to);
 }
 
+TEST(Corners, CircleOfKinksCountsThemLikeItsCurvature) {
+  // R 50 mm in 2.5 um chords at F15000 (a realistic machine: A 1000, J 3e5): every vertex turns
+  // by 5e-5 rad, little enough for the kink rule at that speed, but 1.7 vertices fall within
+  // each cycle and their steps add up to v^2 / R = 1250 mm/s^2. Kinks closer than v T count
+  // like a curvature |dt| / L, so the polygon is planned as the curve it is (it took 1.69x
+  // the acceleration limit; review).
+  MachineConfig m = defaultMachine();
+  m.corner_tolerance = 0.0;
+  for (int i = 0; i < 3; ++i) setAxisLimits(m, i, 1000.0, 3e5);
+  const double r = 50.0, chord = 2.5e-3;
+  std::vector<MotionPrimitive> prog;
+  AxisValues p = xyz(r, 0, 0);
+  for (int i = 1; i <= 40000; ++i) {
+    const AxisValues q = xyz(r * std::cos(i * chord / r), r * std::sin(i * chord / r), 0);
+    prog.push_back(line(p, q, 15000.0));
+    p = q;
+  }
+  const Trace t = run(m, prog, 100000);
+  expectWithinLimits(m, t);
+  EXPECT_EQ(t.points.back(), prog.back().to);
+}
+
+TEST(Corners, KinksWithinOneCycleAddUp) {
+  // 100 chords of 1 um at F6000 on the default machine, each turning by 90 % of what the kink
+  // rule allows one kink: 1.7 of them fall within each cycle, and their jerk added up to
+  // 2.9x the limit (review).
+  MachineConfig m = defaultMachine();
+  m.corner_tolerance = 0.0;
+  const double v = 100.0, T = m.ipo_cycle_seconds;
+  const double turn = 0.9 * std::min(0.05 * 2000.0 * T / v, 0.05 * 50000.0 * T * T / v);
+  std::vector<MotionPrimitive> prog;
+  AxisValues p = xyz(0, 0, 0);
+  double heading = 0.0;
+  auto go = [&](double length) {
+    const AxisValues q = xyz(p[0] + length * std::cos(heading), p[1] + length * std::sin(heading), 0);
+    prog.push_back(line(p, q, 6000.0));
+    p = q;
+  };
+  go(50.0);
+  for (int i = 0; i < 100; ++i) {
+    heading += turn;
+    go(1e-3);
+  }
+  heading += turn;
+  go(20.0);
+  const Trace t = run(m, prog);
+  expectWithinLimits(m, t);
+  EXPECT_EQ(t.points.back(), prog.back().to);
+}
+
 TEST(Corners, CollinearSplitHasNoSlowdown) {
   const MachineConfig m = defaultMachine();
   const Trace straight = run(m, {line(xyz(0, 0, 0), xyz(10, 0, 0), 3000.0),

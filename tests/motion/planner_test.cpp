@@ -208,6 +208,27 @@ TEST(Planner, NonLinearRapidMovesEachAxisOnItsOwn) {
   for (const AxisValues& p : linear.points) EXPECT_NEAR(p[1], p[0] / 10.0, 1e-9);
 }
 
+TEST(Planner, LinearRapidsLeaveRoomForAKinkInTheirRun) {
+  // Five linear rapids, each turned by 4e-5 rad from the one before: a kink, and limits close
+  // enough to share one run, which passes the kinks at full acceleration. Each kink's velocity
+  // step needs room in that acceleration (without: 1.0245x Z's limit; review).
+  MachineConfig m = defaultMachine();
+  for (int i = 0; i < 3; ++i) m.axes[i].max_jerk = 1e6;
+  m.axes[2].max_acceleration = 400.0;
+  std::vector<MotionPrimitive> prog;
+  AxisValues p{};
+  double th = 0.2;
+  for (int i = 0; i < 5; ++i) {
+    if (i > 0) th += 40e-6;
+    const AxisValues q = xyz(p[0] + 10 * std::cos(th), p[1] + 5, p[2] + 10 * std::sin(th));
+    prog.push_back(rapid(p, q));  // linear (per_axis false)
+    p = q;
+  }
+  const Trace t = run(m, prog);
+  expectWithinLimits(m, t);
+  EXPECT_EQ(t.points.back(), p);
+}
+
 TEST(Planner, StaticOverridesScaleFeedAndRapid) {
   const MachineConfig m = defaultMachine();
   const auto top = [&](double feed_ovr, double rapid_ovr, const MotionPrimitive& mv) {

@@ -104,18 +104,10 @@ double ContinuousPath::curvatureStepLimit(double step, const AxisValues& involve
   return std::sqrt(kJunctionJerkShare * weakest(involved).jerk * limits_.ipo_cycle / step);
 }
 
-double ContinuousPath::kinkAccelerationLimit(double velocity) const {
-  double limit = kInf;
-  if (!(velocity > 0.0)) return limit;
-  for (int i = 0; i < limits_.count; ++i) {
-    if (held_.start_kink[i] == 0.0) continue;
-    const double tangent =
-        std::max(std::abs(held_.direction[i]), std::abs(held_.previous_direction[i]));
-    const double room =
-        limits_.acceleration[i] - velocity * held_.start_kink[i] / limits_.ipo_cycle;
-    if (tangent > 0.0) limit = std::min(limit, std::max(room, 0.0) / tangent);
-  }
-  return limit;
+double ContinuousPath::startKinkAcceleration(double velocity) const {
+  if (!held_.start_kinked) return kInf;
+  return kinkAccelerationLimit(held_.previous_direction, held_.direction,
+                               std::min(held_.previous_length, held_.length), velocity, limits_);
 }
 
 bool ContinuousPath::wiggleFits(const AxisValues& wiggle) const {
@@ -169,7 +161,7 @@ void ContinuousPath::queueHeld(const AxisValues& end, double end_trim, double en
     // speed, so it keeps it (lifted to the floor, a 0.2 um arc reached 11.6x the jerk limit).
     if (!(limits.velocity > 0.0)) limits.velocity = kMinPathVelocity;
     limits.acceleration = std::min(limits.acceleration,
-                                   kinkAccelerationLimit(std::min(held_.start_limit, limits.velocity)));
+                                   startKinkAcceleration(std::min(held_.start_limit, limits.velocity)));
     enqueue(seg, MotionPrimitive::Kind::Arc, limits, held_.start_limit, stop_after);
     return;
   }
@@ -206,7 +198,7 @@ void ContinuousPath::queueHeld(const AxisValues& end, double end_trim, double en
   }
   limits.velocity = std::max(limits.velocity, kMinPathVelocity);
   limits.acceleration = std::min(limits.acceleration,
-                                 kinkAccelerationLimit(std::min(held_.start_limit, limits.velocity)));
+                                 startKinkAcceleration(std::min(held_.start_limit, limits.velocity)));
   enqueue(seg, MotionPrimitive::Kind::Line, limits, held_.start_limit, stop_after);
 }
 
@@ -315,8 +307,8 @@ bool ContinuousPath::move(const PathSegment& programmed, double feed, double fee
       const PathSegment& before = queue_.lastSegment()->path;
       next.start_limit = junctionVelocity(before, programmed, limits_);
       before.tangent(before.length(), next.previous_direction);
-      for (int i = 0; i < n; ++i)
-        next.start_kink[i] = std::abs(next.direction[i] - next.previous_direction[i]);
+      next.previous_length = before.length();
+      next.start_kinked = true;
     }
   } else {
     const HeldMove& a = held_;
@@ -337,12 +329,10 @@ bool ContinuousPath::move(const PathSegment& programmed, double feed, double fee
     const double kink =
         theta <= kCornerAngle ? junctionVelocity(heldPart(a.end, 0.0), programmed, limits_) : 0.0;
     const bool kink_free = a.start_curvature == 0.0 && kink >= std::max(a.feed, feed);
-    AxisValues kink_step{};
-    for (int i = 0; i < n; ++i) kink_step[i] = std::abs(next.direction[i] - a.end_direction[i]);
     if (kink_free) {
       queueHeld(a.end, 0.0, 0.0, AxisValues{}, next.direction, false);
       next.start_limit = kink;
-      next.start_kink = kink_step;
+      next.start_kinked = true;
     } else if (lines && theta <= kChainMaxTurn && wiggleFits(wiggle)) {
       // Chain vertex: passed as is, both lines planned as the curve through it.
       queueHeld(a.end, 0.0, kappa, wiggle, next.direction, false);
@@ -358,10 +348,11 @@ bool ContinuousPath::move(const PathSegment& programmed, double feed, double fee
         const bool stop = unblended <= 0.0;
         queueHeld(a.end, 0.0, 0.0, AxisValues{}, next.direction, stop);
         next.start_limit = unblended;
-        if (!stop) next.start_kink = kink_step;
+        next.start_kinked = !stop;
       }
     }
     next.previous_direction = a.end_direction;
+    next.previous_length = a.length;
   }
   held_ = next;
   if (next.arc) held_arc_ = programmed;

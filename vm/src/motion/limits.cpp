@@ -219,6 +219,7 @@ double junctionVelocity(const PathSegment& a, const PathSegment& b, const AxisLi
   a.curvature(a.length(), ka);
   b.curvature(0.0, kb);
   const double T = axes.ipo_cycle;
+  const double shorter = std::min(a.length(), b.length());
   double v = kInf;
   for (int i = 0; i < axes.count; ++i) {
     const double budget = kJunctionJerkShare * axes.jerk[i];
@@ -228,11 +229,32 @@ double junctionVelocity(const PathSegment& a, const PathSegment& b, const AxisLi
     // ... and as an acceleration of dv / T: at most kJunctionAccelerationShare of the axis',
     // the rest is for the path's (ContinuousPath lowers it where the two moves share a run).
     if (kink > 0.0) v = std::min(v, kJunctionAccelerationShare * axes.acceleration[i] * T / kink);
+    // Several kinks within one cycle: their steps add like a curvature |dt_i| / L.
+    if (kink > 0.0 && shorter > 0.0) {
+      v = std::min(v, std::sqrt(kJunctionAccelerationShare * axes.acceleration[i] * shorter / kink));
+      v = std::min(v, std::sqrt(kJunctionJerkShare * axes.jerk[i] * T * shorter / kink));
+    }
     // An acceleration step da reads as a jerk of about da / T.
     const double step = std::abs(kb[i] - ka[i]);
     if (step > 0.0) v = std::min(v, std::sqrt(budget * T / step));
   }
   return v;
+}
+
+double kinkAccelerationLimit(const AxisValues& before, const AxisValues& after, double length,
+                             double velocity, const AxisLimits& axes) {
+  double limit = kInf;
+  if (!(velocity > 0.0)) return limit;
+  const double T = axes.ipo_cycle;
+  const double per_cycle = length > 0.0 ? 1.0 + velocity * T / length : 1.0;
+  for (int i = 0; i < axes.count; ++i) {
+    const double kink = std::abs(after[i] - before[i]);
+    const double tangent = std::max(std::abs(before[i]), std::abs(after[i]));
+    if (kink == 0.0 || tangent == 0.0) continue;
+    const double room = axes.acceleration[i] - per_cycle * velocity * kink / T;
+    limit = std::min(limit, std::max(room, 0.0) / tangent);
+  }
+  return limit;
 }
 
 }  // namespace ncc::vm::motion

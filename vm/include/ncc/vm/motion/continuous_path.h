@@ -53,6 +53,10 @@ class ContinuousPath {
   void enqueue(const QueuedSegment& segment, MotionPrimitive::Kind kind,
                const SegmentLimits& limits, double vertex_limit, bool stop_after);
 
+  // Whether a segment of `kind` queued now joins the path while it moves (else it starts from
+  // rest: nothing queued, or a stop, a dwell or a change between feed and rapid before it).
+  bool joinsMoving(MotionPrimitive::Kind kind) const;
+
  private:
   struct HeldMove {
     bool active = false;
@@ -73,9 +77,10 @@ class ContinuousPath {
     AxisValues start_wiggle{};     // the polygon's deviation from the chain's curve there,
                                    // per axis (ChainShape::wiggle)
     AxisValues previous_direction{};  // end tangent of the move before it (zero if none)
-    // Per axis |dt_i|, the change of the unit tangent at its start where that vertex is a
-    // kink passed while moving (zero otherwise).
-    AxisValues start_kink{};
+    // Its start vertex is a kink passed while moving (from previous_direction to direction),
+    // and the previous move's programmed length.
+    bool start_kinked = false;
+    double previous_length = 0.0;
   };
 
   // Queues the held move from its start to `end` (an arc: to `end_trim` before its programmed
@@ -116,14 +121,9 @@ class ContinuousPath {
                           double blend_speed, double blend_length, double trim);
   // What a ramp from `from` up to `to` loses against cruising at `to`.
   static double rampCost(double from, double to, double accel, double jerk);
-  // Whether a segment of `kind` queued now joins the path while it moves (else it starts from
-  // rest: nothing queued, or a stop, a dwell or a change between feed and rapid before it).
-  bool joinsMoving(MotionPrimitive::Kind kind) const;
-  // The tangential acceleration the held move may use at its start kink passed at `velocity`:
-  // the kink steps each axis' velocity by v |dt_i| within one cycle, an acceleration step of
-  // v |dt_i| / T on top of the path's a_t |t_i| (the two moves share a run when their limits
-  // are close, so the path may be accelerating there). Infinite without a kink.
-  double kinkAccelerationLimit(double velocity) const;
+  // The tangential acceleration the held move may use at its start kink passed at `velocity`
+  // (limits.h kinkAccelerationLimit); infinite without a kink.
+  double startKinkAcceleration(double velocity) const;
   // Whether a chain's polygon may deviate from its curve by `wiggle` (per axis, mm): within
   // kWiggleJerkShare of each axis' jerk and kWiggleAccelerationShare of its acceleration.
   bool wiggleFits(const AxisValues& wiggle) const;

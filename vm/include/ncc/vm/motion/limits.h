@@ -126,6 +126,19 @@ SegmentLimits segmentLimits(const PathSegment& path, const AxisLimits& axes, boo
 // junction share of the axis jerk over one IPO cycle, and the kink within
 // kJunctionAccelerationShare of the axis acceleration. Not included: both segments' own
 // velocity limits (the look-ahead takes the minimum).
+// Kinks closer together than v T fall several within one cycle (about v T / L of them for moves
+// of length L), and their velocity steps add up to v^2 |dt_i| / L, like a curvature
+// |dt_i| / L: that is kept within the same shares (a circle of r 50 in 2.5 um chords at
+// F15000, every vertex a kink, took 1.69x the acceleration limit).
 double junctionVelocity(const PathSegment& a, const PathSegment& b, const AxisLimits& axes);
+
+// The tangential acceleration a move may use where it meets the move before it at a kink
+// passed at `velocity` (unit tangents `before` and `after`; `length`, the shorter of the two
+// moves): the kink steps axis i's velocity by v |dt_i| within one cycle, about
+// 1 + v T / length such steps fall within one cycle, and they come on top of the path's
+// a_t |t_i| (two moves of close limits share a run, which may pass the kink accelerating).
+// Infinite where nothing kinks or at rest.
+double kinkAccelerationLimit(const AxisValues& before, const AxisValues& after, double length,
+                             double velocity, const AxisLimits& axes);
 
 }  // namespace ncc::vm::motion
