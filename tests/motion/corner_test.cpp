@@ -151,6 +151,26 @@ TEST(Corners, KinkStaysWithinTheAccelerationOfAnAxisOfHugeJerk) {
   EXPECT_EQ(t.points.back(), prog.back().to);
 }
 
+TEST(Corners, KinkLeavesRoomOnBothSidesWhenTheJerkIsHuge) {
+  // Y of 1.348 mm/s^2 and 2.5e6 mm/s^3: the path's acceleration changes within a microsecond.
+  // A line tilted from Y towards Z by 0.0032 rad accelerates at Y's full acceleration into a
+  // kink onto Y (which raises Y's velocity by v (1 - cos) within a cycle), and the line after
+  // it (another F: another run) accelerates on. The runs meet at a = 0, but a sample across the vertex sees nearly all of
+  // both runs' acceleration next to the kink's velocity step: the move before the kink keeps
+  // room for it too (1.0007x Y's limit here without; review fuzz: 1.015x).
+  MachineConfig m = defaultMachine();
+  m.corner_tolerance = 0.0;
+  setAxisLimits(m, 1, 1.348, 2.5e6);
+  setAxisLimits(m, 2, 133.0, 4e6);
+  const double tilt = 0.0032;
+  const AxisValues a = xyz(0, 0, 0), b = xyz(0, 0.63 * std::cos(tilt), 0.63 * std::sin(tilt));
+  const AxisValues c = xyz(0, b[1] + 2.0, b[2]);
+  const std::vector<MotionPrimitive> prog = {line(a, b, 1378.0), line(b, c, 600.0)};
+  const Trace t = run(m, prog);
+  expectWithinLimits(m, t);
+  EXPECT_EQ(t.points.back(), c);
+}
+
 TEST(Corners, CircleOfKinksCountsThemLikeItsCurvature) {
   // R 50 mm in 2.5 um chords at F15000 (a realistic machine: A 1000, J 3e5): every vertex turns
   // by 5e-5 rad, little enough for the kink rule at that speed, but 1.7 vertices fall within

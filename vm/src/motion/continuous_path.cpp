@@ -104,10 +104,18 @@ double ContinuousPath::curvatureStepLimit(double step, const AxisValues& involve
   return std::sqrt(kJunctionJerkShare * weakest(involved).jerk * limits_.ipo_cycle / step);
 }
 
-double ContinuousPath::startKinkAcceleration(double velocity) const {
-  if (!held_.start_kinked) return kInf;
-  return kinkAccelerationLimit(held_.previous_direction, held_.direction,
-                               std::min(held_.previous_length, held_.length), velocity, limits_);
+double ContinuousPath::kinkAcceleration(double velocity, const AxisValues& next_direction) const {
+  double limit = kInf;
+  if (held_.start_kinked)
+    limit = kinkAccelerationLimit(held_.previous_direction, held_.direction,
+                                  std::min(held_.previous_length, held_.length),
+                                  std::min(held_.start_limit, velocity), limits_);
+  if (held_.end_kink_velocity > 0.0)
+    limit = std::min(limit, kinkAccelerationLimit(held_.end_direction, next_direction,
+                                                  std::min(held_.length, held_.next_length),
+                                                  std::min(held_.end_kink_velocity, velocity),
+                                                  limits_));
+  return limit;
 }
 
 bool ContinuousPath::wiggleFits(const AxisValues& wiggle) const {
@@ -161,7 +169,7 @@ void ContinuousPath::queueHeld(const AxisValues& end, double end_trim, double en
     // speed, so it keeps it (lifted to the floor, a 0.2 um arc reached 11.6x the jerk limit).
     if (!(limits.velocity > 0.0)) limits.velocity = kMinPathVelocity;
     limits.acceleration = std::min(limits.acceleration,
-                                   startKinkAcceleration(std::min(held_.start_limit, limits.velocity)));
+                                   kinkAcceleration(limits.velocity, next_direction));
     enqueue(seg, MotionPrimitive::Kind::Arc, limits, held_.start_limit, stop_after);
     return;
   }
@@ -198,7 +206,7 @@ void ContinuousPath::queueHeld(const AxisValues& end, double end_trim, double en
   }
   limits.velocity = std::max(limits.velocity, kMinPathVelocity);
   limits.acceleration = std::min(limits.acceleration,
-                                 startKinkAcceleration(std::min(held_.start_limit, limits.velocity)));
+                                 kinkAcceleration(limits.velocity, next_direction));
   enqueue(seg, MotionPrimitive::Kind::Line, limits, held_.start_limit, stop_after);
 }
 
@@ -330,6 +338,8 @@ bool ContinuousPath::move(const PathSegment& programmed, double feed, double fee
         theta <= kCornerAngle ? junctionVelocity(heldPart(a.end, 0.0), programmed, limits_) : 0.0;
     const bool kink_free = a.start_curvature == 0.0 && kink >= std::max(a.feed, feed);
     if (kink_free) {
+      held_.end_kink_velocity = kink;
+      held_.next_length = next.length;
       queueHeld(a.end, 0.0, 0.0, AxisValues{}, next.direction, false);
       next.start_limit = kink;
       next.start_kinked = true;
@@ -346,6 +356,8 @@ bool ContinuousPath::move(const PathSegment& programmed, double feed, double fee
       const double unblended = std::min(kink, chain_end);
       if (!blendCorner(next, programmed, theta, unblended, chain_end)) {
         const bool stop = unblended <= 0.0;
+        held_.end_kink_velocity = stop ? 0.0 : unblended;
+        held_.next_length = next.length;
         queueHeld(a.end, 0.0, 0.0, AxisValues{}, next.direction, stop);
         next.start_limit = unblended;
         next.start_kinked = !stop;

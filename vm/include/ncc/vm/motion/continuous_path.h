@@ -81,6 +81,10 @@ class ContinuousPath {
     // and the previous move's programmed length.
     bool start_kinked = false;
     double previous_length = 0.0;
+    // Its end vertex is a kink passed at this speed (0: it is not), into a move of
+    // next_length. Set just before it is queued.
+    double end_kink_velocity = 0.0;
+    double next_length = 0.0;
   };
 
   // Queues the held move from its start to `end` (an arc: to `end_trim` before its programmed
@@ -121,9 +125,11 @@ class ContinuousPath {
                           double blend_speed, double blend_length, double trim);
   // What a ramp from `from` up to `to` loses against cruising at `to`.
   static double rampCost(double from, double to, double accel, double jerk);
-  // The tangential acceleration the held move may use at its start kink passed at `velocity`
-  // (limits.h kinkAccelerationLimit); infinite without a kink.
-  double startKinkAcceleration(double velocity) const;
+  // The tangential acceleration the held move may use at its kinks, at its start and at its
+  // end towards `next_direction`, at most at `velocity` (limits.h kinkAccelerationLimit).
+  // Both sides keep room: with a large jerk the acceleration of the move before a kink falls
+  // to 0 within a fraction of a cycle, so a sample across the vertex sees nearly all of it.
+  double kinkAcceleration(double velocity, const AxisValues& next_direction) const;
   // Whether a chain's polygon may deviate from its curve by `wiggle` (per axis, mm): within
   // kWiggleJerkShare of each axis' jerk and kWiggleAccelerationShare of its acceleration.
   bool wiggleFits(const AxisValues& wiggle) const;
