@@ -43,6 +43,7 @@ TEST(FeedHold, StopsOnThePathAndGoesOnWhenReleased) {
   EXPECT_EQ(held.points.back(), xyz(600, 0, 0));
   // Standing still from the end of the brake to the release, on the line.
   EXPECT_GE(standingTicks(held, 2100, 3000), 890u);
+  EXPECT_TRUE(held.infos[2500].idle);  // standing under the hold
   EXPECT_EQ(held.points[2500][1], 0.0);
   EXPECT_NEAR(held.points[2500][0], 200.0, 1.0);
   EXPECT_NEAR(static_cast<double>(held.ticks()) * kT,
@@ -73,6 +74,10 @@ TEST(FeedHold, StopsANonLinearRapidOnEveryAxis) {
   EXPECT_GE(standingTicks(held, 1000, 2000), 700u);  // after a 0.29 s brake from 500 mm/s
   EXPECT_LT(held.points[1500][0], 2000.0);
   EXPECT_EQ(held.points[1500][1], 300.0);
+  // Standing under the hold, it reports idle like a held line (it moved before, and will).
+  EXPECT_TRUE(held.infos[1500].idle);
+  EXPECT_FALSE(held.infos[900].idle);
+  EXPECT_FALSE(held.infos[2200].idle);
   // Exactly one second more, like a line: the start from rest mirrors the brake.
   EXPECT_NEAR(static_cast<double>(held.ticks() - plain.ticks()) * kT, 1.0, 1.5 * kT);
   auto twice = [](uint64_t k, MotionPlanner& planner) {

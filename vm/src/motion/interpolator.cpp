@@ -266,7 +266,8 @@ bool Interpolator::setpoint(uint64_t k, LookAhead& queue, bool closed, AxisValue
       info.jerk = motion.jerk;
       info.kind = run.kind;
       info.where = queue.frontSegment().where;
-      info.idle = false;
+      // Standing under a feed hold, like a held line; else moving.
+      info.idle = queue.held() && motion.velocity == 0.0;
       return true;
     }
     if (!piece_done) {

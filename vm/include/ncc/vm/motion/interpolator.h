@@ -45,7 +45,7 @@ struct SetpointInfo {
   MotionPrimitive::Kind kind = MotionPrimitive::Kind::Dwell;  // run evaluated
   SourcePosition where;       // source of the segment evaluated
   uint32_t segments_finished = 0;  // segments that ended since the previous tick
-  bool idle = true;           // no segment running (waiting for input, or done)
+  bool idle = true;  // no segment running (waiting for input, or done), or standing under hold
   // This tick samples the end of an exact stop (G09/G61) or of a rapid, and more follows:
   // the next piece starts on the next call, so a caller with a servo model can hold the
   // setpoint there until the axes are in position (vm::Controller does).
