@@ -225,14 +225,16 @@ double junctionVelocity(const PathSegment& a, const PathSegment& b, const AxisLi
     const double budget = kJunctionJerkShare * axes.jerk[i];
     // A velocity step dv within one cycle reads as a jerk of about dv / T^2.
     const double kink = std::abs(tb[i] - ta[i]);
-    if (kink > 0.0) v = std::min(v, budget * T * T / kink);
-    // ... and as an acceleration of dv / T: at most kJunctionAccelerationShare of the axis',
-    // the rest is for the path's (ContinuousPath lowers it where the two moves share a run).
-    if (kink > 0.0) v = std::min(v, kJunctionAccelerationShare * axes.acceleration[i] * T / kink);
-    // Several kinks within one cycle: their steps add like a curvature |dt_i| / L.
-    if (kink > 0.0 && shorter > 0.0) {
-      v = std::min(v, std::sqrt(kJunctionAccelerationShare * axes.acceleration[i] * shorter / kink));
-      v = std::min(v, std::sqrt(kJunctionJerkShare * axes.jerk[i] * T * shorter / kink));
+    if (kink > 0.0) {
+      const double acceleration_budget = kJunctionAccelerationShare * axes.acceleration[i];
+      v = std::min(v, budget * T * T / kink);
+      // ... and as an acceleration of dv / T, beside the path's (kinkAccelerationLimit).
+      v = std::min(v, acceleration_budget * T / kink);
+      // Several kinks within one cycle: their steps add like a curvature |dt_i| / L.
+      if (shorter > 0.0) {
+        v = std::min(v, std::sqrt(acceleration_budget * shorter / kink));
+        v = std::min(v, std::sqrt(budget * T * shorter / kink));
+      }
     }
     // An acceleration step da reads as a jerk of about da / T.
     const double step = std::abs(kb[i] - ka[i]);

@@ -43,6 +43,16 @@ bool tooShortToSplit(const Run& run, const SegmentLimits& limits, double length)
 // `limit` is below `run_limit` by more than rounding.
 bool below(double limit, double run_limit) { return limit < (1.0 - kSameLimit) * run_limit; }
 
+// `run` with a segment of `limits` and `feed_limit` joined that lowers them: the lowest of
+// each, and a junction limit no higher than its speed limit.
+void lowerTo(Run& run, const SegmentLimits& limits, double feed_limit) {
+  run.limits.velocity = std::min(run.limits.velocity, limits.velocity);
+  run.limits.acceleration = std::min(run.limits.acceleration, limits.acceleration);
+  run.limits.jerk = std::min(run.limits.jerk, limits.jerk);
+  run.feed_limit = std::min(run.feed_limit, feed_limit);
+  run.entry_limit = std::min(run.entry_limit, run.limits.velocity);
+}
+
 // A feed move the feed override does not scale: G63 tapping.
 bool isTap(const Run& run) {
   return run.kind != MotionPrimitive::Kind::Rapid && !std::isfinite(run.feed_limit);
@@ -92,10 +102,7 @@ bool LookAhead::joinsLast(const QueuedSegment& segment, MotionPrimitive::Kind ki
   // still fit within it: then the backward pass gives it no lower entry, and no earlier entry
   // changes.
   Run lowered = last;
-  lowered.limits.velocity = std::min(last.limits.velocity, limits.velocity);
-  lowered.limits.acceleration = std::min(last.limits.acceleration, limits.acceleration);
-  lowered.limits.jerk = std::min(last.limits.jerk, limits.jerk);
-  lowered.feed_limit = std::min(last.feed_limit, segment.feed_limit);
+  lowerTo(lowered, limits, segment.feed_limit);
   const double entry = last.entry_planned;
   return entry <= speedLimit(lowered, scales_) &&
          reachableVelocity(0.0, last.length + length, lowered.limits.acceleration,
@@ -119,13 +126,8 @@ void LookAhead::push(const QueuedSegment& segment, MotionPrimitive::Kind kind,
     last->length += length;
     ++last->segments;
     last->stop_after = stop_after;
-    if (lowersLast(segment, limits)) {
-      last->limits.velocity = std::min(last->limits.velocity, limits.velocity);
-      last->limits.acceleration = std::min(last->limits.acceleration, limits.acceleration);
-      last->limits.jerk = std::min(last->limits.jerk, limits.jerk);
-      last->entry_limit = std::min(last->entry_limit, last->limits.velocity);
-    }
-    last->feed_limit = std::min(last->feed_limit, segment.feed_limit);
+    // Limits below the run's by rounding only leave it as it is (kSameLimit).
+    if (lowersLast(segment, limits)) lowerTo(*last, limits, segment.feed_limit);
   } else {
     Run& run = runAt(run_count_);
     run = Run{};

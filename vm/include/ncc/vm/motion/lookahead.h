@@ -7,9 +7,9 @@
 // and which are too short together to change speed much (docs/planner.md, "Look-ahead"); the
 // run takes the lowest of each limit: a 10 um G01 chain along a line, an arc split into
 // pieces. The S-curve is planned over a run as one 1-D path, so a chain of tiny segments
-// accelerates like one long segment;
-// profiles start and end at zero acceleration only at run boundaries. A junction between runs
-// passes at a velocity limit (0 at corners and exact stops).
+// accelerates like one long segment; profiles start and end at zero acceleration only at run
+// boundaries. A junction between runs passes at a velocity limit (0 at corners and exact
+// stops).
 //
 // Backward pass (on every push): each run's entry velocity is the highest from which it and
 // every later known run can still brake to v = 0 at the end of the window (the future is
@@ -92,10 +92,10 @@ class LookAhead {
 
   // Appends a segment (caller checks !full()). `entry_limit` is the junction limit with the
   // previous segment; the segment joins the last run when the junction does not bind and
-  // the limits are close or both are short and of near speed (see the top), else starts a run. A join that
-  // lowers the run's limits is refused where it would lower what the motion under way is
-  // committed to: in the started front run, or below the run's planned entry. Runs the
-  // backward pass.
+  // the limits are close or both are short and of near speed (see the top), else starts a
+  // run. A join that lowers the run's limits is refused where it would lower what the motion
+  // under way is committed to: in the started front run, or below the run's planned entry.
+  // Runs the backward pass.
   void push(const QueuedSegment& segment, MotionPrimitive::Kind kind, const SegmentLimits& limits,
             double entry_limit, bool stop_after, double dwell_seconds);
   // The last queued segment ends at rest.

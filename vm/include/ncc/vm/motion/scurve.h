@@ -75,8 +75,9 @@ SCurveProfile planProfile(double length, double v_start, double v_end, double v_
 // Cuts a profile under way for a new speed limit `limit` from its local time `next` (the next
 // tick) on: a ramp up that has not reached its jerk-down phase, when `limit` is below its
 // peak, ends at `limit` (the same ramp to a lower gain), or as early as a = 0 allows from
-// `next` on if that is above `limit`; else a cruise ends at `next` (or where it begins). The profile then ends there at a = 0 (v_end = v_peak, no braking
-// ramp, length and duration shortened); every state before is unchanged. False, the profile
+// `next` on if that is above `limit`; else a cruise ends at `next` (or where it begins). The
+// profile then ends there at a = 0 (v_end = v_peak, no braking ramp, length and duration
+// shortened); every state before is unchanged. False, the profile
 // untouched, when it is braking or in its last jerk phase: it runs on to its end.
 bool cutProfile(SCurveProfile& p, double next, double limit);
 
