@@ -104,16 +104,16 @@ double ContinuousPath::curvatureStepLimit(double step, const AxisValues& involve
   return std::sqrt(kJunctionJerkShare * weakest(involved).jerk * limits_.ipo_cycle / step);
 }
 
-double ContinuousPath::kinkAcceleration(double velocity, const AxisValues& next_direction) const {
+double ContinuousPath::kinkAcceleration(double velocity, const EndVertex& vertex) const {
   double limit = kInf;
   if (held_.start_kinked)
     limit = kinkAccelerationLimit(held_.previous_direction, held_.direction,
                                   std::min(held_.previous_length, held_.length),
                                   std::min(held_.start_limit, velocity), limits_);
-  if (held_.end_kink_velocity > 0.0)
-    limit = std::min(limit, kinkAccelerationLimit(held_.end_direction, next_direction,
-                                                  std::min(held_.length, held_.next_length),
-                                                  std::min(held_.end_kink_velocity, velocity),
+  if (vertex.kink_velocity > 0.0)
+    limit = std::min(limit, kinkAccelerationLimit(held_.end_direction, vertex.next_direction,
+                                                  std::min(held_.length, vertex.next_length),
+                                                  std::min(vertex.kink_velocity, velocity),
                                                   limits_));
   return limit;
 }
@@ -148,8 +148,7 @@ AxisValues ContinuousPath::involvedAxes(const HeldMove& next, const PathSegment&
   return involved;
 }
 
-void ContinuousPath::queueHeld(const AxisValues& end, double end_trim, double end_curvature,
-                               const AxisValues& end_wiggle, const AxisValues& next_direction,
+void ContinuousPath::queueHeld(const AxisValues& end, double end_trim, const EndVertex& vertex,
                                bool stop_after, bool end_at_rest) {
   const int n = limits_.count;
   QueuedSegment seg;
@@ -169,20 +168,21 @@ void ContinuousPath::queueHeld(const AxisValues& end, double end_trim, double en
     // speed, so it keeps it (lifted to the floor, a 0.2 um arc reached 11.6x the jerk limit).
     if (!(limits.velocity > 0.0)) limits.velocity = kMinPathVelocity;
     limits.acceleration = std::min(limits.acceleration,
-                                   kinkAcceleration(limits.velocity, next_direction));
+                                   kinkAcceleration(limits.velocity, vertex));
     enqueue(seg, MotionPrimitive::Kind::Arc, limits, held_.start_limit, stop_after);
     return;
   }
   ChainShape chain;
+  const double end_curvature = vertex.curvature;
   chain.curvature = roundUp(std::max(held_.start_curvature, end_curvature), kCurvatureGridSteps);
   // The chain's curve turns towards the neighbours across chain vertices only: at any other
   // vertex (a stop, a kink, a blend) the line's own direction is where it starts or ends.
   const bool chain_start = held_.start_curvature > 0.0, chain_end = end_curvature > 0.0;
   for (int i = 0; i < n; ++i) {
-    chain.wiggle[i] = roundUp(std::max(held_.start_wiggle[i], end_wiggle[i]), kWiggleGridSteps);
+    chain.wiggle[i] = roundUp(std::max(held_.start_wiggle[i], vertex.wiggle[i]), kWiggleGridSteps);
     const bool moves = held_.direction[i] != 0.0 ||
                        (chain_start && held_.previous_direction[i] != 0.0) ||
-                       (chain_end && next_direction[i] != 0.0);
+                       (chain_end && vertex.next_direction[i] != 0.0);
     chain.involved[i] = moves ? 1.0 : 0.0;
   }
   SegmentLimits limits = chain.curvature > 0.0 ? chainLimits(seg.path, held_.feed, chain)
@@ -206,7 +206,7 @@ void ContinuousPath::queueHeld(const AxisValues& end, double end_trim, double en
   }
   limits.velocity = std::max(limits.velocity, kMinPathVelocity);
   limits.acceleration = std::min(limits.acceleration,
-                                 kinkAcceleration(limits.velocity, next_direction));
+                                 kinkAcceleration(limits.velocity, vertex));
   enqueue(seg, MotionPrimitive::Kind::Line, limits, held_.start_limit, stop_after);
 }
 
@@ -228,7 +228,7 @@ SegmentLimits ContinuousPath::chainLimits(const PathSegment& line, double feed,
 
 void ContinuousPath::flush(bool at_rest) {
   if (!held_.active) return;
-  queueHeld(held_.end, 0.0, 0.0, AxisValues{}, AxisValues{}, false, at_rest);
+  queueHeld(held_.end, 0.0, EndVertex{}, false, at_rest);
   held_.active = false;
 }
 
@@ -278,7 +278,7 @@ bool ContinuousPath::blendCorner(HeldMove& next, const PathSegment& next_path, d
       blendCost(a.feed, next.feed, path_accel, path_jerk, bl.velocity, blend.path.length(), trim) <
       stopCost(a.feed, next.feed, path_accel, path_jerk);
   if (!(bl.velocity > unblended && (unblended > 0.0 || beats_stop))) return false;
-  queueHeld(b_from, trim, 0.0, AxisValues{}, next.direction, false);
+  queueHeld(b_from, trim, {next.direction, next.length}, false);
   // The blend starts exactly where the trimmed move ended (also when the blends on both sides
   // left nothing of it).
   const QueuedSegment* last = queue_.lastSegment();
@@ -338,14 +338,14 @@ bool ContinuousPath::move(const PathSegment& programmed, double feed, double fee
         theta <= kCornerAngle ? junctionVelocity(heldPart(a.end, 0.0), programmed, limits_) : 0.0;
     const bool kink_free = a.start_curvature == 0.0 && kink >= std::max(a.feed, feed);
     if (kink_free) {
-      held_.end_kink_velocity = kink;
-      held_.next_length = next.length;
-      queueHeld(a.end, 0.0, 0.0, AxisValues{}, next.direction, false);
+      queueHeld(a.end, 0.0, {.next_direction = next.direction, .next_length = next.length,
+                             .kink_velocity = kink},
+                false);
       next.start_limit = kink;
       next.start_kinked = true;
     } else if (lines && theta <= kChainMaxTurn && wiggleFits(wiggle)) {
       // Chain vertex: passed as is, both lines planned as the curve through it.
-      queueHeld(a.end, 0.0, kappa, wiggle, next.direction, false);
+      queueHeld(a.end, 0.0, {next.direction, next.length, kappa, wiggle}, false);
       next.start_limit = kInf;
       next.start_curvature = kappa;
       next.start_wiggle = wiggle;
@@ -356,9 +356,10 @@ bool ContinuousPath::move(const PathSegment& programmed, double feed, double fee
       const double unblended = std::min(kink, chain_end);
       if (!blendCorner(next, programmed, theta, unblended, chain_end)) {
         const bool stop = unblended <= 0.0;
-        held_.end_kink_velocity = stop ? 0.0 : unblended;
-        held_.next_length = next.length;
-        queueHeld(a.end, 0.0, 0.0, AxisValues{}, next.direction, stop);
+        queueHeld(a.end, 0.0,
+                  {.next_direction = next.direction, .next_length = next.length,
+                   .kink_velocity = stop ? 0.0 : unblended},
+                  stop);
         next.start_limit = unblended;
         next.start_kinked = !stop;
       }
@@ -369,7 +370,7 @@ bool ContinuousPath::move(const PathSegment& programmed, double feed, double fee
   held_ = next;
   if (next.arc) held_arc_ = programmed;
   if (exact_stop) {
-    queueHeld(held_.end, 0.0, 0.0, AxisValues{}, AxisValues{}, true);
+    queueHeld(held_.end, 0.0, EndVertex{}, true);
     held_.active = false;
   }
   return true;

@@ -81,18 +81,21 @@ class ContinuousPath {
     // and the previous move's programmed length.
     bool start_kinked = false;
     double previous_length = 0.0;
-    // Its end vertex is a kink passed at this speed (0: it is not), into a move of
-    // next_length. Set just before it is queued.
-    double end_kink_velocity = 0.0;
-    double next_length = 0.0;
+  };
+  // How the held move meets what follows it at its end.
+  struct EndVertex {
+    AxisValues next_direction{};  // the next move's start tangent (zero if none)
+    double next_length = 0.0;     // the next move's programmed length
+    double curvature = 0.0;       // chain curvature there (0: not a chain vertex)
+    AxisValues wiggle{};          // the chain's wiggle there (ChainShape::wiggle)
+    double kink_velocity = 0.0;   // a kink passed at this speed (0: not a kink)
   };
 
   // Queues the held move from its start to `end` (an arc: to `end_trim` before its programmed
-  // end), a line planned with the chain curvature and wiggle of its two vertices
-  // (end_curvature: 0 when its end is not a chain vertex). `end_at_rest`: the path stops at
-  // `end` (stop_after, or what follows starts from rest).
-  void queueHeld(const AxisValues& end, double end_trim, double end_curvature,
-                 const AxisValues& end_wiggle, const AxisValues& next_direction,
+  // end), a line planned with the chain curvature and wiggle of its two vertices, each move
+  // with room for the kinks at its ends. `end_at_rest`: the path stops at `end` (stop_after,
+  // or what follows starts from rest).
+  void queueHeld(const AxisValues& end, double end_trim, const EndVertex& vertex,
                  bool stop_after, bool end_at_rest = false);
   // What is left of the held move from its start to `end_trim` before its programmed end
   // (a line: to `end`).
@@ -126,10 +129,10 @@ class ContinuousPath {
   // What a ramp from `from` up to `to` loses against cruising at `to`.
   static double rampCost(double from, double to, double accel, double jerk);
   // The tangential acceleration the held move may use at its kinks, at its start and at its
-  // end towards `next_direction`, at most at `velocity` (limits.h kinkAccelerationLimit).
+  // end `vertex`, at most at `velocity` (limits.h kinkAccelerationLimit).
   // Both sides keep room: with a large jerk the acceleration of the move before a kink falls
   // to 0 within a fraction of a cycle, so a sample across the vertex sees nearly all of it.
-  double kinkAcceleration(double velocity, const AxisValues& next_direction) const;
+  double kinkAcceleration(double velocity, const EndVertex& vertex) const;
   // Whether a chain's polygon may deviate from its curve by `wiggle` (per axis, mm): within
   // kWiggleJerkShare of each axis' jerk and kWiggleAccelerationShare of its acceleration.
   bool wiggleFits(const AxisValues& wiggle) const;
