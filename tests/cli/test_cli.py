@@ -219,8 +219,10 @@ class CliTest(unittest.TestCase):
         # to 25 % at 1 s, it brakes 500 -> 125 mm/s (0.232 s, 72.5 mm) and runs the rest at
         # 125 mm/s: 1 + 0.232 + 1494.4 / 125 + 0.107 (the stop) = 13.294 s, 9.0 s longer.
         # Turned back at 2 s, the second in between covers about 125 mm instead of 500: 0.75 s
-        # longer. A non-linear G00 along X alone moves like the linear one, turn included. Bad
-        # values are usage errors naming them.
+        # longer. A non-linear G00 along X alone moves like the linear one, turn included, but
+        # with the whole jerk (it is at rest at both ends; the linear one is planned before its
+        # end is known): its three ramps take 4.5 ms less. Bad values are usage errors naming
+        # them.
         prog = self.write("rapid2000.nc", "G21 G90 G17\nG00 X2000.\nM30\n")
         linear = self.write("linear.toml", '[machine.params]\nrapid_type = "linear"\n')
         per_axis = self.write("per_axis.toml", '[machine.params]\nrapid_type = "per_axis"\n')
@@ -237,7 +239,8 @@ class CliTest(unittest.TestCase):
         self.assertAlmostEqual(slowed - full, 9.0, delta=0.003)
         back = seconds(linear, "--rapid-override-at", "2=100", "--rapid-override-at", "1=25")
         self.assertAlmostEqual(back - full, 0.75, delta=0.05)
-        self.assertAlmostEqual(seconds(per_axis, "--rapid-override-at", "1=25"), slowed, delta=0.0015)
+        self.assertAlmostEqual(seconds(per_axis, "--rapid-override-at", "1=25"), slowed - 0.0045,
+                               delta=0.0015)
         for bad in ("1", "1=0", "1=150", "x=50", "-1=50", "1=0x32"):
             proc = ncc("run", prog, "--rapid-override-at", bad)
             self.assertEqual(proc.returncode, 2, bad)

@@ -47,10 +47,10 @@ TEST(ControllerStatistics, SingleLineAgainstClosedForms) {
   const RunResult r = runProgram(a.finish(), m);
 
   // Rest to rest with v and a reached: D = L/v + v/a + a/j (docs/planner.md), the line's path
-  // jerk being kSmoothJerkShare of the axis jerk. Tick k samples t = kT; the end point is held
-  // on the first tick after D (the stop sample).
-  const double acc = 2000.0, jerk = vm::motion::kSmoothJerkShare * 50000.0, T = 0.001;
-  const double D = L / v + v / acc + acc / jerk;  // 5.0944... s
+  // jerk being the whole axis jerk (kBetweenStopsJerkShare: no junction needs room). Tick k
+  // samples t = kT; the end point is held on the first tick after D (the stop sample).
+  const double acc = 2000.0, jerk = vm::motion::kBetweenStopsJerkShare * 50000.0, T = 0.001;
+  const double D = L / v + v / acc + acc / jerk;  // 5.09 s
   const uint64_t ticks = static_cast<uint64_t>(std::floor(D / T)) + 2;
   EXPECT_EQ(r.stats.ticks, ticks);
   EXPECT_EQ(r.stats.program_time, static_cast<double>(ticks - 1) * T);

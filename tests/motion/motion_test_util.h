@@ -144,10 +144,27 @@ struct Worst {
 
 // Finite differences of the setpoints against the axis limits. The velocity limit is the
 // rapid speed when either tick is on a rapid, else the feed limit.
+// Rounding of a setpoint: a position is the start of its move plus the tangent times the path
+// length s, each exact to a few units in the last place (ulp) of its magnitude, and s is at
+// most twice the largest coordinate of the program. A difference of n + 1 setpoints adds up
+// to 2^n of those errors: below that floor a sampled value says nothing. With coordinates
+// of 20 mm it is about 1e-4 mm/s^3 of jerk, 1e-5 of an axis whose limit is 13 mm/s^3 (a line
+// at that axis' full jerk read 1.0000018x it); on the default machine, 1e-8. Taken off every
+// sampled value before it is compared.
+inline constexpr double kSetpointUlps = 4.0;
+inline double roundingFloor(double magnitude) {
+  const double m = 2.0 * std::abs(magnitude);
+  return kSetpointUlps * (std::nextafter(m, INFINITY) - m);
+}
+
 inline Worst check(const MachineConfig& m, const Trace& t) {
   Worst w;
   const double T = m.ipo_cycle_seconds;
   const auto& p = t.points;
+  double largest = 0.0;
+  for (const AxisValues& q : p)
+    for (int i = 0; i < m.axisCount(); ++i) largest = std::max(largest, std::abs(q[i]));
+  const double floor = roundingFloor(largest);
   for (std::size_t k = 1; k < p.size(); ++k) {
     const bool rapid = t.infos[k].kind == Kind::Rapid || t.infos[k - 1].kind == Kind::Rapid;
     for (int i = 0; i < m.axisCount(); ++i) {
@@ -156,11 +173,12 @@ inline Worst check(const MachineConfig& m, const Trace& t) {
       w.velocity = std::max(w.velocity, std::abs(v) / ((rapid ? ax.rapid_velocity : ax.max_velocity) / 60.0));
       if (k >= 2) {
         const double a = (p[k][i] - 2 * p[k - 1][i] + p[k - 2][i]) / (T * T);
-        w.acceleration = std::max(w.acceleration, std::abs(a) / ax.max_acceleration);
+        w.acceleration = std::max(w.acceleration, std::max(std::abs(a) - 4.0 * floor / (T * T), 0.0) /
+                                                      ax.max_acceleration);
       }
       if (k >= 3) {
         const double j = (p[k][i] - 3 * p[k - 1][i] + 3 * p[k - 2][i] - p[k - 3][i]) / (T * T * T);
-        w.jerk = std::max(w.jerk, std::abs(j) / ax.max_jerk);
+        w.jerk = std::max(w.jerk, std::max(std::abs(j) - 8.0 * floor / (T * T * T), 0.0) / ax.max_jerk);
       }
     }
   }
@@ -174,10 +192,13 @@ inline void setAxisLimits(MachineConfig& m, int axis, double acceleration, doubl
 }
 
 // The default machine (defaultMachine()) in path units, for closed forms: its IPO cycle, axis
-// acceleration, and a line's path jerk (the smooth share of the axis jerk).
+// acceleration, and the path jerk of a line from rest to rest (a program of one line, an
+// exact stop: the whole axis jerk) and of a move whose end may be passed moving (a linear
+// G00 without exact stop: the smooth share).
 inline constexpr double kDefaultT = 0.001;
 inline constexpr double kDefaultA = 2000.0;
-inline constexpr double kDefaultLineJ = vm::motion::kSmoothJerkShare * 50000.0;
+inline constexpr double kDefaultLineJ = vm::motion::kBetweenStopsJerkShare * 50000.0;
+inline constexpr double kDefaultMovingJ = vm::motion::kSmoothJerkShare * 50000.0;
 
 // Path speed along X between ticks k - 1 and k of a trace sampled every kDefaultT.
 inline double speedAlongX(const Trace& t, uint64_t k) {

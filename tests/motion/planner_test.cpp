@@ -27,7 +27,8 @@ double topSpeed(MotionPlanner& planner, const MotionPrimitive& mv, AxisValues& e
 
 TEST(Planner, RestToRestLineTimeMatchesClosedForm) {
   const MachineConfig m = defaultMachine();  // a = 2000, j = 50000, T = 1 ms
-  const double a = 2000.0, j = kSmoothJerkShare * 50000.0;  // the line's path jerk
+  // From rest to rest: the line's path jerk is the whole axis jerk (kBetweenStopsJerkShare).
+  const double a = 2000.0, j = kBetweenStopsJerkShare * 50000.0;
   for (double L : {0.05, 0.5, 5.0, 50.0, 200.0}) {
     const double v = 100.0;  // F6000 along X
     const Trace t = run(m, {line(xyz(0, 0, 0), xyz(L, 0, 0), 6000.0)});
@@ -187,12 +188,12 @@ TEST(Planner, FeedPerRevolutionUsesSpindleSpeed) {
 
 TEST(Planner, NonLinearRapidMovesEachAxisOnItsOwn) {
   // X100 Y10 with equal limits: Y arrives first, X continues alone (a dog-leg), and the move
-  // takes X's rest-to-rest time at the rapid speed (500 mm/s, 2000 mm/s^2, 0.9 * 50000).
+  // takes X's rest-to-rest time at the rapid speed (500 mm/s, 2000 mm/s^2, 50000 mm/s^3).
   const MachineConfig m = defaultMachine();
   MotionPrimitive g00 = rapid(xyz(0, 0, 0), xyz(100, 10, 0));
   g00.per_axis = true;
   const Trace t = run(m, {g00});
-  const double v = 500.0, a = 2000.0, j = 0.9 * 50000.0;
+  const double v = 500.0, a = 2000.0, j = 50000.0;
   const double expected = 100.0 / v + v / a + a / j;  // v_max and a_max reached
   EXPECT_NEAR(static_cast<double>(t.ticks() - 1) * 0.001, expected, 0.0011);
   EXPECT_EQ(t.points.back(), xyz(100, 10, 0));

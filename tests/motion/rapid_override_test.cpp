@@ -35,9 +35,9 @@ TEST(RapidOverride, TurnedDownWhileCruisingBrakesToTheNewSpeed) {
   expectWithinLimits(m, t);
   EXPECT_NEAR(speedAlongX(t, 990), kRapid, 1e-9);
   // Cut at t = 1 s (the next tick), then a brake 500 -> 125 mm/s at a = 0 on both ends.
-  const VelocityRamp up = VelocityRamp::make(0.0, kRapid, kDefaultA, kDefaultLineJ);
-  const VelocityRamp brake = VelocityRamp::make(slow, kRapid, kDefaultA, kDefaultLineJ);
-  const VelocityRamp stop = VelocityRamp::make(0.0, slow, kDefaultA, kDefaultLineJ);
+  const VelocityRamp up = VelocityRamp::make(0.0, kRapid, kDefaultA, kDefaultMovingJ);
+  const VelocityRamp brake = VelocityRamp::make(slow, kRapid, kDefaultA, kDefaultMovingJ);
+  const VelocityRamp stop = VelocityRamp::make(0.0, slow, kDefaultA, kDefaultMovingJ);
   const uint64_t settled = 1000 + static_cast<uint64_t>(std::ceil(brake.duration / kDefaultT)) + 1;
   for (uint64_t k = settled; k < settled + 100; ++k) EXPECT_NEAR(speedAlongX(t, k), slow, 1e-9) << k;
   const double cut_s = up.distance + kRapid * (1.0 - up.duration);
@@ -55,7 +55,7 @@ TEST(RapidOverride, TurnedUpFromALowerStartReachesTheFullRapid) {
   EXPECT_EQ(t.points.back(), xyz(2000, 0, 0));
   expectWithinLimits(m, t);
   EXPECT_NEAR(speedAlongX(t, 1490), 0.25 * kRapid, 1e-9);
-  const VelocityRamp up = VelocityRamp::make(0.25 * kRapid, kRapid, kDefaultA, kDefaultLineJ);
+  const VelocityRamp up = VelocityRamp::make(0.25 * kRapid, kRapid, kDefaultA, kDefaultMovingJ);
   const uint64_t settled = 1500 + static_cast<uint64_t>(std::ceil(up.duration / kDefaultT)) + 1;
   for (uint64_t k = settled; k < settled + 100; ++k) EXPECT_NEAR(speedAlongX(t, k), kRapid, 1e-9) << k;
 }

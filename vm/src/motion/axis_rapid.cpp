@@ -16,7 +16,7 @@ bool AxisRapid::possible(const AxisValues& from, const AxisValues& to, const Axi
     if (!std::isfinite(from[i]) || !std::isfinite(to[i])) return false;
     if (to[i] == from[i]) continue;  // a standing axis needs no limits
     if (!positiveFinite(limits.rapid_velocity[i]) || !positiveFinite(limits.acceleration[i]) ||
-        !positiveFinite(kSmoothJerkShare * limits.jerk[i]))
+        !positiveFinite(kBetweenStopsJerkShare * limits.jerk[i]))
       return false;
   }
   return true;
@@ -32,7 +32,7 @@ AxisRapid AxisRapid::make(const AxisValues& from, const AxisValues& to, const Ax
     if (to[i] == from[i]) continue;  // standing axis: no leg, sign 0
     const double v = limits.rapid_velocity[i];
     const double a = limits.acceleration[i];
-    const double j = kSmoothJerkShare * limits.jerk[i];
+    const double j = kBetweenStopsJerkShare * limits.jerk[i];
     r.sign_[i] = to[i] > from[i] ? 1.0 : -1.0;
     r.travel_[i] = std::abs(to[i] - from[i]);
     r.legs_[i][0].profile = planProfile(r.travel_[i], 0.0, 0.0, v, a, j);
@@ -89,7 +89,7 @@ void AxisRapid::replan(double next, const AxisLimits& limits, bool held) {
     double s = legs[0].s0 + legs[0].profile.length;
     const double v_end = legs[0].profile.v_end;
     const double a = limits.acceleration[i];
-    const double j = kSmoothJerkShare * limits.jerk[i];
+    const double j = kBetweenStopsJerkShare * limits.jerk[i];
     auto add = [&](double length, double v0, double v1, double v_max) {
       legs[count] = {t, s, planProfile(length, v0, v1, v_max, a, j)};
       t = legs[count].end();

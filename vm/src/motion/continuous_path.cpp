@@ -161,8 +161,10 @@ void ContinuousPath::queueHeld(const AxisValues& end, double end_trim, const End
     if (stop_after) queue_.stopAfterLast();
     return;
   }
+  // From rest to rest: no junction step needs room in its jerk (limits.h).
+  const bool between_stops = held_.start_limit <= 0.0 && (stop_after || end_at_rest);
   if (held_.arc) {
-    SegmentLimits limits = segmentLimits(seg.path, limits_, false, held_.feed);
+    SegmentLimits limits = segmentLimits(seg.path, limits_, false, held_.feed, {}, between_stops);
     // The feed is at least kMinPathVelocity, but an arc's own caps may be lower (a radius of
     // a fraction of a micrometre on weak axes): its acceleration and jerk are budgeted at that
     // speed, so it keeps it (lifted to the floor, a 0.2 um arc reached 11.6x the jerk limit).
@@ -186,7 +188,8 @@ void ContinuousPath::queueHeld(const AxisValues& end, double end_trim, const End
     chain.involved[i] = moves ? 1.0 : 0.0;
   }
   SegmentLimits limits = chain.curvature > 0.0 ? chainLimits(seg.path, held_.feed, chain)
-                                               : segmentLimits(seg.path, limits_, false, held_.feed, chain);
+                                               : segmentLimits(seg.path, limits_, false, held_.feed, chain,
+                                                               between_stops);
   // The chain's curvature changes from one vertex to the next along this line: an
   // acceleration step v^2 dk within at most one cycle reads as a jerk v^2 dk / T. Where the
   // path is at rest (the first line of a chain started from a standstill, the last one

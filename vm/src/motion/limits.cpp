@@ -34,8 +34,9 @@ AxisLimits AxisLimits::from(const MachineConfig& machine) {
 }
 
 SegmentLimits segmentLimits(const PathSegment& path, const AxisLimits& axes, bool rapid,
-                            double feed, const ChainShape& chain) {
+                            double feed, const ChainShape& chain, bool between_stops) {
   SegmentLimits lim{rapid ? kInf : feed, kInf, kInf};
+  const double jerk_share = between_stops ? kBetweenStopsJerkShare : kSmoothJerkShare;
   AxisValues t, q;
   path.maxTangent(t);
   const bool in_chain = chain.curvature > 0.0;
@@ -69,7 +70,7 @@ SegmentLimits segmentLimits(const PathSegment& path, const AxisLimits& axes, boo
       lim.velocity = std::min(lim.velocity, (rapid ? axes.rapid_velocity[i] : axes.feed_velocity[i]) / t[i]);
     if (!curved || q[i] == 0.0) continue;
     lim.velocity = std::min(lim.velocity, std::sqrt(kCentripetalShare * axes.acceleration[i] / (kappa * q[i])));
-    const double smooth = kSmoothJerkShare * axes.jerk[i] - wiggleJerk(i);
+    const double smooth = jerk_share * axes.jerk[i] - wiggleJerk(i);
     lim.velocity = std::min(lim.velocity, std::cbrt(rotation_share * smooth / (rate * q[i])));
   }
   if (curved && axes.chord_tolerance > 0.0) {
@@ -107,7 +108,7 @@ SegmentLimits segmentLimits(const PathSegment& path, const AxisLimits& axes, boo
     if (curved && q[i] > 0.0 && acc >= centripetal)
       a_i = std::max(a_i, std::sqrt(acc * acc - centripetal * centripetal));
     lim.acceleration = std::min(lim.acceleration, a_i);
-    const double jerk = kSmoothJerkShare * axes.jerk[i] - wiggleJerk(i);
+    const double jerk = jerk_share * axes.jerk[i] - wiggleJerk(i);
     const bool norm = curved && q[i] > 0.0;
     budget.add({t[i], cross * q[i], jerk - rotation * q[i], norm ? cross : 0.0,
                 norm ? (circle ? jerk : jerk - rotation) : 0.0,

@@ -137,8 +137,12 @@ void MotionPlanner::pushRapid(const MotionPrimitive& m) {
     return;
   }
   // Planned at the axes' full rapid speeds; the rapid override scales them (SpeedScales).
-  const SegmentLimits limits = segmentLimits(seg.path, limits_, true, 0.0);
-  if (m.per_axis && AxisRapid::possible(m.from, m.to, limits_)) {
+  // Non-linear positioning, and a linear one with exact stop that starts from rest, is at
+  // rest at both ends.
+  const bool per_axis = m.per_axis && AxisRapid::possible(m.from, m.to, limits_);
+  const bool between_stops = per_axis || (m.exact_stop && !path_.joinsMoving(m.kind));
+  const SegmentLimits limits = segmentLimits(seg.path, limits_, true, 0.0, {}, between_stops);
+  if (per_axis) {
     // Non-linear positioning: its own piece, from rest to rest (interpolator.h).
     seg.per_axis = true;
     queue_.stopAfterLast();

@@ -2,8 +2,8 @@
 // Non-linear ("per-axis") positioning: G00 with FANUC LRP (No.1401#1) = 0, Mazak likewise.
 //
 // Every moving axis runs its own rest-to-rest jerk-limited S-curve (scurve.h) from `from` to
-// `to` at its own rapid velocity and acceleration, with kSmoothJerkShare of its jerk (the same
-// share lines use, so sampled jerk keeps the same margin). All axes start together and each
+// `to` at its own rapid velocity, acceleration and jerk (kBetweenStopsJerkShare: it starts and
+// ends at rest, so no junction step needs room). All axes start together and each
 // arrives when its own profile ends: the path is a dog-leg, not a straight line, and the move
 // takes as long as the slowest axis. Axes without travel stand still; rotary axes are plain
 // axes here (deg, deg/s, ...).
@@ -35,7 +35,7 @@ struct AxisRapidMotion {
 class AxisRapid {
  public:
   // The per-axis rapid over the first `limits.count` axes (other slots stay at `to`). Axis i
-  // with travel uses rapid_velocity[i], acceleration[i] and kSmoothJerkShare * jerk[i].
+  // with travel uses rapid_velocity[i], acceleration[i] and kBetweenStopsJerkShare * jerk[i].
   // Requires finite positions and, for every axis that moves, positive finite limits (the
   // machine file guarantees them); otherwise valid() is false and the move has duration 0.
   static AxisRapid make(const AxisValues& from, const AxisValues& to, const AxisLimits& limits);

@@ -11,7 +11,8 @@
 //    that speed, so a slow feed on a curve still accelerates at nearly the full limit, and
 //    on arcs and chains more where the ramps allow it (ramp_envelope.h);
 //  - lines use kSmoothJerkShare of each axis' jerk; the rest is for the velocity kink and
-//    acceleration step a junction may cause within one IPO cycle;
+//    acceleration step a junction may cause within one IPO cycle (a move between stops,
+//    which has none, uses kBetweenStopsJerkShare);
 //  - a line in a smooth chain (continuous_path.h) is planned as a curve of the chain's
 //    curvature; the polygon's deviation from that curve (at most kWiggleJerkShare of the
 //    jerk, see ChainShape) is taken off the budgets.
@@ -26,6 +27,11 @@ namespace ncc::vm::motion {
 // Share of each axis' jerk the smooth part of the motion may use; the remainder covers
 // junction steps (half each for the velocity kink and the curvature step).
 inline constexpr double kSmoothJerkShare = 0.9;
+// A move from rest to rest has no junction step at either end (both the kink v |dt| and the
+// curvature step v^2 dk are 0 at v = 0), and a sampled jerk is a weighted mean of the jerk
+// over its cycles: its smooth part may use the whole jerk. (G61/G09 moves, moves between
+// corners that stop, non-linear G00.)
+inline constexpr double kBetweenStopsJerkShare = 1.0;
 // Direction change (radians) above which an unblended junction is a corner: the path stops
 // there (G64 corners are blended first, continuous_path.h).
 inline constexpr double kCornerAngle = 0.01;
@@ -116,9 +122,10 @@ struct ChainShape {
 };
 
 // `feed` is the programmed path speed in mm/s (ignored for rapids, which run at the axes'
-// rapid speeds). `chain`: set for a line in a smooth chain.
+// rapid speeds). `chain`: set for a line in a smooth chain. `between_stops`: the path is at
+// rest at both ends of the segment (kBetweenStopsJerkShare).
 SegmentLimits segmentLimits(const PathSegment& path, const AxisLimits& axes, bool rapid,
-                            double feed, const ChainShape& chain = {});
+                            double feed, const ChainShape& chain = {}, bool between_stops = false);
 
 // Highest velocity at which the path may pass from the end of `a` into the start of `b`
 // (both moving segments of the same kind): 0 at a corner (direction change above
