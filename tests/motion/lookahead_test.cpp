@@ -63,19 +63,8 @@ TEST(LookAhead, PreparationThatFallsBehindStillStopsWithinTheQueue) {
   }
   Worst worst;
   for (uint64_t stall = 1; stall < 700; stall += 3) {
-    MotionPlanner planner(m, 18);
-    Trace t;
-    std::size_t next = 0;
-    AxisValues out{};
-    SetpointInfo info;
-    for (uint64_t k = 0; k < 100'000; ++k) {
-      const bool stalled = k >= stall && k < stall + 2000;
-      while (!stalled && next < prog.size() && planner.canAccept()) planner.push(prog[next++]);
-      if (next == prog.size()) planner.endOfProgram();
-      if (!planner.setpoint(k, out, info)) break;
-      t.points.push_back(out);
-      t.infos.push_back(info);
-    }
+    const Trace t = run(m, prog, 18, 100'000, false, {}, {},
+                        [stall](uint64_t k) { return k < stall || k >= stall + 2000; });
     ASSERT_EQ(t.points.back(), prog.back().to) << stall;
     const Worst w = check(m, t);
     worst.velocity = std::max(worst.velocity, w.velocity);

@@ -82,12 +82,14 @@ struct Trace {
 // planner wants more (and, with `plan_ahead`, let it plan the next piece, as
 // vm::Controller::prepare does). `max_ticks` guards against a hang. `before_tick(k, planner)`,
 // when given, runs before tick k's setpoint (an operator turning the feed override knob);
-// `setup(planner)` once before the first push.
+// `setup(planner)` once before the first push. `pushes(k)`, when given, says whether the
+// caller pushes before tick k at all (false: a preparation that has fallen behind).
 using PlannerHook = std::function<void(uint64_t, vm::motion::MotionPlanner&)>;
 inline Trace run(const MachineConfig& machine, const std::vector<MotionPrimitive>& program,
                  std::size_t capacity = 1024, uint64_t max_ticks = 50'000'000,
                  bool plan_ahead = false, const PlannerHook& before_tick = {},
-                 const std::function<void(vm::motion::MotionPlanner&)>& setup = {}) {
+                 const std::function<void(vm::motion::MotionPlanner&)>& setup = {},
+                 const std::function<bool(uint64_t)>& pushes = {}) {
   vm::motion::MotionPlanner planner(machine, capacity);
   if (setup) setup(planner);
   Trace trace;
@@ -95,7 +97,8 @@ inline Trace run(const MachineConfig& machine, const std::vector<MotionPrimitive
   AxisValues p{};
   vm::motion::SetpointInfo info;
   for (uint64_t k = 0; k < max_ticks; ++k) {
-    while (next < program.size() && planner.canAccept()) planner.push(program[next++]);
+    const bool pushing = !pushes || pushes(k);
+    while (pushing && next < program.size() && planner.canAccept()) planner.push(program[next++]);
     if (next == program.size()) planner.endOfProgram();
     if (before_tick) before_tick(k, planner);
     if (plan_ahead) planner.planAhead();
