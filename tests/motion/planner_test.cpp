@@ -137,6 +137,36 @@ TEST(Planner, MicroSegmentsOfSlightlyDifferentLimitsRunAtFeed) {
   }
 }
 
+TEST(Planner, ChainWithoutKinksKeepsOnlyTheCurvatureStepsShareOfTheJerk) {
+  // 100 mm of 0.05 mm chords on a circle of r 20000 at F6000 from rest to rest, on axes of
+  // 5000 mm/s^3 (the ramps are jerk-limited: 2 sqrt(v/j) each). The kink rule would pass
+  // each 2.5 urad vertex at 70 mm/s only, so every vertex is a chain vertex (its turn planned
+  // as the chain's curvature), none a kink passed moving: the lines keep only the curvature
+  // step's 5 % of the jerk (kKinkFreeJerkShare), not the 10 % a kink needs too. The polygon's
+  // wiggle takes another 1.5 %.
+  MachineConfig m = defaultMachine();
+  for (int i = 0; i < 3; ++i) m.axes[i].max_jerk = 5000.0;
+  const double r = 20000.0, chord = 0.05, v = 100.0;
+  const int n = 2000;
+  std::vector<MotionPrimitive> prog;
+  AxisValues p = xyz(r, 0, 0);
+  for (int i = 1; i <= n; ++i) {
+    const double th = chord * i / r;
+    const AxisValues q = xyz(r * std::cos(th), r * std::sin(th), 0);
+    prog.push_back(line(p, q, 6000.0));
+    p = q;
+  }
+  const Trace t = run(m, prog);
+  expectWithinLimits(m, t);
+  EXPECT_EQ(t.points.back(), prog.back().to);
+  const double L = chord * n, A = 2000.0, J = 5000.0;
+  const double seconds = static_cast<double>(t.ticks() - 1) * kDefaultT;
+  // Within 2 % of the share (the limits are rounded down to a 2^(1/64) grid; the wiggle) and
+  // two ticks; faster than 90 % of the jerk alone would allow.
+  EXPECT_LE(seconds, restToRestTime(L, v, A, 0.98 * kKinkFreeJerkShare * J) + 2 * kDefaultT);
+  EXPECT_LT(seconds, restToRestTime(L, v, A, kSmoothJerkShare * J) - 0.003);
+}
+
 TEST(Planner, TinyArcKeepsItsOwnSpeedCapBelowTheFloor) {
   // Arcs of 1 to 0.2 um radius (5 extra turns) on X and Y of 1 mm/s^2 and 10 mm/s^3: the
   // curvature caps the speed below 1 mm/min, the slowest speed anything is planned with. The

@@ -161,10 +161,15 @@ void ContinuousPath::queueHeld(const AxisValues& end, double end_trim, const End
     if (stop_after) queue_.stopAfterLast();
     return;
   }
-  // From rest to rest: no junction step needs room in its jerk (limits.h).
+  // The room its ends need in the jerk (limits.h): none from rest to rest; the curvature
+  // step's where neither end is a kink passed moving.
   const bool between_stops = held_.start_limit <= 0.0 && (stop_after || end_at_rest);
+  const bool kinked = held_.start_kinked || (vertex.kink_velocity > 0.0 && !stop_after && !end_at_rest);
+  const double jerk_share = between_stops ? kBetweenStopsJerkShare
+                            : kinked      ? kSmoothJerkShare
+                                          : kKinkFreeJerkShare;
   if (held_.arc) {
-    SegmentLimits limits = segmentLimits(seg.path, limits_, false, held_.feed, {}, between_stops);
+    SegmentLimits limits = segmentLimits(seg.path, limits_, false, held_.feed, {}, jerk_share);
     // The feed is at least kMinPathVelocity, but an arc's own caps may be lower (a radius of
     // a fraction of a micrometre on weak axes): its acceleration and jerk are budgeted at that
     // speed, so it keeps it (lifted to the floor, a 0.2 um arc reached 11.6x the jerk limit).
@@ -187,9 +192,9 @@ void ContinuousPath::queueHeld(const AxisValues& end, double end_trim, const End
                        (chain_end && vertex.next_direction[i] != 0.0);
     chain.involved[i] = moves ? 1.0 : 0.0;
   }
-  SegmentLimits limits = chain.curvature > 0.0 ? chainLimits(seg.path, held_.feed, chain)
-                                               : segmentLimits(seg.path, limits_, false, held_.feed, chain,
-                                                               between_stops);
+  SegmentLimits limits = chain.curvature > 0.0
+                             ? chainLimits(seg.path, held_.feed, chain, jerk_share)
+                             : segmentLimits(seg.path, limits_, false, held_.feed, chain, jerk_share);
   // The chain's curvature changes from one vertex to the next along this line: an
   // acceleration step v^2 dk within at most one cycle reads as a jerk v^2 dk / T. Where the
   // path is at rest (the first line of a chain started from a standstill, the last one
@@ -214,18 +219,18 @@ void ContinuousPath::queueHeld(const AxisValues& end, double end_trim, const End
 }
 
 SegmentLimits ContinuousPath::chainLimits(const PathSegment& line, double feed,
-                                          const ChainShape& chain) {
+                                          const ChainShape& chain, double jerk_share) {
   // A chain line's limits depend on nothing else: its tangent and normal are bounded by 1 on
   // every involved axis (limits.h), whatever its direction.
   for (const ChainLimits& c : chain_cache_) {
-    if (c.valid && c.feed == feed && c.curvature == chain.curvature &&
+    if (c.valid && c.feed == feed && c.jerk_share == jerk_share && c.curvature == chain.curvature &&
         c.wiggle == chain.wiggle && c.involved == chain.involved)
       return c.limits;
   }
   ChainLimits& slot = chain_cache_[chain_cache_next_];
   chain_cache_next_ = (chain_cache_next_ + 1) % chain_cache_.size();
-  slot = {true, feed, chain.curvature, chain.wiggle, chain.involved,
-          segmentLimits(line, limits_, false, feed, chain)};
+  slot = {true, feed, jerk_share, chain.curvature, chain.wiggle, chain.involved,
+          segmentLimits(line, limits_, false, feed, chain, jerk_share)};
   return slot.limits;
 }
 

@@ -34,9 +34,8 @@ AxisLimits AxisLimits::from(const MachineConfig& machine) {
 }
 
 SegmentLimits segmentLimits(const PathSegment& path, const AxisLimits& axes, bool rapid,
-                            double feed, const ChainShape& chain, bool between_stops) {
+                            double feed, const ChainShape& chain, double jerk_share) {
   SegmentLimits lim{rapid ? kInf : feed, kInf, kInf};
-  const double jerk_share = between_stops ? kBetweenStopsJerkShare : kSmoothJerkShare;
   AxisValues t, q;
   path.maxTangent(t);
   const bool in_chain = chain.curvature > 0.0;

@@ -141,7 +141,8 @@ void MotionPlanner::pushRapid(const MotionPrimitive& m) {
   // rest at both ends.
   const bool per_axis = m.per_axis && AxisRapid::possible(m.from, m.to, limits_);
   const bool between_stops = per_axis || (m.exact_stop && !path_.joinsMoving(m.kind));
-  const SegmentLimits limits = segmentLimits(seg.path, limits_, true, 0.0, {}, between_stops);
+  const SegmentLimits limits = segmentLimits(seg.path, limits_, true, 0.0, {},
+                                             between_stops ? kBetweenStopsJerkShare : kSmoothJerkShare);
   if (per_axis) {
     // Non-linear positioning: its own piece, from rest to rest (interpolator.h).
     seg.per_axis = true;

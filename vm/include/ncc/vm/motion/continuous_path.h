@@ -139,7 +139,8 @@ class ContinuousPath {
   // segmentLimits of a chain line, kept for later lines of the same shape: on fast curves
   // they take a search over the ramp envelope (ramp_envelope.h), several microseconds, and a
   // chain's lines share curvature and wiggle (rounded up to a grid).
-  SegmentLimits chainLimits(const PathSegment& line, double feed, const ChainShape& chain);
+  SegmentLimits chainLimits(const PathSegment& line, double feed, const ChainShape& chain,
+                            double jerk_share);
 
   const AxisLimits& limits_;
   LookAhead& queue_;
@@ -149,7 +150,7 @@ class ContinuousPath {
   PathSegment held_arc_;
   struct ChainLimits {
     bool valid = false;
-    double feed = 0.0, curvature = 0.0;
+    double feed = 0.0, jerk_share = 0.0, curvature = 0.0;
     AxisValues wiggle{}, involved{};
     SegmentLimits limits;
   };

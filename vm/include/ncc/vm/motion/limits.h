@@ -12,7 +12,8 @@
 //    on arcs and chains more where the ramps allow it (ramp_envelope.h);
 //  - lines use kSmoothJerkShare of each axis' jerk; the rest is for the velocity kink and
 //    acceleration step a junction may cause within one IPO cycle (a move between stops,
-//    which has none, uses kBetweenStopsJerkShare);
+//    which has none, uses kBetweenStopsJerkShare; one without a kink at either end,
+//    kKinkFreeJerkShare);
 //  - a line in a smooth chain (continuous_path.h) is planned as a curve of the chain's
 //    curvature; the polygon's deviation from that curve (at most kWiggleJerkShare of the
 //    jerk, see ChainShape) is taken off the budgets.
@@ -47,6 +48,9 @@ inline constexpr double kWiggleJerkShare = 0.2;
 inline constexpr double kWiggleAccelerationShare = 0.01;
 // Share of the axis jerk a junction's velocity kink, and its curvature step, may each use.
 inline constexpr double kJunctionJerkShare = 0.5 * (1.0 - kSmoothJerkShare);
+// A move whose ends are passed without a velocity kink (chain vertices, where the turn is
+// planned as the chain's curvature; G2 blends; stops) keeps only the curvature step's share.
+inline constexpr double kKinkFreeJerkShare = 1.0 - kJunctionJerkShare;
 // Share of the axis acceleration a junction's velocity kink may use, like its jerk share: a
 // short chain may pass several kinks within one cycle. It binds only where the jerk is over
 // 1 / T = 1000 times the acceleration per second (the jerk share binds first otherwise).
@@ -122,10 +126,12 @@ struct ChainShape {
 };
 
 // `feed` is the programmed path speed in mm/s (ignored for rapids, which run at the axes'
-// rapid speeds). `chain`: set for a line in a smooth chain. `between_stops`: the path is at
-// rest at both ends of the segment (kBetweenStopsJerkShare).
+// rapid speeds). `chain`: set for a line in a smooth chain. `jerk_share`: of each axis' jerk,
+// what the smooth motion may use (kSmoothJerkShare; more where the segment's ends need less
+// room: kKinkFreeJerkShare, kBetweenStopsJerkShare).
 SegmentLimits segmentLimits(const PathSegment& path, const AxisLimits& axes, bool rapid,
-                            double feed, const ChainShape& chain = {}, bool between_stops = false);
+                            double feed, const ChainShape& chain = {},
+                            double jerk_share = kSmoothJerkShare);
 
 // Highest velocity at which the path may pass from the end of `a` into the start of `b`
 // (both moving segments of the same kind): 0 at a corner (direction change above
