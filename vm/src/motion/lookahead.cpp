@@ -77,7 +77,7 @@ bool LookAhead::lowersLast(const QueuedSegment& segment, const SegmentLimits& li
 }
 
 bool LookAhead::joinsLast(const QueuedSegment& segment, MotionPrimitive::Kind kind,
-                          const SegmentLimits& limits, double entry_limit) const {
+                          const SegmentLimits& limits, double entry_limit) {
   const Run& last = runAt(run_count_ - 1);
   const double length = segment.path.length();
   if (last.kind != kind || last.stop_after || last.segments == 0) return false;
@@ -103,6 +103,7 @@ bool LookAhead::joinsLast(const QueuedSegment& segment, MotionPrimitive::Kind ki
   // changes.
   Run lowered = last;
   lowerTo(lowered, limits, segment.feed_limit);
+  if (pass_pending_) backwardPass();  // the planned entry, as if no pass had been deferred
   const double entry = last.entry_planned;
   return entry <= speedLimit(lowered, scales_) &&
          reachableVelocity(0.0, last.length + length, lowered.limits.acceleration,
@@ -142,8 +143,15 @@ void LookAhead::push(const QueuedSegment& segment, MotionPrimitive::Kind kind,
     ++run_count_;
     slot.run_offset = 0.0;
   }
-  backwardPass();
+  stale_from_ = std::min(stale_from_, run_count_ - 1);  // the run pushed to
+  pass_pending_ = true;
+  if (!defer_pass_) backwardPass();
   ++version_;
+}
+
+void LookAhead::runDeferredBackwardPass() {
+  defer_pass_ = false;
+  if (pass_pending_) backwardPass();
 }
 
 void LookAhead::stopAfterLast() {
@@ -193,10 +201,13 @@ void LookAhead::backwardPass(bool full) {
         run.entry_floor,
         std::min(entryLimit(i),
                  reachableVelocity(exit, run.length, run.limits.acceleration, run.limits.jerk)));
-    if (!full && i + 1 < run_count_ && entry == run.entry_planned) break;  // earlier runs unchanged
+    // A run not pushed to since the last pass whose entry stays: earlier runs are unchanged.
+    if (!full && i < stale_from_ && entry == run.entry_planned) break;
     run.entry_planned = entry;
     exit = entry;
   }
+  stale_from_ = run_count_;
+  pass_pending_ = false;
 }
 
 void LookAhead::setScales(const SpeedScales& scales, const Commitment& committed) {

@@ -83,6 +83,8 @@ Commitment MotionPlanner::commitFor(const SpeedScales& scales) {
 bool MotionPlanner::push(const MotionPrimitive& m) {
   if (spindle_alarm_) return true;  // input ends at the alarm
   if (!hasRoom()) return false;
+  // One backward pass for the segments this move queues (lookahead.h).
+  const DeferredBackwardPass pass(queue_);
   const int n = limits_.count;
   const bool per_rev = (m.kind == MotionPrimitive::Kind::Dwell && m.revolutions) ||
                        ((m.kind == MotionPrimitive::Kind::Line || m.kind == MotionPrimitive::Kind::Arc) &&

@@ -142,6 +142,13 @@ class LookAhead {
   // the preparation calls this for the segments the next tick will read. Segments already
   // prefetched by an earlier call are skipped.
   void prefetchFront(std::size_t count);
+  // While deferred, push() leaves the backward pass to runDeferredBackwardPass(), which runs
+  // one pass over everything pushed since (DeferredBackwardPass below). The entries it plans
+  // are the same, bit for bit: a pass only stops at a run it did not touch whose entry comes
+  // out unchanged. Meanwhile the entries of the runs pushed are stale: nothing but the pushes
+  // may read them.
+  void deferBackwardPass() { defer_pass_ = true; }
+  void runDeferredBackwardPass();
   // Drop the front segment / the (empty) front run.
   void popSegment();
   void popRun();
@@ -157,15 +164,17 @@ class LookAhead {
   const Run& runAt(std::size_t i) const { return runs_[(run_head_ + i) % runs_.size()]; }
   // Whether a segment pushed with these arguments joins the last run (see push), and whether
   // it lowers that run's limits (beyond rounding) or its programmed feed.
+  // (Not const: it may run a deferred backward pass for the last run's planned entry.)
   bool joinsLast(const QueuedSegment& segment, MotionPrimitive::Kind kind,
-                 const SegmentLimits& limits, double entry_limit) const;
+                 const SegmentLimits& limits, double entry_limit);
   bool lowersLast(const QueuedSegment& segment, const SegmentLimits& limits) const;
   // A run's speed limit under `scales`.
   static double speedLimit(const Run& run, const SpeedScales& scales);
   // After a change of the speed limits: the whole window again, with entry floors from
   // `committed` on (setScales).
   void replan(const Commitment& committed);
-  // `full`: every run, not only up to the first unchanged entry.
+  // `full`: every run, not only up to the first unchanged entry of a run pushed to before
+  // stale_from_.
   void backwardPass(bool full = false);
   // Run i's junction limit under the live scales: also at most its and the previous run's
   // speed.
@@ -178,10 +187,29 @@ class LookAhead {
   uint64_t prefetched_until_ = 0;    // absolute index after the last segment prefetched
   std::size_t run_head_ = 0, run_count_ = 0;
   bool front_started_ = false;
+  // Deferred backward pass: whether one is owed, and the first run (from the front) pushed to
+  // since the last pass ran (run_count_ or more: none).
+  bool defer_pass_ = false;
+  bool pass_pending_ = false;
+  std::size_t stale_from_ = 0;
   uint64_t version_ = 0;
   double window_length_ = 0.0;
   double queued_length_ = 0.0;  // lengths of the segments behind the front one
   SpeedScales scales_;
+};
+
+// Defers a LookAhead's backward passes while it lives and runs one when it goes: a feed move
+// queues up to three segments (the held move, a blend, itself), each of which would walk
+// back over the runs within braking distance of the window's end.
+class DeferredBackwardPass {
+ public:
+  explicit DeferredBackwardPass(LookAhead& queue) : queue_(queue) { queue_.deferBackwardPass(); }
+  ~DeferredBackwardPass() { queue_.runDeferredBackwardPass(); }
+  DeferredBackwardPass(const DeferredBackwardPass&) = delete;
+  DeferredBackwardPass& operator=(const DeferredBackwardPass&) = delete;
+
+ private:
+  LookAhead& queue_;
 };
 
 }  // namespace ncc::vm::motion
