@@ -21,6 +21,21 @@ void assignBounded(std::string& to, const std::string& from) {
   to.assign(from.data(), std::min(from.size(), to.capacity()));
 }
 
+// `to = from`, field by field. As one struct copy GCC emits rep movsq plus an 8-byte load
+// overlapping the status byte tick() has just stored, which stalls store forwarding: a
+// tenth of a simple tick.
+void copyTick(const TickOutput& from, TickOutput& to) {
+  to.tick = from.tick;
+  to.time = from.time;
+  to.commanded = from.commanded;
+  to.actual = from.actual;
+  to.following_error = from.following_error;
+  to.path_velocity = from.path_velocity;
+  to.where = from.where;
+  to.file = from.file;
+  to.status = from.status;
+}
+
 }  // namespace
 
 std::unique_ptr<Controller> Controller::load(std::span<const uint8_t> bytes,
@@ -183,7 +198,7 @@ TickStatus Controller::tick(TickOutput& out) noexcept {
     waiting_in_position_ = !inPosition(sample.position_error, k);
 
   last_.status = status_;
-  out = last_;
+  copyTick(last_, out);
   return status_;
 }
 
