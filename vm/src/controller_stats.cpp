@@ -8,6 +8,8 @@ namespace {
 
 // Below this the backward difference is rounding noise: keep the previous direction.
 constexpr double kMinDirectionNorm = 1e-12;  // mm
+// Relative margin on |e|^2 as a bound of the squared contour error (its rounding: ~1e-14).
+constexpr double kErrorBoundSlack = 1e-6;
 
 }  // namespace
 
@@ -44,27 +46,41 @@ void StatisticsAccumulator::add(uint64_t k, double time, const AxisValues& comma
   }
   const double norm = std::sqrt(norm2);
   if (chord > 0.0 && norm > kMinDirectionNorm) {
-    for (int i = 0; i < n; ++i) direction_[i] = d[i] / norm;
+    direction_ = d;
+    direction_norm_ = norm;
   }
 
   // Following and contour error.
   AxisValues e{};
-  double along = 0.0;
+  double error2 = 0.0;
   for (int i = 0; i < n; ++i) {
     stats_.max_following_error[i] =
         std::max(stats_.max_following_error[i], std::abs(following_error[i]));
     e[i] = actual[i] - commanded[i];
-    along += e[i] * direction_[i];
+    error2 += e[i] * e[i];
   }
-  double perpendicular2 = 0.0;
-  for (int i = 0; i < n; ++i) {
-    const double p = e[i] - along * direction_[i];
-    perpendicular2 += p * p;
-  }
-  // Compared squared: the root only for a new largest value.
-  if (perpendicular2 > stats_.max_contour_error * stats_.max_contour_error) {
-    stats_.max_contour_error = std::sqrt(perpendicular2);
-    stats_.max_contour_error_tick = k;
+  // The contour error is a part of e: |e - (e.u)u| <= |e| for |u| = 1 (or u = 0), and
+  // rounding adds about 1e-14 of it, far inside kErrorBoundSlack. A tick whose whole error
+  // is below the largest contour error so far cannot raise it: the unit direction and the
+  // projection, two dependent sums and a division per axis, are left out.
+  const double max2 = stats_.max_contour_error * stats_.max_contour_error;
+  if (!(error2 * (1.0 + kErrorBoundSlack) < max2)) {
+    AxisValues u{};
+    double along = 0.0;
+    for (int i = 0; i < n; ++i) {
+      u[i] = direction_[i] / direction_norm_;
+      along += e[i] * u[i];
+    }
+    double perpendicular2 = 0.0;
+    for (int i = 0; i < n; ++i) {
+      const double p = e[i] - along * u[i];
+      perpendicular2 += p * p;
+    }
+    // Compared squared: the root only for a new largest value.
+    if (perpendicular2 > max2) {
+      stats_.max_contour_error = std::sqrt(perpendicular2);
+      stats_.max_contour_error_tick = k;
+    }
   }
 
   stats_.ticks = k + 1;

@@ -64,7 +64,10 @@ class StatisticsAccumulator {
   bool previous_rapid_ = false;
   AxisValues previous_{};        // c_{k-1}
   AxisValues before_previous_{}; // c_{k-2}
-  AxisValues direction_{};       // unit commanded direction (zero before the first move)
+  // The unit commanded direction is direction_ / direction_norm_ (zero before the first
+  // move), divided out only on ticks that need it.
+  AxisValues direction_{};
+  double direction_norm_ = 1.0;
 };
 
 }  // namespace ncc::vm
