@@ -268,7 +268,7 @@ void LookAhead::prefetchFront(std::size_t count) {
 
 void LookAhead::popSegment() {
   if (segment_count_ == 0) return;
-  seg_head_ = (seg_head_ + 1) % segments_.size();
+  seg_head_ = wrap(seg_head_ + 1, segments_.size());
   --segment_count_;
   ++segments_popped_;
   ++version_;
@@ -279,7 +279,7 @@ void LookAhead::popSegment() {
 
 void LookAhead::popRun() {
   if (run_count_ == 0) return;
-  run_head_ = (run_head_ + 1) % runs_.size();
+  run_head_ = wrap(run_head_ + 1, runs_.size());
   --run_count_;
   front_started_ = false;
   ++version_;
