@@ -23,12 +23,24 @@ void StatisticsAccumulator::add(uint64_t k, double time, const AxisValues& comma
     started_ = true;
   }
 
-  // Path length: the chord from the previous setpoint.
-  double chord2 = 0.0;
+  // One loop over the axes for every per-axis quantity (each sum still in axis order; as
+  // separate loops, their set-up costs more than the work on a few axes): the chord from
+  // the previous setpoint, the commanded direction d (second-order backward difference of
+  // the setpoints), the following error, and e = actual - commanded.
+  double chord2 = 0.0, norm2 = 0.0, error2 = 0.0;
+  AxisValues d{}, e{};
   for (int i = 0; i < n; ++i) {
-    const double d = commanded[i] - previous_[i];
-    chord2 += d * d;
+    const double step = commanded[i] - previous_[i];
+    chord2 += step * step;
+    d[i] = 3.0 * commanded[i] - 4.0 * previous_[i] + before_previous_[i];
+    norm2 += d[i] * d[i];
+    stats_.max_following_error[i] =
+        std::max(stats_.max_following_error[i], std::abs(following_error[i]));
+    e[i] = actual[i] - commanded[i];
+    error2 += e[i] * e[i];
   }
+
+  // Path length.
   const double chord = std::sqrt(chord2);
   stats_.path_length += chord;
   // At rest on this tick (a stop sample, or the first sample of the next run): the chord is
@@ -37,29 +49,14 @@ void StatisticsAccumulator::add(uint64_t k, double time, const AxisValues& comma
   (chord_rapid ? stats_.rapid_length : stats_.feed_length) += chord;
   previous_rapid_ = rapid;
 
-  // Commanded direction: second-order backward difference of the setpoints.
-  AxisValues d{};
-  double norm2 = 0.0;
-  for (int i = 0; i < n; ++i) {
-    d[i] = 3.0 * commanded[i] - 4.0 * previous_[i] + before_previous_[i];
-    norm2 += d[i] * d[i];
-  }
+  // Commanded direction.
   const double norm = std::sqrt(norm2);
   if (chord > 0.0 && norm > kMinDirectionNorm) {
     direction_ = d;
     direction_norm_ = norm;
   }
 
-  // Following and contour error.
-  AxisValues e{};
-  double error2 = 0.0;
-  for (int i = 0; i < n; ++i) {
-    stats_.max_following_error[i] =
-        std::max(stats_.max_following_error[i], std::abs(following_error[i]));
-    e[i] = actual[i] - commanded[i];
-    error2 += e[i] * e[i];
-  }
-  // The contour error is a part of e: |e - (e.u)u| <= |e| for |u| = 1 (or u = 0), and
+  // Contour error. It is a part of e: |e - (e.u)u| <= |e| for |u| = 1 (or u = 0), and
   // rounding adds about 1e-14 of it, far inside kErrorBoundSlack. A tick whose whole error
   // is below the largest contour error so far cannot raise it: the unit direction and the
   // projection, two dependent sums and a division per axis, are left out.
