@@ -147,17 +147,16 @@ struct Worst {
 
 // Finite differences of the setpoints against the axis limits. The velocity limit is the
 // rapid speed when either tick is on a rapid, else the feed limit.
-// Rounding of a setpoint: a position is the start of its move plus the tangent times the path
-// length s, each exact to a few units in the last place (ulp) of its magnitude, and s is at
-// most twice the largest coordinate of the program. A difference of n + 1 setpoints adds up
-// to 2^n of those errors: below that floor a sampled value says nothing. With coordinates
-// of 20 mm it is about 1e-4 mm/s^3 of jerk, 1e-5 of an axis whose limit is 13 mm/s^3 (a line
-// at that axis' full jerk read 1.0000018x it); on the default machine, 1e-8. Taken off every
-// sampled value before it is compared.
-inline constexpr double kSetpointUlps = 4.0;
-inline double roundingFloor(double magnitude) {
-  const double m = 2.0 * std::abs(magnitude);
-  return kSetpointUlps * (std::nextafter(m, INFINITY) - m);
+// Rounding of a setpoint: each is the double nearest its exact value, within half a unit in
+// the last place (ulp) of the largest coordinate, and a difference of n + 1 setpoints adds
+// up to 2^n of those halves. Below that floor a sampled value says nothing (a line at the
+// full jerk of an axis of 13 mm/s^3, 20 mm from zero, read 1.0000018x it). It is taken off
+// every sampled value before it is compared: 8 ulp / T^3 of jerk, 4 ulp / T^2 of
+// acceleration (twice what rounding needs, for the few ulp the position's own arithmetic
+// adds; 1e-8 of the default machine's jerk at 1000 mm).
+inline double roundingFloor(double largest) {
+  const double m = std::abs(largest);
+  return std::nextafter(m, INFINITY) - m;
 }
 
 inline Worst check(const MachineConfig& m, const Trace& t) {

@@ -192,6 +192,27 @@ TEST(Planner, TinyArcKeepsItsOwnSpeedCapBelowTheFloor) {
   }
 }
 
+TEST(Planner, TinyChainKeepsItsOwnSpeedCapBelowTheFloor) {
+  // The same for a chain: a polygon of 2.9 nm chords around a circle of 0.3 um radius, F1e6, on
+  // X of 8.65 mm/s^2 and 83.7 mm/s^3 (review fuzz, seed 174). The lines are planned as the
+  // chain's curve, whose curvature caps the speed at 0.012 mm/s; lifted to the floor, with
+  // the acceleration and jerk budgeted at the cap, it reached 1.07x X's jerk limit.
+  MachineConfig m = defaultMachine();
+  m.corner_tolerance = 0.0;
+  setAxisLimits(m, 0, 8.654, 83.65);
+  setAxisLimits(m, 1, 4994.0, 127416.0);
+  setAxisLimits(m, 2, 706.0, 28.8);
+  const double cx = 1.6075e-4, cy = 2.4888e-4, r = 2.9593e-4, from = -1.0201, step = 0.0096973;
+  auto on = [&](int i) {
+    return xyz(cx + r * std::cos(from + step * i), cy + r * std::sin(from + step * i), 0);
+  };
+  std::vector<MotionPrimitive> prog;
+  for (int i = 0; i < 238; ++i) prog.push_back(line(on(i), on(i + 1), 1e6));
+  const Trace t = run(m, prog, 1024, 10'000'000);
+  expectWithinLimits(m, t);
+  EXPECT_EQ(t.points.back(), prog.back().to);
+}
+
 TEST(Planner, DwellHoldsPositionAndExactStopIsSampled) {
   const MachineConfig m = defaultMachine();
   const AxisValues a = xyz(0, 0, 0), b = xyz(3.3, 1.1, 0), c = xyz(5.0, 1.1, 0.7);

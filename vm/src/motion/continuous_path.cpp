@@ -212,7 +212,14 @@ void ContinuousPath::queueHeld(const AxisValues& end, double end_trim, const End
     limits.acceleration = roundDown(limits.acceleration, kLimitGridSteps);
     limits.jerk = roundDown(limits.jerk, kLimitGridSteps);
   }
-  limits.velocity = std::max(limits.velocity, kMinPathVelocity);
+  // The feed is at least kMinPathVelocity. A chain line's acceleration and jerk are budgeted
+  // at its curvature's speed cap, which may be lower (a polygon around a 0.3 um circle on weak
+  // axes): it keeps it, like an arc (lifted to the floor, 1.07x the jerk limit).
+  if (chain.curvature > 0.0) {
+    if (!(limits.velocity > 0.0)) limits.velocity = kMinPathVelocity;
+  } else {
+    limits.velocity = std::max(limits.velocity, kMinPathVelocity);
+  }
   limits.acceleration = std::min(limits.acceleration,
                                  kinkAcceleration(limits.velocity, vertex));
   enqueue(seg, MotionPrimitive::Kind::Line, limits, held_.start_limit, stop_after);
