@@ -22,7 +22,8 @@ using motion_test::Worst;
 using motion_test::xyz;
 
 // Equal limits on three axes: 500 mm/s rapid, 2000 mm/s^2, 50000 mm/s^3 (a per-axis rapid
-// runs from rest to rest and uses all of it: a^2/j = 80 mm/s, below the rapid speed).
+// runs from rest to rest and uses nearly all of it, kBetweenStopsJerkShare: a^2/j = 80 mm/s,
+// below the rapid speed).
 AxisLimits equalLimits(int count = 3) {
   AxisLimits l;
   l.count = count;
@@ -68,7 +69,7 @@ TEST(AxisRapid, DurationIsTheSlowestAxisClosedForm) {
   const AxisValues from = xyz(0, 0, 0), to = xyz(100, -300, 1);
   const AxisRapid r = AxisRapid::make(from, to, l);
   ASSERT_TRUE(r.valid());
-  const double a = 2000.0, j = 50000.0, v = 500.0;
+  const double a = 2000.0, j = kBetweenStopsJerkShare * 50000.0, v = 500.0;
   // The closed forms written out per regime, not only through restToRestTime.
   const double tx = a / j + std::sqrt((a / j) * (a / j) + 4.0 * 100.0 / a);  // a, not v
   const double ty = 300.0 / v + v / a + a / j;                               // v and a
@@ -163,11 +164,11 @@ Worst check(const AxisRapid& r, const AxisLimits& l, double phase) {
       if (k >= 2) {
         const double a = (cur[i] - 2 * p1[i] + p2[i]) / (T * T);
         w.acceleration =
-            std::max(w.acceleration, std::max(std::abs(a) - 4.0 * floor / (T * T), 0.0) / l.acceleration[i]);
+            std::max(w.acceleration, std::max(std::abs(a) - motion_test::kSetpointAccelerationUlps * floor / (T * T), 0.0) / l.acceleration[i]);
       }
       if (k >= 3) {
         const double j = (cur[i] - 3 * p1[i] + 3 * p2[i] - p3[i]) / (T * T * T);
-        w.jerk = std::max(w.jerk, std::max(std::abs(j) - 8.0 * floor / (T * T * T), 0.0) / l.jerk[i]);
+        w.jerk = std::max(w.jerk, std::max(std::abs(j) - motion_test::kSetpointJerkUlps * floor / (T * T * T), 0.0) / l.jerk[i]);
       }
     }
   }

@@ -154,6 +154,8 @@ struct Worst {
 // every sampled value before it is compared: 8 ulp / T^3 of jerk, 4 ulp / T^2 of
 // acceleration (twice what rounding needs, for the few ulp the position's own arithmetic
 // adds; 1e-8 of the default machine's jerk at 1000 mm).
+inline constexpr double kSetpointJerkUlps = 8.0;
+inline constexpr double kSetpointAccelerationUlps = 4.0;
 inline double roundingFloor(double largest) {
   const double m = std::abs(largest);
   return std::nextafter(m, INFINITY) - m;
@@ -175,12 +177,12 @@ inline Worst check(const MachineConfig& m, const Trace& t) {
       w.velocity = std::max(w.velocity, std::abs(v) / ((rapid ? ax.rapid_velocity : ax.max_velocity) / 60.0));
       if (k >= 2) {
         const double a = (p[k][i] - 2 * p[k - 1][i] + p[k - 2][i]) / (T * T);
-        w.acceleration = std::max(w.acceleration, std::max(std::abs(a) - 4.0 * floor / (T * T), 0.0) /
+        w.acceleration = std::max(w.acceleration, std::max(std::abs(a) - kSetpointAccelerationUlps * floor / (T * T), 0.0) /
                                                       ax.max_acceleration);
       }
       if (k >= 3) {
         const double j = (p[k][i] - 3 * p[k - 1][i] + 3 * p[k - 2][i] - p[k - 3][i]) / (T * T * T);
-        w.jerk = std::max(w.jerk, std::max(std::abs(j) - 8.0 * floor / (T * T * T), 0.0) / ax.max_jerk);
+        w.jerk = std::max(w.jerk, std::max(std::abs(j) - kSetpointJerkUlps * floor / (T * T * T), 0.0) / ax.max_jerk);
       }
     }
   }

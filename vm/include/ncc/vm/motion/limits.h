@@ -30,9 +30,11 @@ namespace ncc::vm::motion {
 inline constexpr double kSmoothJerkShare = 0.9;
 // A move from rest to rest has no junction step at either end (both the kink v |dt| and the
 // curvature step v^2 dk are 0 at v = 0), and a sampled jerk is a weighted mean of the jerk
-// over its cycles: its smooth part may use the whole jerk. (G61/G09 moves, moves between
-// corners that stop, non-linear G00.)
-inline constexpr double kBetweenStopsJerkShare = 1.0;
+// over its cycles: its smooth part may use the whole jerk (G61/G09 moves, moves between
+// corners that stop, non-linear G00) but for 1e-4 of it, which the setpoints' rounding takes:
+// of the position, and of the time within a long piece (v ulp(t)), up to 1e-5 of the jerk of
+// a very soft axis (15 mm/s^3, a non-linear G00 held and released for 450 s).
+inline constexpr double kBetweenStopsJerkShare = 1.0 - 1e-4;
 // Direction change (radians) above which an unblended junction is a corner: the path stops
 // there (G64 corners are blended first, continuous_path.h).
 inline constexpr double kCornerAngle = 0.01;
