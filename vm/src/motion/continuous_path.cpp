@@ -164,7 +164,8 @@ void ContinuousPath::queueHeld(const AxisValues& end, double end_trim, const End
   // The room its ends need in the jerk (limits.h): none from rest to rest; the curvature
   // step's where neither end is a kink passed moving.
   const bool between_stops = held_.start_limit <= 0.0 && (stop_after || end_at_rest);
-  const bool kinked = held_.start_kinked || (vertex.kink_velocity > 0.0 && !stop_after && !end_at_rest);
+  const bool kinked = held_.start_kinked ||
+                      ((vertex.kink_velocity > 0.0 || vertex.unknown) && !stop_after && !end_at_rest);
   const double jerk_share = between_stops ? kBetweenStopsJerkShare
                             : kinked      ? kSmoothJerkShare
                                           : kKinkFreeJerkShare;
@@ -243,7 +244,7 @@ SegmentLimits ContinuousPath::chainLimits(const PathSegment& line, double feed,
 
 void ContinuousPath::flush(bool at_rest) {
   if (!held_.active) return;
-  queueHeld(held_.end, 0.0, EndVertex{}, false, at_rest);
+  queueHeld(held_.end, 0.0, EndVertex{.unknown = !at_rest}, false, at_rest);
   held_.active = false;
 }
 

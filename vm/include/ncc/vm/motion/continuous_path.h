@@ -89,6 +89,7 @@ class ContinuousPath {
     double curvature = 0.0;       // chain curvature there (0: not a chain vertex)
     AxisValues wiggle{};          // the chain's wiggle there (ChainShape::wiggle)
     double kink_velocity = 0.0;   // a kink passed at this speed (0: not a kink)
+    bool unknown = false;         // what follows is not known yet: it may join at a kink
   };
 
   // Queues the held move from its start to `end` (an arc: to `end_trim` before its programmed
