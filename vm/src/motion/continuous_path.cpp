@@ -21,6 +21,16 @@ bool isFeed(MotionPrimitive::Kind k) {
   return k == MotionPrimitive::Kind::Line || k == MotionPrimitive::Kind::Arc;
 }
 
+// The feed is at least kMinPathVelocity, but a curve's own speed cap may be lower (an arc of a
+// fraction of a micrometre radius on weak axes, or a chain's polygon around one): its
+// acceleration and jerk are budgeted at that speed, so it keeps it (lifted to the floor, a
+// 0.2 um arc reached 11.6x the jerk limit, a polygon around a 0.3 um circle 1.07x). Only a
+// cap of 0 moves at the floor. A plain line's limits do not depend on its speed.
+void keepSpeedCap(SegmentLimits& limits, bool curve) {
+  if (!curve) limits.velocity = std::max(limits.velocity, kMinPathVelocity);
+  else if (!(limits.velocity > 0.0)) limits.velocity = kMinPathVelocity;
+}
+
 // Rounds a positive value down / up to the grid 2^(k/steps).
 double roundDown(double x, double steps) {
   if (!(x > 0.0) || !std::isfinite(x)) return x;
@@ -161,20 +171,14 @@ void ContinuousPath::queueHeld(const AxisValues& end, double end_trim, const End
     if (stop_after) queue_.stopAfterLast();
     return;
   }
-  // The room its ends need in the jerk (limits.h): none from rest to rest; the curvature
-  // step's where neither end is a kink passed moving.
-  const bool between_stops = held_.start_limit <= 0.0 && (stop_after || end_at_rest);
-  const bool kinked = held_.start_kinked ||
-                      ((vertex.kink_velocity > 0.0 || vertex.unknown) && !stop_after && !end_at_rest);
-  const double jerk_share = between_stops ? kBetweenStopsJerkShare
-                            : kinked      ? kSmoothJerkShare
-                                          : kKinkFreeJerkShare;
+  // The room its ends need in the jerk (smoothJerkShare, limits.h).
+  const bool end_at_stop = stop_after || end_at_rest;
+  const double jerk_share = smoothJerkShare(
+      held_.start_limit <= 0.0 && end_at_stop,
+      held_.start_kinked || ((vertex.kink_velocity > 0.0 || vertex.unknown) && !end_at_stop));
   if (held_.arc) {
     SegmentLimits limits = segmentLimits(seg.path, limits_, false, held_.feed, {}, jerk_share);
-    // The feed is at least kMinPathVelocity, but an arc's own caps may be lower (a radius of
-    // a fraction of a micrometre on weak axes): its acceleration and jerk are budgeted at that
-    // speed, so it keeps it (lifted to the floor, a 0.2 um arc reached 11.6x the jerk limit).
-    if (!(limits.velocity > 0.0)) limits.velocity = kMinPathVelocity;
+    keepSpeedCap(limits, true);
     limits.acceleration = std::min(limits.acceleration,
                                    kinkAcceleration(limits.velocity, vertex));
     enqueue(seg, MotionPrimitive::Kind::Arc, limits, held_.start_limit, stop_after);
@@ -213,14 +217,7 @@ void ContinuousPath::queueHeld(const AxisValues& end, double end_trim, const End
     limits.acceleration = roundDown(limits.acceleration, kLimitGridSteps);
     limits.jerk = roundDown(limits.jerk, kLimitGridSteps);
   }
-  // The feed is at least kMinPathVelocity. A chain line's acceleration and jerk are budgeted
-  // at its curvature's speed cap, which may be lower (a polygon around a 0.3 um circle on weak
-  // axes): it keeps it, like an arc (lifted to the floor, 1.07x the jerk limit).
-  if (chain.curvature > 0.0) {
-    if (!(limits.velocity > 0.0)) limits.velocity = kMinPathVelocity;
-  } else {
-    limits.velocity = std::max(limits.velocity, kMinPathVelocity);
-  }
+  keepSpeedCap(limits, chain.curvature > 0.0);
   limits.acceleration = std::min(limits.acceleration,
                                  kinkAcceleration(limits.velocity, vertex));
   enqueue(seg, MotionPrimitive::Kind::Line, limits, held_.start_limit, stop_after);

@@ -140,11 +140,13 @@ void MotionPlanner::pushRapid(const MotionPrimitive& m) {
   }
   // Planned at the axes' full rapid speeds; the rapid override scales them (SpeedScales).
   // Non-linear positioning, and a linear one with exact stop that starts from rest, is at
-  // rest at both ends.
+  // rest at both ends; any other linear one is queued before its end is known (a G00 may
+  // follow it moving, at a kink).
   const bool per_axis = m.per_axis && AxisRapid::possible(m.from, m.to, limits_);
-  const bool between_stops = per_axis || (m.exact_stop && !path_.joinsMoving(m.kind));
-  const SegmentLimits limits = segmentLimits(seg.path, limits_, true, 0.0, {},
-                                             between_stops ? kBetweenStopsJerkShare : kSmoothJerkShare);
+  const bool joins_moving = path_.joinsMoving(m.kind);
+  const SegmentLimits limits =
+      segmentLimits(seg.path, limits_, true, 0.0, {},
+                    smoothJerkShare(per_axis || (m.exact_stop && !joins_moving), true));
   if (per_axis) {
     // Non-linear positioning: its own piece, from rest to rest (interpolator.h).
     seg.per_axis = true;
@@ -156,7 +158,7 @@ void MotionPlanner::pushRapid(const MotionPrimitive& m) {
   linear.velocity = std::max(linear.velocity, kMinPathVelocity);
   const QueuedSegment* prev = queue_.lastSegment();
   const double vertex = prev != nullptr ? junctionVelocity(prev->path, seg.path, limits_) : 0.0;
-  if (prev != nullptr && path_.joinsMoving(m.kind)) {
+  if (prev != nullptr && joins_moving) {
     // A kink passed while moving: room for its velocity step, as for feed moves (a chain of
     // rapids turning by 4e-5 rad shared a run and took 1.0245x the acceleration limit).
     AxisValues before, after;

@@ -53,6 +53,12 @@ inline constexpr double kJunctionJerkShare = 0.5 * (1.0 - kSmoothJerkShare);
 // A move whose ends are passed without a velocity kink (chain vertices, where the turn is
 // planned as the chain's curvature; G2 blends; stops) keeps only the curvature step's share.
 inline constexpr double kKinkFreeJerkShare = 1.0 - kJunctionJerkShare;
+// The share of each axis' jerk a move's smooth motion may use, from the room its ends need:
+// kBetweenStopsJerkShare at rest at both ends, else kSmoothJerkShare when an end is (or may
+// be) a kink passed moving, else kKinkFreeJerkShare.
+constexpr double smoothJerkShare(bool between_stops, bool kink_at_an_end) {
+  return between_stops ? kBetweenStopsJerkShare : kink_at_an_end ? kSmoothJerkShare : kKinkFreeJerkShare;
+}
 // Share of the axis acceleration a junction's velocity kink may use, like its jerk share: a
 // short chain may pass several kinks within one cycle. It binds only where the jerk is over
 // 1 / T = 1000 times the acceleration per second (the jerk share binds first otherwise).
