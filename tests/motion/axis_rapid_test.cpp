@@ -139,8 +139,8 @@ TEST(AxisRapid, ExactEndsAtStartAndArrival) {
 
 // Samples t = k T - phase (clamped by the rapid: before the start at `from`, after the end at
 // `to`, so the standstill on both sides is part of the check) and takes finite differences
-// per axis, as random_suite_test.cpp does with the planner's setpoints (less their rounding
-// floor, motion_test::roundingFloor).
+// per axis, as random_suite_test.cpp does with the planner's setpoints (less their rounding,
+// motion_test::SetpointRounding).
 Worst check(const AxisRapid& r, const AxisLimits& l, double phase) {
   const double T = l.ipo_cycle;
   const int n = static_cast<int>(std::ceil(r.duration() / T)) + 6;
@@ -148,7 +148,7 @@ Worst check(const AxisRapid& r, const AxisLimits& l, double phase) {
   double largest = 0.0;
   for (int i = 0; i < l.count; ++i)
     largest = std::max({largest, std::abs(r.from()[i]), std::abs(r.to()[i])});
-  const double floor = motion_test::roundingFloor(largest);
+  const motion_test::SetpointRounding rounding(largest, T);
   AxisValues p[4];
   for (int k = 0; k < n; ++k) {
     AxisValues& cur = p[k % 4];
@@ -163,12 +163,11 @@ Worst check(const AxisRapid& r, const AxisLimits& l, double phase) {
       }
       if (k >= 2) {
         const double a = (cur[i] - 2 * p1[i] + p2[i]) / (T * T);
-        w.acceleration =
-            std::max(w.acceleration, std::max(std::abs(a) - motion_test::kSetpointAccelerationUlps * floor / (T * T), 0.0) / l.acceleration[i]);
+        w.acceleration = std::max(w.acceleration, rounding.acceleration(a) / l.acceleration[i]);
       }
       if (k >= 3) {
         const double j = (cur[i] - 3 * p1[i] + 3 * p2[i] - p3[i]) / (T * T * T);
-        w.jerk = std::max(w.jerk, std::max(std::abs(j) - motion_test::kSetpointJerkUlps * floor / (T * T * T), 0.0) / l.jerk[i]);
+        w.jerk = std::max(w.jerk, rounding.jerk(j) / l.jerk[i]);
       }
     }
   }

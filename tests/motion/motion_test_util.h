@@ -145,8 +145,6 @@ struct Worst {
   double velocity = 0, acceleration = 0, jerk = 0;  // largest ratio to the axis limit
 };
 
-// Finite differences of the setpoints against the axis limits. The velocity limit is the
-// rapid speed when either tick is on a rapid, else the feed limit.
 // Rounding of a setpoint: each is the double nearest its exact value, within half a unit in
 // the last place (ulp) of the largest coordinate, and a difference of n + 1 setpoints adds
 // up to 2^n of those halves. Below that floor a sampled value says nothing (a line at the
@@ -154,13 +152,24 @@ struct Worst {
 // every sampled value before it is compared: 8 ulp / T^3 of jerk, 4 ulp / T^2 of
 // acceleration (twice what rounding needs, for the few ulp the position's own arithmetic
 // adds; 1e-8 of the default machine's jerk at 1000 mm).
-inline constexpr double kSetpointJerkUlps = 8.0;
-inline constexpr double kSetpointAccelerationUlps = 4.0;
-inline double roundingFloor(double largest) {
-  const double m = std::abs(largest);
-  return std::nextafter(m, INFINITY) - m;
-}
+class SetpointRounding {
+ public:
+  SetpointRounding(double largest_coordinate, double T) {
+    const double m = std::abs(largest_coordinate);
+    const double ulp = std::nextafter(m, INFINITY) - m;
+    acceleration_floor_ = 4.0 * ulp / (T * T);
+    jerk_floor_ = 8.0 * ulp / (T * T * T);
+  }
+  // |sampled| less the floor (0 below it).
+  double acceleration(double sampled) const { return std::max(std::abs(sampled) - acceleration_floor_, 0.0); }
+  double jerk(double sampled) const { return std::max(std::abs(sampled) - jerk_floor_, 0.0); }
 
+ private:
+  double acceleration_floor_ = 0.0, jerk_floor_ = 0.0;
+};
+
+// Finite differences of the setpoints against the axis limits, less their rounding. The
+// velocity limit is the rapid speed when either tick is on a rapid, else the feed limit.
 inline Worst check(const MachineConfig& m, const Trace& t) {
   Worst w;
   const double T = m.ipo_cycle_seconds;
@@ -168,7 +177,7 @@ inline Worst check(const MachineConfig& m, const Trace& t) {
   double largest = 0.0;
   for (const AxisValues& q : p)
     for (int i = 0; i < m.axisCount(); ++i) largest = std::max(largest, std::abs(q[i]));
-  const double floor = roundingFloor(largest);
+  const SetpointRounding rounding(largest, T);
   for (std::size_t k = 1; k < p.size(); ++k) {
     const bool rapid = t.infos[k].kind == Kind::Rapid || t.infos[k - 1].kind == Kind::Rapid;
     for (int i = 0; i < m.axisCount(); ++i) {
@@ -177,12 +186,11 @@ inline Worst check(const MachineConfig& m, const Trace& t) {
       w.velocity = std::max(w.velocity, std::abs(v) / ((rapid ? ax.rapid_velocity : ax.max_velocity) / 60.0));
       if (k >= 2) {
         const double a = (p[k][i] - 2 * p[k - 1][i] + p[k - 2][i]) / (T * T);
-        w.acceleration = std::max(w.acceleration, std::max(std::abs(a) - kSetpointAccelerationUlps * floor / (T * T), 0.0) /
-                                                      ax.max_acceleration);
+        w.acceleration = std::max(w.acceleration, rounding.acceleration(a) / ax.max_acceleration);
       }
       if (k >= 3) {
         const double j = (p[k][i] - 3 * p[k - 1][i] + 3 * p[k - 2][i] - p[k - 3][i]) / (T * T * T);
-        w.jerk = std::max(w.jerk, std::max(std::abs(j) - kSetpointJerkUlps * floor / (T * T * T), 0.0) / ax.max_jerk);
+        w.jerk = std::max(w.jerk, rounding.jerk(j) / ax.max_jerk);
       }
     }
   }
