@@ -23,17 +23,20 @@ void assignBounded(std::string& to, const std::string& from) {
 
 // `to = from`, field by field. As one struct copy GCC emits rep movsq plus an 8-byte load
 // overlapping the status byte tick() has just stored, which stalls store forwarding: a
-// tenth of a simple tick.
+// tenth of a simple tick. The structured binding names every member of TickOutput, so a
+// field added there does not compile here until it is copied too.
 void copyTick(const TickOutput& from, TickOutput& to) {
-  to.tick = from.tick;
-  to.time = from.time;
-  to.commanded = from.commanded;
-  to.actual = from.actual;
-  to.following_error = from.following_error;
-  to.path_velocity = from.path_velocity;
-  to.where = from.where;
-  to.file = from.file;
-  to.status = from.status;
+  const auto& [tick, time, commanded, actual, following_error, path_velocity, where, file,
+               status] = from;
+  to.tick = tick;
+  to.time = time;
+  to.commanded = commanded;
+  to.actual = actual;
+  to.following_error = following_error;
+  to.path_velocity = path_velocity;
+  to.where = where;
+  to.file = file;
+  to.status = status;
 }
 
 }  // namespace
