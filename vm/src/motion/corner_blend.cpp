@@ -148,7 +148,7 @@ CornerBlend CornerBlend::make(const AxisValues& corner, const AxisValues& u_in,
     b.plane_share_[i] = std::min(1.0, std::hypot(b.e1_[i], b.e2_[i]));
   }
   planeCurve(cos_t, sin_t, d, b.px_, b.py_);
-  b.buildTables();
+  b.buildTables(true);
 
   // Curvature bounds: the d = 1 table at theta, scaled.
   const double theta = std::atan2(sin_t, cos_t);
@@ -191,7 +191,7 @@ CornerBlend CornerBlend::join(const AxisValues& origin, const AxisValues& e1,
                                     end.y};
   b.px_ = powerBasis(bx);
   b.py_ = powerBasis(by);
-  b.buildTables();
+  b.buildTables(false);
   b.interpolation_exact_ = false;
   // No table for an asymmetric shape: sampled, finer than the table's samples.
   double curvature = 0.0, rate = 0.0;
@@ -201,20 +201,24 @@ CornerBlend CornerBlend::join(const AxisValues& origin, const AxisValues& e1,
   return b;
 }
 
-void CornerBlend::buildTables() {
+void CornerBlend::buildTables(bool mirror_symmetric) {
   vx_ = differentiate(px_);
   vy_ = differentiate(py_);
   ax_ = differentiate(vx_);
   ay_ = differentiate(vy_);
 
+  // A mirror-symmetric curve runs its second half as the mirror image of its first, backwards
+  // (t -> 1 - t): the same speed, s(1 - t) = length - s(t), and t''(s) with its sign turned.
+  // Only the first half is integrated.
+  constexpr int kHalf = kTableSteps / 2;
+  const int integrated = mirror_symmetric ? kHalf : kTableSteps;
   s_table_[0] = 0.0;
-  for (int k = 0; k < kTableSteps; ++k) {
+  for (int k = 0; k < integrated; ++k) {
     const double t0 = static_cast<double>(k) / kTableSteps;
     const double t1 = static_cast<double>(k + 1) / kTableSteps;
     s_table_[k + 1] = s_table_[k] + arcLength(t0, t1);
   }
-
-  for (int k = 0; k <= kTableSteps; ++k) {
+  for (int k = 0; k <= integrated; ++k) {
     const double t = static_cast<double>(k) / kTableSteps;
     double dx, dy;
     derivative(t, dx, dy);
@@ -222,6 +226,14 @@ void CornerBlend::buildTables() {
     speed_table_[k] = std::sqrt(sp2);
     // t''(s) = -(c' . c'') / |c'|^4
     dtds2_table_[k] = -(dx * horner(ax_, t) + dy * horner(ay_, t)) / (sp2 * sp2);
+  }
+  if (!mirror_symmetric) return;
+  const double length = 2.0 * s_table_[kHalf];
+  dtds2_table_[kHalf] = 0.0;  // the speed is extremal at the middle
+  for (int k = 0; k < kHalf; ++k) {
+    s_table_[kTableSteps - k] = length - s_table_[k];
+    speed_table_[kTableSteps - k] = speed_table_[k];
+    dtds2_table_[kTableSteps - k] = -dtds2_table_[k];
   }
 }
 

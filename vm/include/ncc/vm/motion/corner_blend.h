@@ -19,8 +19,9 @@
 // deviation). Its curvature bounds are sampled for each blend instead of tabulated.
 //
 // Arc length: a table of s at 32 equal steps of the Bezier parameter (5-point Gauss-Legendre
-// per step), inverted by quintic Hermite interpolation (and, for turns above 3 degrees, a
-// Newton step); exact to about 1e-14. Curvature
+// per step; make()'s blend is mirror-symmetric, so only its first half is integrated),
+// inverted by quintic Hermite interpolation (and, for turns above 3 degrees, a Newton step);
+// exact to about 1e-14. Curvature
 // bounds come from a table over the turning angle, computed once per process. Everything is a pure function of
 // the construction arguments: no allocation, no throw.
 #include <array>
@@ -80,8 +81,9 @@ class CornerBlend {
   double planeShare(int axis) const { return plane_share_[axis]; }
 
  private:
-  // The derivatives and the arc-length tables of the plane curve px_, py_ (make(), join()).
-  void buildTables();
+  // The derivatives and the arc-length tables of the plane curve px_, py_ (make(), join());
+  // `mirror_symmetric`: the curve is its own mirror image run backwards (make()).
+  void buildTables(bool mirror_symmetric);
   // Bezier parameter t at path length s.
   double parameterAt(double s) const;
   // Derivative of the plane curve at t, and its norm.
