@@ -264,8 +264,39 @@ inline double toSegment(const AxisValues& p, const AxisValues& a, const AxisValu
   return distance(p, q);
 }
 
+// Distance from p to a helix around (cx, cy) in the XY plane (radius r, from angle a0 through
+// `sweep`, Z linear in the angle), by brute force: the nearest of 128 points along it, then a
+// golden-section search around it. Any point of the helix is at least as far as the nearest,
+// so this never under-estimates the distance.
+inline double toHelix(const AxisValues& p, const MotionPrimitive& m, double cx, double cy,
+                      double r, double a0, double sweep) {
+  auto at = [&](double f) {
+    const double a = a0 + sweep * f;
+    AxisValues q = m.from;
+    q[0] = cx + r * std::cos(a);
+    q[1] = cy + r * std::sin(a);
+    q[2] = m.from[2] + (m.to[2] - m.from[2]) * f;
+    return distance(p, q);
+  };
+  constexpr int kSamples = 128;
+  int best = 0;
+  double nearest = at(0.0);
+  for (int k = 1; k <= kSamples; ++k) {
+    const double d = at(static_cast<double>(k) / kSamples);
+    if (d < nearest) nearest = d, best = k;
+  }
+  double lo = std::max(0, best - 1) / static_cast<double>(kSamples);
+  double hi = std::min(kSamples, best + 1) / static_cast<double>(kSamples);
+  for (int i = 0; i < 80; ++i) {
+    const double m1 = lo + (hi - lo) * 0.381966, m2 = hi - (hi - lo) * 0.381966;
+    if (at(m1) < at(m2)) hi = m2; else lo = m1;
+  }
+  return std::min(nearest, at(0.5 * (lo + hi)));
+}
+
 // Distance from p to a programmed primitive, worked out here without PathSegment (what the
-// tests check the planner against): a line, or a plane (X, Y) arc of less than a full turn.
+// tests check the planner against): a line, or an arc in the X, Y plane of less than a full
+// turn (a helix when Z changes).
 inline double toPrimitive(const AxisValues& p, const MotionPrimitive& m) {
   if (m.kind != Kind::Arc) return toSegment(p, m.from, m.to);
   const double cx = m.center[0], cy = m.center[1];
@@ -278,9 +309,27 @@ inline double toPrimitive(const AxisValues& p, const MotionPrimitive& m) {
   double a = std::atan2(p[1] - cy, p[0] - cx) - a0;
   if (m.cw) a = -a;
   a = std::fmod(std::fmod(a, 2.0 * std::numbers::pi) + 2.0 * std::numbers::pi, 2.0 * std::numbers::pi);
+  if (m.from[2] != m.to[2]) return toHelix(p, m, cx, cy, r, a0, sweep);
   const double off_plane = p[2] - m.from[2];
   if (a <= std::abs(sweep)) return std::hypot(std::hypot(p[0] - cx, p[1] - cy) - r, off_plane);
   return std::min(distance(p, m.from), distance(p, m.to));
+}
+
+// A lower bound of the distance from p to the primitive: to the box around its end points (a
+// line) or around its whole circle (an arc).
+inline double toBoundingBox(const AxisValues& p, const MotionPrimitive& m) {
+  double sum = 0.0;
+  for (int i = 0; i < 3; ++i) {
+    double lo = std::min(m.from[i], m.to[i]), hi = std::max(m.from[i], m.to[i]);
+    if (m.kind == Kind::Arc && i < 2) {
+      const double r = std::hypot(m.from[0] - m.center[0], m.from[1] - m.center[1]);
+      lo = m.center[i] - r;
+      hi = m.center[i] + r;
+    }
+    const double out = std::max({lo - p[i], p[i] - hi, 0.0});
+    sum += out * out;
+  }
+  return std::sqrt(sum);
 }
 
 // Largest distance of any setpoint from the programmed path.
@@ -288,7 +337,8 @@ inline double worstDeviation(const Trace& t, const std::vector<MotionPrimitive>&
   double worst = 0.0;
   for (const AxisValues& p : t.points) {
     double best = 1e300;
-    for (const MotionPrimitive& m : prog) best = std::min(best, toPrimitive(p, m));
+    for (const MotionPrimitive& m : prog)
+      if (toBoundingBox(p, m) < best) best = std::min(best, toPrimitive(p, m));
     worst = std::max(worst, best);
   }
   return worst;

@@ -72,33 +72,54 @@ void planeCurve(double cos_t, double sin_t, double d, std::array<double, 6>& px,
                    B::kOuter * d * sin_t});
 }
 
-// Largest curvature and curvature rate sqrt(k'^2 + k^4) of the plane curve (px, py) at
-// `samples` + 1 equal steps of its parameter.
+// Largest curvature |d2x/ds2| and curvature rate |d3x/ds3| (sqrt(k'^2 + k^4) on a plane
+// curve, plus the torsion's part on a space curve) of the curve (px, py, pz) at `samples` + 1
+// equal steps of its parameter.
 void sampleCurveBounds(const std::array<double, 6>& px, const std::array<double, 6>& py,
-                       int samples, double& curvature, double& curvature_rate) {
-  const auto vx = differentiate(px), vy = differentiate(py);
-  const auto ax = differentiate(vx), ay = differentiate(vy);
-  const auto jx = differentiate(ax), jy = differentiate(ay);
+                       const std::array<double, 6>& pz, int samples, double& curvature,
+                       double& curvature_rate) {
+  const std::array<std::array<double, 6>, 3> p = {px, py, pz};
+  std::array<std::array<double, 5>, 3> c1;
+  std::array<std::array<double, 4>, 3> c2;
+  std::array<std::array<double, 3>, 3> c3;
+  for (int i = 0; i < 3; ++i) {
+    c1[i] = differentiate(p[i]);
+    c2[i] = differentiate(c1[i]);
+    c3[i] = differentiate(c2[i]);
+  }
   curvature = curvature_rate = 0.0;
   for (int k = 0; k <= samples; ++k) {
     const double t = static_cast<double>(k) / samples;
-    const double x1 = horner(vx, t), y1 = horner(vy, t);
-    const double x2 = horner(ax, t), y2 = horner(ay, t);
-    const double x3 = horner(jx, t), y3 = horner(jy, t);
-    const double sp2 = x1 * x1 + y1 * y1;
+    // With v, a, j the curve's first three derivatives in t, sp2 = |v|^2 and along = a . v,
+    // the curvature vector is a / sp2 - along v / sp2^2, and d3x/ds3 its t-derivative over
+    // |v|: (j / sp2 - 3 along a / sp2^2 - (j . v + |a|^2) v / sp2^2 + 4 along^2 v / sp2^3) / |v|.
+    std::array<double, 3> v, a, j;
+    for (int i = 0; i < 3; ++i) {
+      v[i] = horner(c1[i], t);
+      a[i] = horner(c2[i], t);
+      j[i] = horner(c3[i], t);
+    }
+    const double sp2 = v[0] * v[0] + v[1] * v[1] + v[2] * v[2];
     const double sp = std::sqrt(sp2);
-    const double cross = x1 * y2 - y1 * x2;
-    const double kappa = cross / (sp2 * sp);
-    const double dkappa_dt =
-        ((x1 * y3 - y1 * x3) * sp2 - 3.0 * cross * (x1 * x2 + y1 * y2)) / (sp2 * sp2 * sp);
-    const double dkappa_ds = dkappa_dt / sp;
-    if (!std::isfinite(dkappa_ds)) {  // a cusp (join() with extreme ends): unbounded
+    const double along = a[0] * v[0] + a[1] * v[1] + a[2] * v[2];
+    const double along_rate =
+        j[0] * v[0] + j[1] * v[1] + j[2] * v[2] + a[0] * a[0] + a[1] * a[1] + a[2] * a[2];
+    double k2 = 0.0, r2 = 0.0;
+    for (int i = 0; i < 3; ++i) {
+      const double kv = a[i] / sp2 - along * v[i] / (sp2 * sp2);
+      const double rv = (j[i] / sp2 - 3.0 * along * a[i] / (sp2 * sp2) -
+                         along_rate * v[i] / (sp2 * sp2) +
+                         4.0 * along * along * v[i] / (sp2 * sp2 * sp2)) /
+                        sp;
+      k2 += kv * kv;
+      r2 += rv * rv;
+    }
+    if (!std::isfinite(r2)) {  // a cusp (join() with extreme ends): unbounded
       curvature = curvature_rate = std::numeric_limits<double>::infinity();
       return;
     }
-    curvature = std::max(curvature, std::abs(kappa));
-    curvature_rate = std::max(
-        curvature_rate, std::sqrt(dkappa_ds * dkappa_ds + kappa * kappa * kappa * kappa));
+    curvature = std::max(curvature, std::sqrt(k2));
+    curvature_rate = std::max(curvature_rate, std::sqrt(r2));
   }
 }
 
@@ -106,7 +127,7 @@ void sampleCurveBounds(const std::array<double, 6>& px, const std::array<double,
 void sampleBounds(double theta, double& curvature, double& curvature_rate) {
   std::array<double, 6> px, py;
   planeCurve(std::cos(theta), std::sin(theta), 1.0, px, py);
-  sampleCurveBounds(px, py, kBoundSamples, curvature, curvature_rate);
+  sampleCurveBounds(px, py, {}, kBoundSamples, curvature, curvature_rate);
 }
 
 const UnitBounds& unitBounds() {
@@ -164,38 +185,42 @@ CornerBlend CornerBlend::make(const AxisValues& corner, const AxisValues& u_in,
 }
 
 CornerBlend CornerBlend::join(const AxisValues& origin, const AxisValues& e1,
-                              const AxisValues& e2, const PlaneEnd& start, const PlaneEnd& end,
-                              double handle_start, double handle_end, int axis_count) {
+                              const AxisValues& e2, const AxisValues& e3, const End& start,
+                              const End& end, double handle_start, double handle_end,
+                              int axis_count) {
   CornerBlend b;
   b.axis_count_ = axis_count;
   b.corner_ = origin;
   b.e1_ = e1;
   b.e2_ = e2;
-  for (int i = 0; i < axis_count; ++i) b.plane_share_[i] = std::min(1.0, std::hypot(e1[i], e2[i]));
+  b.e3_ = e3;
+  for (int i = 0; i < axis_count; ++i)
+    b.plane_share_[i] = std::min(1.0, std::sqrt(e1[i] * e1[i] + e2[i] * e2[i] + e3[i] * e3[i]));
   // Control points P0..P5. The second derivative at an end is 20 times the third control
-  // point's sideways offset from the tangent (the handles along it cancel), so an offset of
-  // 1.25 k h^2 towards the normal gives curvature k with a handle h: k = 0.8 offset / h^2.
+  // point's offset from the straight handle (the handles along the tangent cancel), and the
+  // curvature vector is its part across the tangent over the speed squared, (5 h)^2: an offset
+  // of 1.25 h^2 k (k the end's curvature vector, across its tangent) gives the curvature k.
   const double h0 = handle_start, h1 = handle_end;
-  const double g0 = 1.25 * start.curvature * h0 * h0, g1 = 1.25 * end.curvature * h1 * h1;
-  const std::array<double, 6> bx = {start.x,
-                                    start.x + h0 * start.tx,
-                                    start.x + 2.0 * h0 * start.tx - g0 * start.ty,
-                                    end.x - 2.0 * h1 * end.tx - g1 * end.ty,
-                                    end.x - h1 * end.tx,
-                                    end.x};
-  const std::array<double, 6> by = {start.y,
-                                    start.y + h0 * start.ty,
-                                    start.y + 2.0 * h0 * start.ty + g0 * start.tx,
-                                    end.y - 2.0 * h1 * end.ty + g1 * end.tx,
-                                    end.y - h1 * end.ty,
-                                    end.y};
-  b.px_ = powerBasis(bx);
-  b.py_ = powerBasis(by);
+  std::array<std::array<double, 6>, 3> control;
+  for (int i = 0; i < 3; ++i) {
+    const double p0 = start.position[i], t0 = start.tangent[i];
+    const double p5 = end.position[i], t5 = end.tangent[i];
+    control[i] = {p0,
+                  p0 + h0 * t0,
+                  p0 + 2.0 * h0 * t0 + 1.25 * h0 * h0 * start.curvature[i],
+                  p5 - 2.0 * h1 * t5 + 1.25 * h1 * h1 * end.curvature[i],
+                  p5 - h1 * t5,
+                  p5};
+  }
+  b.px_ = powerBasis(control[0]);
+  b.py_ = powerBasis(control[1]);
+  b.pz_ = powerBasis(control[2]);
+  for (double c : control[2]) b.spatial_ = b.spatial_ || c != 0.0;
   b.buildTables(false);
   b.interpolation_exact_ = false;
   // No table for an asymmetric shape: sampled, finer than the table's samples.
   double curvature = 0.0, rate = 0.0;
-  sampleCurveBounds(b.px_, b.py_, 4 * kBoundSamples, curvature, rate);
+  sampleCurveBounds(b.px_, b.py_, b.pz_, 4 * kBoundSamples, curvature, rate);
   b.max_curvature_ = kBoundMargin * curvature;
   b.max_curvature_rate_ = kBoundMargin * rate;
   return b;
@@ -204,8 +229,10 @@ CornerBlend CornerBlend::join(const AxisValues& origin, const AxisValues& e1,
 void CornerBlend::buildTables(bool mirror_symmetric) {
   vx_ = differentiate(px_);
   vy_ = differentiate(py_);
+  vz_ = differentiate(pz_);
   ax_ = differentiate(vx_);
   ay_ = differentiate(vy_);
+  az_ = differentiate(vz_);
 
   // A mirror-symmetric curve runs its second half as the mirror image of its first, backwards
   // (t -> 1 - t): the same speed, s(1 - t) = length - s(t), and t''(s) with its sign turned.
@@ -220,12 +247,13 @@ void CornerBlend::buildTables(bool mirror_symmetric) {
   }
   for (int k = 0; k <= integrated; ++k) {
     const double t = static_cast<double>(k) / kTableSteps;
-    double dx, dy;
-    derivative(t, dx, dy);
-    const double sp2 = dx * dx + dy * dy;
+    double dx, dy, dz;
+    derivative(t, dx, dy, dz);
+    const double sp2 = dx * dx + dy * dy + dz * dz;
     speed_table_[k] = std::sqrt(sp2);
     // t''(s) = -(c' . c'') / |c'|^4
-    dtds2_table_[k] = -(dx * horner(ax_, t) + dy * horner(ay_, t)) / (sp2 * sp2);
+    const double along = dx * horner(ax_, t) + dy * horner(ay_, t);
+    dtds2_table_[k] = -(spatial_ ? along + dz * horner(az_, t) : along) / (sp2 * sp2);
   }
   if (!mirror_symmetric) return;
   const double length = 2.0 * s_table_[kHalf];
@@ -237,15 +265,16 @@ void CornerBlend::buildTables(bool mirror_symmetric) {
   }
 }
 
-void CornerBlend::derivative(double t, double& dx, double& dy) const {
+void CornerBlend::derivative(double t, double& dx, double& dy, double& dz) const {
   dx = horner(vx_, t);
   dy = horner(vy_, t);
+  dz = spatial_ ? horner(vz_, t) : 0.0;
 }
 
 double CornerBlend::speed(double t) const {
-  double dx, dy;
-  derivative(t, dx, dy);
-  return std::sqrt(dx * dx + dy * dy);
+  double dx, dy, dz;
+  derivative(t, dx, dy, dz);
+  return std::sqrt(dx * dx + dy * dy + dz * dz);
 }
 
 double CornerBlend::arcLength(double t0, double t1) const {
@@ -282,30 +311,32 @@ double CornerBlend::parameterAt(double s) const {
 
 void CornerBlend::position(double s, AxisValues& out) const {
   const double t = parameterAt(s);
-  const double x = horner(px_, t), y = horner(py_, t);
+  const double x = horner(px_, t), y = horner(py_, t), z = spatial_ ? horner(pz_, t) : 0.0;
   out = corner_;
-  for (int i = 0; i < axis_count_; ++i) out[i] = corner_[i] + x * e1_[i] + y * e2_[i];
+  for (int i = 0; i < axis_count_; ++i) out[i] = corner_[i] + x * e1_[i] + y * e2_[i] + z * e3_[i];
 }
 
 void CornerBlend::tangent(double s, AxisValues& out) const {
   const double t = parameterAt(s);
-  double dx, dy;
-  derivative(t, dx, dy);
-  const double sp = std::sqrt(dx * dx + dy * dy);
+  double dx, dy, dz;
+  derivative(t, dx, dy, dz);
+  const double sp = std::sqrt(dx * dx + dy * dy + dz * dz);
   out = AxisValues{};
-  for (int i = 0; i < axis_count_; ++i) out[i] = (dx * e1_[i] + dy * e2_[i]) / sp;
+  for (int i = 0; i < axis_count_; ++i) out[i] = (dx * e1_[i] + dy * e2_[i] + dz * e3_[i]) / sp;
 }
 
 void CornerBlend::curvature(double s, AxisValues& out) const {
   const double t = parameterAt(s);
-  const double x1 = horner(vx_, t), y1 = horner(vy_, t);
-  const double x2 = horner(ax_, t), y2 = horner(ay_, t);
-  const double sp2 = x1 * x1 + y1 * y1;
+  double x1, y1, z1;
+  derivative(t, x1, y1, z1);
+  const double x2 = horner(ax_, t), y2 = horner(ay_, t), z2 = spatial_ ? horner(az_, t) : 0.0;
+  const double sp2 = x1 * x1 + y1 * y1 + z1 * z1;
   // d2x/ds2 = (c'' - (c'' . T) T) / |c'|^2 with T = c' / |c'|.
-  const double along = (x2 * x1 + y2 * y1) / sp2;
-  const double kx = (x2 - along * x1) / sp2, ky = (y2 - along * y1) / sp2;
+  const double along = (x2 * x1 + y2 * y1 + z2 * z1) / sp2;
+  const double kx = (x2 - along * x1) / sp2, ky = (y2 - along * y1) / sp2,
+               kz = (z2 - along * z1) / sp2;
   out = AxisValues{};
-  for (int i = 0; i < axis_count_; ++i) out[i] = kx * e1_[i] + ky * e2_[i];
+  for (int i = 0; i < axis_count_; ++i) out[i] = kx * e1_[i] + ky * e2_[i] + kz * e3_[i];
 }
 
 }  // namespace ncc::vm::motion

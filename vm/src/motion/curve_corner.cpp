@@ -17,27 +17,29 @@ constexpr double kFirstTrimScale = 1.5;
 constexpr double kFillShare = 0.8;
 constexpr int kGrowths = 3;
 
-// The plane of the corner (the arc's, or both arcs'), when both segments lie in it.
-struct Plane {
-  int a1 = 0, a2 = 1;
+// The axes of the corner: those either side moves (an arc's plane axes, a helix's linear
+// axes, a line's axes), at most three. The blend is made in their coordinates.
+struct CornerAxes {
+  std::array<int, 3> axis{};
+  int count = 0;
 };
 
-// A line's travel off the plane below this (mm) is rounding: the blend keeps the corner's
-// off-plane coordinates, a step far below any servo's resolution.
+// A line's travel along an axis below this (mm) is rounding: the blend keeps the corner's
+// coordinate there, a step far below any servo's resolution.
 constexpr double kOffPlane = 1e-9;
 
-bool liesIn(const PathSegment& seg, const Plane& plane, int axis_count) {
-  if (seg.shape() == PathSegment::Shape::Arc) {
-    const bool same_axes = (seg.planeAxis1() == plane.a1 && seg.planeAxis2() == plane.a2) ||
-                           (seg.planeAxis1() == plane.a2 && seg.planeAxis2() == plane.a1);
-    // In the plane (no helix); the end radius may differ from the start radius (a spiral:
-    // rounded end points, a centre from R, a work offset).
-    return seg.planeShare() == 1.0 && same_axes;
+// Adds the axes `seg` moves; false if that makes more than three.
+bool addAxes(const PathSegment& seg, int axis_count, CornerAxes& axes) {
+  for (int i = 0; i < axis_count; ++i) {
+    const bool plane = seg.shape() == PathSegment::Shape::Arc &&
+                       (i == seg.planeAxis1() || i == seg.planeAxis2());
+    if (!plane && !(std::abs(seg.from()[i] - seg.to()[i]) > kOffPlane)) continue;
+    if (std::find(axes.axis.begin(), axes.axis.begin() + axes.count, i) !=
+        axes.axis.begin() + axes.count)
+      continue;
+    if (axes.count == 3) return false;
+    axes.axis[axes.count++] = i;
   }
-  if (seg.shape() != PathSegment::Shape::Line) return false;
-  for (int i = 0; i < axis_count; ++i)
-    if (i != plane.a1 && i != plane.a2 && std::abs(seg.from()[i] - seg.to()[i]) > kOffPlane)
-      return false;
   return true;
 }
 
@@ -77,19 +79,20 @@ double refinedPeak(const CornerBlend& curve, double lo, double hi, const PathSeg
   return std::max(f1, f2);
 }
 
-// The segment's end state at path length s in the plane's coordinates (origin `corner`).
-CornerBlend::PlaneEnd planeEnd(const PathSegment& seg, double s, const AxisValues& corner,
-                               const Plane& plane) {
+// The segment's end state at path length s in the corner axes' coordinates (origin `corner`).
+CornerBlend::End endState(const PathSegment& seg, double s, const AxisValues& corner,
+                          const CornerAxes& axes) {
   AxisValues p, t, k;
   seg.position(s, p);
   seg.tangent(s, t);
   seg.curvature(s, k);
-  CornerBlend::PlaneEnd e;
-  e.x = p[plane.a1] - corner[plane.a1];
-  e.y = p[plane.a2] - corner[plane.a2];
-  e.tx = t[plane.a1];
-  e.ty = t[plane.a2];
-  e.curvature = e.tx * k[plane.a2] - e.ty * k[plane.a1];
+  CornerBlend::End e;
+  for (int j = 0; j < axes.count; ++j) {
+    const int i = axes.axis[j];
+    e.position[j] = p[i] - corner[i];
+    e.tangent[j] = t[i];
+    e.curvature[j] = k[i];
+  }
   return e;
 }
 
@@ -107,21 +110,25 @@ std::optional<CurveCorner> fitCurveCorner(const PathSegment& in, const PathSegme
   if (!(tolerance > 0.0)) return std::nullopt;
   const PathSegment& arc = in.shape() == PathSegment::Shape::Arc ? in : out;
   if (arc.shape() != PathSegment::Shape::Arc) return std::nullopt;
-  const Plane plane{arc.planeAxis1(), arc.planeAxis2()};
-  if (!liesIn(in, plane, axis_count) || !liesIn(out, plane, axis_count)) return std::nullopt;
+  CornerAxes axes;
+  if (!addAxes(in, axis_count, axes) || !addAxes(out, axis_count, axes)) return std::nullopt;
 
   AxisValues t_in, t_out;
   in.tangent(in.length(), t_in);
   out.tangent(0.0, t_out);
-  const double cos_t = t_in[plane.a1] * t_out[plane.a1] + t_in[plane.a2] * t_out[plane.a2];
-  const double sin_t = std::abs(t_in[plane.a1] * t_out[plane.a2] - t_in[plane.a2] * t_out[plane.a1]);
-  const double theta = std::atan2(sin_t, cos_t);
+  double cos_t = 0.0;
+  for (int i = 0; i < axis_count; ++i) cos_t += t_in[i] * t_out[i];
+  double sin2 = 0.0;
+  for (int i = 0; i < axis_count; ++i) {
+    const double across = t_out[i] - cos_t * t_in[i];
+    sin2 += across * across;
+  }
+  const double theta = std::atan2(std::sqrt(sin2), cos_t);
   if (!(theta > 0.0) || theta > CornerBlend::kMaxTurn) return std::nullopt;
 
   const AxisValues& corner = in.to();
-  AxisValues e1{}, e2{};
-  e1[plane.a1] = 1.0;
-  e2[plane.a2] = 1.0;
+  std::array<AxisValues, 3> basis{};  // the corner axes' unit vectors (0 where fewer)
+  for (int j = 0; j < axes.count; ++j) basis[j][axes.axis[j]] = 1.0;
   // Start above the two-line blend's trim for this turn (an arc bending towards the corner's
   // inside lets the blend come closer to it; one bending away costs attempts), within each
   // side's share.
@@ -136,9 +143,10 @@ std::optional<CurveCorner> fitCurveCorner(const PathSegment& in, const PathSegme
     c.trim = d;
     in.position(in.length() - d, c.from);
     out.position(d, c.to);
-    const CornerBlend::PlaneEnd start = planeEnd(in, in.length() - d, corner, plane);
-    const CornerBlend::PlaneEnd end = planeEnd(out, d, corner, plane);
-    c.curve = CornerBlend::join(corner, e1, e2, start, end, 0.4 * d, 0.4 * d, axis_count);
+    const CornerBlend::End start = endState(in, in.length() - d, corner, axes);
+    const CornerBlend::End end = endState(out, d, corner, axes);
+    c.curve = CornerBlend::join(corner, basis[0], basis[1], basis[2], start, end, 0.4 * d,
+                                0.4 * d, axis_count);
     // The programmed path the blend replaces, and the blend's largest distance from it.
     const PathSegment in_part = in.part(in.length() - d, in.length());
     const PathSegment out_part = out.part(0.0, d);

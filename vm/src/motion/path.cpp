@@ -114,8 +114,8 @@ double PathSegment::distanceTo(const AxisValues& q) const {
     for (int i = 0; i < axis_count_; ++i) p[i] = from_[i] + delta_[i] * f;
     return distance(p);
   }
-  if (plane_share_ != 1.0 || !(std::abs(sweep_) < std::numbers::pi))
-    return std::numeric_limits<double>::infinity();
+  if (!(std::abs(sweep_) < std::numbers::pi)) return std::numeric_limits<double>::infinity();
+  if (plane_share_ != 1.0) return helixDistanceTo(q);
   double off_plane = 0.0;
   for (int i = 0; i < axis_count_; ++i)
     if (i != axis1_ && i != axis2_) off_plane += (q[i] - from_[i]) * (q[i] - from_[i]);
@@ -133,6 +133,54 @@ double PathSegment::distanceTo(const AxisValues& q) const {
     return std::sqrt(radial * radial + off_plane);
   }
   return std::min(distance(from_), distance(to_));
+}
+
+double PathSegment::helixDistanceTo(const AxisValues& q) const {
+  // The point at f = s / length, and its first two derivatives in f.
+  const double dr = r1_ - r0_;
+  double best = std::numeric_limits<double>::infinity();
+  auto squared = [&](double f, double& g, double& dg) {
+    const double theta = theta0_ + sweep_ * f, r = r0_ + dr * f;
+    const double c = std::cos(theta), sn = std::sin(theta);
+    double sum = 0.0;
+    g = dg = 0.0;
+    for (int i = 0; i < axis_count_; ++i) {
+      double p = from_[i] + delta_[i] * f, d1 = delta_[i], d2 = 0.0;
+      if (i == axis1_) {
+        p = cx_ + r * c;
+        d1 = dr * c - r * sweep_ * sn;
+        d2 = -2.0 * dr * sweep_ * sn - r * sweep_ * sweep_ * c;
+      } else if (i == axis2_) {
+        p = cy_ + r * sn;
+        d1 = dr * sn + r * sweep_ * c;
+        d2 = 2.0 * dr * sweep_ * c - r * sweep_ * sweep_ * sn;
+      }
+      const double e = p - q[i];
+      sum += e * e;
+      g += e * d1;
+      dg += d1 * d1 + e * d2;
+    }
+    best = std::min(best, std::sqrt(sum));
+    return sum;
+  };
+  // Newton's method on the squared distance's slope from the best of a few samples. Every
+  // point tried is on the helix, so the nearest of them is never nearer than the true
+  // distance: the result may only over-estimate it, by far less than the tolerances it is
+  // checked against.
+  constexpr int kSamples = 16, kNewtonSteps = 8;
+  double f = 0.0, g = 0.0, dg = 0.0, nearest = std::numeric_limits<double>::infinity();
+  for (int k = 0; k <= kSamples; ++k) {
+    const double fk = static_cast<double>(k) / kSamples;
+    const double d2 = squared(fk, g, dg);
+    if (d2 < nearest) nearest = d2, f = fk;
+  }
+  for (int k = 0; k < kNewtonSteps; ++k) {
+    squared(f, g, dg);
+    if (!(dg > 0.0)) break;
+    f = std::clamp(f - g / dg, 0.0, 1.0);
+  }
+  squared(f, g, dg);
+  return best;
 }
 
 void PathSegment::position(double s, AxisValues& out) const {

@@ -15,8 +15,11 @@
 //
 // A corner with an arc (join()) is the same kind of quintic, no longer symmetric: at each end
 // the handle runs along the tangent, and the third control point leaves it sideways by what
-// gives the curve the arc's curvature there (curve_corner.h chooses the trim and checks the
-// deviation). Its curvature bounds are sampled for each blend instead of tabulated.
+// gives the curve that end's curvature vector (curve_corner.h chooses the trim and checks the
+// deviation). Its curvature bounds are sampled for each blend instead of tabulated. A corner
+// with a helix, or with a line leaving the arc's plane, is not planar: join() makes the curve
+// in a three-dimensional basis (the curve's third coordinate stays 0 for plane corners and
+// costs nothing there).
 //
 // Arc length: a table of s at 32 equal steps of the Bezier parameter (5-point Gauss-Legendre
 // per step; make()'s blend is mirror-symmetric, so only its first half is integrated),
@@ -53,18 +56,18 @@ class CornerBlend {
   static CornerBlend make(const AxisValues& corner, const AxisValues& u_in,
                           const AxisValues& u_out, double d, int axis_count);
 
-  // One end of a blend made by join(), in the plane's coordinates: position, unit tangent,
-  // and signed curvature (positive: turning from e1 towards e2).
-  struct PlaneEnd {
-    double x = 0.0, y = 0.0, tx = 1.0, ty = 0.0, curvature = 0.0;
+  // One end of a blend made by join(), in the basis' coordinates (origin at `origin`):
+  // position, unit tangent, and curvature vector d2x/ds2 (orthogonal to the tangent).
+  struct End {
+    std::array<double, 3> position{}, tangent{}, curvature{};
   };
-  // The blend from `start` to `end` in the plane through `origin` spanned by the orthonormal
-  // `e1`, `e2`, matching position, tangent and curvature at both ends. `handle_start` and
-  // `handle_end` (> 0): the tangent handles' lengths, 0.4 of each end's distance from the
-  // corner in make()'s shape.
+  // The blend from `start` to `end` in the space through `origin` spanned by the orthonormal
+  // `e1`, `e2`, `e3` (`e3` may be 0 for a plane corner), matching position, tangent and
+  // curvature at both ends. `handle_start` and `handle_end` (> 0): the tangent handles'
+  // lengths, 0.4 of each end's distance from the corner in make()'s shape.
   static CornerBlend join(const AxisValues& origin, const AxisValues& e1, const AxisValues& e2,
-                          const PlaneEnd& start, const PlaneEnd& end, double handle_start,
-                          double handle_end, int axis_count);
+                          const AxisValues& e3, const End& start, const End& end,
+                          double handle_start, double handle_end, int axis_count);
 
   double length() const { return s_table_[kTableSteps]; }
   // At path length s in (0, length): position, unit tangent, curvature vector d2x/ds2.
@@ -76,18 +79,18 @@ class CornerBlend {
   // |d2x/ds2| and the largest |d3x/ds3| (the rate of the curvature vector: sqrt(k'^2 + k^4)).
   double maxCurvature() const { return max_curvature_; }
   double maxCurvatureRate() const { return max_curvature_rate_; }
-  // Per axis: the length of the axis' projection onto the blend's plane, which bounds that
-  // axis' share of any in-plane vector (tangent, curvature).
+  // Per axis: the length of the axis' projection onto the blend's plane (or space), which
+  // bounds that axis' share of any vector in it (tangent, curvature).
   double planeShare(int axis) const { return plane_share_[axis]; }
 
  private:
-  // The derivatives and the arc-length tables of the plane curve px_, py_ (make(), join());
+  // The derivatives and the arc-length tables of the curve px_, py_, pz_ (make(), join());
   // `mirror_symmetric`: the curve is its own mirror image run backwards (make()).
   void buildTables(bool mirror_symmetric);
   // Bezier parameter t at path length s.
   double parameterAt(double s) const;
-  // Derivative of the plane curve at t, and its norm.
-  void derivative(double t, double& dx, double& dy) const;
+  // Derivative of the curve at t, and its norm.
+  void derivative(double t, double& dx, double& dy, double& dz) const;
   double speed(double t) const;
   // Integral of the speed over [t0, t1] (5-point Gauss-Legendre).
   double arcLength(double t0, double t1) const;
@@ -96,13 +99,15 @@ class CornerBlend {
   AxisValues corner_{};
   AxisValues e1_{};  // the incoming direction
   AxisValues e2_{};  // in the plane, orthogonal to e1, towards the outgoing direction
+  AxisValues e3_{};  // join() of a corner that is not planar; else 0
   std::array<double, kMaxAxes> plane_share_{};
-  // The plane curve in the (e1, e2) plane, origin at the corner, as power-basis coefficients
+  // The curve in the (e1, e2, e3) basis, origin at the corner, as power-basis coefficients
   // (sum c_k t^k, evaluated by Horner: far cheaper per tick than de Casteljau): position
-  // (degree 5), first and second derivative.
-  std::array<double, 6> px_{}, py_{};
-  std::array<double, 5> vx_{}, vy_{};
-  std::array<double, 4> ax_{}, ay_{};
+  // (degree 5), first and second derivative. The third coordinate only where `spatial_`.
+  std::array<double, 6> px_{}, py_{}, pz_{};
+  std::array<double, 5> vx_{}, vy_{}, vz_{};
+  std::array<double, 4> ax_{}, ay_{}, az_{};
+  bool spatial_ = false;
   std::array<double, kTableSteps + 1> s_table_{};      // path length at t = k / kTableSteps
   std::array<double, kTableSteps + 1> speed_table_{};  // |dc/dt| there
   std::array<double, kTableSteps + 1> dtds2_table_{};  // d2t/ds2 there

@@ -9,8 +9,11 @@
 // from that closed form and shrinks until the blend, sampled, stays within the tolerance of
 // the programmed corner (with a margin for the curve between samples).
 //
-// Made for plane contours: the arcs are circles of one plane (no helix, no spiral) and the
-// lines lie in that plane. Anything else keeps its corner (nullopt).
+// The blend is made in the coordinates of the axes either side moves, at most three: a plane
+// contour, but also a helix (its plane axes and the axis it climbs along), a line leaving the
+// arc's plane, or arcs of two planes. A corner that moves more axes keeps its corner (nullopt);
+// so does a line's travel below 1 nm along an axis, which counts as rounding (the blend keeps
+// the corner's coordinate there).
 #include <optional>
 
 #include "ncc/machine/axes.h"

@@ -35,9 +35,10 @@ class PathSegment {
   // segment (an arc keeps its centre, so a piece of a circle is a circle); the whole segment
   // for (0, length). Its ends are position(s0) and position(s1).
   PathSegment part(double s0, double s1) const;
-  // Distance from q to a line, or to a plane arc of less than half a turn (a spiral: the radial
-  // distance, at least the true one; infinite for helices and other shapes): what checks a
-  // blend against the programmed path.
+  // Distance from q to a line, or to an arc of less than half a turn (a spiral: the radial
+  // distance, at least the true one; a helix: the distance to its nearest point found, likewise
+  // never less than the true one; infinite for other shapes): what checks a blend against the
+  // programmed path.
   double distanceTo(const AxisValues& q) const;
 
   Shape shape() const { return shape_; }
@@ -77,6 +78,9 @@ class PathSegment {
   }
 
  private:
+  // distanceTo() of a helix.
+  double helixDistanceTo(const AxisValues& q) const;
+
   Shape shape_ = Shape::Dwell;
   int axis_count_ = 0;
   AxisValues from_{};
