@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "ncc/vm/servo/axis_loop.h"
+
 namespace ncc::vm {
 
 // Relative slack on the velocity and acceleration limits: a setpoint planned exactly at the
@@ -36,8 +38,9 @@ void ServoMonitors::reset() {
 void ServoMonitors::check(const AxisValues& __restrict setpoint_delta,
                           const ServoSample& __restrict sample) {
   // Written as selects, arithmetic and int | and & rather than branches, ||, && (GCC will not
-  // if-convert a conditional floating-point add), so that the loop vectorises.
-  for (int i = 0; i < count_; ++i) {
+  // if-convert a conditional floating-point add), so that the loop vectorises (in pairs of axes:
+  // forEachAxis).
+  forEachAxis(count_, [&](int i) {
     // Limits, counted per sample.
     const double actual = sample.actual[i];
     const bool outside = int{actual < min_travel_[i]} | int{actual > max_travel_[i]};
@@ -56,7 +59,7 @@ void ServoMonitors::check(const AxisValues& __restrict setpoint_delta,
     const bool standstill =
         int{still > standstill_delay_ticks_[i]} & int{abs_error > standstill_tol_[i]};
     code_[i] = standstill ? kAlarmStandstill : contour;
-  }
+  });
 }
 
 bool ServoMonitors::anyAlarm() const {
