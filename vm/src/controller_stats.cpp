@@ -26,9 +26,11 @@ void StatisticsAccumulator::add(uint64_t k, double time, const AxisValues& comma
   // One loop over the axes for every per-axis quantity (each sum still in axis order; as
   // separate loops, their set-up costs more than the work on a few axes): the chord from
   // the previous setpoint, the commanded direction d (second-order backward difference of
-  // the setpoints), the following error, and e = actual - commanded.
+  // the setpoints), the following error, and e = actual - commanded. d goes straight into the
+  // spare direction slot (taken below if it is a direction), e is recomputed on the rare
+  // ticks that need it: neither is copied.
   double chord2 = 0.0, norm2 = 0.0, error2 = 0.0;
-  AxisValues d{}, e{};
+  AxisValues& d = directions_[1 - direction_slot_];
   for (int i = 0; i < n; ++i) {
     const double step = commanded[i] - previous_[i];
     chord2 += step * step;
@@ -36,8 +38,8 @@ void StatisticsAccumulator::add(uint64_t k, double time, const AxisValues& comma
     norm2 += d[i] * d[i];
     stats_.max_following_error[i] =
         std::max(stats_.max_following_error[i], std::abs(following_error[i]));
-    e[i] = actual[i] - commanded[i];
-    error2 += e[i] * e[i];
+    const double e = actual[i] - commanded[i];
+    error2 += e * e;
   }
 
   // Path length.
@@ -52,7 +54,7 @@ void StatisticsAccumulator::add(uint64_t k, double time, const AxisValues& comma
   // Commanded direction.
   const double norm = std::sqrt(norm2);
   if (chord > 0.0 && norm > kMinDirectionNorm) {
-    direction_ = d;
+    direction_slot_ = 1 - direction_slot_;
     direction_norm_ = norm;
   }
 
@@ -62,10 +64,12 @@ void StatisticsAccumulator::add(uint64_t k, double time, const AxisValues& comma
   // projection, two dependent sums and a division per axis, are left out.
   const double max2 = stats_.max_contour_error * stats_.max_contour_error;
   if (!(error2 * (1.0 + kErrorBoundSlack) < max2)) {
-    AxisValues u{};
+    const AxisValues& direction = directions_[direction_slot_];
+    AxisValues u{}, e{};
     double along = 0.0;
     for (int i = 0; i < n; ++i) {
-      u[i] = direction_[i] / direction_norm_;
+      u[i] = direction[i] / direction_norm_;
+      e[i] = actual[i] - commanded[i];
       along += e[i] * u[i];
     }
     double perpendicular2 = 0.0;
