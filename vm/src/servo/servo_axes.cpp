@@ -56,25 +56,27 @@ void ServoAxes::reset(const AxisValues& position) {
 
 void ServoAxes::step(const AxisValues& __restrict setpoint, ServoSample& __restrict out) {
   const int n = count_;
+  const int lanes = laneCount(n);  // the loops to it vectorise; a padding lane stays 0
   const double cycle = cycle_;
+
+  // The setpoint into the axes' lanes (only those: an entry beyond them is not an axis).
+  for (int i = 0; i < n; ++i) {
+    setpoint_delta_[i] = setpoint[i] - setpoint_[i];
+    setpoint_[i] = setpoint[i];
+  }
 
   // 1. Compensation (notes §4.1). LEC: the table holds the error it corrects (a positive value
   // moves the axis negative). Backlash: the step acts on the position loop only, as Siemens
   // corrects the actual value, so it is neither differentiated into the feed-forward nor
   // symmetrised.
-  compensation_tables_.lookUp(n, setpoint, table_parameter_, compensation_);
-  for (int i = 0; i < n; ++i) {
-    const double delta = setpoint[i] - setpoint_[i];
-    setpoint_delta_[i] = delta;
-    backlash_[i] = backlashCompensation(backlash_[i], delta, backlash_half_[i]);
-    setpoint_[i] = setpoint[i];
-    out.setpoint[i] = setpoint[i];
-  }
+  compensation_tables_.lookUp(n, setpoint_, table_parameter_, compensation_);
+  for (int i = 0; i < lanes; ++i)
+    backlash_[i] = backlashCompensation(backlash_[i], setpoint_delta_[i], backlash_half_[i]);
 
   // 2. Control. The command is where the axis should be at the end of this cycle. The
   // position loop acts on the error at the cycle's start (against the previous target); the
   // feed-forward is the speed (and the speed change) this cycle's move needs.
-  for (int i = 0; i < n; ++i) {
+  for (int i = 0; i < lanes; ++i) {
     const double command = setpoint_[i] - compensation_[i];
     const double ffw_velocity = (command - command_[i]) / cycle;
     const double ffw_acceleration = (ffw_velocity - ffw_velocity_[i]) / cycle;
@@ -95,16 +97,22 @@ void ServoAxes::step(const AxisValues& __restrict setpoint, ServoSample& __restr
 
   // 3. Mechanics between the motor and the table, and the sample at the cycle's end.
   pitch_error_tables_.lookUp(n, motor_, table_parameter_, pitch_error_value_);
-  for (int i = 0; i < n; ++i) {
+  for (int i = 0; i < lanes; ++i) {
     const double nut = motor_[i] + pitch_error_value_[i];
     play_lag_[i] = takeUpPlay(play_lag_[i], nut - last_nut_[i], play_half_[i]);
     last_nut_[i] = nut;
-    out.actual[i] = nut - play_sign_[i] * play_lag_[i];
-    out.following_error[i] = target_[i] - motor_[i];
-    out.position_error[i] = command_[i] + backlash_[i] - motor_[i];
-    out.velocity[i] = speed_[i];
-    out.acceleration[i] = (speed_[i] - last_speed_[i]) / cycle;
+    actual_[i] = nut - play_sign_[i] * play_lag_[i];
+    following_error_[i] = target_[i] - motor_[i];
+    position_error_[i] = command_[i] + backlash_[i] - motor_[i];
+    acceleration_[i] = (speed_[i] - last_speed_[i]) / cycle;
   }
+  // All kMaxAxes entries: those beyond the axes are 0 (their lanes are never set).
+  copyAxes(setpoint_, out.setpoint);
+  copyAxes(actual_, out.actual);
+  copyAxes(following_error_, out.following_error);
+  copyAxes(position_error_, out.position_error);
+  copyAxes(speed_, out.velocity);
+  copyAxes(acceleration_, out.acceleration);
 }
 
 }  // namespace ncc::vm

@@ -35,7 +35,7 @@ void ServoMonitors::reset() {
   acceleration_count_ = {};
 }
 
-void ServoMonitors::check(const AxisValues& __restrict setpoint_delta,
+void ServoMonitors::check(const AxisLanes& __restrict setpoint_delta,
                           const ServoSample& __restrict sample) {
   // Written as selects, arithmetic and int | and & rather than branches, ||, && (GCC will not
   // if-convert a conditional floating-point add), so that the loop vectorises (in pairs of axes:

@@ -8,6 +8,7 @@
 
 #include "ncc/machine/axes.h"
 #include "ncc/machine/servo_config.h"
+#include "ncc/vm/servo/axis_lanes.h"
 
 namespace ncc::vm {
 
@@ -61,10 +62,11 @@ class PitchValues {
 
 // One kind of table (the control's LEC, or the simulated leadscrew's error) for all axes of a
 // machine, for the servo model's cycle: the divisions of all axes side by side (a loop the
-// compiler vectorises), then the interpolation where an axis has a table.
+// compiler vectorises: over the axes' lanes, axis_lanes.h), then the interpolation where an
+// axis has a table.
 class PitchTables {
  public:
-  using Values = std::array<double, kMaxAxes>;
+  using Values = AxisLanes;
 
   PitchTables() { step_.fill(1.0); }  // no table: a harmless division
   // Each axis at most once; an empty table adds nothing.
@@ -74,7 +76,9 @@ class PitchTables {
   // are left alone (0 in the servo model). `parameter` is scratch.
   void lookUp(int n, const Values& position, Values& __restrict parameter, Values& value) const {
     if (axis_count_ == 0) return;
-    for (int i = 0; i < n; ++i) parameter[i] = pitchParameter(position[i], start_[i], step_[i]);
+    const int lanes = laneCount(n);
+    for (int i = 0; i < lanes; ++i)
+      parameter[i] = pitchParameter(position[i], start_[i], step_[i]);
     for (int k = 0; k < axis_count_; ++k) {
       const int i = axes_[k];
       value[i] = values_[i].at(parameter[i]);

@@ -7,13 +7,15 @@
 // T; the lags are integrated exactly for a speed held over the cycle, so the model is stable
 // and exact for any T.
 //
-// Stored by quantity (one array per parameter or state, indexed by axis) and stepped one stage
-// at a time over all axes: the axes are independent, so each stage is a loop the compiler
-// vectorises and the CPU overlaps, instead of one long chain of divisions per axis. The
-// arithmetic of every axis is the same, operation for operation, whatever the layout.
+// Stored by quantity (one array per parameter or state, indexed by axis, padded to an even
+// number of lanes: axis_lanes.h) and stepped one stage at a time over all axes: the axes are
+// independent, so each stage is a loop the compiler vectorises and the CPU overlaps, instead
+// of one long chain of divisions per axis. The arithmetic of every axis is the same,
+// operation for operation, whatever the layout.
 #include <array>
 
 #include "ncc/machine/machine_config.h"
+#include "ncc/vm/servo/axis_lanes.h"
 #include "ncc/vm/servo/pitch_compensation.h"
 #include "ncc/vm/servo/servo_sample.h"
 
@@ -32,11 +34,11 @@ class ServoAxes {
   // overlaps this object: __restrict spares the vectorised loops run-time overlap checks.)
   void step(const AxisValues& __restrict setpoint, ServoSample& __restrict out);
   // Each axis's setpoint change in the last step().
-  const AxisValues& setpointDelta() const { return setpoint_delta_; }
+  const AxisLanes& setpointDelta() const { return setpoint_delta_; }
 
  private:
-  using Values = std::array<double, kMaxAxes>;
-  using Flags = std::array<double, kMaxAxes>;  // 0 or 1 as doubles: selects on them vectorise
+  using Values = AxisLanes;
+  using Flags = AxisLanes;  // 0 or 1 as doubles: selects on them vectorise
 
   int count_ = 0;
   double cycle_ = 0.001;  // T, s
@@ -72,6 +74,8 @@ class ServoAxes {
   Values last_speed_{};         // motor speed at the cycle's start
   Values play_lag_{};           // nut - table (for positive play), within +-play_half
   Values last_nut_{};
+  // The sample's quantities that are not state, by lane (copied into the sample).
+  Values actual_{}, following_error_{}, position_error_{}, acceleration_{};
 };
 
 }  // namespace ncc::vm

@@ -5,6 +5,7 @@
 #include <cstdint>
 
 #include "ncc/machine/machine_config.h"
+#include "ncc/vm/servo/axis_lanes.h"
 #include "ncc/vm/servo/servo_sample.h"
 
 namespace ncc::vm {
@@ -45,7 +46,7 @@ class ServoMonitors {
   // violations and sets alarmCode(axis) to the alarm the sample trips there (0: none).
   // (Neither argument overlaps this object: __restrict spares the vectorised loop run-time
   // overlap checks.)
-  void check(const AxisValues& __restrict setpoint_delta, const ServoSample& __restrict sample);
+  void check(const AxisLanes& __restrict setpoint_delta, const ServoSample& __restrict sample);
   int alarmCode(int axis) const { return static_cast<int>(code_[axis]); }
   // Whether any axis tripped an alarm in the last check().
   bool anyAlarm() const;
