@@ -24,7 +24,7 @@ void ServoModel::reset(const AxisValues& position) {
 const ServoSample& ServoModel::step(const AxisValues& setpoint) {
   sample_.tick = next_tick_++;
   axes_.step(setpoint, sample_);
-  monitors_.check(axes_.setpointDelta(), sample_);
+  monitors_.check(axes_);
   // The first alarm since reset is kept; later ones (and later axes') are not.
   if (alarm_.code == 0 && monitors_.anyAlarm()) {
     for (int i = 0; i < axis_count_; ++i) {

@@ -3,8 +3,6 @@
 #include <algorithm>
 #include <cmath>
 
-#include "ncc/vm/servo/axis_loop.h"
-
 namespace ncc::vm {
 
 // Relative slack on the velocity and acceleration limits: a setpoint planned exactly at the
@@ -35,31 +33,34 @@ void ServoMonitors::reset() {
   acceleration_count_ = {};
 }
 
-void ServoMonitors::check(const AxisLanes& __restrict setpoint_delta,
-                          const ServoSample& __restrict sample) {
+void ServoMonitors::check(const ServoAxes& __restrict axes) {
+  const AxisLanes& setpoint_delta = axes.setpointDelta();
+  const AxisLanes& velocity = axes.velocity();
+  const AxisLanes& acceleration = axes.acceleration();
+  const AxisLanes& following_error = axes.followingError();
   // Written as selects, arithmetic and int | and & rather than branches, ||, && (GCC will not
-  // if-convert a conditional floating-point add), so that the loop vectorises (in pairs of axes:
-  // forEachAxis).
-  forEachAxis(count_, [&](int i) {
+  // if-convert a conditional floating-point add), so that the loop vectorises. A padding lane
+  // (all 0) counts nothing and trips nothing.
+  const int lanes = laneCount(count_);
+  for (int i = 0; i < lanes; ++i) {
     // Limits, counted per sample.
-    const double actual = sample.actual[i];
+    const double actual = axes.actual()[i];
     const bool outside = int{actual < min_travel_[i]} | int{actual > max_travel_[i]};
     travel_count_[i] += outside ? 1.0 : 0.0;
-    velocity_count_[i] += std::fabs(sample.velocity[i]) > max_velocity_[i] ? 1.0 : 0.0;
-    acceleration_count_[i] +=
-        std::fabs(sample.acceleration[i]) > max_acceleration_[i] ? 1.0 : 0.0;
+    velocity_count_[i] += std::fabs(velocity[i]) > max_velocity_[i] ? 1.0 : 0.0;
+    acceleration_count_[i] += std::fabs(acceleration[i]) > max_acceleration_[i] ? 1.0 : 0.0;
 
     // Standstill monitoring starts once the setpoint has rested for STANDSTILL_DELAY_TIME;
     // contour monitoring always applies. The rest counter restarts at 0 when it moves.
     const double resting = setpoint_delta[i] == 0.0 ? 1.0 : 0.0;
     const double still = (still_ticks_[i] + 1.0) * resting;
     still_ticks_[i] = still;
-    const double abs_error = std::fabs(sample.following_error[i]);
+    const double abs_error = std::fabs(following_error[i]);
     const double contour = abs_error > contour_tol_[i] ? kAlarmContour : 0.0;
     const bool standstill =
         int{still > standstill_delay_ticks_[i]} & int{abs_error > standstill_tol_[i]};
     code_[i] = standstill ? kAlarmStandstill : contour;
-  });
+  }
 }
 
 bool ServoMonitors::anyAlarm() const {

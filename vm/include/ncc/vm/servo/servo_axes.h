@@ -33,8 +33,13 @@ class ServoAxes {
   // actual, following error, velocity and acceleration of the sample there. (Neither argument
   // overlaps this object: __restrict spares the vectorised loops run-time overlap checks.)
   void step(const AxisValues& __restrict setpoint, ServoSample& __restrict out);
-  // Each axis's setpoint change in the last step().
+  // The last step()'s quantities by lane (those of the sample, for the monitoring), and each
+  // axis's setpoint change in it.
   const AxisLanes& setpointDelta() const { return setpoint_delta_; }
+  const AxisLanes& actual() const { return actual_; }
+  const AxisLanes& followingError() const { return following_error_; }
+  const AxisLanes& velocity() const { return speed_; }
+  const AxisLanes& acceleration() const { return acceleration_; }
 
  private:
   using Values = AxisLanes;

@@ -6,7 +6,7 @@
 
 #include "ncc/machine/machine_config.h"
 #include "ncc/vm/servo/axis_lanes.h"
-#include "ncc/vm/servo/servo_sample.h"
+#include "ncc/vm/servo/servo_axes.h"
 
 namespace ncc::vm {
 
@@ -31,7 +31,7 @@ struct LimitViolations {
 };
 
 // The monitoring of all axes, stored by quantity like ServoAxes (one array per limit or state,
-// indexed by axis) so that check() is a loop the compiler vectorises. Counts and alarm codes
+// indexed by axis, in lanes: axis_lanes.h) so that check() is a loop the compiler vectorises. Counts and alarm codes
 // are kept as doubles for that (SSE2 compares doubles into double-wide masks); they are whole
 // numbers, exact far beyond any run's length (2^53 ticks).
 class ServoMonitors {
@@ -42,11 +42,10 @@ class ServoMonitors {
   // Clears the counts and the standstill timers.
   void reset();
 
-  // One sample: `setpoint_delta` is each axis's setpoint change this cycle. Counts limit
-  // violations and sets alarmCode(axis) to the alarm the sample trips there (0: none).
-  // (Neither argument overlaps this object: __restrict spares the vectorised loop run-time
-  // overlap checks.)
-  void check(const AxisLanes& __restrict setpoint_delta, const ServoSample& __restrict sample);
+  // The last step() of `axes`: counts limit violations and sets alarmCode(axis) to the alarm
+  // it trips there (0: none). (`axes` does not overlap this object: __restrict spares the
+  // vectorised loop run-time overlap checks.)
+  void check(const ServoAxes& __restrict axes);
   int alarmCode(int axis) const { return static_cast<int>(code_[axis]); }
   // Whether any axis tripped an alarm in the last check().
   bool anyAlarm() const;
@@ -57,7 +56,7 @@ class ServoMonitors {
   }
 
  private:
-  using Values = std::array<double, kMaxAxes>;
+  using Values = AxisLanes;
 
   int count_ = 0;
   Values contour_tol_{};
