@@ -10,7 +10,6 @@
 namespace ncc::vm::motion {
 namespace {
 
-using motion_test::distance;
 using motion_test::xyz;
 
 TEST(Path, LineEndsExactly) {
@@ -107,32 +106,16 @@ TEST(Path, DistanceToLinesAndCircleArcs) {
   EXPECT_TRUE(std::isinf(three_quarters.distanceTo(xyz(0, 0, 0))));
 }
 
-// A helix piece's distance is that of its nearest point: against a search of its own (the
-// nearest of 2000 points along it, refined by golden sections), never less, and within 1e-9 mm
-// (points all around it, and beyond its ends).
+// A helix piece's distance is that of its nearest point: against the tests' own search
+// (toPrimitive: the nearest of 128 points along the helix, refined by golden sections), never
+// less, and within 1e-9 mm (points all around it, and beyond its ends).
 TEST(Path, DistanceToAHelix) {
   // R 5 around (1, 2), a third of a turn clockwise while Z falls 1.5 mm.
-  const PathSegment helix = PathSegment::arc(xyz(6, 2, 0), xyz(1 + 5 * std::cos(-2.0), 2 + 5 * std::sin(-2.0), -1.5),
-                                             3, 0, 1, 1, 2, true, 0);
+  const AxisValues from = xyz(6, 2, 0), to = xyz(1 + 5 * std::cos(-2.0), 2 + 5 * std::sin(-2.0), -1.5);
+  const PathSegment helix = PathSegment::arc(from, to, 3, 0, 1, 1, 2, true, 0);
   ASSERT_LT(helix.planeShare(), 1.0);
-  auto brute = [&](const AxisValues& q) {
-    auto at = [&](double s) {
-      AxisValues p;
-      helix.position(s, p);
-      return distance(p, q);
-    };
-    constexpr int kSamples = 2000;
-    const double step = helix.length() / kSamples;
-    int best = 0;
-    for (int k = 1; k <= kSamples; ++k)
-      if (at(k * step) < at(best * step)) best = k;
-    double lo = std::max(0, best - 1) * step, hi = std::min(kSamples, best + 1) * step;
-    for (int i = 0; i < 100; ++i) {
-      const double m1 = lo + 0.381966 * (hi - lo), m2 = hi - 0.381966 * (hi - lo);
-      if (at(m1) < at(m2)) hi = m2; else lo = m1;
-    }
-    return std::min(at(best * step), at(0.5 * (lo + hi)));
-  };
+  const MotionPrimitive programmed = motion_test::arc(from, to, 0, 1, 1, 2, true, 600.0);
+  auto brute = [&](const AxisValues& q) { return motion_test::toPrimitive(q, programmed); };
   for (int i = 0; i < 40; ++i) {
     const double a = -0.5 + 3.0 * i / 40.0, z = -2.0 + 0.1 * i;
     for (double r : {0.5, 4.9, 5.0, 7.0}) {

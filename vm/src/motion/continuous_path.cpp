@@ -47,23 +47,6 @@ double roundUp(double x, double steps) {
 // changes with every chord length.
 constexpr double kLimitGridSteps = 16.0, kCurvatureGridSteps = 64.0, kWiggleGridSteps = 4.0;
 
-double dot(const AxisValues& a, const AxisValues& b, int n) {
-  double s = 0.0;
-  for (int i = 0; i < n; ++i) s += a[i] * b[i];
-  return s;
-}
-
-// Turning angle between unit directions, accurate for tiny and for large angles.
-double turnAngle(const AxisValues& u1, const AxisValues& u2, int n) {
-  const double c = dot(u1, u2, n);
-  double s2 = 0.0;
-  for (int i = 0; i < n; ++i) {
-    const double d = u2[i] - c * u1[i];
-    s2 += d * d;
-  }
-  return std::atan2(std::sqrt(s2), c);
-}
-
 }  // namespace
 
 bool ContinuousPath::joinsMoving(MotionPrimitive::Kind kind) const {

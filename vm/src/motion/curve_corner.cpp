@@ -108,22 +108,15 @@ double trimLimit(const PathSegment& seg) {
 std::optional<CurveCorner> fitCurveCorner(const PathSegment& in, const PathSegment& out,
                                           double tolerance, int axis_count) {
   if (!(tolerance > 0.0)) return std::nullopt;
-  const PathSegment& arc = in.shape() == PathSegment::Shape::Arc ? in : out;
-  if (arc.shape() != PathSegment::Shape::Arc) return std::nullopt;
+  if (in.shape() != PathSegment::Shape::Arc && out.shape() != PathSegment::Shape::Arc)
+    return std::nullopt;
   CornerAxes axes;
   if (!addAxes(in, axis_count, axes) || !addAxes(out, axis_count, axes)) return std::nullopt;
 
   AxisValues t_in, t_out;
   in.tangent(in.length(), t_in);
   out.tangent(0.0, t_out);
-  double cos_t = 0.0;
-  for (int i = 0; i < axis_count; ++i) cos_t += t_in[i] * t_out[i];
-  double sin2 = 0.0;
-  for (int i = 0; i < axis_count; ++i) {
-    const double across = t_out[i] - cos_t * t_in[i];
-    sin2 += across * across;
-  }
-  const double theta = std::atan2(std::sqrt(sin2), cos_t);
+  const double theta = turnAngle(t_in, t_out, axis_count);
   if (!(theta > 0.0) || theta > CornerBlend::kMaxTurn) return std::nullopt;
 
   const AxisValues& corner = in.to();

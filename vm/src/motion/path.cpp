@@ -183,6 +183,17 @@ double PathSegment::helixDistanceTo(const AxisValues& q) const {
   return best;
 }
 
+double turnAngle(const AxisValues& u1, const AxisValues& u2, int n) {
+  double c = 0.0;
+  for (int i = 0; i < n; ++i) c += u1[i] * u2[i];
+  double s2 = 0.0;
+  for (int i = 0; i < n; ++i) {
+    const double d = u2[i] - c * u1[i];
+    s2 += d * d;
+  }
+  return std::atan2(std::sqrt(s2), c);
+}
+
 void PathSegment::position(double s, AxisValues& out) const {
   if (shape_ == Shape::Dwell || s <= 0.0) {
     out = from_;

@@ -95,4 +95,8 @@ class PathSegment {
   CornerBlend blend_;  // Blend only
 };
 
+// Turning angle (radians) from unit direction u1 to unit direction u2 over the first n axes,
+// accurate for tiny and for large angles.
+double turnAngle(const AxisValues& u1, const AxisValues& u2, int n);
+
 }  // namespace ncc::vm::motion
