@@ -35,6 +35,7 @@ void ServoMonitors::reset() {
 
 void ServoMonitors::check(const ServoAxes& __restrict axes) {
   const AxisLanes& setpoint_delta = axes.setpointDelta();
+  const AxisLanes& actual = axes.actual();
   const AxisLanes& velocity = axes.velocity();
   const AxisLanes& acceleration = axes.acceleration();
   const AxisLanes& following_error = axes.followingError();
@@ -44,8 +45,7 @@ void ServoMonitors::check(const ServoAxes& __restrict axes) {
   const int lanes = laneCount(count_);
   for (int i = 0; i < lanes; ++i) {
     // Limits, counted per sample.
-    const double actual = axes.actual()[i];
-    const bool outside = int{actual < min_travel_[i]} | int{actual > max_travel_[i]};
+    const bool outside = int{actual[i] < min_travel_[i]} | int{actual[i] > max_travel_[i]};
     travel_count_[i] += outside ? 1.0 : 0.0;
     velocity_count_[i] += std::fabs(velocity[i]) > max_velocity_[i] ? 1.0 : 0.0;
     acceleration_count_[i] += std::fabs(acceleration[i]) > max_acceleration_[i] ? 1.0 : 0.0;

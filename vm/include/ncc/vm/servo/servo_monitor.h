@@ -31,9 +31,9 @@ struct LimitViolations {
 };
 
 // The monitoring of all axes, stored by quantity like ServoAxes (one array per limit or state,
-// indexed by axis, in lanes: axis_lanes.h) so that check() is a loop the compiler vectorises. Counts and alarm codes
-// are kept as doubles for that (SSE2 compares doubles into double-wide masks); they are whole
-// numbers, exact far beyond any run's length (2^53 ticks).
+// indexed by axis, in lanes: axis_lanes.h) so that check() is a loop the compiler vectorises.
+// Counts and alarm codes are kept as doubles for that (SSE2 compares doubles into double-wide
+// masks); they are whole numbers, exact far beyond any run's length (2^53 ticks).
 class ServoMonitors {
  public:
   ServoMonitors() = default;
