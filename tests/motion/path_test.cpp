@@ -116,8 +116,10 @@ TEST(Path, DistanceToAHelix) {
   ASSERT_LT(helix.planeShare(), 1.0);
   const MotionPrimitive programmed = motion_test::arc(from, to, 0, 1, 1, 2, true, 600.0);
   auto brute = [&](const AxisValues& q) { return motion_test::toPrimitive(q, programmed); };
-  for (int i = 0; i < 40; ++i) {
-    const double a = -0.5 + 3.0 * i / 40.0, z = -2.0 + 0.1 * i;
+  // All the way around: a point behind the helix (more than a quarter turn from both ends)
+  // has a distance with two minima, a point in front of it one.
+  for (int i = 0; i < 80; ++i) {
+    const double a = -0.5 + 2.0 * std::numbers::pi * i / 80.0, z = -2.0 + 0.05 * i;
     for (double r : {0.5, 4.9, 5.0, 7.0}) {
       const AxisValues q = xyz(1 + r * std::cos(-a), 2 + r * std::sin(-a), z);
       const double expected = brute(q);

@@ -187,7 +187,7 @@ CornerBlend CornerBlend::make(const AxisValues& corner, const AxisValues& u_in,
 CornerBlend CornerBlend::join(const AxisValues& origin, const AxisValues& e1,
                               const AxisValues& e2, const AxisValues& e3, const End& start,
                               const End& end, double handle_start, double handle_end,
-                              int axis_count) {
+                              int axis_count, Bounds bounds) {
   CornerBlend b;
   b.axis_count_ = axis_count;
   b.corner_ = origin;
@@ -218,12 +218,20 @@ CornerBlend CornerBlend::join(const AxisValues& origin, const AxisValues& e1,
   for (double c : control[2]) b.spatial_ = b.spatial_ || c != 0.0;
   b.buildTables(false);
   b.interpolation_exact_ = false;
+  if (bounds == Bounds::Sampled) {
+    b.sampleBounds();
+  } else {
+    b.max_curvature_ = b.max_curvature_rate_ = std::numeric_limits<double>::infinity();
+  }
+  return b;
+}
+
+void CornerBlend::sampleBounds() {
   // No table for an asymmetric shape: sampled, finer than the table's samples.
   double curvature = 0.0, rate = 0.0;
-  sampleCurveBounds(b.px_, b.py_, b.pz_, 4 * kBoundSamples, curvature, rate);
-  b.max_curvature_ = kBoundMargin * curvature;
-  b.max_curvature_rate_ = kBoundMargin * rate;
-  return b;
+  sampleCurveBounds(px_, py_, pz_, 4 * kBoundSamples, curvature, rate);
+  max_curvature_ = kBoundMargin * curvature;
+  max_curvature_rate_ = kBoundMargin * rate;
 }
 
 void CornerBlend::buildTables(bool mirror_symmetric) {

@@ -139,11 +139,11 @@ std::optional<CurveCorner> fitCurveCorner(const PathSegment& in, const PathSegme
     const CornerBlend::End start = endState(in, in.length() - d, corner, axes);
     const CornerBlend::End end = endState(out, d, corner, axes);
     c.curve = CornerBlend::join(corner, basis[0], basis[1], basis[2], start, end, 0.4 * d,
-                                0.4 * d, axis_count);
+                                0.4 * d, axis_count, CornerBlend::Bounds::Deferred);
     // The programmed path the blend replaces, and the blend's largest distance from it.
     const PathSegment in_part = in.part(in.length() - d, in.length());
     const PathSegment out_part = out.part(0.0, d);
-    double worst = std::isfinite(c.curve.maxCurvatureRate()) ? 0.0 : tolerance * 1e3;
+    double worst = 0.0;
     const double step = c.curve.length() / kDeviationSamples;
     std::array<double, kDeviationSamples + 1> samples{};  // 0 at both ends, on the path
     for (int k = 1; k < kDeviationSamples && worst <= tolerance; ++k) {
@@ -158,6 +158,12 @@ std::optional<CurveCorner> fitCurveCorner(const PathSegment& in, const PathSegme
         worst = std::max(worst, refinedPeak(c.curve, step * (k - 1), step * (k + 1), in_part, out_part));
     }
     const double allowed = kCurveCornerToleranceShare * tolerance;
+    // Bounds only for a blend within the tolerance; one without finite bounds (a cusp) is a
+    // miss, by far.
+    if (worst <= allowed) {
+      c.curve.sampleBounds();
+      if (!std::isfinite(c.curve.maxCurvatureRate())) worst = tolerance * 1e3;
+    }
     // The deviation grows about in proportion to the trim.
     if (worst <= allowed) {
       fits = c;

@@ -6,6 +6,13 @@
 #include <numbers>
 
 namespace ncc::vm::motion {
+namespace {
+
+// A helix distance search stops at a Newton step below this (mm along the helix); the step
+// after it, taken, is far shorter.
+constexpr double kConvergedStep = 1e-9;
+
+}  // namespace
 
 PathSegment PathSegment::line(const AxisValues& from, const AxisValues& to, int axis_count) {
   PathSegment p;
@@ -163,10 +170,37 @@ double PathSegment::helixDistanceTo(const AxisValues& q) const {
     best = std::min(best, std::sqrt(sum));
     return sum;
   };
-  // Newton's method on the squared distance's slope from the best of a few samples. Every
-  // point tried is on the helix, so the nearest of them is never nearer than the true
+  // Every point tried is on the helix, so the nearest of them is never nearer than the true
   // distance: the result may only over-estimate it, by far less than the tolerances it is
   // checked against.
+  if (dr == 0.0 && convexDistanceFrom(q)) {
+    // One minimum: at an end where the slope points outwards, else where the slope changes
+    // sign, found by Newton's method kept inside the bracket (bisection where it would leave).
+    double g = 0.0, dg = 0.0;
+    squared(0.0, g, dg);
+    if (g >= 0.0) return best;
+    const double g0 = g;
+    squared(1.0, g, dg);
+    if (g <= 0.0) return best;
+    double lo = 0.0, hi = 1.0, f = g0 / (g0 - g);
+    constexpr int kBracketSteps = 40;
+    for (int k = 0; k < kBracketSteps; ++k) {
+      squared(f, g, dg);
+      if (g > 0.0) hi = f;
+      else if (g < 0.0) lo = f;
+      else break;
+      double next = dg > 0.0 ? f - g / dg : 0.5 * (lo + hi);
+      if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
+      // Near the minimum the distance moves with the square of the step.
+      if (std::abs(next - f) * length_ < kConvergedStep) {
+        squared(next, g, dg);
+        break;
+      }
+      f = next;
+    }
+    return best;
+  }
+  // Newton's method on the squared distance's slope from the best of a few samples.
   constexpr int kSamples = 16, kNewtonSteps = 8;
   double f = 0.0, g = 0.0, dg = 0.0, nearest = std::numeric_limits<double>::infinity();
   for (int k = 0; k <= kSamples; ++k) {
@@ -181,6 +215,18 @@ double PathSegment::helixDistanceTo(const AxisValues& q) const {
   }
   squared(f, g, dg);
   return best;
+}
+
+bool PathSegment::convexDistanceFrom(const AxisValues& q) const {
+  // On a circular helix the squared distance's second derivative in f is
+  // 2 (L^2 + sweep^2 R rho cos(theta - phi)), with L the travel off the plane and (rho, phi)
+  // q's polar coordinates around the centre: never negative while the helix stays within a
+  // quarter turn either side of q's direction. Its ends do, and it turns less than half a
+  // turn, so all of it does.
+  const double qx = q[axis1_] - cx_, qy = q[axis2_] - cy_;
+  const double start = (from_[axis1_] - cx_) * qx + (from_[axis2_] - cy_) * qy;
+  const double end = (to_[axis1_] - cx_) * qx + (to_[axis2_] - cy_) * qy;
+  return start >= 0.0 && end >= 0.0;
 }
 
 double turnAngle(const AxisValues& u1, const AxisValues& u2, int n) {

@@ -65,9 +65,17 @@ class CornerBlend {
   // `e1`, `e2`, `e3` (`e3` may be 0 for a plane corner), matching position, tangent and
   // curvature at both ends. `handle_start` and `handle_end` (> 0): the tangent handles'
   // lengths, 0.4 of each end's distance from the corner in make()'s shape.
+  //
+  // Sampling the curvature bounds costs most of a join(): a fit that tries several trims
+  // (curve_corner.cpp) asks for Bounds::Deferred, which leaves them infinite (a blend nothing
+  // may be planned on at speed), and calls sampleBounds() on the one it keeps.
+  enum class Bounds { Sampled, Deferred };
   static CornerBlend join(const AxisValues& origin, const AxisValues& e1, const AxisValues& e2,
                           const AxisValues& e3, const End& start, const End& end,
-                          double handle_start, double handle_end, int axis_count);
+                          double handle_start, double handle_end, int axis_count,
+                          Bounds bounds = Bounds::Sampled);
+  // A join()'s curvature bounds, sampled (Bounds::Deferred).
+  void sampleBounds();
 
   double length() const { return s_table_[kTableSteps]; }
   // At path length s in (0, length): position, unit tangent, curvature vector d2x/ds2.

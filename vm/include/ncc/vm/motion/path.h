@@ -80,6 +80,8 @@ class PathSegment {
  private:
   // distanceTo() of a helix.
   double helixDistanceTo(const AxisValues& q) const;
+  // Whether a circular helix's squared distance from q has a single minimum (is convex).
+  bool convexDistanceFrom(const AxisValues& q) const;
 
   Shape shape_ = Shape::Dwell;
   int axis_count_ = 0;
