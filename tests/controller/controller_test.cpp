@@ -4,8 +4,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <sstream>
+#include <string>
 #include <vector>
 
 #include "controller_test_util.h"
@@ -41,6 +43,47 @@ TEST(Controller, CreateVerifiesAgainstTheMachine) {
   bytecode::Error error;
   EXPECT_EQ(vm::Controller::create(p, m, error), nullptr);
   EXPECT_EQ(error.code.substr(0, 5), "NCC71");
+}
+
+// A MachineConfig built in code skips the machine file's checks: create() refuses what the
+// VM cannot run with (a zero cycle made NaN setpoints), naming the value.
+TEST(Controller, CreateRefusesAMachineItCannotRun) {
+  struct Case {
+    const char* names;
+    void (*spoil)(MachineConfig&);
+  };
+  const Case cases[] = {
+      {"ipo_cycle", [](MachineConfig& m) { m.ipo_cycle_seconds = 0.0; }},
+      {"ipo_cycle", [](MachineConfig& m) { m.ipo_cycle_seconds = 0.5; }},
+      {"chord_tolerance", [](MachineConfig& m) { m.chord_tolerance = 0.0; }},
+      {"corner_tolerance", [](MachineConfig& m) { m.corner_tolerance = -0.01; }},
+      {"max_acceleration of Y", [](MachineConfig& m) { m.axes[1].max_acceleration = 0.0; }},
+      {"max_jerk of Z",
+       [](MachineConfig& m) { m.axes[2].max_jerk = std::numeric_limits<double>::infinity(); }},
+      {"rapid_velocity of X", [](MachineConfig& m) { m.axes[0].rapid_velocity = -1.0; }},
+      {"max_velocity of X", [](MachineConfig& m) { m.axes[0].max_velocity = std::nan(""); }},
+      {"kv of Z", [](MachineConfig& m) { m.axes[2].servo.kv = 0.0; }},
+      {"pitch_error.step of X", [](MachineConfig& m) { m.axes[0].servo.pitch_error.step = 0.0; }},
+      {"equiv_speedctrl_time of Y",
+       [](MachineConfig& m) { m.axes[1].servo.equiv_speedctrl_time = -0.001; }},
+      {"min_travel of X", [](MachineConfig& m) { m.axes[0].min_travel = m.axes[0].max_travel; }},
+  };
+  for (const Case& c : cases) {
+    MachineConfig m = defaultMachine();
+    c.spoil(m);
+    bytecode::Assembler a = assemblerFor(m);
+    a.line(xyz(1, 0, 0), 600.0).op(bytecode::Opcode::End);
+    bytecode::Error error;
+    EXPECT_EQ(vm::Controller::create(a.finish(), m, error), nullptr) << c.names;
+    EXPECT_EQ(error.code, "NCC7115") << c.names;
+    EXPECT_NE(error.message.find(c.names), std::string::npos) << error.message;
+  }
+  // The defaults run.
+  MachineConfig m = defaultMachine();
+  bytecode::Assembler a = assemblerFor(m);
+  a.line(xyz(1, 0, 0), 600.0).op(bytecode::Opcode::End);
+  bytecode::Error error;
+  EXPECT_NE(vm::Controller::create(a.finish(), m, error), nullptr) << error.message;
 }
 
 TEST(Controller, LoadsWrittenBytesAndRunsToTheEnd) {

@@ -7,6 +7,7 @@
 
 #include "ncc/bytecode/loader.h"
 #include "ncc/bytecode/verifier.h"
+#include "ncc/vm/machine_check.h"
 
 namespace ncc::vm {
 namespace {
@@ -72,6 +73,10 @@ std::unique_ptr<Controller> Controller::create(bytecode::Program program,
   bytecode::VerifyOptions verify_options;
   verify_options.machine = &machine;
   if (std::optional<bytecode::Error> e = bytecode::verify(program, verify_options)) {
+    error = std::move(*e);
+    return nullptr;
+  }
+  if (std::optional<bytecode::Error> e = checkMachine(machine)) {
     error = std::move(*e);
     return nullptr;
   }
