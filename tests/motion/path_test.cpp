@@ -1,6 +1,7 @@
 // Path geometry: lengths, exact end points, circles and helices.
 #include "ncc/vm/motion/path.h"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -127,6 +128,46 @@ TEST(Path, DistanceToAHelix) {
       EXPECT_GE(d, expected - 1e-12) << i << " " << r;
       EXPECT_NEAR(d, expected, 1e-9) << i << " " << r;
     }
+  }
+}
+
+// The curvature vector is d2x/ds2 of the path as position(s) runs it, which is what the axes'
+// accelerations follow (v^2 d2x/ds2 at constant speed): against central differences of
+// position(), and within maxCurvature() and maxCurvatureRate(). On a spiral (end radius
+// differing from the start, as rounded end points or a centre from R make it) the radius
+// changes along s too: d2x/ds2 gains 2 r' w across the radius (w the angle per unit of s),
+// 20 % of the centripetal term on this short R 1 arc whose radius grows 0.01 mm.
+TEST(Path, CurvatureIsTheSecondDerivativeOfPosition) {
+  const PathSegment circle = PathSegment::arc(xyz(1, 0, 0), xyz(std::cos(0.1), std::sin(0.1), 0),
+                                              3, 0, 1, 0, 0, false, 0);
+  const PathSegment spiral =
+      PathSegment::arc(xyz(1, 0, 0), xyz(1.01 * std::cos(0.1), 1.01 * std::sin(0.1), 0.02), 3, 0,
+                       1, 0, 0, false, 0);
+  const PathSegment helix = PathSegment::arc(xyz(2, 0, 0), xyz(-2, 0, -3), 3, 0, 1, 0, 0, true, 0);
+  for (const PathSegment* seg : {&circle, &spiral, &helix}) {
+    const double L = seg->length(), h = 1e-4 * L;
+    double top = 0.0, top_rate = 0.0;
+    AxisValues previous{};
+    for (int k = 1; k < 100; ++k) {
+      const double s = L * k / 100.0;
+      AxisValues before, at, after, k_vec;
+      seg->position(s - h, before);
+      seg->position(s, at);
+      seg->position(s + h, after);
+      seg->curvature(s, k_vec);
+      double kn = 0.0, dk = 0.0;
+      for (int i = 0; i < 3; ++i) {
+        const double fd = (before[i] - 2.0 * at[i] + after[i]) / (h * h);
+        EXPECT_NEAR(k_vec[i], fd, 1e-5 * seg->maxCurvature() + 1e-6) << k << " axis " << i;
+        kn += k_vec[i] * k_vec[i];
+        dk += (k_vec[i] - previous[i]) * (k_vec[i] - previous[i]);
+      }
+      top = std::max(top, std::sqrt(kn));
+      if (k > 1) top_rate = std::max(top_rate, std::sqrt(dk) / (L / 100.0));
+      previous = k_vec;
+    }
+    EXPECT_LE(top, seg->maxCurvature() * (1.0 + 1e-12));  // exact on a circle
+    EXPECT_LE(top_rate, seg->maxCurvatureRate() * (1.0 + 1e-12));
   }
 }
 

@@ -296,9 +296,12 @@ void PathSegment::curvature(double s, AxisValues& out) const {
   const double f = std::clamp(s / length_, 0.0, 1.0);
   const double theta = theta0_ + sweep_ * f;
   const double r = r0_ + (r1_ - r0_) * f;
-  const double w = sweep_ / length_;
-  out[axis1_] = -r * w * w * std::cos(theta);
-  out[axis2_] = -r * w * w * std::sin(theta);
+  const double w = sweep_ / length_, dr = (r1_ - r0_) / length_;
+  // x = c + r (cos, sin)(theta), r and theta linear in s: x'' = -r w^2 e_r + 2 r' w e_theta.
+  const double radial = -r * w * w, across = 2.0 * dr * w;
+  const double c = std::cos(theta), sn = std::sin(theta);
+  out[axis1_] = radial * c - across * sn;
+  out[axis2_] = radial * sn + across * c;
 }
 
 void PathSegment::maxTangent(AxisValues& out) const {
@@ -318,17 +321,24 @@ void PathSegment::maxTangent(AxisValues& out) const {
   }
 }
 
+// On a spiral the radius changes by r' = (r1 - r0) / length per unit of s (w: the angle per
+// unit of s): x'' = -r w^2 e_r + 2 r' w e_theta and x''' = -3 r' w^2 e_r - r w^3 e_theta. The
+// circle's terms are bounded through the mean radius (plane_share_^2 / r_min >= r_max w^2);
+// the spiral's add 2 |r' w| and 3 |r'| w^2.
 double PathSegment::maxCurvature() const {
   if (shape_ == Shape::Blend) return blend_.maxCurvature();
   if (shape_ != Shape::Arc) return 0.0;
-  return plane_share_ * plane_share_ / std::min(r0_, r1_);
+  const double spiral = 2.0 * std::abs((r1_ - r0_) * sweep_) / (length_ * length_);
+  return plane_share_ * plane_share_ / std::min(r0_, r1_) + spiral;
 }
 
 double PathSegment::maxCurvatureRate() const {
   if (shape_ == Shape::Blend) return blend_.maxCurvatureRate();
   if (shape_ != Shape::Arc) return 0.0;
   const double r = std::min(r0_, r1_);
-  return plane_share_ * plane_share_ * plane_share_ / (r * r);
+  const double spiral =
+      3.0 * std::abs(r1_ - r0_) * sweep_ * sweep_ / (length_ * length_ * length_);
+  return plane_share_ * plane_share_ * plane_share_ / (r * r) + spiral;
 }
 
 void PathSegment::normalShare(AxisValues& out) const {
