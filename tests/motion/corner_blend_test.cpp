@@ -190,7 +190,7 @@ TEST(CornerBlend, TabulatedBoundsHoldBetweenTableAngles) {
 // alone, without a Newton step: still arc length to about 1e-12 of a 1/4000 step.
 TEST(CornerBlend, SmallTurnsAreParametrisedByArcLengthWithoutNewton) {
   const AxisValues corner = unit(2.0, -1.0, 0.5);
-  for (double th : {0.001, 0.01, 0.03, 0.0499}) {
+  for (double th : {0.001, 0.01, 0.03, 0.0499, 0.07, 0.0999}) {
     for (double d : {0.005, 0.3, 20.0}) {
       const CornerBlend b = CornerBlend::make(corner, unit(1, 0, 0),
                                               unit(std::cos(th), 0, std::sin(th)), d, kAxes);
