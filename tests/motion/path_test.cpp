@@ -114,7 +114,7 @@ TEST(Path, DistanceToAHelix) {
   // R 5 around (1, 2), a third of a turn clockwise while Z falls 1.5 mm.
   const AxisValues from = xyz(6, 2, 0), to = xyz(1 + 5 * std::cos(-2.0), 2 + 5 * std::sin(-2.0), -1.5);
   const PathSegment helix = PathSegment::arc(from, to, 3, 0, 1, 1, 2, true, 0);
-  ASSERT_LT(helix.planeShare(), 1.0);
+  ASSERT_LT(helix.maxPlaneSpeed(), 1.0);
   const MotionPrimitive programmed = motion_test::arc(from, to, 0, 1, 1, 2, true, 600.0);
   auto brute = [&](const AxisValues& q) { return motion_test::toPrimitive(q, programmed); };
   // All the way around: a point behind the helix (more than a quarter turn from both ends)

@@ -15,6 +15,15 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 // there is little to gain for its cost (several microseconds).
 constexpr double kEnvelopeWorthShare = 0.05;
 
+AxisLimits stretchedLimits(const AxisLimits& axes, double stretch) {
+  AxisLimits out = axes;
+  for (int i = 0; i < out.count; ++i) {
+    out.acceleration[i] /= stretch;
+    out.jerk[i] /= stretch;
+  }
+  return out;
+}
+
 }  // namespace
 
 AxisLimits AxisLimits::from(const MachineConfig& machine) {
@@ -33,9 +42,15 @@ AxisLimits AxisLimits::from(const MachineConfig& machine) {
   return l;
 }
 
-SegmentLimits segmentLimits(const PathSegment& path, const AxisLimits& axes, bool rapid,
+SegmentLimits segmentLimits(const PathSegment& path, const AxisLimits& machine_axes, bool rapid,
                             double feed, const ChainShape& chain, double jerk_share) {
-  SegmentLimits lim{rapid ? kInf : feed, kInf, kInf};
+  // A spiral's s is not quite its arc length: the bounds below assume it is, and hold with
+  // the feed and the axis accelerations and jerks divided by its stretch (path.h).
+  const double stretch = path.parameterStretch();
+  AxisLimits stretched;
+  const AxisLimits& axes =
+      stretch == 1.0 ? machine_axes : (stretched = stretchedLimits(machine_axes, stretch));
+  SegmentLimits lim{rapid ? kInf : feed / stretch, kInf, kInf};
   AxisValues t, q;
   path.maxTangent(t);
   const bool in_chain = chain.curvature > 0.0;
@@ -78,9 +93,10 @@ SegmentLimits segmentLimits(const PathSegment& path, const AxisLimits& axes, boo
     const double e = axes.chord_tolerance;
     double chord = std::sqrt(8.0 * e / kappa);
     if (path.shape() == PathSegment::Shape::Arc && !in_chain) {
-      // Exact on the circle; a helix turns at the plane share p of the path speed.
+      // Exact on the circle (a spiral: at its smallest radius of curvature); the plane axes
+      // move at most maxPlaneSpeed() per unit of s (a helix: less than 1).
       const double r = path.radius();
-      chord = e < r ? 2.0 * std::sqrt(2.0 * r * e - e * e) / path.planeShare() : kInf;
+      chord = e < r ? 2.0 * std::sqrt(2.0 * r * e - e * e) / path.maxPlaneSpeed() : kInf;
     }
     lim.velocity = std::min(lim.velocity, chord / axes.ipo_cycle);
   }

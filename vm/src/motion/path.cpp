@@ -63,7 +63,13 @@ PathSegment PathSegment::arc(const AxisValues& from, const AxisValues& to, int a
     p.delta_[i] = to[i] - from[i];
     sum += p.delta_[i] * p.delta_[i];
   }
-  const double plane = 0.5 * (p.r0_ + p.r1_) * std::abs(sweep);
+  // s is the arc length on circles and helices. On a spiral (r linear in the angle) it is the
+  // length at the mean radius with the radial travel: within about dr / 2r of the arc length
+  // (parameterStretch()). The mean-radius length alone was far off on a short arc whose end
+  // radius differs by more than its length.
+  const double mean_radius_length = 0.5 * (p.r0_ + p.r1_) * std::abs(sweep);
+  const double plane =
+      p.r0_ == p.r1_ ? mean_radius_length : std::hypot(mean_radius_length, p.r1_ - p.r0_);
   p.length_ = std::sqrt(plane * plane + sum);
   p.plane_share_ = plane / p.length_;
   return p;
@@ -313,32 +319,62 @@ void PathSegment::maxTangent(AxisValues& out) const {
   }
   for (int i = 0; i < axis_count_; ++i) out[i] = std::abs(delta_[i]) / length_;
   if (shape_ == Shape::Arc) {
-    // The plane tangent turns: bound each plane axis by the whole plane speed share (plus the
-    // spiral's radial part).
-    const double bound = plane_share_ + std::abs(r1_ - r0_) / length_;
-    out[axis1_] = std::min(bound, 1.0);
-    out[axis2_] = std::min(bound, 1.0);
+    // The plane tangent turns: bound each plane axis by the whole plane speed.
+    out[axis1_] = maxPlaneSpeed();
+    out[axis2_] = maxPlaneSpeed();
   }
 }
 
+double PathSegment::maxPlaneSpeed() const {
+  if (shape_ != Shape::Arc) return 0.0;
+  if (r0_ == r1_) return plane_share_;
+  // |d(x1, x2)/ds| = sqrt(r'^2 + r^2 w^2), largest at the larger radius.
+  const double w = sweep_ / length_, dr = (r1_ - r0_) / length_;
+  return std::hypot(dr, std::max(r0_, r1_) * w);
+}
+
+double PathSegment::parameterStretch() const {
+  if (shape_ != Shape::Arc || r0_ == r1_) return 1.0;
+  // The speed |dx/ds| = sqrt(r'^2 + r^2 w^2 + the other axes') is at most sigma (at r_max).
+  double other = 0.0;
+  for (int i = 0; i < axis_count_; ++i) other += (delta_[i] / length_) * (delta_[i] / length_);
+  const double plane = maxPlaneSpeed();
+  const double sigma = std::sqrt(plane * plane + other);
+  // x' . x'' = r r' w^2 while |x'| >= r w and |x''| = w sqrt(r^2 w^2 + 4 r'^2) >= r w^2: the
+  // cosine between them is at most |r'| / (r w), and never more than 1/3 (its largest value
+  // for a given r', at r w = sqrt(2) |r'|).
+  const double w = std::abs(sweep_) / length_, dr = std::abs(r1_ - r0_) / length_;
+  const double cosine = std::min(1.0 / 3.0, dr / (std::min(r0_, r1_) * w));
+  return sigma * std::sqrt(1.0 + cosine);
+}
+
+double PathSegment::radius() const {
+  if (shape_ != Shape::Arc || r0_ == r1_) return r0_;
+  // A spiral r = r0 + b theta has the radius of curvature (r^2 + b^2)^(3/2) / (r^2 + 2 b^2),
+  // which grows with r: the smallest is at the smaller end.
+  const double b = (r1_ - r0_) / sweep_, r = std::min(r0_, r1_);
+  const double r2 = r * r, b2 = b * b;
+  return (r2 + b2) * std::sqrt(r2 + b2) / (r2 + 2.0 * b2);
+}
+
 // On a spiral the radius changes by r' = (r1 - r0) / length per unit of s (w: the angle per
-// unit of s): x'' = -r w^2 e_r + 2 r' w e_theta and x''' = -3 r' w^2 e_r - r w^3 e_theta. The
-// circle's terms are bounded through the mean radius (plane_share_^2 / r_min >= r_max w^2);
-// the spiral's add 2 |r' w| and 3 |r'| w^2.
+// unit of s): x'' = -r w^2 e_r + 2 r' w e_theta and x''' = -3 r' w^2 e_r - r w^3 e_theta, so
+// |x''| <= r_max w^2 + 2 |r' w| and |x'''| <= r_max |w|^3 + 3 |r'| w^2. On a circle they are
+// r w^2 and r |w|^3, with w = plane share / r.
 double PathSegment::maxCurvature() const {
   if (shape_ == Shape::Blend) return blend_.maxCurvature();
   if (shape_ != Shape::Arc) return 0.0;
-  const double spiral = 2.0 * std::abs((r1_ - r0_) * sweep_) / (length_ * length_);
-  return plane_share_ * plane_share_ / std::min(r0_, r1_) + spiral;
+  if (r0_ == r1_) return plane_share_ * plane_share_ / r0_;
+  const double w = std::abs(sweep_) / length_, dr = std::abs(r1_ - r0_) / length_;
+  return std::max(r0_, r1_) * w * w + 2.0 * dr * w;
 }
 
 double PathSegment::maxCurvatureRate() const {
   if (shape_ == Shape::Blend) return blend_.maxCurvatureRate();
   if (shape_ != Shape::Arc) return 0.0;
-  const double r = std::min(r0_, r1_);
-  const double spiral =
-      3.0 * std::abs(r1_ - r0_) * sweep_ * sweep_ / (length_ * length_ * length_);
-  return plane_share_ * plane_share_ * plane_share_ / (r * r) + spiral;
+  if (r0_ == r1_) return plane_share_ * plane_share_ * plane_share_ / (r0_ * r0_);
+  const double w = std::abs(sweep_) / length_, dr = std::abs(r1_ - r0_) / length_;
+  return std::max(r0_, r1_) * w * w * w + 3.0 * dr * w * w;
 }
 
 void PathSegment::normalShare(AxisValues& out) const {

@@ -4,7 +4,8 @@
 // A line moves every axis in proportion. An arc moves the two plane axes on a circle around
 // the centre (a spiral when the end radius differs slightly from the start radius, so the end
 // point is met exactly) while every other axis moves linearly with the angle: a helix. The
-// parametrisation is exact for circles and helices (constant speed in s). A blend is the
+// parametrisation is exact for circles and helices (constant speed in s); on a spiral the
+// speed varies a little (parameterStretch()). A blend is the
 // G64 corner blend between two lines (corner_blend.h).
 #include <cstdint>
 
@@ -55,8 +56,14 @@ class PathSegment {
   void curvature(double s, AxisValues& out) const;
 
   // Upper bound of |dx_i/ds| over the whole segment, per axis: what projects the path
-  // velocity, acceleration and jerk onto axis i.
+  // velocity, acceleration and jerk onto axis i (on a spiral possibly a little over 1).
   void maxTangent(AxisValues& out) const;
+  // How far this segment is from being parametrised by arc length, as a factor >= 1 the
+  // planner divides its limits by: 1 except on a spiral, whose speed |dx/ds| is at most sigma
+  // and whose d2x/ds2 is not quite normal to the tangent (cosine at most c): the norm
+  // |a_t dx/ds + v^2 d2x/ds2| <= sigma sqrt(1 + c) sqrt(a_t^2 + (v^2 k)^2), and likewise for
+  // the jerk, so the unit-speed bounds hold with the axis limits divided by sigma sqrt(1 + c).
+  double parameterStretch() const;
   // The largest curvature |d2x/ds2| on the segment and the largest |d3x/ds3| of the path
   // geometry (the curvature vector's rate of change); 0 on lines.
   double maxCurvature() const;
@@ -64,10 +71,11 @@ class PathSegment {
   // Per axis: bound of the axis' component of the unit normal (0 for axes that only move
   // linearly, or do not move).
   void normalShare(AxisValues& out) const;
-  // Arcs: radius (start), and the share of the path speed in the plane (r * sweep / length;
-  // 1 for a plain arc, < 1 for a helix). Lines: 0.
-  double radius() const { return r0_; }
-  double planeShare() const { return plane_share_; }
+  // Arcs: the smallest radius of curvature in the plane (a circle's radius), and the largest
+  // speed of the plane axes |d(x1, x2)/ds| (r * sweep / length: 1 for a plain arc, < 1 for a
+  // helix; on a spiral at its larger radius). Lines: 0.
+  double radius() const;
+  double maxPlaneSpeed() const;
   // A circle in its plane (an arc without helix or spiral part): its rotation term,
   // d3x/ds3 = -k^2 T, lies along the tangent.
   // Arcs: the plane's axes.
