@@ -63,13 +63,17 @@ PathSegment PathSegment::arc(const AxisValues& from, const AxisValues& to, int a
     p.delta_[i] = to[i] - from[i];
     sum += p.delta_[i] * p.delta_[i];
   }
-  // s is the arc length on circles and helices. On a spiral (r linear in the angle) it is the
-  // length at the mean radius with the radial travel: within about dr / 2r of the arc length
-  // (parameterStretch()). The mean-radius length alone was far off on a short arc whose end
-  // radius differs by more than its length.
-  const double mean_radius_length = 0.5 * (p.r0_ + p.r1_) * std::abs(sweep);
-  const double plane =
-      p.r0_ == p.r1_ ? mean_radius_length : std::hypot(mean_radius_length, p.r1_ - p.r0_);
+  if (p.r0_ != p.r1_) {
+    // A spiral: ds/dphi through its true |dx/dphi| = sqrt(b^2 + r^2 + the other axes' per
+    // radian) at both ends (path_spiral.cpp).
+    const double b = (p.r1_ - p.r0_) / sweep, other = sum / (sweep * sweep);
+    p.rate0_ = std::sqrt(b * b + p.r0_ * p.r0_ + other);
+    p.rate1_ = std::sqrt(b * b + p.r1_ * p.r1_ + other);
+    p.length_ = 0.5 * (p.rate0_ + p.rate1_) * std::abs(sweep);
+    p.plane_share_ = p.spiralBounds().plane_speed;
+    return p;
+  }
+  const double plane = 0.5 * (p.r0_ + p.r1_) * std::abs(sweep);
   p.length_ = std::sqrt(plane * plane + sum);
   p.plane_share_ = plane / p.length_;
   return p;
@@ -102,13 +106,21 @@ PathSegment PathSegment::part(double s0, double s1) const {
   position(s0, p.from_);
   position(s1, p.to_);
   if (shape_ == Shape::Line) return line(p.from_, p.to_, axis_count_);
-  // An arc: the same angle and radius per unit of s.
-  const double f0 = s0 / length_, f1 = s1 / length_;
+  // An arc: the same angle and radius per unit of s (a spiral: the same ds/dphi).
+  const double f0 = isSpiral() ? spiralFraction(s0) : s0 / length_;
+  const double f1 = isSpiral() ? spiralFraction(s1) : s1 / length_;
   p.theta0_ = theta0_ + sweep_ * f0;
   p.sweep_ = sweep_ * (f1 - f0);
   p.r0_ = r0_ + (r1_ - r0_) * f0;
   p.r1_ = r0_ + (r1_ - r0_) * f1;
   for (int i = 0; i < axis_count_; ++i) p.delta_[i] = delta_[i] * (f1 - f0);
+  if (isSpiral()) {
+    const double slope = rate1_ - rate0_;  // per whole sweep
+    p.rate0_ = rate0_ + slope * f0;
+    p.rate1_ = rate0_ + slope * f1;
+    p.length_ = 0.5 * (p.rate0_ + p.rate1_) * std::abs(p.sweep_);
+    return p;
+  }
   p.length_ = length_ * (f1 - f0);
   return p;
 }
@@ -259,7 +271,7 @@ void PathSegment::position(double s, AxisValues& out) const {
     blend_.position(s, out);
     return;
   }
-  const double f = s / length_;
+  const double f = isSpiral() ? spiralFraction(s) : s / length_;
   out = from_;
   for (int i = 0; i < axis_count_; ++i) out[i] = from_[i] + delta_[i] * f;
   if (shape_ == Shape::Arc) {
@@ -279,7 +291,8 @@ void PathSegment::tangent(double s, AxisValues& out) const {
   }
   for (int i = 0; i < axis_count_; ++i) out[i] = delta_[i] / length_;
   if (shape_ == Shape::Arc) {
-    const double f = std::clamp(s / length_, 0.0, 1.0);
+    // The direction of dx/df (normalised below), whatever f's rate.
+    const double f = isSpiral() ? spiralFraction(s) : std::clamp(s / length_, 0.0, 1.0);
     const double theta = theta0_ + sweep_ * f;
     const double r = r0_ + (r1_ - r0_) * f;
     const double dr = (r1_ - r0_) / length_, dtheta = sweep_ / length_;
@@ -299,15 +312,15 @@ void PathSegment::curvature(double s, AxisValues& out) const {
     return;
   }
   if (shape_ != Shape::Arc) return;
-  const double f = std::clamp(s / length_, 0.0, 1.0);
-  const double theta = theta0_ + sweep_ * f;
-  const double r = r0_ + (r1_ - r0_) * f;
-  const double w = sweep_ / length_, dr = (r1_ - r0_) / length_;
-  // x = c + r (cos, sin)(theta), r and theta linear in s: x'' = -r w^2 e_r + 2 r' w e_theta.
-  const double radial = -r * w * w, across = 2.0 * dr * w;
-  const double c = std::cos(theta), sn = std::sin(theta);
-  out[axis1_] = radial * c - across * sn;
-  out[axis2_] = radial * sn + across * c;
+  if (isSpiral()) {
+    spiralCurvature(s, out);
+    return;
+  }
+  // A circle or helix, x = c + r (cos, sin)(theta) with theta linear in s: x'' = -r w^2 e_r.
+  const double theta = theta0_ + sweep_ * std::clamp(s / length_, 0.0, 1.0);
+  const double w = sweep_ / length_, radial = -r0_ * w * w;
+  out[axis1_] = radial * std::cos(theta);
+  out[axis2_] = radial * std::sin(theta);
 }
 
 void PathSegment::maxTangent(AxisValues& out) const {
@@ -317,64 +330,50 @@ void PathSegment::maxTangent(AxisValues& out) const {
     for (int i = 0; i < axis_count_; ++i) out[i] = blend_.planeShare(i);
     return;
   }
+  if (isSpiral()) {
+    const SpiralBounds bounds = spiralBounds();
+    for (int i = 0; i < axis_count_; ++i) out[i] = std::abs(delta_[i]) * bounds.other_axis_tangent;
+    out[axis1_] = bounds.plane_speed;
+    out[axis2_] = bounds.plane_speed;
+    return;
+  }
   for (int i = 0; i < axis_count_; ++i) out[i] = std::abs(delta_[i]) / length_;
   if (shape_ == Shape::Arc) {
     // The plane tangent turns: bound each plane axis by the whole plane speed.
-    out[axis1_] = maxPlaneSpeed();
-    out[axis2_] = maxPlaneSpeed();
+    out[axis1_] = plane_share_;
+    out[axis2_] = plane_share_;
   }
 }
 
 double PathSegment::maxPlaneSpeed() const {
   if (shape_ != Shape::Arc) return 0.0;
-  if (r0_ == r1_) return plane_share_;
-  // |d(x1, x2)/ds| = sqrt(r'^2 + r^2 w^2), largest at the larger radius.
-  const double w = sweep_ / length_, dr = (r1_ - r0_) / length_;
-  return std::hypot(dr, std::max(r0_, r1_) * w);
+  return isSpiral() ? spiralBounds().plane_speed : plane_share_;
 }
 
-double PathSegment::parameterStretch() const {
-  if (shape_ != Shape::Arc || r0_ == r1_) return 1.0;
-  // The speed |dx/ds| = sqrt(r'^2 + r^2 w^2 + the other axes') is at most sigma (at r_max).
-  double other = 0.0;
-  for (int i = 0; i < axis_count_; ++i) other += (delta_[i] / length_) * (delta_[i] / length_);
-  const double plane = maxPlaneSpeed();
-  const double sigma = std::sqrt(plane * plane + other);
-  // x' . x'' = r r' w^2 while |x'| >= r w and |x''| = w sqrt(r^2 w^2 + 4 r'^2) >= r w^2: the
-  // cosine between them is at most |r'| / (r w), and never more than 1/3 (its largest value
-  // for a given r', at r w = sqrt(2) |r'|).
-  const double w = std::abs(sweep_) / length_, dr = std::abs(r1_ - r0_) / length_;
-  const double cosine = std::min(1.0 / 3.0, dr / (std::min(r0_, r1_) * w));
-  return sigma * std::sqrt(1.0 + cosine);
-}
+double PathSegment::parameterStretch() const { return isSpiral() ? spiralBounds().stretch : 1.0; }
 
 double PathSegment::radius() const {
-  if (shape_ != Shape::Arc || r0_ == r1_) return r0_;
-  // A spiral r = r0 + b theta has the radius of curvature (r^2 + b^2)^(3/2) / (r^2 + 2 b^2),
+  if (!isSpiral()) return r0_;
+  // A spiral r = r0 + b phi has the radius of curvature (r^2 + b^2)^(3/2) / (r^2 + 2 b^2),
   // which grows with r: the smallest is at the smaller end.
   const double b = (r1_ - r0_) / sweep_, r = std::min(r0_, r1_);
   const double r2 = r * r, b2 = b * b;
   return (r2 + b2) * std::sqrt(r2 + b2) / (r2 + 2.0 * b2);
 }
 
-// On a spiral the radius changes by r' = (r1 - r0) / length per unit of s (w: the angle per
-// unit of s): x'' = -r w^2 e_r + 2 r' w e_theta and x''' = -3 r' w^2 e_r - r w^3 e_theta, so
-// |x''| <= r_max w^2 + 2 |r' w| and |x'''| <= r_max |w|^3 + 3 |r'| w^2. On a circle they are
-// r w^2 and r |w|^3, with w = plane share / r.
+// A circle's |d2x/ds2| and |d3x/ds3| are r w^2 and r |w|^3, with w = plane share / r.
 double PathSegment::maxCurvature() const {
   if (shape_ == Shape::Blend) return blend_.maxCurvature();
   if (shape_ != Shape::Arc) return 0.0;
-  if (r0_ == r1_) return plane_share_ * plane_share_ / r0_;
-  const double w = std::abs(sweep_) / length_, dr = std::abs(r1_ - r0_) / length_;
-  return std::max(r0_, r1_) * w * w + 2.0 * dr * w;
+  if (isSpiral()) return spiralBounds().curvature;
+  return plane_share_ * plane_share_ / r0_;
 }
 
 double PathSegment::maxCurvatureRate() const {
   if (shape_ == Shape::Blend) return blend_.maxCurvatureRate();
   if (shape_ != Shape::Arc) return 0.0;
-  if (r0_ == r1_) return plane_share_ * plane_share_ * plane_share_ / (r0_ * r0_);
-  const double w = std::abs(sweep_) / length_, dr = std::abs(r1_ - r0_) / length_;
-  return std::max(r0_, r1_) * w * w * w + 3.0 * dr * w * w;
+  if (isSpiral()) return spiralBounds().curvature_rate;
+  return plane_share_ * plane_share_ * plane_share_ / (r0_ * r0_);
 }
 
 void PathSegment::normalShare(AxisValues& out) const {
@@ -382,6 +381,12 @@ void PathSegment::normalShare(AxisValues& out) const {
   if (shape_ == Shape::Blend) {
     for (int i = 0; i < axis_count_; ++i) out[i] = blend_.planeShare(i);
   } else if (shape_ == Shape::Arc) {
+    if (isSpiral()) {
+      // The other axes speed up and slow down a little with the spiral's speed.
+      const SpiralBounds bounds = spiralBounds();
+      for (int i = 0; i < axis_count_; ++i)
+        out[i] = std::abs(delta_[i]) * bounds.other_axis_curvature / bounds.curvature;
+    }
     out[axis1_] = 1.0;
     out[axis2_] = 1.0;
   }

@@ -3,9 +3,10 @@
 //
 // A line moves every axis in proportion. An arc moves the two plane axes on a circle around
 // the centre (a spiral when the end radius differs slightly from the start radius, so the end
-// point is met exactly) while every other axis moves linearly with the angle: a helix. The
-// parametrisation is exact for circles and helices (constant speed in s); on a spiral the
-// speed varies a little (parameterStretch()). A blend is the
+// point is met exactly: the radius linear in the angle) while every other axis moves linearly
+// with the angle: a helix. The parametrisation is exact for circles and helices (constant
+// speed in s). A spiral's is exact at its ends and within a hair of it between
+// (path_spiral.cpp, parameterStretch()). A blend is the
 // G64 corner blend between two lines (corner_blend.h).
 #include <cstdint>
 
@@ -59,10 +60,10 @@ class PathSegment {
   // velocity, acceleration and jerk onto axis i (on a spiral possibly a little over 1).
   void maxTangent(AxisValues& out) const;
   // How far this segment is from being parametrised by arc length, as a factor >= 1 the
-  // planner divides its limits by: 1 except on a spiral, whose speed |dx/ds| is at most sigma
-  // and whose d2x/ds2 is not quite normal to the tangent (cosine at most c): the norm
-  // |a_t dx/ds + v^2 d2x/ds2| <= sigma sqrt(1 + c) sqrt(a_t^2 + (v^2 k)^2), and likewise for
-  // the jerk, so the unit-speed bounds hold with the axis limits divided by sigma sqrt(1 + c).
+  // planner divides its limits by: 1 except on a spiral, whose speed |dx/ds| <= 1 varies a
+  // little, so d2x/ds2 has a part tau along the tangent: with eps = max tau / k,
+  // |a_t dx/ds + v^2 d2x/ds2| <= (1 + eps) sqrt(a_t^2 + (v^2 k)^2), and likewise for the
+  // jerk, so the unit-speed bounds hold with the axis limits divided by 1 + eps.
   double parameterStretch() const;
   // The largest curvature |d2x/ds2| on the segment and the largest |d3x/ds3| of the path
   // geometry (the curvature vector's rate of change); 0 on lines.
@@ -91,6 +92,24 @@ class PathSegment {
   // Whether a circular helix's squared distance from q has a single minimum (is convex).
   bool convexDistanceFrom(const AxisValues& q) const;
 
+  // Spirals (path_spiral.cpp): s is the integral of ds/dphi = rate0_ + m phi over the angle
+  // phi travelled, m = (rate1_ - rate0_) / |sweep|: the line through the spiral's true
+  // |dx/dphi| at both ends, so its speed is 1 there and just under 1 between.
+  bool isSpiral() const { return shape_ == Shape::Arc && r0_ != r1_; }
+  // The fraction of the sweep (and of the other axes' travel) at path length s.
+  double spiralFraction(double s) const;
+  // d2x/ds2 at s.
+  void spiralCurvature(double s, AxisValues& out) const;
+  struct SpiralBounds {
+    double plane_speed;           // of |d(x1, x2)/ds|
+    double other_axis_tangent;    // |dx_i/ds| <= |delta_i| times this (off the plane)
+    double curvature;             // of |d2x/ds2|
+    double other_axis_curvature;  // |d2x_i/ds2| <= |delta_i| times this (off the plane)
+    double curvature_rate;        // of |d3x/ds3|
+    double stretch;               // parameterStretch()
+  };
+  SpiralBounds spiralBounds() const;
+
   Shape shape_ = Shape::Dwell;
   int axis_count_ = 0;
   AxisValues from_{};
@@ -102,6 +121,7 @@ class PathSegment {
   double r0_ = 0.0, r1_ = 0.0;
   double theta0_ = 0.0, sweep_ = 0.0;  // radians, signed (negative: clockwise)
   double plane_share_ = 0.0;
+  double rate0_ = 0.0, rate1_ = 0.0;  // spirals: ds/dphi at the ends (mm/rad)
   CornerBlend blend_;  // Blend only
 };
 
