@@ -67,6 +67,22 @@ TEST(Controller, CreateRefusesAMachineItCannotRun) {
       {"equiv_speedctrl_time of Y",
        [](MachineConfig& m) { m.axes[1].servo.equiv_speedctrl_time = -0.001; }},
       {"min_travel of X", [](MachineConfig& m) { m.axes[0].min_travel = m.axes[0].max_travel; }},
+      // NaN or out-of-range servo values gave NaN actual positions and no alarm.
+      {"velo_ffw_weight of X", [](MachineConfig& m) { m.axes[0].servo.velo_ffw_weight = std::nan(""); }},
+      {"contour_tol of Y", [](MachineConfig& m) { m.axes[1].servo.contour_tol = 0.0; }},
+      {"standstill_pos_tol of Z", [](MachineConfig& m) { m.axes[2].servo.standstill_pos_tol = -1.0; }},
+      {"standstill_delay_time of X",
+       [](MachineConfig& m) { m.axes[0].servo.standstill_delay_time = -0.1; }},
+      {"stop_limit_fine of Y", [](MachineConfig& m) { m.axes[1].servo.stop_limit_fine = 0.0; }},
+      {"positioning_time of Z", [](MachineConfig& m) { m.axes[2].servo.positioning_time = 0.0; }},
+      {"backlash of X",
+       [](MachineConfig& m) { m.axes[0].servo.backlash = std::numeric_limits<double>::infinity(); }},
+      {"backlash_compensation of Y",
+       [](MachineConfig& m) { m.axes[1].servo.backlash_compensation = std::nan(""); }},
+      {"pitch_error.start of X", [](MachineConfig& m) { m.axes[0].servo.pitch_error.start = std::nan(""); }},
+      {"pitch_compensation.values[1] of Z",
+       [](MachineConfig& m) { m.axes[2].servo.pitch_compensation.values = {0.0, std::nan(""), 0.0}; }},
+      {"start_position of Y", [](MachineConfig& m) { m.start_position[1] = std::nan(""); }},
   };
   for (const Case& c : cases) {
     MachineConfig m = defaultMachine();

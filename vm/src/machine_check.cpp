@@ -19,6 +19,43 @@ bytecode::Error problem(const std::string& what, double value, const std::string
 bool positive(double v) { return std::isfinite(v) && v > 0.0; }
 bool nonNegative(double v) { return std::isfinite(v) && v >= 0.0; }
 
+enum class Rule { Positive, NonNegative, Finite };
+
+struct Value {
+  const char* key;
+  double value;
+  Rule rule;
+};
+
+bool holds(const Value& v) {
+  switch (v.rule) {
+    case Rule::Positive: return positive(v.value);
+    case Rule::NonNegative: return nonNegative(v.value);
+    case Rule::Finite: return std::isfinite(v.value);
+  }
+  return false;
+}
+
+const char* ruleText(Rule rule) {
+  switch (rule) {
+    case Rule::Positive: return "above 0";
+    case Rule::NonNegative: return "at least 0";
+    case Rule::Finite: return "finite";
+  }
+  return "";
+}
+
+// A pitch table's start and values: a NaN there makes every actual position NaN.
+std::optional<bytecode::Error> checkTable(const PitchTable& table, const char* key,
+                                          const std::string& axis) {
+  if (!std::isfinite(table.start))
+    return problem(absl::StrCat(key, ".start of ", axis), table.start, "finite");
+  for (std::size_t i = 0; i < table.values.size(); ++i)
+    if (!std::isfinite(table.values[i]))
+      return problem(absl::StrCat(key, ".values[", i, "] of ", axis), table.values[i], "finite");
+  return std::nullopt;
+}
+
 }  // namespace
 
 std::optional<bytecode::Error> checkMachine(const MachineConfig& m) {
@@ -27,23 +64,33 @@ std::optional<bytecode::Error> checkMachine(const MachineConfig& m) {
   if (!positive(m.chord_tolerance)) return problem("chord_tolerance", m.chord_tolerance, "above 0");
   if (!nonNegative(m.corner_tolerance))
     return problem("corner_tolerance", m.corner_tolerance, "at least 0");
-  for (const AxisConfig& a : m.axes) {
+  for (std::size_t i = 0; i < m.axes.size(); ++i) {
+    const AxisConfig& a = m.axes[i];
     const std::string& name = a.name;
-    const struct {
-      const char* key;
-      double value;
-    } positives[] = {{"rapid_velocity", a.rapid_velocity},
-                     {"max_velocity", a.max_velocity},
-                     {"max_acceleration", a.max_acceleration},
-                     {"max_jerk", a.max_jerk},
-                     {"kv", a.servo.kv},
-                     {"pitch_error.step", a.servo.pitch_error.step},
-                     {"pitch_compensation.step", a.servo.pitch_compensation.step}};
-    for (const auto& [key, value] : positives)
-      if (!positive(value)) return problem(absl::StrCat(key, " of ", name), value, "above 0");
-    if (!nonNegative(a.servo.equiv_speedctrl_time))
-      return problem(absl::StrCat("equiv_speedctrl_time of ", name), a.servo.equiv_speedctrl_time,
-                     "at least 0");
+    // The machine file's ranges (servo_keys.cpp), which a configuration built in code skips.
+    const ServoConfig& servo = a.servo;
+    const Value values[] = {{"rapid_velocity", a.rapid_velocity, Rule::Positive},
+                            {"max_velocity", a.max_velocity, Rule::Positive},
+                            {"max_acceleration", a.max_acceleration, Rule::Positive},
+                            {"max_jerk", a.max_jerk, Rule::Positive},
+                            {"kv", servo.kv, Rule::Positive},
+                            {"velo_ffw_weight", servo.velo_ffw_weight, Rule::NonNegative},
+                            {"equiv_speedctrl_time", servo.equiv_speedctrl_time, Rule::NonNegative},
+                            {"contour_tol", servo.contour_tol, Rule::Positive},
+                            {"standstill_pos_tol", servo.standstill_pos_tol, Rule::Positive},
+                            {"standstill_delay_time", servo.standstill_delay_time, Rule::NonNegative},
+                            {"stop_limit_fine", servo.stop_limit_fine, Rule::Positive},
+                            {"positioning_time", servo.positioning_time, Rule::Positive},
+                            {"backlash", servo.backlash, Rule::Finite},
+                            {"backlash_compensation", servo.backlash_compensation, Rule::Finite},
+                            {"pitch_error.step", servo.pitch_error.step, Rule::Positive},
+                            {"pitch_compensation.step", servo.pitch_compensation.step, Rule::Positive}};
+    for (const Value& v : values)
+      if (!holds(v)) return problem(absl::StrCat(v.key, " of ", name), v.value, ruleText(v.rule));
+    if (auto e = checkTable(servo.pitch_error, "pitch_error", name)) return e;
+    if (auto e = checkTable(servo.pitch_compensation, "pitch_compensation", name)) return e;
+    if (i < m.start_position.size() && !std::isfinite(m.start_position[i]))
+      return problem(absl::StrCat("start_position of ", name), m.start_position[i], "finite");
     if (!(std::isfinite(a.min_travel) && std::isfinite(a.max_travel) &&
           a.min_travel < a.max_travel))
       return problem(absl::StrCat("min_travel of ", name), a.min_travel,

@@ -13,8 +13,8 @@
 namespace ncc::vm {
 
 // The first value the VM cannot run with (finite, and within the machine file's ranges for
-// the interpolation cycle, the tolerances, the axis limits and the servo parameters the
-// servo model divides by), as an NCC7115 error naming it; nullopt when all are fine.
+// the interpolation cycle, the tolerances, the axis limits and every servo parameter; finite
+// pitch tables and start position), as an NCC7115 error naming it; nullopt when all are fine.
 std::optional<bytecode::Error> checkMachine(const MachineConfig& machine);
 
 }  // namespace ncc::vm
