@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 
 #include "ncc/vm/motion/ramp_envelope.h"
 
@@ -47,9 +48,9 @@ SegmentLimits segmentLimits(const PathSegment& path, const AxisLimits& machine_a
   // A spiral's s is not quite its arc length: the bounds below assume it is, and hold with
   // the feed and the axis accelerations and jerks divided by its stretch (path.h).
   const double stretch = path.parameterStretch();
-  AxisLimits stretched;
+  std::optional<AxisLimits> stretched;  // constructed only for a spiral
   const AxisLimits& axes =
-      stretch == 1.0 ? machine_axes : (stretched = stretchedLimits(machine_axes, stretch));
+      stretch == 1.0 ? machine_axes : stretched.emplace(stretchedLimits(machine_axes, stretch));
   SegmentLimits lim{rapid ? kInf : feed / stretch, kInf, kInf};
   AxisValues t, q;
   path.maxTangent(t);
