@@ -10,6 +10,7 @@
 
 #include "gtest/gtest.h"
 #include "motion_test_util.h"
+#include "ncc/vm/motion/limits.h"
 #include "ncc/vm/motion/path.h"
 
 namespace ncc::motion_test {
@@ -160,19 +161,73 @@ TEST(Spiral, BoundsHoldTheSampledDerivatives) {
   }
 }
 
-TEST(Spiral, PartFollowsItsParent) {
-  // A piece of a spiral is the same path at the same s (less its start), with its length.
+TEST(Spiral, PartIsTheSpiralBetweenItsEnds) {
+  // A piece of a spiral (what corner blends leave of it) runs on the same spiral between the
+  // parent's points at s0 and s1, at unit speed at its own ends, for about s1 - s0.
   const PathSegment p = spiral(0.32, -0.0068, 2.7, true, 3.0);
   const double s0 = 0.3 * p.length(), s1 = 0.8 * p.length();
   const PathSegment piece = p.part(s0, s1);
-  EXPECT_NEAR(piece.length(), s1 - s0, 1e-12 * p.length());
+  AxisValues a, b;
+  p.position(s0, a);
+  piece.position(0.0, b);
+  EXPECT_EQ(a, b);
+  p.position(s1, a);
+  piece.position(piece.length(), b);
+  EXPECT_EQ(a, b);
+  EXPECT_NEAR(piece.length(), s1 - s0, 1e-5 * (s1 - s0));
+  EXPECT_NEAR(endSpeed(piece, true), 1.0, 1e-6);
+  EXPECT_NEAR(endSpeed(piece, false), 1.0, 1e-6);
   for (int k = 0; k <= 50; ++k) {
-    const double u = piece.length() * k / 50;
-    AxisValues a, b;
-    piece.position(u, a);
-    p.position(s0 + u, b);
-    for (int i = 0; i < 3; ++i) EXPECT_NEAR(a[i], b[i], 1e-12) << "k " << k;
+    piece.position(piece.length() * k / 50, b);
+    EXPECT_LT(p.distanceTo(b), 1e-9) << "k " << k;
   }
+}
+
+TEST(Spiral, CornerBlendsJoinATrimmedSpiralWithoutASpeedStep) {
+  // Found by review: a line, a spiral from R 1 to R 0.5 over 1 rad, and a line 0.05 rad off its
+  // end tangent, with G64 blends at both corners, at T = 0.5 ms. The blend joins the spiral
+  // inside it, where its parent's parameter ran at 0.987 of the path speed: the axes' speed
+  // stepped by 1.3 % and read 8.5x the jerk limit.
+  MachineConfig m = defaultMachine();
+  m.ipo_cycle_seconds = 0.0005;
+  m.corner_tolerance = 0.01;
+  const double start = -0.5 * std::numbers::pi, end = start + 1.0;
+  const AxisValues a = xyz(-1, -1, 0), b = xyz(0, -1, 0);
+  const AxisValues c = xyz(0.5 * std::cos(end), 0.5 * std::sin(end), 0);
+  // The spiral's end tangent (dr/dphi = -0.5, counter-clockwise), turned by 0.05 rad.
+  const double tx = -0.5 * std::cos(end) - 0.5 * std::sin(end);
+  const double ty = -0.5 * std::sin(end) + 0.5 * std::cos(end);
+  const double n = std::hypot(tx, ty), turn = 0.05;
+  const double dx = (tx * std::cos(turn) - ty * std::sin(turn)) / n;
+  const double dy = (tx * std::sin(turn) + ty * std::cos(turn)) / n;
+  const std::vector<MotionPrimitive> program = {
+      line(a, b, 600.0), arc(b, c, 0, 1, 0.0, 0.0, false, 3000.0),
+      line(c, xyz(c[0] + dx, c[1] + dy, 0), 3000.0)};
+  const Trace t = run(m, program);
+  expectWithinLimits(m, t);
+  EXPECT_EQ(t.points.back(), program.back().to);
+}
+
+TEST(Spiral, ChordErrorIsCappedBelowTheToleranceRadius) {
+  // A spiral whose smallest radius of curvature is below the chord tolerance but which is
+  // much larger at its other end: a circle that small is within the tolerance of any chord,
+  // this spiral is not, so the general cap sqrt(8 e / k) / T holds (it had none; on stiff
+  // axes nothing else held the speed down).
+  vm::motion::AxisLimits axes;
+  axes.count = 3;
+  for (int i = 0; i < 3; ++i) {
+    axes.feed_velocity[i] = 1e6;
+    axes.acceleration[i] = 1e6;
+    axes.jerk[i] = 1e9;
+  }
+  axes.ipo_cycle = 0.004;
+  axes.chord_tolerance = 0.005;
+  const PathSegment p = spiral(0.001, 0.05, 6.0);
+  ASSERT_LT(p.radius(), axes.chord_tolerance);
+  const vm::motion::SegmentLimits limits = vm::motion::segmentLimits(
+      p, axes, false, 1e6, vm::motion::ChainShape{}, vm::motion::kSmoothJerkShare);
+  EXPECT_LE(limits.velocity,
+            std::sqrt(8.0 * axes.chord_tolerance / p.maxCurvature()) / axes.ipo_cycle * (1.0 + 1e-12));
 }
 
 MachineConfig unequalAxes() {

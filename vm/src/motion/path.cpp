@@ -64,13 +64,7 @@ PathSegment PathSegment::arc(const AxisValues& from, const AxisValues& to, int a
     sum += p.delta_[i] * p.delta_[i];
   }
   if (p.r0_ != p.r1_) {
-    // A spiral: ds/dphi through its true |dx/dphi| = sqrt(b^2 + r^2 + the other axes' per
-    // radian) at both ends (path_spiral.cpp).
-    const double b = (p.r1_ - p.r0_) / sweep, other = sum / (sweep * sweep);
-    p.rate0_ = std::sqrt(b * b + p.r0_ * p.r0_ + other);
-    p.rate1_ = std::sqrt(b * b + p.r1_ * p.r1_ + other);
-    p.length_ = 0.5 * (p.rate0_ + p.rate1_) * std::abs(sweep);
-    p.plane_share_ = p.spiralBounds().plane_speed;
+    p.setSpiralParameter();
     return p;
   }
   const double plane = 0.5 * (p.r0_ + p.r1_) * std::abs(sweep);
@@ -106,7 +100,7 @@ PathSegment PathSegment::part(double s0, double s1) const {
   position(s0, p.from_);
   position(s1, p.to_);
   if (shape_ == Shape::Line) return line(p.from_, p.to_, axis_count_);
-  // An arc: the same angle and radius per unit of s (a spiral: the same ds/dphi).
+  // An arc: the same angle and radius per unit of s (a spiral: see below).
   const double f0 = isSpiral() ? spiralFraction(s0) : s0 / length_;
   const double f1 = isSpiral() ? spiralFraction(s1) : s1 / length_;
   p.theta0_ = theta0_ + sweep_ * f0;
@@ -114,14 +108,15 @@ PathSegment PathSegment::part(double s0, double s1) const {
   p.r0_ = r0_ + (r1_ - r0_) * f0;
   p.r1_ = r0_ + (r1_ - r0_) * f1;
   for (int i = 0; i < axis_count_; ++i) p.delta_[i] = delta_[i] * (f1 - f0);
-  if (isSpiral()) {
-    const double slope = rate1_ - rate0_;  // per whole sweep
-    p.rate0_ = rate0_ + slope * f0;
-    p.rate1_ = rate0_ + slope * f1;
-    p.length_ = 0.5 * (p.rate0_ + p.rate1_) * std::abs(p.sweep_);
+  if (isSpiral() && p.r0_ != p.r1_ && p.sweep_ != 0.0) {
+    // A piece of a spiral is the spiral through the same points with its own parameter: unit
+    // speed at its own ends, where corner blends join it. (With its parent's, its speed there
+    // was below 1, and the axes' speed stepped where a blend joined it: 8.5x the jerk limit
+    // where a blend joined a spiral shrinking from R 1 to R 0.5.)
+    p.setSpiralParameter();
     return p;
   }
-  p.length_ = length_ * (f1 - f0);
+  p.length_ = isSpiral() ? s1 - s0 : length_ * (f1 - f0);  // (a spiral piece too short to be one)
   return p;
 }
 

@@ -4,9 +4,9 @@
 // sqrt(b^2 + r^2 + |Lambda|^2), is convex in phi; s is the integral of the line S through G
 // at both ends, S(phi) = rate0 + m phi:
 //     s(phi) = rate0 phi + m phi^2 / 2,   phi(s) = 2 s / (rate0 + sqrt(rate0^2 + 2 m s)),
-// so |dx/ds| = G / S is 1 at both ends (a spiral joins its neighbours without a velocity
-// step, and a corner blend's curvature matches it) and, S being a chord above the convex G,
-// at most 1 between. A part keeps its parent's S. The mean-radius arc length, r linear in s,
+// so |dx/ds| = G / S is 1 at both ends (a spiral joins its neighbours and corner blends
+// without a velocity step) and, S being a chord above the convex G, at most 1 between. A part
+// (a spiral trimmed by corner blends) is parametrised the same way between its own ends. The mean-radius arc length, r linear in s,
 // made |dx/ds| 34 on a 0.001 rad arc at R 0.2 growing 0.01 mm, and 0.989 at the end of a
 // spiral shrinking 2 % (1.1x the jerk limit at the corner blend after it).
 #include <algorithm>
@@ -15,6 +15,18 @@
 #include "ncc/vm/motion/path.h"
 
 namespace ncc::vm::motion {
+
+void PathSegment::setSpiralParameter() {
+  const double b = (r1_ - r0_) / sweep_;
+  double other = 0.0;  // |Lambda|^2 sweep^2
+  for (int i = 0; i < axis_count_; ++i)
+    if (i != axis1_ && i != axis2_) other += delta_[i] * delta_[i];
+  other /= sweep_ * sweep_;
+  rate0_ = std::sqrt(b * b + r0_ * r0_ + other);
+  rate1_ = std::sqrt(b * b + r1_ * r1_ + other);
+  length_ = 0.5 * (rate0_ + rate1_) * std::abs(sweep_);
+  plane_share_ = spiralBounds().plane_speed;
+}
 
 double PathSegment::spiralFraction(double s) const {
   if (!(s > 0.0)) return 0.0;

@@ -34,8 +34,10 @@ class PathSegment {
   static PathSegment dwell(const AxisValues& at, int axis_count);
 
   // The piece between path lengths s0 < s1 of a line or an arc, parametrised like this
-  // segment (an arc keeps its centre, so a piece of a circle is a circle); the whole segment
-  // for (0, length). Its ends are position(s0) and position(s1).
+  // segment (an arc keeps its centre, so a piece of a circle is a circle; a piece of a spiral
+  // is the spiral between the same points, with its own parameter and a length within a hair
+  // of s1 - s0); the whole segment for (0, length). Its ends are position(s0) and
+  // position(s1).
   PathSegment part(double s0, double s1) const;
   // Distance from q to a line, or to an arc of less than half a turn (a spiral: the radial
   // distance, at least the true one; a helix: the distance to its nearest point found, likewise
@@ -77,11 +79,13 @@ class PathSegment {
   // helix; on a spiral at its larger radius). Lines: 0.
   double radius() const;
   double maxPlaneSpeed() const;
-  // A circle in its plane (an arc without helix or spiral part): its rotation term,
-  // d3x/ds3 = -k^2 T, lies along the tangent.
   // Arcs: the plane's axes.
   int planeAxis1() const { return axis1_; }
   int planeAxis2() const { return axis2_; }
+  // An arc whose end radius differs from its start radius.
+  bool isSpiral() const { return shape_ == Shape::Arc && r0_ != r1_; }
+  // A circle in its plane (an arc without helix or spiral part): its rotation term,
+  // d3x/ds3 = -k^2 T, lies along the tangent.
   bool isPlaneCircle() const {
     return shape_ == Shape::Arc && plane_share_ == 1.0 && r0_ == r1_;
   }
@@ -95,7 +99,8 @@ class PathSegment {
   // Spirals (path_spiral.cpp): s is the integral of ds/dphi = rate0_ + m phi over the angle
   // phi travelled, m = (rate1_ - rate0_) / |sweep|: the line through the spiral's true
   // |dx/dphi| at both ends, so its speed is 1 there and just under 1 between.
-  bool isSpiral() const { return shape_ == Shape::Arc && r0_ != r1_; }
+  // rate0_, rate1_, length_ and plane_share_ from the ends, the sweep and the other axes' travel.
+  void setSpiralParameter();
   // The fraction of the sweep (and of the other axes' travel) at path length s.
   double spiralFraction(double s) const;
   // d2x/ds2 at s.
