@@ -110,6 +110,18 @@ TEST(Path, DistanceToLinesAndCircleArcs) {
 // A helix piece's distance is that of its nearest point: against the tests' own search
 // (toPrimitive: the nearest of 128 points along the helix, refined by golden sections), never
 // less, and within 1e-9 mm (points all around it, and beyond its ends).
+TEST(Path, DistanceToAHelixClimbingByAHair) {
+  // 0.68 um of Z over 78 mm of arc: the plane share rounds to 1, and the plane's distance
+  // (found by review) read 0 for a point at the end's XY but the start's Z, 0.68 um away.
+  const double r = 36.113, sweep = 2.158, dz = -6.8e-7;
+  const AxisValues to = xyz(r * std::cos(sweep), r * std::sin(sweep), dz);
+  const PathSegment helix = PathSegment::arc(xyz(r, 0, 0), to, 3, 0, 1, 0.0, 0.0, false, 0);
+  ASSERT_EQ(helix.maxPlaneSpeed(), 1.0);
+  const AxisValues q = xyz(to[0], to[1], 0.0);
+  EXPECT_GE(helix.distanceTo(q), 0.99 * std::abs(dz));
+  EXPECT_LE(helix.distanceTo(q), 1.01 * std::abs(dz));
+}
+
 TEST(Path, DistanceToAHelix) {
   // R 5 around (1, 2), a third of a turn clockwise while Z falls 1.5 mm.
   const AxisValues from = xyz(6, 2, 0), to = xyz(1 + 5 * std::cos(-2.0), 2 + 5 * std::sin(-2.0), -1.5);

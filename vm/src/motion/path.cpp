@@ -135,7 +135,10 @@ double PathSegment::distanceTo(const AxisValues& q) const {
     return distance(p);
   }
   if (!(std::abs(sweep_) < std::numbers::pi)) return std::numeric_limits<double>::infinity();
-  if (plane_share_ != 1.0) return helixDistanceTo(q);
+  // A helix (its plane share may round to 1 when it climbs by a hair: the plane's distance
+  // would then under-estimate by up to that climb).
+  for (int i = 0; i < axis_count_; ++i)
+    if (delta_[i] != 0.0) return helixDistanceTo(q);
   double off_plane = 0.0;
   for (int i = 0; i < axis_count_; ++i)
     if (i != axis1_ && i != axis2_) off_plane += (q[i] - from_[i]) * (q[i] - from_[i]);
