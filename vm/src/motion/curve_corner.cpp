@@ -85,7 +85,7 @@ CornerBlend::End endState(const PathSegment& seg, double s, const AxisValues& co
   AxisValues p, t, k;
   seg.position(s, p);
   seg.tangent(s, t);
-  seg.curvature(s, k);
+  seg.geometricCurvature(s, k);
   CornerBlend::End e;
   for (int j = 0; j < axes.count; ++j) {
     const int i = axes.axis[j];

@@ -54,6 +54,22 @@ void PathSegment::spiralCurvature(double s, AxisValues& out) const {
   out[axis2_] = y_ff * f1 * f1 + y_f * f2;
 }
 
+void PathSegment::geometricCurvature(double s, AxisValues& out) const {
+  curvature(s, out);
+  if (!isSpiral()) return;
+  AxisValues t;
+  tangent(s, t);
+  double along = 0.0;
+  for (int i = 0; i < axis_count_; ++i) along += out[i] * t[i];
+  // |dx/ds| = G / S at the angle reached.
+  const double sweep = std::abs(sweep_), f = spiralFraction(s);
+  const double b = (r1_ - r0_) / sweep, r = r0_ + (r1_ - r0_) * f;
+  double other = 0.0;
+  for (int i = 0; i < axis_count_; ++i) other += (delta_[i] / sweep) * (delta_[i] / sweep);
+  const double speed = std::sqrt(b * b + r * r + other) / (rate0_ + (rate1_ - rate0_) * f);
+  for (int i = 0; i < axis_count_; ++i) out[i] = (out[i] - along * t[i]) / (speed * speed);
+}
+
 // With phi' = 1/S, phi'' = -m / S^3 and phi''' = 3 m^2 / S^5 (derivatives in s), and
 // x_phi = (b e_r + r e_theta, Lambda), x_phiphi = 2 b e_theta - r e_r,
 // x_phiphiphi = -3 b e_r - r e_theta (the plane's signs for a counter-clockwise turn):

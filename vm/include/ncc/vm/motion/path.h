@@ -57,6 +57,10 @@ class PathSegment {
   void tangent(double s, AxisValues& out) const;
   // Curvature vector d2x/ds2 at s (zero on lines).
   void curvature(double s, AxisValues& out) const;
+  // The geometry's curvature vector at s, what a corner blend joining there must match:
+  // curvature() except inside a spiral, whose speed |dx/ds| is a hair under 1 there, so that
+  // d2x/ds2 is this times |dx/ds|^2 plus a part along the tangent.
+  void geometricCurvature(double s, AxisValues& out) const;
 
   // Upper bound of |dx_i/ds| over the whole segment, per axis: what projects the path
   // velocity, acceleration and jerk onto axis i (on a spiral possibly a little over 1).
