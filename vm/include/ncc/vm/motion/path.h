@@ -35,9 +35,10 @@ class PathSegment {
 
   // The piece between path lengths s0 < s1 of a line or an arc, parametrised like this
   // segment (an arc keeps its centre, so a piece of a circle is a circle; a piece of a spiral
-  // is the spiral between the same points, with its own parameter and a length within a hair
-  // of s1 - s0); the whole segment for (0, length). Its ends are position(s0) and
-  // position(s1).
+  // is the spiral between the same points with its own parameter: its length is within a
+  // hair of its arc length, which s1 - s0 matches only as nearly as the parent's s matches
+  // the parent's, 3e-6 on a 2 % spiral); the whole segment for (0, length). Its ends are
+  // position(s0) and position(s1).
   PathSegment part(double s0, double s1) const;
   // Distance from q to a line, or to an arc of less than half a turn (a spiral: the radial
   // distance, at least the true one; a helix: the distance to its nearest point found, likewise
