@@ -1,5 +1,5 @@
-// The servo keys of [machine.axis.<NAME>]: numbers with their ranges, the feed-forward mode,
-// and the two pitch tables { start, step, values }.
+// The servo keys of [machine.axis.<NAME>]: numbers with their ranges (servoNumberKeys(),
+// servo_config.h), the feed-forward mode, and the two pitch tables { start, step, values }.
 #include "servo_keys.h"
 
 #include <string_view>
@@ -10,27 +10,6 @@ namespace ncc::machine_file {
 namespace {
 
 constexpr size_t kMaxPitchPoints = 5000;  // MD 38000 MM_ENC_COMP_MAX_POINTS upper limit
-
-enum class Range { Positive, NonNegative, Any };
-
-struct NumberKey {
-  std::string_view name;
-  double ServoConfig::*field;
-  Range range;
-};
-
-constexpr NumberKey kNumberKeys[] = {
-    {"kv", &ServoConfig::kv, Range::Positive},
-    {"velo_ffw_weight", &ServoConfig::velo_ffw_weight, Range::NonNegative},
-    {"equiv_speedctrl_time", &ServoConfig::equiv_speedctrl_time, Range::NonNegative},
-    {"contour_tol", &ServoConfig::contour_tol, Range::Positive},
-    {"standstill_pos_tol", &ServoConfig::standstill_pos_tol, Range::Positive},
-    {"standstill_delay_time", &ServoConfig::standstill_delay_time, Range::NonNegative},
-    {"stop_limit_fine", &ServoConfig::stop_limit_fine, Range::Positive},
-    {"positioning_time", &ServoConfig::positioning_time, Range::Positive},
-    {"backlash", &ServoConfig::backlash, Range::Any},
-    {"backlash_compensation", &ServoConfig::backlash_compensation, Range::Any},
-};
 
 bool readPitchTable(const toml::node& node, std::string_view what, const std::string& axis,
                     PitchTable& out, TomlContext& ctx) {
@@ -90,14 +69,15 @@ bool readPitchTable(const toml::node& node, std::string_view what, const std::st
 bool readServoKey(const toml::key& key, const toml::node& node, AxisConfig& axis,
                   TomlContext& ctx) {
   ServoConfig& servo = axis.servo;
-  for (const NumberKey& k : kNumberKeys) {
+  for (const ServoNumberKey& k : servoNumberKeys()) {
     if (key.str() != k.name) continue;
     auto v = ctx.number(node, k.name);
     if (!v) return true;
-    if ((k.range == Range::Positive && *v <= 0) || (k.range == Range::NonNegative && *v < 0)) {
+    if ((k.range == NumberRange::Positive && *v <= 0) ||
+        (k.range == NumberRange::NonNegative && *v < 0)) {
       ctx.error(kBadValue, ctx.at(node),
                 cat("'", k.name, "' of ", axis.name, " must be ",
-                    k.range == Range::Positive ? "above 0" : "at least 0"));
+                    k.range == NumberRange::Positive ? "above 0" : "at least 0"));
       return true;
     }
     servo.*k.field = *v;

@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <string>
+#include <string_view>
 
 #include "absl/strings/str_cat.h"
 
@@ -19,30 +20,33 @@ bytecode::Error problem(const std::string& what, double value, const std::string
 bool positive(double v) { return std::isfinite(v) && v > 0.0; }
 bool nonNegative(double v) { return std::isfinite(v) && v >= 0.0; }
 
-enum class Rule { Positive, NonNegative, Finite };
-
 struct Value {
-  const char* key;
+  std::string_view key;
   double value;
-  Rule rule;
+  NumberRange range;  // Any: finite
 };
 
 bool holds(const Value& v) {
-  switch (v.rule) {
-    case Rule::Positive: return positive(v.value);
-    case Rule::NonNegative: return nonNegative(v.value);
-    case Rule::Finite: return std::isfinite(v.value);
+  switch (v.range) {
+    case NumberRange::Positive: return positive(v.value);
+    case NumberRange::NonNegative: return nonNegative(v.value);
+    case NumberRange::Any: return std::isfinite(v.value);
   }
   return false;
 }
 
-const char* ruleText(Rule rule) {
-  switch (rule) {
-    case Rule::Positive: return "above 0";
-    case Rule::NonNegative: return "at least 0";
-    case Rule::Finite: return "finite";
+const char* rangeText(NumberRange range) {
+  switch (range) {
+    case NumberRange::Positive: return "above 0";
+    case NumberRange::NonNegative: return "at least 0";
+    case NumberRange::Any: return "finite";
   }
   return "";
+}
+
+std::optional<bytecode::Error> checkValue(const Value& v, const std::string& axis) {
+  if (holds(v)) return std::nullopt;
+  return problem(absl::StrCat(std::string(v.key), " of ", axis), v.value, rangeText(v.range));
 }
 
 // A pitch table's start and values: a NaN there makes every actual position NaN.
@@ -67,26 +71,21 @@ std::optional<bytecode::Error> checkMachine(const MachineConfig& m) {
   for (std::size_t i = 0; i < m.axes.size(); ++i) {
     const AxisConfig& a = m.axes[i];
     const std::string& name = a.name;
-    // The machine file's ranges (servo_keys.cpp), which a configuration built in code skips.
+    // The machine file's ranges, which a configuration built in code skips.
     const ServoConfig& servo = a.servo;
-    const Value values[] = {{"rapid_velocity", a.rapid_velocity, Rule::Positive},
-                            {"max_velocity", a.max_velocity, Rule::Positive},
-                            {"max_acceleration", a.max_acceleration, Rule::Positive},
-                            {"max_jerk", a.max_jerk, Rule::Positive},
-                            {"kv", servo.kv, Rule::Positive},
-                            {"velo_ffw_weight", servo.velo_ffw_weight, Rule::NonNegative},
-                            {"equiv_speedctrl_time", servo.equiv_speedctrl_time, Rule::NonNegative},
-                            {"contour_tol", servo.contour_tol, Rule::Positive},
-                            {"standstill_pos_tol", servo.standstill_pos_tol, Rule::Positive},
-                            {"standstill_delay_time", servo.standstill_delay_time, Rule::NonNegative},
-                            {"stop_limit_fine", servo.stop_limit_fine, Rule::Positive},
-                            {"positioning_time", servo.positioning_time, Rule::Positive},
-                            {"backlash", servo.backlash, Rule::Finite},
-                            {"backlash_compensation", servo.backlash_compensation, Rule::Finite},
-                            {"pitch_error.step", servo.pitch_error.step, Rule::Positive},
-                            {"pitch_compensation.step", servo.pitch_compensation.step, Rule::Positive}};
-    for (const Value& v : values)
-      if (!holds(v)) return problem(absl::StrCat(v.key, " of ", name), v.value, ruleText(v.rule));
+    const Value limits[] = {{"rapid_velocity", a.rapid_velocity, NumberRange::Positive},
+                            {"max_velocity", a.max_velocity, NumberRange::Positive},
+                            {"max_acceleration", a.max_acceleration, NumberRange::Positive},
+                            {"max_jerk", a.max_jerk, NumberRange::Positive}};
+    for (const Value& v : limits)
+      if (auto e = checkValue(v, name)) return e;
+    for (const ServoNumberKey& k : servoNumberKeys())
+      if (auto e = checkValue({k.name, servo.*k.field, k.range}, name)) return e;
+    const Value steps[] = {
+        {"pitch_error.step", servo.pitch_error.step, NumberRange::Positive},
+        {"pitch_compensation.step", servo.pitch_compensation.step, NumberRange::Positive}};
+    for (const Value& v : steps)
+      if (auto e = checkValue(v, name)) return e;
     if (auto e = checkTable(servo.pitch_error, "pitch_error", name)) return e;
     if (auto e = checkTable(servo.pitch_compensation, "pitch_compensation", name)) return e;
     if (i < m.start_position.size() && !std::isfinite(m.start_position[i]))

@@ -4,6 +4,8 @@
 // MachineConfig::configHash(). Names follow the Sinumerik machine data they come from
 // (840Di extended functions, K3 / notes §4.1).
 #include <cstdint>
+#include <span>
+#include <string_view>
 #include <vector>
 
 namespace ncc {
@@ -36,5 +38,18 @@ struct ServoConfig {
   PitchTable pitch_compensation;         // LEC table the control corrects with
   friend bool operator==(const ServoConfig&, const ServoConfig&) = default;
 };
+
+// The range a servo number must be in: what the machine file accepts, and what
+// vm::checkMachine requires of a configuration built in code (Any: finite).
+enum class NumberRange : uint8_t { Positive, NonNegative, Any };
+
+struct ServoNumberKey {
+  std::string_view name;  // its key in [machine.axis.<NAME>]
+  double ServoConfig::*field;
+  NumberRange range;
+};
+
+// Every number of ServoConfig with its key and range (the pitch tables apart).
+std::span<const ServoNumberKey> servoNumberKeys();
 
 }  // namespace ncc
