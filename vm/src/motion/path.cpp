@@ -329,7 +329,7 @@ void PathSegment::maxTangent(AxisValues& out) const {
     return;
   }
   if (isSpiral()) {
-    const SpiralBounds bounds = spiralBounds();
+    const SpiralBounds& bounds = spiralBounds();
     for (int i = 0; i < axis_count_; ++i) out[i] = std::abs(delta_[i]) * bounds.other_axis_tangent;
     out[axis1_] = bounds.plane_speed;
     out[axis2_] = bounds.plane_speed;
@@ -381,7 +381,7 @@ void PathSegment::normalShare(AxisValues& out) const {
   } else if (shape_ == Shape::Arc) {
     if (isSpiral()) {
       // The other axes speed up and slow down a little with the spiral's speed.
-      const SpiralBounds bounds = spiralBounds();
+      const SpiralBounds& bounds = spiralBounds();
       for (int i = 0; i < axis_count_; ++i)
         out[i] = std::abs(delta_[i]) * bounds.other_axis_curvature / bounds.curvature;
     }

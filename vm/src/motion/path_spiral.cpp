@@ -6,9 +6,10 @@
 //     s(phi) = rate0 phi + m phi^2 / 2,   phi(s) = 2 s / (rate0 + sqrt(rate0^2 + 2 m s)),
 // so |dx/ds| = G / S is 1 at both ends (a spiral joins its neighbours and corner blends
 // without a velocity step) and, S being a chord above the convex G, at most 1 between. A part
-// (a spiral trimmed by corner blends) is parametrised the same way between its own ends. The mean-radius arc length, r linear in s,
-// made |dx/ds| 34 on a 0.001 rad arc at R 0.2 growing 0.01 mm, and 0.989 at the end of a
-// spiral shrinking 2 % (1.1x the jerk limit at the corner blend after it).
+// (a spiral trimmed by corner blends) is parametrised the same way between its own ends. The
+// mean-radius arc length, r linear in s, made |dx/ds| 34 on a 0.001 rad arc at R 0.2 growing
+// 0.01 mm, and 0.989 at the end of a spiral shrinking 2 % (1.1x the jerk limit at the corner
+// blend after it).
 #include <algorithm>
 #include <cmath>
 
@@ -16,16 +17,20 @@
 
 namespace ncc::vm::motion {
 
-void PathSegment::setSpiralParameter() {
+double PathSegment::spiralTrueRate(double r) const {
   const double b = (r1_ - r0_) / sweep_;
-  double other = 0.0;  // |Lambda|^2 sweep^2
-  for (int i = 0; i < axis_count_; ++i)
-    if (i != axis1_ && i != axis2_) other += delta_[i] * delta_[i];
+  double other = 0.0;  // |Lambda|^2 sweep^2 (delta_ is 0 on the plane axes)
+  for (int i = 0; i < axis_count_; ++i) other += delta_[i] * delta_[i];
   other /= sweep_ * sweep_;
-  rate0_ = std::sqrt(b * b + r0_ * r0_ + other);
-  rate1_ = std::sqrt(b * b + r1_ * r1_ + other);
+  return std::sqrt(b * b + r * r + other);
+}
+
+void PathSegment::setSpiralParameter() {
+  rate0_ = spiralTrueRate(r0_);
+  rate1_ = spiralTrueRate(r1_);
   length_ = 0.5 * (rate0_ + rate1_) * std::abs(sweep_);
-  plane_share_ = spiralBounds().plane_speed;
+  spiral_bounds_ = computeSpiralBounds();
+  plane_share_ = spiral_bounds_.plane_speed;
 }
 
 double PathSegment::spiralFraction(double s) const {
@@ -62,11 +67,8 @@ void PathSegment::geometricCurvature(double s, AxisValues& out) const {
   double along = 0.0;
   for (int i = 0; i < axis_count_; ++i) along += out[i] * t[i];
   // |dx/ds| = G / S at the angle reached.
-  const double sweep = std::abs(sweep_), f = spiralFraction(s);
-  const double b = (r1_ - r0_) / sweep, r = r0_ + (r1_ - r0_) * f;
-  double other = 0.0;
-  for (int i = 0; i < axis_count_; ++i) other += (delta_[i] / sweep) * (delta_[i] / sweep);
-  const double speed = std::sqrt(b * b + r * r + other) / (rate0_ + (rate1_ - rate0_) * f);
+  const double f = spiralFraction(s);
+  const double speed = spiralTrueRate(r0_ + (r1_ - r0_) * f) / (rate0_ + (rate1_ - rate0_) * f);
   for (int i = 0; i < axis_count_; ++i) out[i] = (out[i] - along * t[i]) / (speed * speed);
 }
 
@@ -81,14 +83,11 @@ void PathSegment::geometricCurvature(double s, AxisValues& out) const {
 // (G' S - G m) / S^3, and G' S - G m = G' (S - G) + G (G' - m): G' = r b / G grows with phi,
 // S - G is at most the chord's gap at the ends plus |G'_1 - G'_0| |sweep| / 4 (a convex
 // function whose slope grows by that much sags at most this far below its chord).
-PathSegment::SpiralBounds PathSegment::spiralBounds() const {
+PathSegment::SpiralBounds PathSegment::computeSpiralBounds() const {
   const double sweep = std::abs(sweep_);
   const double b = (r1_ - r0_) / sweep;
-  double other = 0.0;  // |Lambda|^2
-  for (int i = 0; i < axis_count_; ++i)
-    if (i != axis1_ && i != axis2_) other += (delta_[i] / sweep) * (delta_[i] / sweep);
   const double r_max = std::max(r0_, r1_);
-  const double g0 = std::sqrt(b * b + r0_ * r0_ + other), g1 = std::sqrt(b * b + r1_ * r1_ + other);
+  const double g0 = spiralTrueRate(r0_), g1 = spiralTrueRate(r1_);
   const double g_max = std::max(g0, g1);
   const double rate = std::min(rate0_, rate1_);  // smallest S
   const double m = (rate1_ - rate0_) / sweep, am = std::abs(m);

@@ -104,8 +104,11 @@ class PathSegment {
   // Spirals (path_spiral.cpp): s is the integral of ds/dphi = rate0_ + m phi over the angle
   // phi travelled, m = (rate1_ - rate0_) / |sweep|: the line through the spiral's true
   // |dx/dphi| at both ends, so its speed is 1 there and just under 1 between.
-  // rate0_, rate1_, length_ and plane_share_ from the ends, the sweep and the other axes' travel.
+  // rate0_, rate1_, length_, the bounds and plane_share_ from the ends, the sweep and the
+  // other axes' travel.
   void setSpiralParameter();
+  // The true |dx/dphi| where the radius is r: sqrt(b^2 + r^2 + the other axes' per radian).
+  double spiralTrueRate(double r) const;
   // The fraction of the sweep (and of the other axes' travel) at path length s.
   double spiralFraction(double s) const;
   // d2x/ds2 at s.
@@ -118,7 +121,8 @@ class PathSegment {
     double curvature_rate;        // of |d3x/ds3|
     double stretch;               // parameterStretch()
   };
-  SpiralBounds spiralBounds() const;
+  SpiralBounds computeSpiralBounds() const;
+  const SpiralBounds& spiralBounds() const { return spiral_bounds_; }
 
   Shape shape_ = Shape::Dwell;
   int axis_count_ = 0;
@@ -132,6 +136,7 @@ class PathSegment {
   double theta0_ = 0.0, sweep_ = 0.0;  // radians, signed (negative: clockwise)
   double plane_share_ = 0.0;
   double rate0_ = 0.0, rate1_ = 0.0;  // spirals: ds/dphi at the ends (mm/rad)
+  SpiralBounds spiral_bounds_{};      // spirals: computeSpiralBounds(), set with the parameter
   CornerBlend blend_;  // Blend only
 };
 
