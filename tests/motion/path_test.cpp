@@ -110,18 +110,6 @@ TEST(Path, DistanceToLinesAndCircleArcs) {
 // A helix piece's distance is that of its nearest point: against the tests' own search
 // (toPrimitive: the nearest of 128 points along the helix, refined by golden sections), never
 // less, and within 1e-9 mm (points all around it, and beyond its ends).
-TEST(Path, DistanceToAHelixClimbingByAHair) {
-  // 0.68 um of Z over 78 mm of arc: the plane share rounds to 1, and the plane's distance
-  // (found by review) read 0 for a point at the end's XY but the start's Z, 0.68 um away.
-  const double r = 36.113, sweep = 2.158, dz = -6.8e-7;
-  const AxisValues to = xyz(r * std::cos(sweep), r * std::sin(sweep), dz);
-  const PathSegment helix = PathSegment::arc(xyz(r, 0, 0), to, 3, 0, 1, 0.0, 0.0, false, 0);
-  ASSERT_EQ(helix.maxPlaneSpeed(), 1.0);
-  const AxisValues q = xyz(to[0], to[1], 0.0);
-  EXPECT_GE(helix.distanceTo(q), 0.99 * std::abs(dz));
-  EXPECT_LE(helix.distanceTo(q), 1.01 * std::abs(dz));
-}
-
 TEST(Path, DistanceToAHelix) {
   // R 5 around (1, 2), a third of a turn clockwise while Z falls 1.5 mm.
   const AxisValues from = xyz(6, 2, 0), to = xyz(1 + 5 * std::cos(-2.0), 2 + 5 * std::sin(-2.0), -1.5);
@@ -143,12 +131,25 @@ TEST(Path, DistanceToAHelix) {
   }
 }
 
+TEST(Path, DistanceToAHelixClimbingByAHair) {
+  // 0.68 um of Z over 78 mm of arc: the plane share rounds to 1, and the plane's distance
+  // (found by review) read 0 for a point at the end's XY but the start's Z, 0.68 um away.
+  const double r = 36.113, sweep = 2.158, dz = -6.8e-7;
+  const AxisValues to = xyz(r * std::cos(sweep), r * std::sin(sweep), dz);
+  const PathSegment helix = PathSegment::arc(xyz(r, 0, 0), to, 3, 0, 1, 0.0, 0.0, false, 0);
+  ASSERT_EQ(helix.maxPlaneSpeed(), 1.0);
+  const AxisValues q = xyz(to[0], to[1], 0.0);
+  EXPECT_GE(helix.distanceTo(q), 0.99 * std::abs(dz));
+  EXPECT_LE(helix.distanceTo(q), 1.01 * std::abs(dz));
+}
+
 // The curvature vector is d2x/ds2 of the path as position(s) runs it, which is what the axes'
 // accelerations follow (v^2 d2x/ds2 at constant speed): against central differences of
 // position(), and within maxCurvature() and maxCurvatureRate(). On a spiral (end radius
 // differing from the start, as rounded end points or a centre from R make it) the radius
-// changes along s too: d2x/ds2 gains 2 r' w across the radius (w the angle per unit of s),
-// 20 % of the centripetal term on this short R 1 arc whose radius grows 0.01 mm.
+// changes along s too: d2x/ds2 gains a term across the radius (2 r' w with r' and w the radius
+// and angle per unit of s; left out, it was 20 % of the centripetal term on this short R 1 arc
+// whose radius grows 0.01 mm) and one along the tangent (path_spiral.cpp).
 TEST(Path, CurvatureIsTheSecondDerivativeOfPosition) {
   const PathSegment circle = PathSegment::arc(xyz(1, 0, 0), xyz(std::cos(0.1), std::sin(0.1), 0),
                                               3, 0, 1, 0, 0, false, 0);

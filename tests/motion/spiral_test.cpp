@@ -34,14 +34,14 @@ double polygonLength(const PathSegment& p, int n) {
   p.position(0.0, a);
   for (int k = 1; k <= n; ++k) {
     p.position(p.length() * k / n, b);
-    sum += std::sqrt((b[0] - a[0]) * (b[0] - a[0]) + (b[1] - a[1]) * (b[1] - a[1]) +
-                     (b[2] - a[2]) * (b[2] - a[2]));
+    sum += distance(a, b);
     a = b;
   }
   return sum;
 }
 
-double norm3(const AxisValues& v) { return std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]); }
+// |v| over X Y Z.
+double norm3(const AxisValues& v) { return distance(v, AxisValues{}); }
 
 // What sampling a spiral finds, by central differences of position (speed) and of
 // curvature() (its rate), and the part of curvature() along the tangent.
@@ -105,8 +105,7 @@ double endSpeed(const PathSegment& p, bool at_start) {
   AxisValues a, b;
   p.position(at_start ? 0.0 : p.length() - h, a);
   p.position(at_start ? h : p.length(), b);
-  for (int i = 0; i < 3; ++i) b[i] -= a[i];
-  return norm3(b) / h;
+  return distance(a, b) / h;
 }
 
 TEST(Spiral, ParameterIsTheArcLengthAtTheEnds) {
