@@ -95,8 +95,8 @@ SegmentLimits segmentLimits(const PathSegment& path, const AxisLimits& machine_a
     double chord = std::sqrt(8.0 * e / kappa);
     if (path.shape() == PathSegment::Shape::Arc && !in_chain) {
       // Exact on the circle (a spiral: at its smallest radius of curvature); the plane axes
-      // move at most maxPlaneSpeed() per unit of s (a helix: less than 1).
-      // A circle no larger than e is within e of any chord; a spiral may be larger elsewhere.
+      // move at most maxPlaneSpeed() per unit of s (a helix: less than 1). A circle no larger
+      // than e is within e of any chord; a spiral may be larger elsewhere (the general cap).
       const double r = path.radius();
       if (e < r) chord = 2.0 * std::sqrt(2.0 * r * e - e * e) / path.maxPlaneSpeed();
       else if (!path.isSpiral()) chord = kInf;
