@@ -193,7 +193,7 @@ TEST(Controller, LookAheadDepthComesFromTheMachine) {
   const Result shallow = topSpeed(256, 0), deep = topSpeed(4096, 0);
   EXPECT_LT(shallow.top, 90.0);
   EXPECT_GT(shallow.limited_ticks, shallow.ticks / 2);
-  EXPECT_NEAR(deep.top, 100.0, 1e-9);
+  EXPECT_NEAR(deep.top, 100.0, 1e-4);  // F over the chord bows' speed bound, 1 + 2.5e-7
   EXPECT_LT(deep.limited_ticks, deep.ticks / 5);
   EXPECT_LT(topSpeed(4096, 256).top, 90.0);
 }

@@ -262,11 +262,13 @@ std::vector<MotionPrimitive> polygonCircle(double r, int n, double feed) {
 class TessellatedCircle : public ::testing::TestWithParam<double> {};
 
 TEST_P(TessellatedCircle, RunsAtFeedLikeTheCircle) {
-  // R 10 mm in 0.01 mm chords from rest to rest: a smooth chain. It must run like the arc:
-  // the same programmed feed, within a few percent of the arc's time, and within every axis
-  // limit. At F6000 this needs the chain's first and last lines to take the curvature of
-  // their one vertex: the path is at rest at their other end, so the chain's curvature
-  // starts and ends there without a step (a step limit would hold them near 5 mm/s).
+  // R 10 mm in 0.01 mm chords from rest to rest: a smooth chain, its chords bowed. It must run
+  // like the arc: the programmed feed (within the bows' speed bound, 1 + 2.5e-7), within 3 %
+  // of the arc's time (on the polygon, whose vertices' wiggle took a tenth of the jerk, it
+  // was 2 % slower at F6000), and within every axis limit. At F6000 this needs the chain's
+  // first and last lines bowed to a parabola where the path rests (else their curvature
+  // swings from twice the chain's to minus it), and the last one of the same limits as the
+  // others (else the braking ends at a = 0 before it and it is a profile of its own).
   const MachineConfig m = defaultMachine();
   const double r = 10.0, feed = GetParam();
   const int n = static_cast<int>(std::lround(2.0 * std::numbers::pi * r / 0.01));
@@ -276,15 +278,15 @@ TEST_P(TessellatedCircle, RunsAtFeedLikeTheCircle) {
   const Trace arc_trace = run(m, {arc(xyz(r, 0, 0), xyz(r, 0, 0), 0, 1, 0.0, 0.0, false, feed)});
   double top = 0.0;
   for (const auto& info : t.infos) top = std::max(top, info.velocity);
-  EXPECT_NEAR(top, feed / 60.0, 1e-9);
-  EXPECT_LT(static_cast<double>(t.ticks()), 1.03 * static_cast<double>(arc_trace.ticks()));
+  EXPECT_NEAR(top, feed / 60.0, 1e-6 * feed / 60.0);
+  EXPECT_LT(static_cast<double>(t.ticks()), 1.01 * static_cast<double>(arc_trace.ticks()));
   const Worst w = check(m, t);
   EXPECT_LE(w.velocity, 1.0 + kTolerance);
   EXPECT_LE(w.acceleration, 1.0 + kTolerance);
   EXPECT_LE(w.jerk, 1.0 + kTolerance);
   EXPECT_EQ(t.points.back(), prog.back().to);
-  // Chain vertices are passed as programmed: the path is the polygon itself.
-  EXPECT_LE(worstDeviation(t, prog), 1e-12);
+  // The bows leave the chords by at most their sagitta, c^2 / 8 r = 1.25 nm.
+  EXPECT_LE(worstDeviation(t, prog), 1.26e-6);
 }
 
 INSTANTIATE_TEST_SUITE_P(Corners, TessellatedCircle, ::testing::Values(3000.0, 6000.0));

@@ -14,6 +14,12 @@ namespace {
 constexpr double kInf = std::numeric_limits<double>::infinity();
 // Turns above this are never chain vertices (the chain model's small-angle bounds).
 constexpr double kChainMaxTurn = 0.1;
+// A chain is bowed where its curvature vector changes by at most this share from one vertex
+// to the next (ContinuousPath::bowVertex).
+constexpr double kSmoothChange = 0.1;
+// A bow's d2x/ds2 off the chain's reference by at most e reads in a sampled jerk as at most
+// 1.5 e v^2 / T (docs/planner.md, "Chains"), budgeted like a curvature step of 1.5 e.
+constexpr double kResidualWeight = 1.5;
 // What is left of a trimmed line below this length (mm) is not queued: the blends meet.
 constexpr double kNegligibleLength = 1e-9;
 
@@ -123,9 +129,81 @@ bool ContinuousPath::wiggleFits(const AxisValues& wiggle) const {
   return true;
 }
 
-PathSegment ContinuousPath::heldPart(const AxisValues& end, double end_trim) const {
+PathSegment ContinuousPath::heldPart(const AxisValues& end, double end_trim,
+                                     const BowVertex* end_bow) const {
   if (held_.arc) return held_arc_.part(held_.start_trim, held_arc_.length() - end_trim);
-  return PathSegment::line(held_.start, end, limits_.count);
+  if (!held_.start_bowed && end_bow == nullptr)
+    return PathSegment::line(held_.start, end, limits_.count);
+  static const AxisValues kStraight{};
+  return PathSegment::bow(held_.start, end, held_.start_bowed ? held_.start_bow.tangent : held_.direction,
+                          end_bow != nullptr ? end_bow->tangent : held_.direction,
+                          held_.start_bowed ? held_.start_bow.curvature : kStraight,
+                          end_bow != nullptr ? end_bow->curvature : kStraight, limits_.count);
+}
+
+std::optional<ContinuousPath::BowVertex> ContinuousPath::bowVertex(const HeldMove& next,
+                                                                   double theta) const {
+  const int n = limits_.count;
+  const double tolerance = limits_.corner_tolerance;
+  if (!(tolerance > 0.0)) return std::nullopt;
+  const HeldMove& a = held_;
+  // The vertex tangent turns from the held line's direction towards the next's by the share
+  // f of theta, the held line's share of the two lengths: on a circle in chords of any
+  // lengths, it is then the circle's tangent. The curvature vector: the chain's,
+  // (c_b - c_a) / mean length, less its part along that tangent.
+  BowVertex bow;
+  AxisValues chain{};  // the chain's curvature vector here
+  const double f = a.length / (a.length + next.length);
+  const double sine = std::sin(theta);
+  for (int i = 0; i < n; ++i) {
+    bow.tangent[i] = sine > 0.0 ? (std::sin((1.0 - f) * theta) * a.direction[i] +
+                                   std::sin(f * theta) * next.direction[i]) / sine
+                                : a.direction[i];
+    chain[i] = (next.direction[i] - a.direction[i]) / (0.5 * (a.length + next.length));
+  }
+  double norm = 0.0, along = 0.0;
+  for (int i = 0; i < n; ++i) norm += bow.tangent[i] * bow.tangent[i];
+  norm = std::sqrt(norm);
+  for (int i = 0; i < n; ++i) {
+    bow.tangent[i] /= norm;
+    along += chain[i] * bow.tangent[i];
+  }
+  for (int i = 0; i < n; ++i) bow.curvature[i] = chain[i] - along * bow.tangent[i];
+  // Both bows within the tolerance of their chords. The next line's far end is not known
+  // yet: checked straight there (it is bowed there only if that fits too).
+  static const AxisValues kStraight{};
+  const double held = PathSegment::bowOffset(
+      a.start, a.end, a.start_bowed ? a.start_bow.tangent : a.direction, bow.tangent,
+      a.start_bowed ? a.start_bow.curvature : kStraight, bow.curvature, n);
+  const double following = PathSegment::bowOffset(a.end, next.end, bow.tangent, next.direction,
+                                                  bow.curvature, kStraight, n);
+  if (!(std::max(held, following) <= tolerance)) return std::nullopt;
+  // A bow passes through its chord's ends. Where they are noisy (CAM coordinates rounded to
+  // 1 um on chords of a few tenths), its curvature turns with the noise, and the blends (or
+  // kinks) that smooth the corners within the tolerance instead are faster. The chain is
+  // taken as smooth where its curvature vector changes from the vertex before to this one by
+  // at most kSmoothChange of its size (on a circle in chords it turns by the chord's angle,
+  // a few thousandths).
+  AxisValues before{};
+  bool known = true;
+  if (a.start_bowed) {
+    before = a.start_bow.chain;
+  } else if (a.previous_length > 0.0) {
+    for (int i = 0; i < n; ++i)
+      before[i] = (a.direction[i] - a.previous_direction[i]) / (0.5 * (a.previous_length + a.length));
+  } else {
+    known = false;  // from rest: nothing before
+  }
+  double change = 0.0, size_before = 0.0, size_here = 0.0;
+  for (int i = 0; i < n; ++i) {
+    change += (chain[i] - before[i]) * (chain[i] - before[i]);
+    size_before += before[i] * before[i];
+    size_here += chain[i] * chain[i];
+  }
+  if (known && !(std::sqrt(change) <= kSmoothChange * std::sqrt(std::max(size_before, size_here))))
+    return std::nullopt;
+  bow.chain = chain;
+  return bow;
 }
 
 PathSegment ContinuousPath::heldProgrammed() const {
@@ -141,12 +219,45 @@ AxisValues ContinuousPath::involvedAxes(const HeldMove& next, const PathSegment&
   return involved;
 }
 
+ChainShape ContinuousPath::bowShape(const PathSegment& bow, const AxisValues& involved,
+                                    double& residual) const {
+  ChainShape chain;
+  chain.curvature = roundUp(bow.maxCurvature(), kCurvatureGridSteps);
+  // Two bounds of the sampled jerk hold (docs/planner.md, "Chains"): from d3x/ds3 itself,
+  // or from the chain's reference G' plus the residual's 1.5 e v^2 / T. The first is tight
+  // where the chain is noisy, the second where the bows are short (d3x/ds3 swings within
+  // each, which the samples average). The one that allows the higher speed on the weakest
+  // axes is taken.
+  const double jerk = kKinkFreeJerkShare * weakest(involved).jerk / 3.0;
+  const double own = bow.bowRateAlongChord() + bow.bowRateAcrossChord();
+  const double reference = bow.bowReferenceRateAlongChord() + bow.bowReferenceRateAcrossChord();
+  const double own_speed = own > 0.0 ? std::cbrt(jerk / own) : kInf;
+  const double reference_speed =
+      std::min(reference > 0.0 ? std::cbrt(jerk / reference) : kInf,
+               curvatureStepLimit(kResidualWeight * bow.bowResidualCurvature(), involved));
+  const bool by_reference = reference_speed > own_speed;
+  residual = by_reference ? bow.bowResidualCurvature() : 0.0;
+  chain.rate_along = roundUp(by_reference ? bow.bowReferenceRateAlongChord() : bow.bowRateAlongChord(),
+                             kCurvatureGridSteps);
+  // These three are small on a circle (a thousandth of the rotation, and 1e-7 and 1e-4 over
+  // 1) and change with every chord's length: coarser grids, so that a chain's bows share a
+  // few shapes and their limits are computed once.
+  chain.rate_across = roundUp(by_reference ? bow.bowReferenceRateAcrossChord() : bow.bowRateAcrossChord(),
+                              kWiggleGridSteps);
+  chain.speed = 1.0 + roundUp(bow.maxSpeed() - 1.0, 1.0);
+  chain.stretch = 1.0 + roundUp(bow.parameterStretch() - 1.0, 1.0);
+  return chain;
+}
+
 void ContinuousPath::queueHeld(const AxisValues& end, double end_trim, const EndVertex& vertex,
                                bool stop_after, bool end_at_rest) {
   const int n = limits_.count;
   QueuedSegment seg;
   seg.where = held_.where;
-  seg.path = heldPart(end, end_trim);
+  seg.path = heldPart(end, end_trim, vertex.bowed ? &vertex.bow : nullptr);
+  const bool start_at_rest = held_.start_limit <= 0.0, end_at_stop = stop_after || end_at_rest;
+  if (!held_.arc && held_.start_bowed != vertex.bowed && (vertex.bowed ? start_at_rest : end_at_stop))
+    bowRestingEnd(seg.path, vertex.bowed);
   seg.exact_stop = stop_after && held_.exact_stop;
   seg.feed_limit = held_.feed_limit;
   if (!(seg.path.length() > kNegligibleLength)) {
@@ -155,9 +266,8 @@ void ContinuousPath::queueHeld(const AxisValues& end, double end_trim, const End
     return;
   }
   // The room its ends need in the jerk (smoothJerkShare, limits.h).
-  const bool end_at_stop = stop_after || end_at_rest;
   const double jerk_share = smoothJerkShare(
-      held_.start_limit <= 0.0 && end_at_stop,
+      start_at_rest && end_at_stop,
       held_.start_kinked || ((vertex.kink_velocity > 0.0 || vertex.unknown) && !end_at_stop));
   if (held_.arc) {
     SegmentLimits limits = segmentLimits(seg.path, limits_, false, held_.feed, {}, jerk_share);
@@ -165,6 +275,10 @@ void ContinuousPath::queueHeld(const AxisValues& end, double end_trim, const End
     limits.acceleration = std::min(limits.acceleration,
                                    kinkAcceleration(limits.velocity, vertex));
     enqueue(seg, MotionPrimitive::Kind::Arc, limits, held_.start_limit, stop_after);
+    return;
+  }
+  if (seg.path.shape() == PathSegment::Shape::Bow) {
+    queueBow(seg, vertex, jerk_share, stop_after, end_at_stop);
     return;
   }
   ChainShape chain;
@@ -180,6 +294,7 @@ void ContinuousPath::queueHeld(const AxisValues& end, double end_trim, const End
                        (chain_end && vertex.next_direction[i] != 0.0);
     chain.involved[i] = moves ? 1.0 : 0.0;
   }
+  chain.rate_along = chain.curvature * chain.curvature;  // the circle's rotation
   SegmentLimits limits = chain.curvature > 0.0
                              ? chainLimits(seg.path, held_.feed, chain, jerk_share)
                              : segmentLimits(seg.path, limits_, false, held_.feed, chain, jerk_share);
@@ -206,19 +321,99 @@ void ContinuousPath::queueHeld(const AxisValues& end, double end_trim, const End
   enqueue(seg, MotionPrimitive::Kind::Line, limits, held_.start_limit, stop_after);
 }
 
+void ContinuousPath::bowRestingEnd(PathSegment& line, bool at_start) const {
+  // The chain's end bow is straight at an end where the path goes on moving (a kink, a
+  // blend). Where it rests, its tangent and curvature there are free: the mirror images of
+  // the other end's (across the chord's middle) make the bow symmetric, like an arc of the
+  // chain's curvature (straight there, its curvature would fall to 0 within the chord), if
+  // that stays within the tolerance.
+  const int n = limits_.count;
+  AxisValues t, k, c, t_mirrored, k_mirrored;
+  const double at = at_start ? line.length() : 0.0;
+  line.tangent(at, t);
+  line.curvature(at, k);
+  double chord = 0.0, t_along = 0.0, k_along = 0.0;
+  for (int i = 0; i < n; ++i) chord += (line.to()[i] - line.from()[i]) * (line.to()[i] - line.from()[i]);
+  chord = std::sqrt(chord);  // (a bow's length() is its arc's)
+  for (int i = 0; i < n; ++i) {
+    c[i] = (line.to()[i] - line.from()[i]) / chord;
+    t_along += t[i] * c[i];
+    k_along += k[i] * c[i];
+  }
+  for (int i = 0; i < n; ++i) {
+    t_mirrored[i] = 2.0 * t_along * c[i] - t[i];
+    k_mirrored[i] = k[i] - 2.0 * k_along * c[i];
+  }
+  const double offset =
+      at_start ? PathSegment::bowOffset(line.from(), line.to(), t_mirrored, t, k_mirrored, k, n)
+               : PathSegment::bowOffset(line.from(), line.to(), t, t_mirrored, k, k_mirrored, n);
+  if (!(offset <= limits_.corner_tolerance)) return;
+  line = at_start ? PathSegment::bow(line.from(), line.to(), t_mirrored, t, k_mirrored, k, n)
+                  : PathSegment::bow(line.from(), line.to(), t, t_mirrored, k, k_mirrored, n);
+}
+
+void ContinuousPath::queueBow(QueuedSegment& seg, const EndVertex& vertex, double jerk_share,
+                              bool stop_after, bool end_at_rest) {
+  const int n = limits_.count;
+  const bool chain_start = held_.start_curvature > 0.0, chain_end = vertex.curvature > 0.0;
+  AxisValues involved{};
+  for (int i = 0; i < n; ++i) {
+    const bool moves = held_.direction[i] != 0.0 ||
+                       (chain_start && held_.previous_direction[i] != 0.0) ||
+                       (chain_end && vertex.next_direction[i] != 0.0);
+    involved[i] = moves ? 1.0 : 0.0;
+  }
+  double residual = 0.0;
+  ChainShape chain = bowShape(seg.path, involved, residual);
+  chain.involved = involved;
+  // A polygon chain vertex at an end (no bow fitted there) keeps its wiggle.
+  for (int i = 0; i < n; ++i)
+    chain.wiggle[i] = roundUp(std::max(held_.start_wiggle[i], vertex.wiggle[i]), kWiggleGridSteps);
+  if (held_.start_bowed) {
+    // Along a chain the speed bound and the stretch only grow (to the chain's largest, a
+    // hair over 1): fewer shapes.
+    const ChainShape& before = last_bow_shape_;
+    chain.speed = std::max(chain.speed, before.speed);
+    chain.stretch = std::max(chain.stretch, before.stretch);
+  }
+  if (held_.start_bowed && !vertex.bowed && end_at_rest) {
+    // The last bow before a stop takes the shape of the one before it where that is larger,
+    // so that it joins its run (else the run's braking ends at a = 0 where it starts, and the
+    // last bow is a profile of its own: 12 ms at the end of a circle in 0.01 mm chords).
+    const ChainShape& before = last_bow_shape_;
+    chain.curvature = std::max(chain.curvature, before.curvature);
+    chain.rate_along = std::max(chain.rate_along, before.rate_along);
+    chain.rate_across = std::max(chain.rate_across, before.rate_across);
+    chain.speed = std::max(chain.speed, before.speed);
+    chain.stretch = std::max(chain.stretch, before.stretch);
+    for (int i = 0; i < n; ++i) chain.involved[i] = std::max(chain.involved[i], before.involved[i]);
+  }
+  last_bow_shape_ = chain;
+  SegmentLimits limits = chainLimits(seg.path, held_.feed, chain, jerk_share);
+  // Below the feed (over the speed bound, the same for the chain's bows), rounded down like
+  // a polygon chain's lines so that neighbours join one run.
+  const double feed_cap = held_.feed / chain.speed;
+  limits.velocity = std::min(limits.velocity,
+                             curvatureStepLimit(kResidualWeight * residual, chain.involved));
+  if (limits.velocity < feed_cap) limits.velocity = roundDown(limits.velocity, kLimitGridSteps);
+  limits.acceleration = roundDown(limits.acceleration, kLimitGridSteps);
+  limits.jerk = roundDown(limits.jerk, kLimitGridSteps);
+  keepSpeedCap(limits, true);
+  limits.acceleration = std::min(limits.acceleration, kinkAcceleration(limits.velocity, vertex));
+  enqueue(seg, MotionPrimitive::Kind::Line, limits, held_.start_limit, stop_after);
+}
+
 SegmentLimits ContinuousPath::chainLimits(const PathSegment& line, double feed,
                                           const ChainShape& chain, double jerk_share) {
   // A chain line's limits depend on nothing else: its tangent and normal are bounded by 1 on
   // every involved axis (limits.h), whatever its direction.
   for (const ChainLimits& c : chain_cache_) {
-    if (c.valid && c.feed == feed && c.jerk_share == jerk_share && c.curvature == chain.curvature &&
-        c.wiggle == chain.wiggle && c.involved == chain.involved)
+    if (c.valid && c.feed == feed && c.jerk_share == jerk_share && c.shape == chain)
       return c.limits;
   }
   ChainLimits& slot = chain_cache_[chain_cache_next_];
   chain_cache_next_ = (chain_cache_next_ + 1) % chain_cache_.size();
-  slot = {true, feed, jerk_share, chain.curvature, chain.wiggle, chain.involved,
-          segmentLimits(line, limits_, false, feed, chain, jerk_share)};
+  slot = {true, feed, jerk_share, chain, segmentLimits(line, limits_, false, feed, chain, jerk_share)};
   return slot.limits;
 }
 
@@ -339,6 +534,19 @@ bool ContinuousPath::move(const PathSegment& programmed, double feed, double fee
                 false);
       next.start_limit = kink;
       next.start_kinked = true;
+    } else if (const std::optional<BowVertex> bow =
+                   lines && theta <= kChainMaxTurn
+                       ? bowVertex(next, theta)
+                       : std::nullopt) {
+      // Bowed chain vertex: both lines planned as the curve through it, bowed to its tangent.
+      queueHeld(a.end, 0.0,
+                {.next_direction = next.direction, .next_length = next.length, .curvature = kappa,
+                 .bowed = true, .bow = *bow},
+                false);
+      next.start_limit = kInf;
+      next.start_curvature = kappa;
+      next.start_bowed = true;
+      next.start_bow = *bow;
     } else if (lines && theta <= kChainMaxTurn && wiggleFits(wiggle)) {
       // Chain vertex: passed as is, both lines planned as the curve through it.
       queueHeld(a.end, 0.0, {next.direction, next.length, kappa, wiggle}, false);
@@ -348,7 +556,9 @@ bool ContinuousPath::move(const PathSegment& programmed, double feed, double fee
     } else {
       // Candidates that keep the geometry: the kink rule (small turns), else a stop; both
       // with the curvature step where a chain ends here.
-      const double chain_end = curvatureStepLimit(a.start_curvature, involved);
+      // (A bowed line ends straight and without curvature where the chain ends: no step.)
+      const double chain_end =
+          curvatureStepLimit(a.start_bowed ? 0.0 : a.start_curvature, involved);
       const double unblended = std::min(kink, chain_end);
       if (!blendCorner(next, programmed, theta, unblended, chain_end)) {
         const bool stop = unblended <= 0.0;

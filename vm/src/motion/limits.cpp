@@ -47,26 +47,29 @@ SegmentLimits segmentLimits(const PathSegment& path, const AxisLimits& machine_a
                             double feed, const ChainShape& chain, double jerk_share) {
   // A spiral's s is not quite its arc length: the bounds below assume it is, and hold with
   // the feed and the axis accelerations and jerks divided by its stretch (path.h).
-  const double stretch = path.parameterStretch();
+  const bool in_chain = chain.curvature > 0.0;
+  const double stretch = in_chain ? chain.stretch : path.parameterStretch();
   std::optional<AxisLimits> stretched;  // constructed only for a spiral
   const AxisLimits& axes =
       stretch == 1.0 ? machine_axes : stretched.emplace(stretchedLimits(machine_axes, stretch));
-  SegmentLimits lim{rapid ? kInf : feed / stretch, kInf, kInf};
+  // A chain's bow keeps the feed with its speed bound (its stretch is for the norm bounds).
+  SegmentLimits lim{rapid ? kInf : feed / (in_chain ? chain.speed : stretch), kInf, kInf};
   AxisValues t, q;
   path.maxTangent(t);
-  const bool in_chain = chain.curvature > 0.0;
   double kappa = path.maxCurvature();  // curvature bound
   double rate = path.maxCurvatureRate();
+  double rate_across = rate;  // the part of the rate not along the tangent
   path.normalShare(q);
   if (in_chain) {
-    // The chain's curve turns around the line's direction by at most `turn` each side.
     kappa = chain.curvature;
-    rate = kappa * kappa;
-    // The curve's tangent turns around the line's direction: bound it by 1 on every axis
-    // involved, which also makes the limits of neighbouring lines equal (they join one run).
+    rate = chain.rate_along + chain.rate_across;
+    rate_across = chain.rate_across;
+    // The curve's tangent turns around the line's direction: bound it by the chain's speed
+    // bound on every axis involved, which also makes the limits of neighbouring lines equal
+    // (they join one run).
     for (int i = 0; i < axes.count; ++i) {
       q[i] = chain.involved[i];
-      t[i] = std::max(t[i], q[i]);
+      t[i] = chain.speed * q[i];
     }
   }
   const bool curved = kappa > 0.0;
@@ -112,10 +115,12 @@ SegmentLimits segmentLimits(const PathSegment& path, const AxisLimits& machine_a
   TangentialBudget budget;
   // A plane circle, or a chain line planned as one: the rotation term lies along the tangent.
   const bool circle = in_chain || path.isPlaneCircle();
-  RampEnvelope envelope(v, kappa, rate, circle);
+  if (path.isPlaneCircle()) rate_across = 0.0;
+  RampEnvelope envelope(v, kappa, rate, circle, circle ? rate_across : 0.0);
   const double centripetal = curved ? v * v * kappa : 0.0;
   const double cross = curved ? 3.0 * v * kappa : 0.0;  // the cross term 3 v a_t k, per a_t
   const double rotation = curved ? v * v * v * rate : 0.0;
+  const double rotation_across = curved ? v * v * v * rate_across : 0.0;
   double speed_share = 0.0;  // largest share of an axis limit the speed-dependent terms take
   for (int i = 0; i < axes.count; ++i) {
     if (t[i] == 0.0 && (!curved || q[i] == 0.0)) continue;
@@ -129,8 +134,8 @@ SegmentLimits segmentLimits(const PathSegment& path, const AxisLimits& machine_a
     const double jerk = jerk_share * axes.jerk[i] - wiggleJerk(i);
     const bool norm = curved && q[i] > 0.0;
     budget.add({t[i], cross * q[i], jerk - rotation * q[i], norm ? cross : 0.0,
-                norm ? (circle ? jerk : jerk - rotation) : 0.0,
-                norm && circle ? rotation : 0.0});
+                norm ? (circle ? jerk - rotation_across : jerk - rotation) : 0.0,
+                norm && circle ? rotation - rotation_across : 0.0});
     if (curved) {
       envelope.add({t[i], q[i], acc, jerk});
       speed_share = std::max({speed_share, centripetal * q[i] / acc, rotation * q[i] / jerk});

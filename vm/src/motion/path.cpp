@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <numeric>
 
 namespace ncc::vm::motion {
 namespace {
@@ -126,6 +127,8 @@ double PathSegment::distanceTo(const AxisValues& q) const {
     for (int i = 0; i < axis_count_; ++i) sum += (q[i] - p[i]) * (q[i] - p[i]);
     return std::sqrt(sum);
   };
+  if (shape_ == Shape::Bow || shape_ == Shape::Blend || shape_ == Shape::Dwell)
+    return std::numeric_limits<double>::infinity();
   if (shape_ == Shape::Line) {
     double along = 0.0;
     for (int i = 0; i < axis_count_; ++i) along += (q[i] - from_[i]) * delta_[i];
@@ -269,6 +272,10 @@ void PathSegment::position(double s, AxisValues& out) const {
     blend_.position(s, out);
     return;
   }
+  if (shape_ == Shape::Bow) {
+    bowPosition(s, out);
+    return;
+  }
   const double f = isSpiral() ? spiralFraction(s) : s / length_;
   out = from_;
   for (int i = 0; i < axis_count_; ++i) out[i] = from_[i] + delta_[i] * f;
@@ -285,6 +292,13 @@ void PathSegment::tangent(double s, AxisValues& out) const {
   if (shape_ == Shape::Dwell || length_ == 0.0) return;
   if (shape_ == Shape::Blend) {
     blend_.tangent(std::clamp(s, 0.0, length_), out);
+    return;
+  }
+  if (shape_ == Shape::Bow) {
+    bowVelocity(s, out);
+    const double n = std::sqrt(std::inner_product(out.begin(), out.begin() + axis_count_,
+                                                  out.begin(), 0.0));
+    for (int i = 0; i < axis_count_; ++i) out[i] /= n;
     return;
   }
   for (int i = 0; i < axis_count_; ++i) out[i] = delta_[i] / length_;
@@ -309,6 +323,10 @@ void PathSegment::curvature(double s, AxisValues& out) const {
     blend_.curvature(std::clamp(s, 0.0, length_), out);
     return;
   }
+  if (shape_ == Shape::Bow) {
+    bowCurvature(s, out);
+    return;
+  }
   if (shape_ != Shape::Arc) return;
   if (isSpiral()) {
     spiralCurvature(s, out);
@@ -326,6 +344,10 @@ void PathSegment::maxTangent(AxisValues& out) const {
   if (shape_ == Shape::Dwell || length_ == 0.0) return;
   if (shape_ == Shape::Blend) {  // the tangent turns in the blend's plane
     for (int i = 0; i < axis_count_; ++i) out[i] = blend_.planeShare(i);
+    return;
+  }
+  if (shape_ == Shape::Bow) {
+    out = bow_bounds_.tangent;
     return;
   }
   if (isSpiral()) {
@@ -348,7 +370,26 @@ double PathSegment::maxPlaneSpeed() const {
   return isSpiral() ? spiralBounds().plane_speed : plane_share_;
 }
 
-double PathSegment::parameterStretch() const { return isSpiral() ? spiralBounds().stretch : 1.0; }
+double PathSegment::parameterStretch() const {
+  if (shape_ == Shape::Bow) return bow_bounds_.stretch;
+  return isSpiral() ? spiralBounds().stretch : 1.0;
+}
+
+double PathSegment::maxSpeed() const { return shape_ == Shape::Bow ? bow_bounds_.speed : 1.0; }
+
+double PathSegment::bowReferenceRateAlongChord() const { return bow_bounds_.reference_along; }
+
+double PathSegment::bowReferenceRateAcrossChord() const {
+  return bow_bounds_.reference_across + bow_bounds_.off_chord * bow_bounds_.reference_rate;
+}
+
+double PathSegment::bowResidualCurvature() const { return bow_bounds_.residual; }
+
+double PathSegment::bowRateAlongChord() const { return bow_bounds_.rate_along; }
+
+double PathSegment::bowRateAcrossChord() const {
+  return bow_bounds_.rate_across + bow_bounds_.off_chord * bow_bounds_.rate;
+}
 
 double PathSegment::radius() const {
   if (!isSpiral()) return r0_;
@@ -362,6 +403,7 @@ double PathSegment::radius() const {
 // A circle's |d2x/ds2| and |d3x/ds3| are r w^2 and r |w|^3, with w = plane share / r.
 double PathSegment::maxCurvature() const {
   if (shape_ == Shape::Blend) return blend_.maxCurvature();
+  if (shape_ == Shape::Bow) return bow_bounds_.curvature;
   if (shape_ != Shape::Arc) return 0.0;
   if (isSpiral()) return spiralBounds().curvature;
   return plane_share_ * plane_share_ / r0_;
@@ -369,6 +411,7 @@ double PathSegment::maxCurvature() const {
 
 double PathSegment::maxCurvatureRate() const {
   if (shape_ == Shape::Blend) return blend_.maxCurvatureRate();
+  if (shape_ == Shape::Bow) return bow_bounds_.rate;
   if (shape_ != Shape::Arc) return 0.0;
   if (isSpiral()) return spiralBounds().curvature_rate;
   return plane_share_ * plane_share_ * plane_share_ / (r0_ * r0_);
@@ -378,6 +421,10 @@ void PathSegment::normalShare(AxisValues& out) const {
   out = AxisValues{};
   if (shape_ == Shape::Blend) {
     for (int i = 0; i < axis_count_; ++i) out[i] = blend_.planeShare(i);
+  } else if (shape_ == Shape::Bow) {
+    const double k = bow_bounds_.curvature;
+    for (int i = 0; i < axis_count_; ++i)
+      out[i] = k > 0.0 ? bow_bounds_.axis_curvature[i] / k : 0.0;
   } else if (shape_ == Shape::Arc) {
     if (isSpiral()) {
       // The other axes speed up and slow down a little with the spiral's speed.

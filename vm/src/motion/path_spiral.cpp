@@ -61,14 +61,21 @@ void PathSegment::spiralCurvature(double s, AxisValues& out) const {
 
 void PathSegment::geometricCurvature(double s, AxisValues& out) const {
   curvature(s, out);
-  if (!isSpiral()) return;
+  if (!isSpiral() && shape_ != Shape::Bow) return;
   AxisValues t;
   tangent(s, t);
   double along = 0.0;
   for (int i = 0; i < axis_count_; ++i) along += out[i] * t[i];
-  // |dx/ds| = G / S at the angle reached.
-  const double f = spiralFraction(s);
-  const double speed = spiralTrueRate(r0_ + (r1_ - r0_) * f) / (rate0_ + (rate1_ - rate0_) * f);
+  double speed = 0.0;  // |dx/ds|
+  if (shape_ == Shape::Bow) {
+    AxisValues v;
+    bowVelocity(s, v);
+    for (int i = 0; i < axis_count_; ++i) speed += v[i] * v[i];
+    speed = std::sqrt(speed);
+  } else {  // G / S at the angle reached
+    const double f = spiralFraction(s);
+    speed = spiralTrueRate(r0_ + (r1_ - r0_) * f) / (rate0_ + (rate1_ - rate0_) * f);
+  }
   for (int i = 0; i < axis_count_; ++i) out[i] = (out[i] - along * t[i]) / (speed * speed);
 }
 

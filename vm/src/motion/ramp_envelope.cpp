@@ -23,7 +23,7 @@ RampEnvelope::Interval RampEnvelope::interval(int first, int end) const {
   const double u0 = top_ * first / kFinestIntervals;
   const double u1 = end == kFinestIntervals ? top_ : top_ * end / kFinestIntervals;
   return {top_ - u0, u1 * u1 * curvature_, 3.0 * u1 * curvature_,
-          u1 * u1 * u1 * rate_};
+          u1 * u1 * u1 * rate_, u1 * u1 * u1 * rate_across_};
 }
 
 bool RampEnvelope::holds(double a, double j, Resolution resolution) const {
@@ -59,7 +59,8 @@ bool RampEnvelope::holdsOn(const Interval& iv, double a, double j) const {
         (on_plane && alpha * alpha + centripetal * centripetal <= x.acceleration * x.acceleration);
     const bool norm_ok =
         on_plane && rotation <= x.jerk &&
-        (along_tangent_ ? (j + rotation) * (j + rotation) + cross * cross <= x.jerk * x.jerk
+        (along_tangent_ ? (j + rotation - iv.across) * (j + rotation - iv.across) + cross * cross <=
+                              (x.jerk - iv.across) * (x.jerk - iv.across)
                         : j * j + cross * cross <= (x.jerk - rotation) * (x.jerk - rotation));
     const bool jerk_ok = j * x.tangent + (cross + rotation) * x.normal <= x.jerk || norm_ok;
     if (!acceleration_ok || !jerk_ok) return false;
@@ -142,12 +143,12 @@ double RampEnvelope::jerkBoundOn(const Interval& iv, double a) const {
                            : (b > 0.0 ? left / b : kInf);
       sum = std::min(s * s, j_switch);
     }
-    // Norm form: (j + r)^2 + (c3 alpha)^2 <= J^2 with r = rotation along the tangent, else
-    // j^2 + (c3 alpha)^2 <= (J - rotation)^2 (r = 0, J - rotation for J).
+    // Norm form: (j + r)^2 + (c3 alpha)^2 <= (J - across)^2 with r the rotation along the
+    // tangent, else j^2 + (c3 alpha)^2 <= (J - rotation)^2 (r = 0, J - rotation for J).
     double norm = -kInf;
     if (on_plane && rotation <= x.jerk) {
-      const double r = along_tangent_ ? rotation : 0.0;
-      const double top = along_tangent_ ? x.jerk : x.jerk - rotation;
+      const double r = along_tangent_ ? rotation - iv.across : 0.0;
+      const double top = x.jerk - (along_tangent_ ? iv.across : rotation);
       const double c = top * top;
       if (c3 * a * c3 * a <= c && std::sqrt(c - c3 * a * c3 * a) - r >= j_switch) {
         norm = std::sqrt(c - c3 * a * c3 * a) - r;

@@ -3,11 +3,14 @@
 //
 // A feed move (a line or an arc) is held back until the next primitive shows what happens at
 // its end (turning angle theta between the end tangent and the next move's start tangent):
-//  - chain (lines only): both lines are short enough that the polygon stays within a few
-//    nanometres of a smooth curve through its vertices (a CAM-tessellated circle or spline).
-//    The vertex is passed as is and the lines are planned as that curve (curvature from the
-//    circle through the vertices, limits.h ChainShape); the rest of the polygon's deviation is
-//    budgeted as "wiggle" in the sampled acceleration and jerk.
+//  - chain (lines only, turns up to kChainMaxTurn): the lines are chords of a smooth curve (a
+//    CAM-tessellated circle or spline), planned as that curve (curvature from the circle
+//    through the vertices, limits.h ChainShape). With a corner tolerance, each chord is
+//    bowed (path.h PathSegment::bow): the vertex gets one tangent, the turn split between
+//    its chords in proportion to their lengths, so the path passes it without a velocity
+//    step; a bow stays within the tolerance of its chord. Without a tolerance (or where a bow
+//    would leave it), the polygon itself is followed where it stays within a few nanometres
+//    of the curve, its deviation budgeted as "wiggle" in the sampled acceleration and jerk.
 //  - blend: the corner is replaced by a curvature-continuous CornerBlend that stays within
 //    the machine's corner tolerance, trimming at most half of each move, when passing the
 //    blend is faster than stopping (with a small tolerance and a low jerk limit a blend is
@@ -21,6 +24,7 @@
 // its end is known or nothing can follow (flush).
 #include <array>
 #include <cstddef>
+#include <optional>
 
 #include "ncc/vm/events.h"
 #include "ncc/vm/motion/limits.h"
@@ -58,6 +62,13 @@ class ContinuousPath {
   bool joinsMoving(MotionPrimitive::Kind kind) const;
 
  private:
+  // A bowed chain vertex: the unit tangent and the curvature vector (normal to it) both its
+  // bows take there, and the chain's curvature vector, (c_b - c_a) / mean length.
+  struct BowVertex {
+    AxisValues tangent{};
+    AxisValues curvature{};
+    AxisValues chain{};
+  };
   struct HeldMove {
     bool active = false;
     bool arc = false;        // an arc (its geometry: held_arc_), else a line
@@ -74,6 +85,9 @@ class ContinuousPath {
     bool exact_stop = false;       // G09/G61
     double start_limit = 0.0;      // junction velocity limit at `start`
     double start_curvature = 0.0;  // chain curvature at its start vertex (0: not a chain vertex)
+    // Its start vertex is a bowed chain vertex (BowVertex).
+    bool start_bowed = false;
+    BowVertex start_bow{};
     AxisValues start_wiggle{};     // the polygon's deviation from the chain's curve there,
                                    // per axis (ChainShape::wiggle)
     AxisValues previous_direction{};  // end tangent of the move before it (zero if none)
@@ -90,6 +104,8 @@ class ContinuousPath {
     AxisValues wiggle{};          // the chain's wiggle there (ChainShape::wiggle)
     double kink_velocity = 0.0;   // a kink passed at this speed (0: not a kink)
     bool unknown = false;         // what follows is not known yet: it may join at a kink
+    bool bowed = false;           // a bowed chain vertex (HeldMove::start_bowed)
+    BowVertex bow{};
   };
 
   // Queues the held move from its start to `end` (an arc: to `end_trim` before its programmed
@@ -98,9 +114,24 @@ class ContinuousPath {
   // or what follows starts from rest).
   void queueHeld(const AxisValues& end, double end_trim, const EndVertex& vertex,
                  bool stop_after, bool end_at_rest = false);
+  // Queues `seg`, the held line bowed at one end or both, planned as its chain's curve
+  // (bowShape).
+  void queueBow(QueuedSegment& seg, const EndVertex& vertex, double jerk_share, bool stop_after,
+                bool end_at_rest);
+  // `line`, a chain's first or last line bowed at its other end only, bowed at its end where
+  // the path rests too (at its start if `at_start`), where the tolerance allows.
+  void bowRestingEnd(PathSegment& line, bool at_start) const;
   // What is left of the held move from its start to `end_trim` before its programmed end
-  // (a line: to `end`).
-  PathSegment heldPart(const AxisValues& end, double end_trim) const;
+  // (a line: to `end`, bowed where its start is a bowed vertex, or to `end_bow`).
+  PathSegment heldPart(const AxisValues& end, double end_trim,
+                       const BowVertex* end_bow = nullptr) const;
+  // The bow of a chain vertex between the held line and the line `next` turning by `theta`,
+  // if the corner tolerance allows one (the bows of both lines within it) and the chain is
+  // smooth there (not noise: its curvature changes little from the vertex before).
+  std::optional<BowVertex> bowVertex(const HeldMove& next, double theta) const;
+  // The shape a bowed chain line `bow` moving the axes `involved` is planned with (its
+  // bounds, on grids), and the residual curvature its speed is capped for (0: none).
+  ChainShape bowShape(const PathSegment& bow, const AxisValues& involved, double& residual) const;
   // The held move as programmed.
   PathSegment heldProgrammed() const;
   // The axes the held move or `next` (programmed as `next_path`) moves (1), and those it
@@ -151,10 +182,11 @@ class ContinuousPath {
   PathSegment held_arc_;
   struct ChainLimits {
     bool valid = false;
-    double feed = 0.0, jerk_share = 0.0, curvature = 0.0;
-    AxisValues wiggle{}, involved{};
+    double feed = 0.0, jerk_share = 0.0;
+    ChainShape shape;
     SegmentLimits limits;
   };
+  ChainShape last_bow_shape_;  // the shape of the last bow queued (queueBow)
   std::array<ChainLimits, 32> chain_cache_{};  // the last shapes seen, replaced in turn
   std::size_t chain_cache_next_ = 0;
 };

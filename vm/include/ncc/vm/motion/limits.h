@@ -122,15 +122,26 @@ struct SegmentLimits {
   double jerk = 0.0;          // mm/s^3, tangential
 };
 
-// A line that is part of a smooth chain of short lines (continuous_path.h): the curvature of
-// the curve the chain follows near it; per axis, the polygon's largest distance from that
-// curve along the axis ("wiggle", mm: the sagitta on the axes its vertices turn, 0 on the
-// others); and per axis 1 if the axis moves on it or on a neighbour across a chain vertex
-// (the curve's tangent and normal may point along it), else 0.
+// A line or bow that is part of a smooth chain of short lines (continuous_path.h), planned as
+// a curve:
+//  - curvature: bound of |d2x/ds2| on it (the chain's curvature);
+//  - rate_along, rate_across: bound of the rate of change of the curvature vector (d3x/ds3,
+//    or of the smooth reference a bow's is measured against, continuous_path.cpp), split
+//    into its part along the tangent (a circle's rotation, -k^2 T, which combines exactly
+//    with the tangential jerk) and the rest;
+//  - speed: bound of |dx/ds| (1 on a line; a hair over on a bow), and the stretch (path.h
+//    parameterStretch; 1 on a line);
+//  - wiggle, per axis: on a polygon's line, its largest distance from the curve along the
+//    axis (mm: the sagitta on the axes its vertices turn, 0 on the others); 0 on a bow;
+//  - involved, per axis: 1 if the axis moves on it or on a neighbour across a chain vertex
+//    (the curve's tangent and normal may point along it), else 0.
 struct ChainShape {
   double curvature = 0.0;
+  double rate_along = 0.0, rate_across = 0.0;
+  double speed = 1.0, stretch = 1.0;
   AxisValues wiggle{};
   AxisValues involved{};
+  bool operator==(const ChainShape&) const = default;
 };
 
 // `feed` is the programmed path speed in mm/s (ignored for rapids, which run at the axes'

@@ -7,7 +7,11 @@
 // with the angle: a helix. The parametrisation is exact for circles and helices (constant
 // speed in s). A spiral's is exact at its ends and within a hair of it between
 // (path_spiral.cpp, parameterStretch()). A blend is the
-// G64 corner blend between two lines (corner_blend.h).
+// G64 corner blend between two lines (corner_blend.h). A bow is a chord of a smooth chain
+// (continuous_path.h) drawn as the quintic through its ends with the chain's tangents and
+// curvatures there (path_bow.cpp): s is the chord's length fraction, |dx/ds| is 1 and
+// d2x/ds2 the given curvature at both ends.
+#include <array>
 #include <cstdint>
 
 #include "ncc/machine/axes.h"
@@ -17,7 +21,7 @@ namespace ncc::vm::motion {
 
 class PathSegment {
  public:
-  enum class Shape : uint8_t { Line, Arc, Blend, Dwell };
+  enum class Shape : uint8_t { Line, Arc, Blend, Bow, Dwell };
 
   // Straight move over the first `axis_count` axes.
   static PathSegment line(const AxisValues& from, const AxisValues& to, int axis_count);
@@ -30,6 +34,14 @@ class PathSegment {
   // lines end and start).
   static PathSegment blend(const AxisValues& from, const AxisValues& to, const CornerBlend& curve,
                            int axis_count);
+  // The chord from `from` to `to` bowed so that its unit tangents at the ends are
+  // `start_tangent` and `end_tangent` and its curvature vectors (normal to them)
+  // `start_curvature` and `end_curvature` (path_bow.cpp); a line where the tangents are its
+  // direction and the curvatures zero.
+  static PathSegment bow(const AxisValues& from, const AxisValues& to,
+                         const AxisValues& start_tangent, const AxisValues& end_tangent,
+                         const AxisValues& start_curvature, const AxisValues& end_curvature,
+                         int axis_count);
   // Standing still at `at` (a dwell).
   static PathSegment dwell(const AxisValues& at, int axis_count);
 
@@ -54,13 +66,14 @@ class PathSegment {
 
   // Position at path length s; s <= 0 gives `from` and s >= length gives `to` bit-for-bit.
   void position(double s, AxisValues& out) const;
-  // Unit tangent dx/ds at s.
+  // Unit tangent dx/ds at s (a bow: the direction of dx/ds, whose length is a hair over 1
+  // between its ends).
   void tangent(double s, AxisValues& out) const;
   // Curvature vector d2x/ds2 at s (zero on lines).
   void curvature(double s, AxisValues& out) const;
   // The geometry's curvature vector at s, what a corner blend joining there must match:
-  // curvature() except inside a spiral, whose speed |dx/ds| is a hair under 1 there, so that
-  // d2x/ds2 is this times |dx/ds|^2 plus a part along the tangent.
+  // curvature() except inside a spiral or a bow, whose speed |dx/ds| is a hair off 1 there, so
+  // that d2x/ds2 is this times |dx/ds|^2 plus a part along the tangent.
   void geometricCurvature(double s, AxisValues& out) const;
 
   // Upper bound of |dx_i/ds| over the whole segment, per axis: what projects the path
@@ -87,6 +100,24 @@ class PathSegment {
   // Arcs: the plane's axes.
   int planeAxis1() const { return axis1_; }
   int planeAxis2() const { return axis2_; }
+  // The largest distance of the bow PathSegment::bow(...) would make from its chord, at most.
+  static double bowOffset(const AxisValues& from, const AxisValues& to,
+                          const AxisValues& start_tangent, const AxisValues& end_tangent,
+                          const AxisValues& start_curvature, const AxisValues& end_curvature,
+                          int axis_count);
+  // Bows: the largest |dx/ds| (1 at the ends; a hair over between). 1 on other shapes.
+  double maxSpeed() const;
+  // Bows: the chain's reference curvature G (docs/planner.md, "Chains"), linear from the
+  // curvature vector at the start to the one at the end: the part of its rate G' along the
+  // chord's direction, and the rest plus what the tangent's turn from the chord adds to it (a
+  // circle's G' lies along its tangent: limits.h ChainShape); and the largest distance of
+  // d2x/ds2 from G.
+  double bowReferenceRateAlongChord() const;
+  double bowReferenceRateAcrossChord() const;
+  double bowResidualCurvature() const;
+  // Bows: the same two parts of d3x/ds3 itself.
+  double bowRateAlongChord() const;
+  double bowRateAcrossChord() const;
   // An arc whose end radius differs from its start radius.
   bool isSpiral() const { return shape_ == Shape::Arc && r0_ != r1_; }
   // A circle in its plane (an arc without helix or spiral part): its rotation term,
@@ -124,6 +155,31 @@ class PathSegment {
   SpiralBounds computeSpiralBounds() const;
   const SpiralBounds& spiralBounds() const { return spiral_bounds_; }
 
+  // Bows (path_bow.cpp): x(u) = from + u (to - from) + the quintic Hermite weights times
+  // bow_ = {S t0 - D, S t1 - D, S^2 k0, S^2 k1}, u = s / S, S = length_. The bounds from
+  // them, set with them.
+  void setBowBounds();
+  // A bow's length in s (path_bow.cpp): its chord `delta` stretched for its end tangents.
+  static double bowLength(const AxisValues& delta, const AxisValues& start_tangent,
+                          const AxisValues& end_tangent, int axis_count);
+  void bowPosition(double s, AxisValues& out) const;
+  void bowVelocity(double s, AxisValues& out) const;   // dx/ds
+  void bowCurvature(double s, AxisValues& out) const;  // d2x/ds2
+  struct BowBounds {
+    double speed = 0.0;              // of |dx/ds|
+    AxisValues tangent{};            // of |dx_i/ds|
+    double curvature = 0.0;          // of |d2x/ds2|
+    AxisValues axis_curvature{};     // of |d2x_i/ds2|
+    double rate = 0.0;               // of |d3x/ds3|
+    double rate_along = 0.0;         // of its part along the chord
+    double rate_across = 0.0;        // of the rest
+    double off_chord = 0.0;          // of the sine of the tangent's angle to the chord
+    double reference_rate = 0.0;     // |G'| (bowReferenceRateAlongChord)
+    double reference_along = 0.0, reference_across = 0.0;
+    double residual = 0.0;           // of |d2x/ds2 - G|
+    double stretch = 1.0;            // parameterStretch()
+  };
+
   Shape shape_ = Shape::Dwell;
   int axis_count_ = 0;
   AxisValues from_{};
@@ -137,6 +193,8 @@ class PathSegment {
   double plane_share_ = 0.0;
   double rate0_ = 0.0, rate1_ = 0.0;  // spirals: ds/dphi at the ends (mm/rad)
   SpiralBounds spiral_bounds_{};      // spirals: computeSpiralBounds(), set with the parameter
+  std::array<AxisValues, 4> bow_{};  // bows
+  BowBounds bow_bounds_{};
   CornerBlend blend_;  // Blend only
 };
 

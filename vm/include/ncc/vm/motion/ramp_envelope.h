@@ -46,9 +46,13 @@ class RampEnvelope {
   // `rate` (|d3x/ds3|). `rotation_along_tangent`: the curve is a circle (a plane arc, or a
   // chain line planned as one), whose rotation term v^3 d3x/ds3 = -v^3 k^2 T combines with
   // the tangential jerk exactly: the norm form is then (j + v^3 rho)^2 + (3 v k a)^2 <= J^2
-  // (the worst sign, j_t = -j), not sqrt(j^2 + (3 v k a)^2) <= J - v^3 rho.
-  RampEnvelope(double top, double curvature, double rate, bool rotation_along_tangent = false)
-      : top_(top), curvature_(curvature), rate_(rate), along_tangent_(rotation_along_tangent) {}
+  // (the worst sign, j_t = -j), not sqrt(j^2 + (3 v k a)^2) <= J - v^3 rho. `rate_across`
+  // (with rotation_along_tangent): the part of `rate` that is not along the tangent (a bow's
+  // chain, limits.h ChainShape), taken off J in the norm form.
+  RampEnvelope(double top, double curvature, double rate, bool rotation_along_tangent = false,
+               double rate_across = 0.0)
+      : top_(top), curvature_(curvature), rate_(rate), rate_across_(rate_across),
+        along_tangent_(rotation_along_tangent) {}
   void add(const Axis& axis);
 
   // (acceleration, jerk) in: limits that already hold at the top speed (TangentialBudget's);
@@ -74,6 +78,7 @@ class RampEnvelope {
     double centripetal;      // u1^2 k
     double cross_per_alpha;  // 3 u1 k (the cross term is this times a_t)
     double rotation;         // u1^3 rho
+    double across;           // the part of it not along the tangent (along_tangent_ only)
   };
   Interval interval(int first, int end) const;
   // Whether every axis is within its limits over `iv` (its bounds only, no halving).
@@ -89,7 +94,7 @@ class RampEnvelope {
   // form of jerkBound when holds() confirms it, else a bisection.
   double largestJerk(double a, double floor, double cap, Resolution resolution) const;
 
-  double top_, curvature_, rate_;
+  double top_, curvature_, rate_, rate_across_;
   bool along_tangent_;
   std::array<Axis, kMaxAxes> axes_{};
   int count_ = 0;
