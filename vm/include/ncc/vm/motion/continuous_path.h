@@ -6,11 +6,13 @@
 //  - chain (lines only, turns up to kChainMaxTurn): the lines are chords of a smooth curve (a
 //    CAM-tessellated circle or spline), planned as that curve (curvature from the circle
 //    through the vertices, limits.h ChainShape). With a corner tolerance, each chord is
-//    bowed (path.h PathSegment::bow): the vertex gets one tangent, the turn split between
-//    its chords in proportion to their lengths, so the path passes it without a velocity
-//    step; a bow stays within the tolerance of its chord. Without a tolerance (or where a bow
-//    would leave it), the polygon itself is followed where it stays within a few nanometres
-//    of the curve, its deviation budgeted as "wiggle" in the sampled acceleration and jerk.
+//    bowed (path.h PathSegment::bow): the vertex gets one tangent (the turn split between
+//    its chords in proportion to their lengths) and one curvature vector, so the path passes
+//    it with continuous velocity and acceleration; a bow stays within the tolerance of its
+//    chord, and noisy chains (the curvature changing by over kSmoothChange from vertex to
+//    vertex) are not bowed. Without a bow, the polygon itself is followed where it stays
+//    within a few nanometres of the curve, its deviation budgeted as "wiggle" in the sampled
+//    acceleration and jerk (docs/planner.md, "Chains").
 //  - blend: the corner is replaced by a curvature-continuous CornerBlend that stays within
 //    the machine's corner tolerance, trimming at most half of each move, when passing the
 //    blend is faster than stopping (with a small tolerance and a low jerk limit a blend is
