@@ -300,5 +300,54 @@ TEST(BowChains, AnEllipseInCoarseChordsRunsAtItsCurvaturesSpeed) {
   }
 }
 
+TEST(BowChains, AWaveThroughItsInflectionsIsOneChain) {
+  // A sine wave (amplitude 0.5 mm, 3.14 mm long) in 0.05 mm chords at F3000, the curve of the
+  // six-axis benchmark: its curvature changes sign every half wave. The noise rule looks at
+  // the second difference of the polygon's curvature, small there too, so the wave is bowed
+  // through: 3.4 s. (With the first difference against the curvature's size, each half wave
+  // was a chain of its own, ending straight at the inflection: 4.9 s; blended, 3.8 s.)
+  const MachineConfig m = defaultMachine();
+  std::vector<MotionPrimitive> prog;
+  AxisValues p{};
+  for (int i = 1; i <= 400; ++i) {
+    const AxisValues q = xyz(0.05 * i, 0.5 * std::sin(0.1 * i), 0.0);
+    prog.push_back(line(p, q, 3000.0));
+    p = q;
+  }
+  const Trace t = run(m, prog, 4096);
+  EXPECT_LT(t.ticks(), 3500u);
+  const Worst w = check(m, t);
+  EXPECT_LE(w.acceleration, 1.0 + kTolerance);
+  EXPECT_LE(w.jerk, 1.0 + kTolerance);
+  EXPECT_LE(worstDeviation(t, prog), m.corner_tolerance);
+}
+
+TEST(BowChains, NoisyChordsAreSmoothedByBlends) {
+  // A circle r 10 in 0.05 mm chords rounded to 1 um, as a CAM system writes it: the rounding
+  // moves the polygon's curvature by many times itself from vertex to vertex. Bowed through
+  // its points, the path would follow the noise (10 to 14 s); where the noise rule finds it,
+  // the vertices are blended instead (within the tolerance, off the points): under 9.5 s,
+  // where the polygon without a tolerance takes 31 s.
+  const MachineConfig m = defaultMachine();
+  const double r = 10.0;
+  const int n = static_cast<int>(std::lround(2.0 * std::numbers::pi * r / 0.05));
+  std::vector<MotionPrimitive> prog;
+  AxisValues p = xyz(r, 0, 0);
+  for (int i = 1; i <= n; ++i) {
+    const double a = 2.0 * std::numbers::pi * i / n;
+    const AxisValues q = i == n ? xyz(r, 0, 0)
+                                : xyz(std::round(r * std::cos(a) * 1e3) / 1e3,
+                                      std::round(r * std::sin(a) * 1e3) / 1e3, 0.0);
+    prog.push_back(line(p, q, 6000.0));
+    p = q;
+  }
+  const Trace t = run(m, prog, 4096);
+  EXPECT_LT(t.ticks(), 9500u);
+  const Worst w = check(m, t);
+  EXPECT_LE(w.acceleration, 1.0 + kTolerance);
+  EXPECT_LE(w.jerk, 1.0 + kTolerance);
+  EXPECT_LE(worstDeviation(t, prog), m.corner_tolerance);
+}
+
 }  // namespace
 }  // namespace ncc::motion_test

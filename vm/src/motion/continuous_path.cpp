@@ -130,7 +130,7 @@ bool ContinuousPath::wiggleFits(const AxisValues& wiggle) const {
 }
 
 PathSegment ContinuousPath::heldPart(const AxisValues& end, double end_trim,
-                                     const BowVertex* end_bow) const {
+                                     const BowVertex* end_bow, bool bounds) const {
   if (held_.arc) return held_arc_.part(held_.start_trim, held_arc_.length() - end_trim);
   if (!held_.start_bowed && end_bow == nullptr)
     return PathSegment::line(held_.start, end, limits_.count);
@@ -138,7 +138,8 @@ PathSegment ContinuousPath::heldPart(const AxisValues& end, double end_trim,
   return PathSegment::bow(held_.start, end, held_.start_bowed ? held_.start_bow.tangent : held_.direction,
                           end_bow != nullptr ? end_bow->tangent : held_.direction,
                           held_.start_bowed ? held_.start_bow.curvature : kStraight,
-                          end_bow != nullptr ? end_bow->curvature : kStraight, limits_.count);
+                          end_bow != nullptr ? end_bow->curvature : kStraight, limits_.count,
+                          bounds);
 }
 
 std::optional<ContinuousPath::BowVertex> ContinuousPath::bowVertex(const HeldMove& next,
@@ -180,29 +181,28 @@ std::optional<ContinuousPath::BowVertex> ContinuousPath::bowVertex(const HeldMov
   if (!(std::max(held, following) <= tolerance)) return std::nullopt;
   // A bow passes through its chord's ends. Where they are noisy (CAM coordinates rounded to
   // 1 um on chords of a few tenths), its curvature turns with the noise, and the blends (or
-  // kinks) that smooth the corners within the tolerance instead are faster. The chain is
-  // taken as smooth where its curvature vector changes from the vertex before to this one by
-  // at most kSmoothChange of its size (on a circle in chords it turns by the chord's angle,
-  // a few thousandths).
-  AxisValues before{};
-  bool known = true;
-  if (a.start_bowed) {
-    before = a.start_bow.chain;
-  } else if (a.previous_length > 0.0) {
-    for (int i = 0; i < n; ++i)
-      before[i] = (a.direction[i] - a.previous_direction[i]) / (0.5 * (a.previous_length + a.length));
-  } else {
-    known = false;  // from rest: nothing before
+  // kinks) that smooth the corners within the tolerance instead are faster. The polygon's
+  // curvature vectors at this vertex and the two before tell them apart: on a smooth curve
+  // their second difference is tiny (K'' l^2), also where the curvature changes sign; noise
+  // of d makes it about 4 d / l^2. A vertex is bowed where it is at most kSmoothChange of the
+  // largest of the three (with one vertex before known: their difference; none: always).
+  if (a.polygon_curvatures > 0) {
+    const AxisValues& k1 = a.start_polygon_curvature;
+    const AxisValues& k2 = a.polygon_curvature_before;
+    const bool both = a.polygon_curvatures > 1;
+    double change = 0.0, size = 0.0;
+    for (int i = 0; i < n; ++i) {
+      const double d = both ? chain[i] - 2.0 * k1[i] + k2[i] : chain[i] - k1[i];
+      change += d * d;
+    }
+    auto square = [&](const AxisValues& v) {
+      double sum = 0.0;
+      for (int i = 0; i < n; ++i) sum += v[i] * v[i];
+      return sum;
+    };
+    size = std::max({square(chain), square(k1), both ? square(k2) : 0.0});
+    if (!(std::sqrt(change) <= kSmoothChange * std::sqrt(size))) return std::nullopt;
   }
-  double change = 0.0, size_before = 0.0, size_here = 0.0;
-  for (int i = 0; i < n; ++i) {
-    change += (chain[i] - before[i]) * (chain[i] - before[i]);
-    size_before += before[i] * before[i];
-    size_here += chain[i] * chain[i];
-  }
-  if (known && !(std::sqrt(change) <= kSmoothChange * std::sqrt(std::max(size_before, size_here))))
-    return std::nullopt;
-  bow.chain = chain;
   return bow;
 }
 
@@ -254,10 +254,11 @@ void ContinuousPath::queueHeld(const AxisValues& end, double end_trim, const End
   const int n = limits_.count;
   QueuedSegment seg;
   seg.where = held_.where;
-  seg.path = heldPart(end, end_trim, vertex.bowed ? &vertex.bow : nullptr);
   const bool start_at_rest = held_.start_limit <= 0.0, end_at_stop = stop_after || end_at_rest;
-  if (!held_.arc && held_.start_bowed != vertex.bowed && (vertex.bowed ? start_at_rest : end_at_stop))
-    bowRestingEnd(seg.path, vertex.bowed);
+  const bool resting_end =
+      !held_.arc && held_.start_bowed != vertex.bowed && (vertex.bowed ? start_at_rest : end_at_stop);
+  seg.path = heldPart(end, end_trim, vertex.bowed ? &vertex.bow : nullptr, !resting_end);
+  if (resting_end) bowRestingEnd(seg.path, vertex.bowed);
   seg.exact_stop = stop_after && held_.exact_stop;
   seg.feed_limit = held_.feed_limit;
   if (!(seg.path.length() > kNegligibleLength)) {
@@ -326,9 +327,9 @@ void ContinuousPath::bowRestingEnd(PathSegment& line, bool at_start) const {
   // blend). Where it rests, its tangent and curvature there are free: the mirror images of
   // the other end's (across the chord's middle) make the bow symmetric, like an arc of the
   // chain's curvature (straight there, its curvature would fall to 0 within the chord), if
-  // that stays within the tolerance.
+  // that stays within the tolerance. `line` comes without bounds and leaves with them.
   const int n = limits_.count;
-  AxisValues t, k, c, t_mirrored, k_mirrored;
+  AxisValues t, k, c, free_tangent, free_curvature;
   const double at = at_start ? line.length() : 0.0;
   line.tangent(at, t);
   line.curvature(at, k);
@@ -341,15 +342,20 @@ void ContinuousPath::bowRestingEnd(PathSegment& line, bool at_start) const {
     k_along += k[i] * c[i];
   }
   for (int i = 0; i < n; ++i) {
-    t_mirrored[i] = 2.0 * t_along * c[i] - t[i];
-    k_mirrored[i] = k[i] - 2.0 * k_along * c[i];
+    free_tangent[i] = 2.0 * t_along * c[i] - t[i];
+    free_curvature[i] = k[i] - 2.0 * k_along * c[i];
   }
+  const AxisValues& from = line.from();
+  const AxisValues& to = line.to();
   const double offset =
-      at_start ? PathSegment::bowOffset(line.from(), line.to(), t_mirrored, t, k_mirrored, k, n)
-               : PathSegment::bowOffset(line.from(), line.to(), t, t_mirrored, k, k_mirrored, n);
-  if (!(offset <= limits_.corner_tolerance)) return;
-  line = at_start ? PathSegment::bow(line.from(), line.to(), t_mirrored, t, k_mirrored, k, n)
-                  : PathSegment::bow(line.from(), line.to(), t, t_mirrored, k, k_mirrored, n);
+      at_start ? PathSegment::bowOffset(from, to, free_tangent, t, free_curvature, k, n)
+               : PathSegment::bowOffset(from, to, t, free_tangent, k, free_curvature, n);
+  if (!(offset <= limits_.corner_tolerance)) {  // straight there, as it came
+    free_tangent = c;
+    free_curvature = AxisValues{};
+  }
+  line = at_start ? PathSegment::bow(from, to, free_tangent, t, free_curvature, k, n)
+                  : PathSegment::bow(from, to, t, free_tangent, k, free_curvature, n);
 }
 
 void ContinuousPath::queueBow(QueuedSegment& seg, const EndVertex& vertex, double jerk_share,
@@ -389,6 +395,18 @@ void ContinuousPath::queueBow(QueuedSegment& seg, const EndVertex& vertex, doubl
     for (int i = 0; i < n; ++i) chain.involved[i] = std::max(chain.involved[i], before.involved[i]);
   }
   last_bow_shape_ = chain;
+  // The ramp envelope is searched for a bow's limits where its shape repeats (a circle in
+  // chords: once) or a chain starts (its first bow joins the run of the next ones, and a run
+  // takes the lowest limits of its segments); not where the shape changes from bow to bow (a
+  // sine, an ellipse), where every bow paid for a search: 30 us each, 4x the simulation time
+  // of a six-axis program.
+  ChainShape seen = chain;  // (searched or not: a shape seen before repeats)
+  seen.ramp_envelope = false;
+  const bool repeats = !held_.start_bowed || chain == last_fine_bow_shape_ ||
+                       cachedChainLimits(held_.feed, chain, jerk_share) != nullptr ||
+                       cachedChainLimits(held_.feed, seen, jerk_share) != nullptr;
+  last_fine_bow_shape_ = chain;
+  chain.ramp_envelope = repeats;
   SegmentLimits limits = chainLimits(seg.path, held_.feed, chain, jerk_share);
   // Below the feed (over the speed bound, the same for the chain's bows), rounded down like
   // a polygon chain's lines so that neighbours join one run.
@@ -403,14 +421,20 @@ void ContinuousPath::queueBow(QueuedSegment& seg, const EndVertex& vertex, doubl
   enqueue(seg, MotionPrimitive::Kind::Line, limits, held_.start_limit, stop_after);
 }
 
+const SegmentLimits* ContinuousPath::cachedChainLimits(double feed, const ChainShape& chain,
+                                                       double jerk_share) const {
+  for (const ChainLimits& c : chain_cache_) {
+    if (c.valid && c.feed == feed && c.jerk_share == jerk_share && c.shape == chain)
+      return &c.limits;
+  }
+  return nullptr;
+}
+
 SegmentLimits ContinuousPath::chainLimits(const PathSegment& line, double feed,
                                           const ChainShape& chain, double jerk_share) {
   // A chain line's limits depend on nothing else: its tangent and normal are bounded by 1 on
   // every involved axis (limits.h), whatever its direction.
-  for (const ChainLimits& c : chain_cache_) {
-    if (c.valid && c.feed == feed && c.jerk_share == jerk_share && c.shape == chain)
-      return c.limits;
-  }
+  if (const SegmentLimits* cached = cachedChainLimits(feed, chain, jerk_share)) return *cached;
   ChainLimits& slot = chain_cache_[chain_cache_next_];
   chain_cache_next_ = (chain_cache_next_ + 1) % chain_cache_.size();
   slot = {true, feed, jerk_share, chain, segmentLimits(line, limits_, false, feed, chain, jerk_share)};
@@ -526,7 +550,9 @@ bool ContinuousPath::move(const PathSegment& programmed, double feed, double fee
     // A turn the kink rule passes at full speed needs nothing else (collinear lines, tangent
     // arcs, and tiny turns between long lines).
     const double kink =
-        theta <= kCornerAngle ? junctionVelocity(heldPart(a.end, 0.0), programmed, limits_) : 0.0;
+        theta <= kCornerAngle
+            ? junctionVelocity(heldPart(a.end, 0.0, nullptr, false), programmed, limits_)
+            : 0.0;
     const bool kink_free = a.start_curvature == 0.0 && kink >= std::max(a.feed, feed);
     if (kink_free) {
       queueHeld(a.end, 0.0, {.next_direction = next.direction, .next_length = next.length,
@@ -572,6 +598,13 @@ bool ContinuousPath::move(const PathSegment& programmed, double feed, double fee
     }
     next.previous_direction = a.end_direction;
     next.previous_length = a.length;
+    if (lines) {
+      for (int i = 0; i < n; ++i)
+        next.start_polygon_curvature[i] =
+            (next.direction[i] - a.direction[i]) / (0.5 * (a.length + next.length));
+      next.polygon_curvature_before = a.start_polygon_curvature;
+      next.polygon_curvatures = std::min(a.polygon_curvatures + 1, 2);
+    }
   }
   held_ = next;
   if (next.arc) held_arc_ = programmed;

@@ -146,7 +146,8 @@ SegmentLimits segmentLimits(const PathSegment& path, const AxisLimits& machine_a
   // near constant speed: its ramps happen on the lines around it).
   if (curved && path.shape() != PathSegment::Shape::Blend) {
     speed_share = std::max(speed_share, cross * lim.acceleration / lim.jerk);
-    if (speed_share > kEnvelopeWorthShare) envelope.widen(lim.acceleration, lim.jerk);
+    if (speed_share > kEnvelopeWorthShare && (!in_chain || chain.ramp_envelope))
+      envelope.widen(lim.acceleration, lim.jerk);
   }
   return lim;
 }

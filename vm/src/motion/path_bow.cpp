@@ -54,7 +54,7 @@ struct BowHull {
 PathSegment PathSegment::bow(const AxisValues& from, const AxisValues& to,
                              const AxisValues& start_tangent, const AxisValues& end_tangent,
                              const AxisValues& start_curvature, const AxisValues& end_curvature,
-                             int axis_count) {
+                             int axis_count, bool bounds) {
   PathSegment p = line(from, to, axis_count);
   if (!(p.length_ > 0.0)) return p;
   const double S = bowLength(p.delta_, start_tangent, end_tangent, axis_count);
@@ -69,7 +69,7 @@ PathSegment PathSegment::bow(const AxisValues& from, const AxisValues& to,
   if (!bowed) return p;
   p.shape_ = Shape::Bow;
   p.length_ = S;
-  p.setBowBounds();
+  if (bounds) p.setBowBounds();
   return p;
 }
 

@@ -65,11 +65,10 @@ class ContinuousPath {
 
  private:
   // A bowed chain vertex: the unit tangent and the curvature vector (normal to it) both its
-  // bows take there, and the chain's curvature vector, (c_b - c_a) / mean length.
+  // bows take there.
   struct BowVertex {
     AxisValues tangent{};
     AxisValues curvature{};
-    AxisValues chain{};
   };
   struct HeldMove {
     bool active = false;
@@ -90,6 +89,10 @@ class ContinuousPath {
     // Its start vertex is a bowed chain vertex (BowVertex).
     bool start_bowed = false;
     BowVertex start_bow{};
+    // The polygon's curvature vector (c_b - c_a) / mean length at its start vertex and at the
+    // vertex before, where those join two lines: what tells a smooth chain from noise.
+    int polygon_curvatures = 0;  // how many of these are known (0..2)
+    AxisValues start_polygon_curvature{}, polygon_curvature_before{};
     AxisValues start_wiggle{};     // the polygon's deviation from the chain's curve there,
                                    // per axis (ChainShape::wiggle)
     AxisValues previous_direction{};  // end tangent of the move before it (zero if none)
@@ -124,9 +127,10 @@ class ContinuousPath {
   // the path rests too (at its start if `at_start`), where the tolerance allows.
   void bowRestingEnd(PathSegment& line, bool at_start) const;
   // What is left of the held move from its start to `end_trim` before its programmed end
-  // (a line: to `end`, bowed where its start is a bowed vertex, or to `end_bow`).
-  PathSegment heldPart(const AxisValues& end, double end_trim,
-                       const BowVertex* end_bow = nullptr) const;
+  // (a line: to `end`, bowed where its start is a bowed vertex, or to `end_bow`; a bow with
+  // its bounds only if `bounds`, PathSegment::bow).
+  PathSegment heldPart(const AxisValues& end, double end_trim, const BowVertex* end_bow = nullptr,
+                       bool bounds = true) const;
   // The bow of a chain vertex between the held line and the line `next` turning by `theta`,
   // if the corner tolerance allows one (the bows of both lines within it) and the chain is
   // smooth there (not noise: its curvature changes little from the vertex before).
@@ -175,6 +179,9 @@ class ContinuousPath {
   // chain's lines share curvature and wiggle (rounded up to a grid).
   SegmentLimits chainLimits(const PathSegment& line, double feed, const ChainShape& chain,
                             double jerk_share);
+  // The cached limits of that shape, if any.
+  const SegmentLimits* cachedChainLimits(double feed, const ChainShape& chain,
+                                         double jerk_share) const;
 
   const AxisLimits& limits_;
   LookAhead& queue_;
@@ -188,7 +195,8 @@ class ContinuousPath {
     ChainShape shape;
     SegmentLimits limits;
   };
-  ChainShape last_bow_shape_;  // the shape of the last bow queued (queueBow)
+  ChainShape last_bow_shape_;       // the shape of the last bow queued (queueBow)
+  ChainShape last_fine_bow_shape_;  // and on its finest grid
   std::array<ChainLimits, 32> chain_cache_{};  // the last shapes seen, replaced in turn
   std::size_t chain_cache_next_ = 0;
 };

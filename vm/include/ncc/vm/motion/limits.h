@@ -134,13 +134,16 @@ struct SegmentLimits {
 //  - wiggle, per axis: on a polygon's line, its largest distance from the curve along the
 //    axis (mm: the sagitta on the axes its vertices turn, 0 on the others); 0 on a bow;
 //  - involved, per axis: 1 if the axis moves on it or on a neighbour across a chain vertex
-//    (the curve's tangent and normal may point along it), else 0.
+//    (the curve's tangent and normal may point along it), else 0;
+//  - ramp_envelope: whether its limits may be widened by a search of the ramp envelope
+//    (ramp_envelope.h; several microseconds, worth it where the shape repeats).
 struct ChainShape {
   double curvature = 0.0;
   double rate_along = 0.0, rate_across = 0.0;
   double speed = 1.0, stretch = 1.0;
   AxisValues wiggle{};
   AxisValues involved{};
+  bool ramp_envelope = true;
   bool operator==(const ChainShape&) const = default;
 };
 

@@ -37,11 +37,12 @@ class PathSegment {
   // The chord from `from` to `to` bowed so that its unit tangents at the ends are
   // `start_tangent` and `end_tangent` and its curvature vectors (normal to them)
   // `start_curvature` and `end_curvature` (path_bow.cpp); a line where the tangents are its
-  // direction and the curvatures zero.
+  // direction and the curvatures zero. Without `bounds`, only its position, tangent and
+  // curvature may be asked for (the bounds cost a microsecond to compute).
   static PathSegment bow(const AxisValues& from, const AxisValues& to,
                          const AxisValues& start_tangent, const AxisValues& end_tangent,
                          const AxisValues& start_curvature, const AxisValues& end_curvature,
-                         int axis_count);
+                         int axis_count, bool bounds = true);
   // Standing still at `at` (a dwell).
   static PathSegment dwell(const AxisValues& at, int axis_count);
 
