@@ -179,31 +179,36 @@ std::optional<ContinuousPath::BowVertex> ContinuousPath::bowVertex(const HeldMov
   const double following = PathSegment::bowOffset(a.end, next.end, bow.tangent, next.direction,
                                                   bow.curvature, kStraight, n);
   if (!(std::max(held, following) <= tolerance)) return std::nullopt;
-  // A bow passes through its chord's ends. Where they are noisy (CAM coordinates rounded to
-  // 1 um on chords of a few tenths), its curvature turns with the noise, and the blends (or
-  // kinks) that smooth the corners within the tolerance instead are faster. The polygon's
-  // curvature vectors at this vertex and the two before tell them apart: on a smooth curve
-  // their second difference is tiny (K'' l^2), also where the curvature changes sign; noise
-  // of d makes it about 4 d / l^2. A vertex is bowed where it is at most kSmoothChange of the
-  // largest of the three (with one vertex before known: their difference; none: always).
-  if (a.polygon_curvatures > 0) {
-    const AxisValues& k1 = a.start_polygon_curvature;
-    const AxisValues& k2 = a.polygon_curvature_before;
-    const bool both = a.polygon_curvatures > 1;
-    double change = 0.0, size = 0.0;
-    for (int i = 0; i < n; ++i) {
-      const double d = both ? chain[i] - 2.0 * k1[i] + k2[i] : chain[i] - k1[i];
-      change += d * d;
-    }
-    auto square = [&](const AxisValues& v) {
-      double sum = 0.0;
-      for (int i = 0; i < n; ++i) sum += v[i] * v[i];
-      return sum;
-    };
-    size = std::max({square(chain), square(k1), both ? square(k2) : 0.0});
-    if (!(std::sqrt(change) <= kSmoothChange * std::sqrt(size))) return std::nullopt;
-  }
+  // Not where the polygon is noisy, here or at the vertex before (smoothPolygon): a bow
+  // passes through its chord's ends, and where they are noisy its curvature follows the
+  // noise; a lone smooth vertex among noisy ones makes a chain of one vertex whose bows end
+  // straight on both sides.
+  if (!(held_.start_smooth && smoothPolygon(next))) return std::nullopt;
   return bow;
+}
+
+bool ContinuousPath::smoothPolygon(const HeldMove& next) const {
+  // Noisy vertices (CAM coordinates rounded to 1 um on chords of a few tenths) are told from
+  // a smooth curve's by the polygon's curvature vectors K at this vertex and the two before:
+  // on a smooth curve their second difference is tiny (K'' l^2), also where the curvature
+  // changes sign; a rounding of d makes it about 4 d / l^2. Smooth: at most kSmoothChange of
+  // the largest of the three (one vertex known before: their difference; none: smooth).
+  const HeldMove& a = held_;
+  if (a.polygon_curvatures == 0) return true;
+  const int n = limits_.count;
+  const AxisValues& k1 = a.start_polygon_curvature;
+  const AxisValues& k2 = a.polygon_curvature_before;
+  const bool both = a.polygon_curvatures > 1;
+  double change = 0.0, here = 0.0, before = 0.0, before_that = 0.0;
+  for (int i = 0; i < n; ++i) {
+    const double k = (next.direction[i] - a.direction[i]) / (0.5 * (a.length + next.length));
+    const double d = both ? k - 2.0 * k1[i] + k2[i] : k - k1[i];
+    change += d * d;
+    here += k * k;
+    before += k1[i] * k1[i];
+    before_that += both ? k2[i] * k2[i] : 0.0;
+  }
+  return std::sqrt(change) <= kSmoothChange * std::sqrt(std::max({here, before, before_that}));
 }
 
 PathSegment ContinuousPath::heldProgrammed() const {
@@ -599,6 +604,7 @@ bool ContinuousPath::move(const PathSegment& programmed, double feed, double fee
     next.previous_direction = a.end_direction;
     next.previous_length = a.length;
     if (lines) {
+      next.start_smooth = smoothPolygon(next);
       for (int i = 0; i < n; ++i)
         next.start_polygon_curvature[i] =
             (next.direction[i] - a.direction[i]) / (0.5 * (a.length + next.length));

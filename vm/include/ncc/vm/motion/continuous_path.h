@@ -93,6 +93,7 @@ class ContinuousPath {
     // vertex before, where those join two lines: what tells a smooth chain from noise.
     int polygon_curvatures = 0;  // how many of these are known (0..2)
     AxisValues start_polygon_curvature{}, polygon_curvature_before{};
+    bool start_smooth = true;    // smoothPolygon() at its start vertex (or nothing known)
     AxisValues start_wiggle{};     // the polygon's deviation from the chain's curve there,
                                    // per axis (ChainShape::wiggle)
     AxisValues previous_direction{};  // end tangent of the move before it (zero if none)
@@ -132,9 +133,11 @@ class ContinuousPath {
   PathSegment heldPart(const AxisValues& end, double end_trim, const BowVertex* end_bow = nullptr,
                        bool bounds = true) const;
   // The bow of a chain vertex between the held line and the line `next` turning by `theta`,
-  // if the corner tolerance allows one (the bows of both lines within it) and the chain is
-  // smooth there (not noise: its curvature changes little from the vertex before).
+  // if the corner tolerance allows one (the bows of both lines within it) and the polygon is
+  // smooth there and at the vertex before.
   std::optional<BowVertex> bowVertex(const HeldMove& next, double theta) const;
+  // Whether the polygon is smooth (not noisy) at the held line's end vertex, joining `next`.
+  bool smoothPolygon(const HeldMove& next) const;
   // The shape a bowed chain line `bow` moving the axes `involved` is planned with (its
   // bounds, on grids), and the residual curvature its speed is capped for (0: none).
   ChainShape bowShape(const PathSegment& bow, const AxisValues& involved, double& residual) const;
