@@ -259,15 +259,8 @@ TEST(BowChains, CoarseChordsOfACircleRunLikeTheArc) {
   // at about 4 mm/s: 20 times slower.
   const MachineConfig m = defaultMachine();
   const double r = 10.0;
-  const int n = static_cast<int>(std::lround(2.0 * std::numbers::pi * r / 0.2));
-  std::vector<MotionPrimitive> prog;
-  AxisValues p = xyz(r, 0, 0);
-  for (int i = 1; i <= n; ++i) {
-    const double t = 2.0 * std::numbers::pi * i / n;
-    const AxisValues q = i == n ? xyz(r, 0, 0) : xyz(r * std::cos(t), r * std::sin(t), 0);
-    prog.push_back(line(p, q, 6000.0));
-    p = q;
-  }
+  const std::vector<MotionPrimitive> prog =
+      polygonCircle(r, static_cast<int>(std::lround(2.0 * std::numbers::pi * r / 0.2)), 6000.0);
   const Trace bowed = run(m, prog, 4096);
   const Trace the_arc = run(m, {arc(xyz(r, 0, 0), xyz(r, 0, 0), 0, 1, 0.0, 0.0, false, 6000.0)});
   MachineConfig no_tolerance = m;
@@ -275,10 +268,7 @@ TEST(BowChains, CoarseChordsOfACircleRunLikeTheArc) {
   const Trace polygon = run(no_tolerance, prog, 4096);
   EXPECT_LT(static_cast<double>(bowed.ticks()), 1.02 * static_cast<double>(the_arc.ticks()));
   EXPECT_GT(static_cast<double>(polygon.ticks()), 10.0 * static_cast<double>(bowed.ticks()));
-  const Worst w = check(m, bowed);
-  EXPECT_LE(w.velocity, 1.0 + kTolerance);
-  EXPECT_LE(w.acceleration, 1.0 + kTolerance);
-  EXPECT_LE(w.jerk, 1.0 + kTolerance);
+  expectWithinAxisLimits(m, bowed);
   EXPECT_EQ(bowed.points.back(), prog.back().to);
   // Within the sagitta, c^2 / 8 r = 0.5 um, of the chords.
   EXPECT_LE(worstDeviation(bowed, prog), 5.01e-4);
@@ -293,9 +283,7 @@ TEST(BowChains, AnEllipseInCoarseChordsRunsAtItsCurvaturesSpeed) {
     const std::vector<MotionPrimitive> prog = ellipse(b, 0.05, 6000.0);
     const Trace bowed = run(m, prog, 4096);
     EXPECT_LT(bowed.ticks(), 1800u) << b;
-    const Worst w = check(m, bowed);
-    EXPECT_LE(w.acceleration, 1.0 + kTolerance) << b;
-    EXPECT_LE(w.jerk, 1.0 + kTolerance) << b;
+    expectWithinAxisLimits(m, bowed);
     EXPECT_LE(worstDeviation(bowed, prog), m.corner_tolerance) << b;
   }
 }
@@ -316,9 +304,7 @@ TEST(BowChains, AWaveThroughItsInflectionsIsOneChain) {
   }
   const Trace t = run(m, prog, 4096);
   EXPECT_LT(t.ticks(), 3500u);
-  const Worst w = check(m, t);
-  EXPECT_LE(w.acceleration, 1.0 + kTolerance);
-  EXPECT_LE(w.jerk, 1.0 + kTolerance);
+  expectWithinAxisLimits(m, t);
   EXPECT_LE(worstDeviation(t, prog), m.corner_tolerance);
 }
 
@@ -330,22 +316,11 @@ TEST(BowChains, NoisyChordsAreSmoothedByBlends) {
   // polygon without a tolerance: 31 s).
   const MachineConfig m = defaultMachine();
   const double r = 10.0;
-  const int n = static_cast<int>(std::lround(2.0 * std::numbers::pi * r / 0.05));
-  std::vector<MotionPrimitive> prog;
-  AxisValues p = xyz(r, 0, 0);
-  for (int i = 1; i <= n; ++i) {
-    const double a = 2.0 * std::numbers::pi * i / n;
-    const AxisValues q = i == n ? xyz(r, 0, 0)
-                                : xyz(std::round(r * std::cos(a) * 1e3) / 1e3,
-                                      std::round(r * std::sin(a) * 1e3) / 1e3, 0.0);
-    prog.push_back(line(p, q, 6000.0));
-    p = q;
-  }
+  const std::vector<MotionPrimitive> prog = polygonCircle(
+      r, static_cast<int>(std::lround(2.0 * std::numbers::pi * r / 0.05)), 6000.0, 1e-3);
   const Trace t = run(m, prog, 4096);
   EXPECT_LT(t.ticks(), 8200u);
-  const Worst w = check(m, t);
-  EXPECT_LE(w.acceleration, 1.0 + kTolerance);
-  EXPECT_LE(w.jerk, 1.0 + kTolerance);
+  expectWithinAxisLimits(m, t);
   EXPECT_LE(worstDeviation(t, prog), m.corner_tolerance);
 }
 

@@ -246,19 +246,6 @@ TEST(Corners, CollinearSplitHasNoSlowdown) {
   EXPECT_EQ(slowest_mid, 50.0);
 }
 
-// A circle of radius r as n chords, starting at (r, 0).
-std::vector<MotionPrimitive> polygonCircle(double r, int n, double feed) {
-  std::vector<MotionPrimitive> prog;
-  AxisValues p = xyz(r, 0, 0);
-  for (int i = 1; i <= n; ++i) {
-    const double a = 2.0 * std::numbers::pi * i / n;
-    const AxisValues q = i == n ? xyz(r, 0, 0) : xyz(r * std::cos(a), r * std::sin(a), 0);
-    prog.push_back(line(p, q, feed));
-    p = q;
-  }
-  return prog;
-}
-
 class TessellatedCircle : public ::testing::TestWithParam<double> {};
 
 TEST_P(TessellatedCircle, RunsAtFeedLikeTheCircle) {
@@ -280,10 +267,7 @@ TEST_P(TessellatedCircle, RunsAtFeedLikeTheCircle) {
   for (const auto& info : t.infos) top = std::max(top, info.velocity);
   EXPECT_NEAR(top, feed / 60.0, 1e-6 * feed / 60.0);
   EXPECT_LT(static_cast<double>(t.ticks()), 1.01 * static_cast<double>(arc_trace.ticks()));
-  const Worst w = check(m, t);
-  EXPECT_LE(w.velocity, 1.0 + kTolerance);
-  EXPECT_LE(w.acceleration, 1.0 + kTolerance);
-  EXPECT_LE(w.jerk, 1.0 + kTolerance);
+  expectWithinAxisLimits(m, t);
   EXPECT_EQ(t.points.back(), prog.back().to);
   // The bows leave the chords by at most their sagitta, c^2 / 8 r = 1.25 nm.
   EXPECT_LE(worstDeviation(t, prog), 1.26e-6);

@@ -344,4 +344,29 @@ inline double worstDeviation(const Trace& t, const std::vector<MotionPrimitive>&
   return worst;
 }
 
+// A circle of radius r as n chords at `feed`, starting and ending at (r, 0); the vertices
+// rounded to multiples of `rounding` mm where that is not 0 (as a CAM system writes them).
+inline std::vector<MotionPrimitive> polygonCircle(double r, int n, double feed,
+                                                  double rounding = 0.0) {
+  std::vector<MotionPrimitive> prog;
+  AxisValues p = xyz(r, 0, 0);
+  for (int i = 1; i <= n; ++i) {
+    const double a = 2.0 * std::numbers::pi * i / n;
+    AxisValues q = i == n ? xyz(r, 0, 0) : xyz(r * std::cos(a), r * std::sin(a), 0);
+    if (rounding > 0.0 && i < n)
+      for (int k = 0; k < 2; ++k) q[k] = std::round(q[k] / rounding) * rounding;
+    prog.push_back(line(p, q, feed));
+    p = q;
+  }
+  return prog;
+}
+
+// Every sampled velocity, acceleration and jerk of `t` within the axis limits (check()).
+inline void expectWithinAxisLimits(const MachineConfig& m, const Trace& t) {
+  const Worst w = check(m, t);
+  EXPECT_LE(w.velocity, 1.0 + kTolerance);
+  EXPECT_LE(w.acceleration, 1.0 + kTolerance);
+  EXPECT_LE(w.jerk, 1.0 + kTolerance);
+}
+
 }  // namespace ncc::motion_test
