@@ -292,7 +292,7 @@ TEST(BowChains, AWaveThroughItsInflectionsIsOneChain) {
   // A sine wave (amplitude 0.5 mm, 3.14 mm long) in 0.05 mm chords at F3000, the curve of the
   // six-axis benchmark: its curvature changes sign every half wave. The noise rule looks at
   // the second difference of the polygon's curvature, small there too, so the wave is bowed
-  // through: 3.4 s. (With the first difference against the curvature's size, each half wave
+  // through: 3.0 s. (With the first difference against the curvature's size, each half wave
   // was a chain of its own, ending straight at the inflection: 4.9 s; blended, 3.8 s.)
   const MachineConfig m = defaultMachine();
   std::vector<MotionPrimitive> prog;
@@ -303,7 +303,7 @@ TEST(BowChains, AWaveThroughItsInflectionsIsOneChain) {
     p = q;
   }
   const Trace t = run(m, prog, 4096);
-  EXPECT_LT(t.ticks(), 3500u);
+  EXPECT_LT(t.ticks(), 3200u);
   expectWithinAxisLimits(m, t);
   EXPECT_LE(worstDeviation(t, prog), m.corner_tolerance);
 }

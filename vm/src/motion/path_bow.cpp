@@ -110,26 +110,23 @@ void PathSegment::setBowBounds() {
   const int n = axis_count_;
   const double L = length_;  // S
   const double chord = norm(delta_, n);
-  // Control points relative to A.
-  std::array<AxisValues, 6> P{};
+  // The derivatives' control points, from bow_ = {b0, b1, c0, c1} directly (differences of
+  // the position's control points, which lie |D| apart, lost digits on micrometre chords):
+  // dx/du: D + b0, D + b0 + c0/4, D - 2 b0 - 2 b1 + (c1 - c0)/4, D + b1 - c1/4, D + b1;
+  // d2x/du2: c0, c1 - 2 c0 - 12 b0 - 8 b1, c0 - 2 c1 + 8 b0 + 12 b1, c1;
+  // d3x/du3: 3 times the differences of those.
   AxisValues c{};
-  for (int i = 0; i < n; ++i) {
-    c[i] = delta_[i] / chord;
-    const double t0 = delta_[i] + bow_[0][i], t1 = delta_[i] + bow_[1][i];  // S t0, S t1
-    P[1][i] = t0 / 5.0;
-    P[2][i] = 2.0 * t0 / 5.0 + bow_[2][i] / 20.0;
-    P[3][i] = delta_[i] - 2.0 * t1 / 5.0 + bow_[3][i] / 20.0;
-    P[4][i] = delta_[i] - t1 / 5.0;
-    P[5][i] = delta_[i];
-  }
   BowHull h;
   for (int i = 0; i < n; ++i) {
-    for (int k = 0; k < 5; ++k) h.velocity[k][i] = 5.0 * (P[k + 1][i] - P[k][i]) / L;
-    for (int k = 0; k < 4; ++k)
-      h.curvature[k][i] = 20.0 * (P[k + 2][i] - 2.0 * P[k + 1][i] + P[k][i]) / (L * L);
-    for (int k = 0; k < 3; ++k)
-      h.rate[k][i] =
-          60.0 * (P[k + 3][i] - 3.0 * P[k + 2][i] + 3.0 * P[k + 1][i] - P[k][i]) / (L * L * L);
+    c[i] = delta_[i] / chord;
+    const double D = delta_[i], b0 = bow_[0][i], b1 = bow_[1][i], c0 = bow_[2][i], c1 = bow_[3][i];
+    const double q[5] = {D + b0, D + b0 + 0.25 * c0, D - 2.0 * b0 - 2.0 * b1 + 0.25 * (c1 - c0),
+                         D + b1 - 0.25 * c1, D + b1};
+    const double r[4] = {c0, c1 - 2.0 * c0 - 12.0 * b0 - 8.0 * b1, c0 - 2.0 * c1 + 8.0 * b0 + 12.0 * b1,
+                         c1};
+    for (int k = 0; k < 5; ++k) h.velocity[k][i] = q[k] / L;
+    for (int k = 0; k < 4; ++k) h.curvature[k][i] = r[k] / (L * L);
+    for (int k = 0; k < 3; ++k) h.rate[k][i] = 3.0 * (r[k + 1] - r[k]) / (L * L * L);
   }
   BowBounds& b = bow_bounds_;
   b = BowBounds{};
@@ -163,9 +160,9 @@ void PathSegment::setBowBounds() {
     for (int i = 0; i < n; ++i) b.axis_curvature[i] = std::max(b.axis_curvature[i], std::abs(k[i]));
   }
   // d3x/ds3 = q(u) = q0 + q1 u + q2 u^2 from its Bezier points (the hull is loose here: 6 k^2
-  // on a circle whose d3x/ds3 is k^2): sampled at kRateSamples + 1 points, plus what it can
-  // change within half a step, (|q1| + 2 |q2|) / (2 kRateSamples); likewise its part along
-  // the chord and the rest.
+  // on a circle whose d3x/ds3 is k^2): sampled at kRateSamples + 1 points. Between two, q is
+  // their linear interpolation (within the larger of their sizes) plus q2 (u - u_a)(u - u_b),
+  // at most |q2| h^2 / 4 for a step h; likewise its part along the chord and the rest.
   constexpr int kRateSamples = 16;
   AxisValues q0 = h.rate[0], q1{}, q2{};
   for (int i = 0; i < n; ++i) {
@@ -176,8 +173,7 @@ void PathSegment::setBowBounds() {
     along = dot(v, c, n);
     across = std::sqrt(std::max(dot(v, v, n) - along * along, 0.0));
   };
-  double q1_along, q1_across, q2_along, q2_across;
-  split(q1, q1_along, q1_across);
+  double q2_along, q2_across;
   split(q2, q2_along, q2_across);
   for (int k = 0; k <= kRateSamples; ++k) {
     const double u = static_cast<double>(k) / kRateSamples;
@@ -189,10 +185,10 @@ void PathSegment::setBowBounds() {
     b.rate_along = std::max(b.rate_along, std::abs(along));
     b.rate_across = std::max(b.rate_across, across);
   }
-  constexpr double kHalfStep = 0.5 / kRateSamples;
-  b.rate += kHalfStep * (norm(q1, n) + 2.0 * norm(q2, n));
-  b.rate_along += kHalfStep * (std::abs(q1_along) + 2.0 * std::abs(q2_along));
-  b.rate_across += kHalfStep * (q1_across + 2.0 * q2_across);
+  constexpr double kBetween = 0.25 / (kRateSamples * kRateSamples);
+  b.rate += kBetween * norm(q2, n);
+  b.rate_along += kBetween * std::abs(q2_along);
+  b.rate_across += kBetween * q2_across;
   // The part of d2x/ds2 along the tangent, x'' . x' / |x'|, is at most max |x'' . x'| over
   // the smallest |x'|: x'' . x' is a 7th-degree Bezier whose coefficients are the products'
   // (c_k = sum over i + j = k of C(3, i) C(4, j) / C(7, k) x''_i . x'_j).
