@@ -175,15 +175,19 @@ void PathSegment::setBowBounds() {
   };
   double q2_along, q2_across;
   split(q2, q2_along, q2_across);
+  // |q(u)|^2 and q(u) . c as polynomials in u, from the dot products of q0, q1, q2 (the
+  // samples then cost no loop over the axes).
+  const double q00 = dot(q0, q0, n), q01 = dot(q0, q1, n), q02 = dot(q0, q2, n);
+  const double q11 = dot(q1, q1, n), q12 = dot(q1, q2, n), q22 = dot(q2, q2, n);
+  const double c0 = dot(q0, c, n), c1 = dot(q1, c, n), c2 = q2_along;
   for (int k = 0; k <= kRateSamples; ++k) {
     const double u = static_cast<double>(k) / kRateSamples;
-    AxisValues q{};
-    for (int i = 0; i < n; ++i) q[i] = q0[i] + u * (q1[i] + u * q2[i]);
-    double along, across;
-    split(q, along, across);
-    b.rate = std::max(b.rate, norm(q, n));
+    const double size2 = std::max(
+        q00 + u * (2.0 * q01 + u * (q11 + 2.0 * q02 + u * (2.0 * q12 + u * q22))), 0.0);
+    const double along = c0 + u * (c1 + u * c2);
+    b.rate = std::max(b.rate, std::sqrt(size2));
     b.rate_along = std::max(b.rate_along, std::abs(along));
-    b.rate_across = std::max(b.rate_across, across);
+    b.rate_across = std::max(b.rate_across, std::sqrt(std::max(size2 - along * along, 0.0)));
   }
   constexpr double kBetween = 0.25 / (kRateSamples * kRateSamples);
   b.rate += kBetween * norm(q2, n);
