@@ -14,12 +14,15 @@ namespace {
 constexpr double kInf = std::numeric_limits<double>::infinity();
 // Turns above this are never chain vertices (the chain model's small-angle bounds).
 constexpr double kChainMaxTurn = 0.1;
-// A chain is bowed where its curvature vector changes by at most this share from one vertex
-// to the next (ContinuousPath::bowVertex).
+// The polygon is smooth (not noisy) at a vertex where the second difference of its curvature
+// vectors over three vertices is at most this share of their size (ContinuousPath::
+// smoothPolygon).
 constexpr double kSmoothChange = 0.1;
 // A bow's d2x/ds2 off the chain's reference by at most e reads in a sampled jerk as at most
 // 1.5 e v^2 / T (docs/planner.md, "Chains"), budgeted like a curvature step of 1.5 e.
 constexpr double kResidualWeight = 1.5;
+// The tangent offset and curvature of a bow's end that is not a chain vertex: none.
+constexpr AxisValues kStraight{};
 // What is left of a trimmed line below this length (mm) is not queued: the blends meet.
 constexpr double kNegligibleLength = 1e-9;
 
@@ -134,7 +137,6 @@ PathSegment ContinuousPath::heldPart(const AxisValues& end, double end_trim,
   if (held_.arc) return held_arc_.part(held_.start_trim, held_arc_.length() - end_trim);
   if (!held_.start_bowed && end_bow == nullptr)
     return PathSegment::line(held_.start, end, limits_.count);
-  static const AxisValues kStraight{};
   return PathSegment::bow(held_.start, end, held_.start_bowed ? held_.start_bow.tangent : held_.direction,
                           end_bow != nullptr ? end_bow->tangent : held_.direction,
                           held_.start_bowed ? held_.start_bow.curvature : kStraight,
@@ -142,25 +144,23 @@ PathSegment ContinuousPath::heldPart(const AxisValues& end, double end_trim,
                           bounds);
 }
 
-std::optional<ContinuousPath::BowVertex> ContinuousPath::bowVertex(const HeldMove& next,
-                                                                   double theta) const {
+std::optional<ContinuousPath::BowVertex> ContinuousPath::bowVertex(
+    const HeldMove& next, double theta, const AxisValues& chain, bool smooth) const {
   const int n = limits_.count;
   const double tolerance = limits_.corner_tolerance;
   if (!(tolerance > 0.0)) return std::nullopt;
   const HeldMove& a = held_;
   // The vertex tangent turns from the held line's direction towards the next's by the share
   // f of theta, the held line's share of the two lengths: on a circle in chords of any
-  // lengths, it is then the circle's tangent. The curvature vector: the chain's,
-  // (c_b - c_a) / mean length, less its part along that tangent.
+  // lengths, it is then the circle's tangent. The curvature vector: the chain's, less its
+  // part along that tangent.
   BowVertex bow;
-  AxisValues chain{};  // the chain's curvature vector here
   const double f = a.length / (a.length + next.length);
   const double sine = std::sin(theta);
   for (int i = 0; i < n; ++i) {
     bow.tangent[i] = sine > 0.0 ? (std::sin((1.0 - f) * theta) * a.direction[i] +
                                    std::sin(f * theta) * next.direction[i]) / sine
                                 : a.direction[i];
-    chain[i] = (next.direction[i] - a.direction[i]) / (0.5 * (a.length + next.length));
   }
   double norm = 0.0, along = 0.0;
   for (int i = 0; i < n; ++i) norm += bow.tangent[i] * bow.tangent[i];
@@ -172,7 +172,6 @@ std::optional<ContinuousPath::BowVertex> ContinuousPath::bowVertex(const HeldMov
   for (int i = 0; i < n; ++i) bow.curvature[i] = chain[i] - along * bow.tangent[i];
   // Both bows within the tolerance of their chords. The next line's far end is not known
   // yet: checked straight there (it is bowed there only if that fits too).
-  static const AxisValues kStraight{};
   const double held = PathSegment::bowOffset(
       a.start, a.end, a.start_bowed ? a.start_bow.tangent : a.direction, bow.tangent,
       a.start_bowed ? a.start_bow.curvature : kStraight, bow.curvature, n);
@@ -183,11 +182,11 @@ std::optional<ContinuousPath::BowVertex> ContinuousPath::bowVertex(const HeldMov
   // passes through its chord's ends, and where they are noisy its curvature follows the
   // noise; a lone smooth vertex among noisy ones makes a chain of one vertex whose bows end
   // straight on both sides.
-  if (!(held_.start_smooth && smoothPolygon(next))) return std::nullopt;
+  if (!(held_.start_smooth && smooth)) return std::nullopt;
   return bow;
 }
 
-bool ContinuousPath::smoothPolygon(const HeldMove& next) const {
+bool ContinuousPath::smoothPolygon(const AxisValues& k) const {
   // Noisy vertices (CAM coordinates rounded to 1 um on chords of a few tenths) are told from
   // a smooth curve's by the polygon's curvature vectors K at this vertex and the two before:
   // on a smooth curve their second difference is tiny (K'' l^2), also where the curvature
@@ -201,10 +200,9 @@ bool ContinuousPath::smoothPolygon(const HeldMove& next) const {
   const bool both = a.polygon_curvatures > 1;
   double change = 0.0, here = 0.0, before = 0.0, before_that = 0.0;
   for (int i = 0; i < n; ++i) {
-    const double k = (next.direction[i] - a.direction[i]) / (0.5 * (a.length + next.length));
-    const double d = both ? k - 2.0 * k1[i] + k2[i] : k - k1[i];
+    const double d = both ? k[i] - 2.0 * k1[i] + k2[i] : k[i] - k1[i];
     change += d * d;
-    here += k * k;
+    here += k[i] * k[i];
     before += k1[i] * k1[i];
     before_that += both ? k2[i] * k2[i] : 0.0;
   }
@@ -224,10 +222,8 @@ AxisValues ContinuousPath::involvedAxes(const HeldMove& next, const PathSegment&
   return involved;
 }
 
-ChainShape ContinuousPath::bowShape(const PathSegment& bow, const AxisValues& involved,
-                                    double& residual) const {
-  ChainShape chain;
-  chain.curvature = roundUp(bow.maxCurvature(), kCurvatureGridSteps);
+void ContinuousPath::bowShape(const PathSegment& bow, ChainShape& chain, double& residual) const {
+  const AxisValues& involved = chain.involved;
   // Two bounds of the sampled jerk hold (docs/planner.md, "Chains"): from d3x/ds3 itself,
   // or from the chain's reference G' plus the residual's 1.5 e v^2 / T. The first is tight
   // where the chain is noisy, the second where the bows are short (d3x/ds3 swings within
@@ -255,12 +251,36 @@ ChainShape ContinuousPath::bowShape(const PathSegment& bow, const AxisValues& in
                               kWiggleGridSteps);
   chain.speed = 1.0 + roundUp(bow.maxSpeed() - 1.0, 1.0);
   chain.stretch = 1.0 + roundUp(bow.parameterStretch() - 1.0, 1.0);
-  return chain;
+}
+
+void ContinuousPath::setChainAxes(ChainShape& chain, const EndVertex& vertex) const {
+  // The chain's curve turns towards the neighbours across chain vertices only: at any other
+  // vertex (a stop, a kink, a blend) the line's own direction is where it starts or ends.
+  const bool chain_start = held_.start_curvature > 0.0, chain_end = vertex.curvature > 0.0;
+  for (int i = 0; i < limits_.count; ++i) {
+    chain.wiggle[i] = roundUp(std::max(held_.start_wiggle[i], vertex.wiggle[i]), kWiggleGridSteps);
+    const bool moves = held_.direction[i] != 0.0 ||
+                       (chain_start && held_.previous_direction[i] != 0.0) ||
+                       (chain_end && vertex.next_direction[i] != 0.0);
+    chain.involved[i] = moves ? 1.0 : 0.0;
+  }
+}
+
+void ContinuousPath::enqueueChainLine(QueuedSegment& seg, SegmentLimits limits, double feed_cap,
+                                      const EndVertex& vertex, bool stop_after) {
+  // Neighbouring lines of a chain differ slightly in their limits; rounded down to a common
+  // grid (the speed only below the feed), their limits are equal and they join one run (one
+  // S-curve, not one per 10 um).
+  if (limits.velocity < feed_cap) limits.velocity = roundDown(limits.velocity, kLimitGridSteps);
+  limits.acceleration = roundDown(limits.acceleration, kLimitGridSteps);
+  limits.jerk = roundDown(limits.jerk, kLimitGridSteps);
+  keepSpeedCap(limits, true);
+  limits.acceleration = std::min(limits.acceleration, kinkAcceleration(limits.velocity, vertex));
+  enqueue(seg, MotionPrimitive::Kind::Line, limits, held_.start_limit, stop_after);
 }
 
 void ContinuousPath::queueHeld(const AxisValues& end, double end_trim, const EndVertex& vertex,
                                bool stop_after, bool end_at_rest) {
-  const int n = limits_.count;
   QueuedSegment seg;
   seg.where = held_.where;
   const bool start_at_rest = held_.start_limit <= 0.0, end_at_stop = stop_after || end_at_rest;
@@ -294,16 +314,7 @@ void ContinuousPath::queueHeld(const AxisValues& end, double end_trim, const End
   ChainShape chain;
   const double end_curvature = vertex.curvature;
   chain.curvature = roundUp(std::max(held_.start_curvature, end_curvature), kCurvatureGridSteps);
-  // The chain's curve turns towards the neighbours across chain vertices only: at any other
-  // vertex (a stop, a kink, a blend) the line's own direction is where it starts or ends.
-  const bool chain_start = held_.start_curvature > 0.0, chain_end = end_curvature > 0.0;
-  for (int i = 0; i < n; ++i) {
-    chain.wiggle[i] = roundUp(std::max(held_.start_wiggle[i], vertex.wiggle[i]), kWiggleGridSteps);
-    const bool moves = held_.direction[i] != 0.0 ||
-                       (chain_start && held_.previous_direction[i] != 0.0) ||
-                       (chain_end && vertex.next_direction[i] != 0.0);
-    chain.involved[i] = moves ? 1.0 : 0.0;
-  }
+  setChainAxes(chain, vertex);
   chain.rate_along = chain.curvature * chain.curvature;  // the circle's rotation
   SegmentLimits limits = chain.curvature > 0.0
                              ? chainLimits(seg.path, held_.feed, chain, jerk_share)
@@ -313,19 +324,14 @@ void ContinuousPath::queueHeld(const AxisValues& end, double end_trim, const End
   // path is at rest (the first line of a chain started from a standstill, the last one
   // before a stop) the step is v^2 dk = 0: the line takes its other vertex's curvature.
   if (chain.curvature > 0.0) {
-    const bool start_at_rest = held_.start_limit <= 0.0;
-    end_at_rest = end_at_rest || stop_after;
     const double start_k = start_at_rest ? end_curvature : held_.start_curvature;
-    const double end_k = end_at_rest ? held_.start_curvature : end_curvature;
-    const double step = start_at_rest && end_at_rest ? 0.0 : std::abs(end_k - start_k);
+    const double end_k = end_at_stop ? held_.start_curvature : end_curvature;
+    const double step = start_at_rest && end_at_stop ? 0.0 : std::abs(end_k - start_k);
     limits.velocity = std::min(limits.velocity, curvatureStepLimit(step, chain.involved));
-    // Neighbouring lines of a chain differ slightly in curvature; rounded down to a common
-    // grid, their limits are equal and they join one run (one S-curve, not one per 10 um).
-    if (limits.velocity < held_.feed) limits.velocity = roundDown(limits.velocity, kLimitGridSteps);
-    limits.acceleration = roundDown(limits.acceleration, kLimitGridSteps);
-    limits.jerk = roundDown(limits.jerk, kLimitGridSteps);
+    enqueueChainLine(seg, limits, held_.feed, vertex, stop_after);
+    return;
   }
-  keepSpeedCap(limits, chain.curvature > 0.0);
+  keepSpeedCap(limits, false);
   limits.acceleration = std::min(limits.acceleration,
                                  kinkAcceleration(limits.velocity, vertex));
   enqueue(seg, MotionPrimitive::Kind::Line, limits, held_.start_limit, stop_after);
@@ -370,20 +376,10 @@ void ContinuousPath::bowRestingEnd(PathSegment& line, bool at_start) const {
 void ContinuousPath::queueBow(QueuedSegment& seg, const EndVertex& vertex, double jerk_share,
                               bool stop_after, bool end_at_rest) {
   const int n = limits_.count;
-  const bool chain_start = held_.start_curvature > 0.0, chain_end = vertex.curvature > 0.0;
-  AxisValues involved{};
-  for (int i = 0; i < n; ++i) {
-    const bool moves = held_.direction[i] != 0.0 ||
-                       (chain_start && held_.previous_direction[i] != 0.0) ||
-                       (chain_end && vertex.next_direction[i] != 0.0);
-    involved[i] = moves ? 1.0 : 0.0;
-  }
+  ChainShape chain;
+  setChainAxes(chain, vertex);  // (a polygon chain vertex at an end keeps its wiggle)
   double residual = 0.0;
-  ChainShape chain = bowShape(seg.path, involved, residual);
-  chain.involved = involved;
-  // A polygon chain vertex at an end (no bow fitted there) keeps its wiggle.
-  for (int i = 0; i < n; ++i)
-    chain.wiggle[i] = roundUp(std::max(held_.start_wiggle[i], vertex.wiggle[i]), kWiggleGridSteps);
+  bowShape(seg.path, chain, residual);
   if (held_.start_bowed) {
     // Along a chain the speed bound and the stretch only grow (to the chain's largest, a
     // hair over 1): fewer shapes.
@@ -403,7 +399,6 @@ void ContinuousPath::queueBow(QueuedSegment& seg, const EndVertex& vertex, doubl
     chain.stretch = std::max(chain.stretch, before.stretch);
     for (int i = 0; i < n; ++i) chain.involved[i] = std::max(chain.involved[i], before.involved[i]);
   }
-  last_bow_shape_ = chain;
   // The ramp envelope is searched for a bow's limits where its shape repeats (a circle in
   // chords: once) or a chain starts (its first bow joins the run of the next ones, and a run
   // takes the lowest limits of its segments); not where the shape changes from bow to bow (a
@@ -411,23 +406,16 @@ void ContinuousPath::queueBow(QueuedSegment& seg, const EndVertex& vertex, doubl
   // of a six-axis program.
   ChainShape seen = chain;  // (searched or not: a shape seen before repeats)
   seen.ramp_envelope = false;
-  const bool repeats = !held_.start_bowed || chain == last_fine_bow_shape_ ||
+  const bool repeats = !held_.start_bowed || chain == last_bow_shape_ ||
                        cachedChainLimits(held_.feed, chain, jerk_share) != nullptr ||
                        cachedChainLimits(held_.feed, seen, jerk_share) != nullptr;
-  last_fine_bow_shape_ = chain;
+  last_bow_shape_ = chain;
   chain.ramp_envelope = repeats;
   SegmentLimits limits = chainLimits(seg.path, held_.feed, chain, jerk_share);
-  // Below the feed (over the speed bound, the same for the chain's bows), rounded down like
-  // a polygon chain's lines so that neighbours join one run.
-  const double feed_cap = held_.feed / chain.speed;
   limits.velocity = std::min(limits.velocity,
                              curvatureStepLimit(kResidualWeight * residual, chain.involved));
-  if (limits.velocity < feed_cap) limits.velocity = roundDown(limits.velocity, kLimitGridSteps);
-  limits.acceleration = roundDown(limits.acceleration, kLimitGridSteps);
-  limits.jerk = roundDown(limits.jerk, kLimitGridSteps);
-  keepSpeedCap(limits, true);
-  limits.acceleration = std::min(limits.acceleration, kinkAcceleration(limits.velocity, vertex));
-  enqueue(seg, MotionPrimitive::Kind::Line, limits, held_.start_limit, stop_after);
+  // (The feed over the speed bound is the same for the chain's bows.)
+  enqueueChainLine(seg, limits, held_.feed / chain.speed, vertex, stop_after);
 }
 
 const SegmentLimits* ContinuousPath::cachedChainLimits(double feed, const ChainShape& chain,
@@ -547,6 +535,14 @@ bool ContinuousPath::move(const PathSegment& programmed, double feed, double fee
     const double theta = turnAngle(a.end_direction, next.direction, n);
     const AxisValues involved = involvedAxes(next, programmed);
     const bool lines = !a.arc && !next.arc;
+    // The polygon's curvature vector here, (c_b - c_a) / mean length (lines only), and
+    // whether the polygon is smooth here (smoothPolygon).
+    AxisValues polygon_curvature{};
+    if (lines)
+      for (int i = 0; i < n; ++i)
+        polygon_curvature[i] =
+            (next.direction[i] - a.direction[i]) / (0.5 * (a.length + next.length));
+    const bool smooth = lines && smoothPolygon(polygon_curvature);
     const double kappa = 2.0 * std::sin(0.5 * theta) / (0.5 * (a.length + next.length));
     const double longest = std::max(a.length, next.length);
     // The polygon's deviation from the curve through the vertex, along the axes the turn
@@ -571,7 +567,7 @@ bool ContinuousPath::move(const PathSegment& programmed, double feed, double fee
       next.start_kinked = true;
     } else if (const std::optional<BowVertex> bow =
                    lines && theta <= kChainMaxTurn
-                       ? bowVertex(next, theta)
+                       ? bowVertex(next, theta, polygon_curvature, smooth)
                        : std::nullopt) {
       // Bowed chain vertex: both lines planned as the curve through it, bowed to its tangent.
       queueHeld(a.end, 0.0,
@@ -608,10 +604,8 @@ bool ContinuousPath::move(const PathSegment& programmed, double feed, double fee
     next.previous_direction = a.end_direction;
     next.previous_length = a.length;
     if (lines) {
-      next.start_smooth = smoothPolygon(next);
-      for (int i = 0; i < n; ++i)
-        next.start_polygon_curvature[i] =
-            (next.direction[i] - a.direction[i]) / (0.5 * (a.length + next.length));
+      next.start_smooth = smooth;
+      next.start_polygon_curvature = polygon_curvature;
       next.polygon_curvature_before = a.start_polygon_curvature;
       next.polygon_curvatures = std::min(a.polygon_curvatures + 1, 2);
     }

@@ -42,6 +42,15 @@ double dot(const AxisValues& a, const AxisValues& b, int n) {
   return sum;
 }
 
+// The parts of v along the unit vector c and across it (their sizes; along signed).
+struct Split {
+  double along, across;
+};
+Split split(const AxisValues& v, const AxisValues& c, int n) {
+  const double along = dot(v, c, n);
+  return {along, std::sqrt(std::max(dot(v, v, n) - along * along, 0.0))};
+}
+
 // Control points of dx/ds (4th degree), d2x/ds2 (3rd) and d3x/ds3 (2nd).
 struct BowHull {
   std::array<AxisValues, 5> velocity{};
@@ -143,10 +152,10 @@ void PathSegment::setBowBounds() {
       r1[i] = h.curvature[1][i] - (2.0 * k0[i] + k1[i]) / 3.0;
       r2[i] = h.curvature[2][i] - (k0[i] + 2.0 * k1[i]) / 3.0;
     }
-    const double along = dot(g, c, n);
+    const Split parts = split(g, c, n);
     b.reference_rate = norm(g, n);
-    b.reference_along = std::abs(along);
-    b.reference_across = std::sqrt(std::max(dot(g, g, n) - along * along, 0.0));
+    b.reference_along = std::abs(parts.along);
+    b.reference_across = parts.across;
     b.residual = std::max(norm(r1, n), norm(r2, n));
   }
   double slowest = 1.0;  // of x' . c, at least |x'|'s smallest
@@ -169,17 +178,12 @@ void PathSegment::setBowBounds() {
     q1[i] = 2.0 * (h.rate[1][i] - h.rate[0][i]);
     q2[i] = h.rate[0][i] - 2.0 * h.rate[1][i] + h.rate[2][i];
   }
-  auto split = [&](const AxisValues& v, double& along, double& across) {
-    along = dot(v, c, n);
-    across = std::sqrt(std::max(dot(v, v, n) - along * along, 0.0));
-  };
-  double q2_along, q2_across;
-  split(q2, q2_along, q2_across);
+  const Split q2_parts = split(q2, c, n);
   // |q(u)|^2 and q(u) . c as polynomials in u, from the dot products of q0, q1, q2 (the
   // samples then cost no loop over the axes).
   const double q00 = dot(q0, q0, n), q01 = dot(q0, q1, n), q02 = dot(q0, q2, n);
   const double q11 = dot(q1, q1, n), q12 = dot(q1, q2, n), q22 = dot(q2, q2, n);
-  const double c0 = dot(q0, c, n), c1 = dot(q1, c, n), c2 = q2_along;
+  const double c0 = dot(q0, c, n), c1 = dot(q1, c, n), c2 = q2_parts.along;
   for (int k = 0; k <= kRateSamples; ++k) {
     const double u = static_cast<double>(k) / kRateSamples;
     const double size2 = std::max(
@@ -191,8 +195,8 @@ void PathSegment::setBowBounds() {
   }
   constexpr double kBetween = 0.25 / (kRateSamples * kRateSamples);
   b.rate += kBetween * norm(q2, n);
-  b.rate_along += kBetween * std::abs(q2_along);
-  b.rate_across += kBetween * q2_across;
+  b.rate_along += kBetween * std::abs(q2_parts.along);
+  b.rate_across += kBetween * q2_parts.across;
   // The part of d2x/ds2 along the tangent, x'' . x' / |x'|, is at most max |x'' . x'| over
   // the smallest |x'|: x'' . x' is a 7th-degree Bezier whose coefficients are the products'
   // (c_k = sum over i + j = k of C(3, i) C(4, j) / C(7, k) x''_i . x'_j).
@@ -210,10 +214,7 @@ void PathSegment::setBowBounds() {
   // tangent, which turns from c by at most this angle's sine).
   double off = 0.0;
   if (slowest > 0.0)
-    for (const AxisValues& v : h.velocity) {
-      const double along = dot(v, c, n);
-      off = std::max(off, std::sqrt(std::max(dot(v, v, n) - along * along, 0.0)) / slowest);
-    }
+    for (const AxisValues& v : h.velocity) off = std::max(off, split(v, c, n).across / slowest);
   b.off_chord = std::min(off, 1.0);
 }
 

@@ -9,8 +9,8 @@
 //    bowed (path.h PathSegment::bow): the vertex gets one tangent (the turn split between
 //    its chords in proportion to their lengths) and one curvature vector, so the path passes
 //    it with continuous velocity and acceleration; a bow stays within the tolerance of its
-//    chord, and noisy chains (the curvature changing by over kSmoothChange from vertex to
-//    vertex) are not bowed. Without a bow, the polygon itself is followed where it stays
+//    chord, and noisy chains (the polygon's curvature varying from vertex to vertex by more
+//    than kSmoothChange in its second difference) are not bowed. Without a bow, the polygon itself is followed where it stays
 //    within a few nanometres of the curve, its deviation budgeted as "wiggle" in the sampled
 //    acceleration and jerk (docs/planner.md, "Chains").
 //  - blend: the corner is replaced by a curvature-continuous CornerBlend that stays within
@@ -132,15 +132,24 @@ class ContinuousPath {
   // its bounds only if `bounds`, PathSegment::bow).
   PathSegment heldPart(const AxisValues& end, double end_trim, const BowVertex* end_bow = nullptr,
                        bool bounds = true) const;
-  // The bow of a chain vertex between the held line and the line `next` turning by `theta`,
-  // if the corner tolerance allows one (the bows of both lines within it) and the polygon is
-  // smooth there and at the vertex before.
-  std::optional<BowVertex> bowVertex(const HeldMove& next, double theta) const;
-  // Whether the polygon is smooth (not noisy) at the held line's end vertex, joining `next`.
-  bool smoothPolygon(const HeldMove& next) const;
-  // The shape a bowed chain line `bow` moving the axes `involved` is planned with (its
-  // bounds, on grids), and the residual curvature its speed is capped for (0: none).
-  ChainShape bowShape(const PathSegment& bow, const AxisValues& involved, double& residual) const;
+  // The bow of a chain vertex between the held line and the line `next` turning by `theta`
+  // (the polygon's curvature vector there `chain`, `smooth` there: smoothPolygon), if the
+  // corner tolerance allows one (the bows of both lines within it) and the polygon is smooth
+  // there and at the vertex before.
+  std::optional<BowVertex> bowVertex(const HeldMove& next, double theta, const AxisValues& chain,
+                                     bool smooth) const;
+  // Whether the polygon is smooth (not noisy) at the held line's end vertex, where its
+  // curvature vector is `k`.
+  bool smoothPolygon(const AxisValues& k) const;
+  // The bounds a bowed chain line `bow` is planned with, on grids, into `chain` (whose
+  // involved axes are set), and the residual curvature its speed is capped for (0: none).
+  void bowShape(const PathSegment& bow, ChainShape& chain, double& residual) const;
+  // The involved axes and the wiggle of the held line's chain shape, ending at `vertex`.
+  void setChainAxes(ChainShape& chain, const EndVertex& vertex) const;
+  // Queues `seg`, a chain line or bow with `limits`: rounded down to a grid so that its
+  // neighbours join one run (the speed only below `feed_cap`), with the kinks' room.
+  void enqueueChainLine(QueuedSegment& seg, SegmentLimits limits, double feed_cap,
+                        const EndVertex& vertex, bool stop_after);
   // The held move as programmed.
   PathSegment heldProgrammed() const;
   // The axes the held move or `next` (programmed as `next_path`) moves (1), and those it
@@ -198,8 +207,7 @@ class ContinuousPath {
     ChainShape shape;
     SegmentLimits limits;
   };
-  ChainShape last_bow_shape_;       // the shape of the last bow queued (queueBow)
-  ChainShape last_fine_bow_shape_;  // and on its finest grid
+  ChainShape last_bow_shape_;  // the shape of the last bow queued (queueBow)
   std::array<ChainLimits, 32> chain_cache_{};  // the last shapes seen, replaced in turn
   std::size_t chain_cache_next_ = 0;
 };
