@@ -5,6 +5,7 @@
 #include <limits>
 #include <optional>
 
+#include "ncc/vm/motion/distinct_axes.h"
 #include "ncc/vm/motion/ramp_envelope.h"
 
 namespace ncc::vm::motion {
@@ -152,10 +153,7 @@ SegmentLimits segmentLimits(const PathSegment& path, const AxisLimits& machine_a
   return lim;
 }
 
-void TangentialBudget::add(const Axis& axis) {
-  if (count_ >= kMaxAxes) return;
-  axes_[count_++] = axis;
-}
+void TangentialBudget::add(const Axis& axis) { addDistinctAxis(axes_, count_, axis); }
 
 double TangentialBudget::jerkAt(double a) const {
   double j = kInf;

@@ -6,6 +6,8 @@
 #include <limits>
 #include <utility>
 
+#include "ncc/vm/motion/distinct_axes.h"
+
 namespace ncc::vm::motion {
 namespace {
 
@@ -13,10 +15,7 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 
 }  // namespace
 
-void RampEnvelope::add(const Axis& axis) {
-  if (count_ >= kMaxAxes) return;
-  axes_[count_++] = axis;
-}
+void RampEnvelope::add(const Axis& axis) { addDistinctAxis(axes_, count_, axis); }
 
 RampEnvelope::Interval RampEnvelope::interval(int first, int end) const {
   // Over [u0, u1]: alpha is largest at u0, the terms that grow with v at u1.
