@@ -83,15 +83,22 @@ SegmentLimits segmentLimits(const PathSegment& path, const AxisLimits& machine_a
   const double rotation_share = path.shape() == PathSegment::Shape::Blend ? 2.0 / 3.0 : 1.0 / 3.0;
 
   // Path speed: programmed feed, axis speeds, and on curves the centripetal, curvature-rate
-  // and chord-error caps.
+  // and chord-error caps. The centripetal and curvature-rate caps are roots of a ratio per
+  // axis; the roots are monotonic, so the cap is the root of the smallest ratio (one cbrt per
+  // segment, not one per axis). A ratio whose root is NaN (0/0; a negative one under the
+  // square root) caps nothing, as std::min(v, NaN) did.
+  double centripetal_ratio = kInf, rotation_ratio = kInf;
   for (int i = 0; i < axes.count; ++i) {
     if (t[i] > 0.0)
       lim.velocity = std::min(lim.velocity, (rapid ? axes.rapid_velocity[i] : axes.feed_velocity[i]) / t[i]);
     if (!curved || q[i] == 0.0) continue;
-    lim.velocity = std::min(lim.velocity, std::sqrt(kCentripetalShare * axes.acceleration[i] / (kappa * q[i])));
+    const double centripetal = kCentripetalShare * axes.acceleration[i] / (kappa * q[i]);
+    if (centripetal >= 0.0) centripetal_ratio = std::min(centripetal_ratio, centripetal);
     const double smooth = jerk_share * axes.jerk[i] - wiggleJerk(i);
-    lim.velocity = std::min(lim.velocity, std::cbrt(rotation_share * smooth / (rate * q[i])));
+    rotation_ratio = std::min(rotation_ratio, rotation_share * smooth / (rate * q[i]));
   }
+  lim.velocity = std::min(lim.velocity, std::sqrt(centripetal_ratio));
+  lim.velocity = std::min(lim.velocity, std::cbrt(rotation_ratio));
   if (curved && axes.chord_tolerance > 0.0) {
     // Chord error of the setpoint polygon: a chord c on curvature k deviates by about
     // k c^2 / 8 (exact for small chords on an arc: c = 2 sqrt(2 r e - e^2)).
