@@ -37,7 +37,8 @@ TEST(PitchTable, EndValuesHeldOutside) {
 }
 
 // The servo model's per-cycle path (all axes' divisions side by side, then the interpolation)
-// gives pitchValue() bit for bit: inside, between and outside the support points, and NaN.
+// gives pitchValue() bit for bit: inside, between and outside the support points, and NaN;
+// an axis whose position repeats keeps its value, one that moves gets the new one.
 TEST(PitchTable, ServoLookupIsPitchValue) {
   vm::PitchTables tables;
   tables.add(1, table());
@@ -46,20 +47,29 @@ TEST(PitchTable, ServoLookupIsPitchValue) {
   const PitchTable t1 = table(), t3{0.0, 0.1, {0.0, -0.001, 0.0005}};
   by_axis[1] = &t1;
   by_axis[3] = &t3;
-  vm::PitchTables::Values position{}, parameter{}, value{};
-  for (double x = -40.0; x <= 40.0; x += 0.0625) {
-    for (int i = 0; i < 4; ++i) position[i] = i == 3 ? x / 100.0 : x;
-    value.fill(0.0);
-    tables.lookUp(4, position, parameter, value);
+  vm::PitchTables::Values position{};
+  auto expectPitchValues = [&] {
     for (int i = 0; i < 4; ++i) {
       const double expected = by_axis[i] ? vm::pitchValue(*by_axis[i], position[i]) : 0.0;
-      EXPECT_EQ(value[i], expected) << "axis " << i << " at " << position[i];
+      EXPECT_EQ(tables.values()[i], expected) << "axis " << i << " at " << position[i];
       EXPECT_EQ(tables.valueAt(i, position[i]), expected) << "axis " << i;
     }
+  };
+  for (double x = -40.0; x <= 40.0; x += 0.0625) {
+    for (int i = 0; i < 4; ++i) position[i] = i == 3 ? x / 100.0 : x;
+    tables.lookUp(4, position);
+    expectPitchValues();
+    // Axis 1 at rest, axis 3 moved on: each value is the one at its position.
+    position[3] = -position[3];
+    tables.lookUp(4, position);
+    expectPitchValues();
   }
   position[1] = std::nan("");
-  tables.lookUp(4, position, parameter, value);
-  EXPECT_EQ(value[1], 0.0);  // the first value
+  tables.lookUp(4, position);
+  EXPECT_EQ(tables.values()[1], 0.0);  // the first value
+  position[1] = 25.0;
+  tables.lookUp(4, position);
+  expectPitchValues();
 }
 
 // At rest at x, the table is at x + e(x) without compensation; with the same table as LEC

@@ -34,11 +34,12 @@ ServoAxes::ServoAxes(const MachineConfig& machine, int axis_count)
 }
 
 void ServoAxes::reset(const AxisValues& position) {
+  for (int i = 0; i < count_; ++i) setpoint_[i] = position[i];
+  compensation_tables_.lookUp(count_, setpoint_);
+  const AxisLanes& compensation = compensation_tables_.values();
   for (int i = 0; i < count_; ++i) {
-    setpoint_[i] = position[i];
     setpoint_delta_[i] = 0.0;
-    compensation_[i] = compensation_tables_.valueAt(i, position[i]);
-    const double command = position[i] - compensation_[i];
+    const double command = position[i] - compensation[i];
     command_[i] = command;
     target_[i] = command;
     ffw_velocity_[i] = 0.0;
@@ -48,10 +49,11 @@ void ServoAxes::reset(const AxisValues& position) {
     motor_[i] = command;
     speed_[i] = 0.0;
     last_speed_[i] = 0.0;
-    pitch_error_value_[i] = pitch_error_tables_.valueAt(i, command);
     play_lag_[i] = 0.0;
-    last_nut_[i] = command + pitch_error_value_[i];
   }
+  pitch_error_tables_.lookUp(count_, motor_);
+  const AxisLanes& pitch_error = pitch_error_tables_.values();
+  for (int i = 0; i < count_; ++i) last_nut_[i] = motor_[i] + pitch_error[i];
 }
 
 void ServoAxes::step(const AxisValues& __restrict setpoint, ServoSample& __restrict out) {
@@ -69,7 +71,8 @@ void ServoAxes::step(const AxisValues& __restrict setpoint, ServoSample& __restr
   // moves the axis negative). Backlash: the step acts on the position loop only, as Siemens
   // corrects the actual value, so it is neither differentiated into the feed-forward nor
   // symmetrised.
-  compensation_tables_.lookUp(n, setpoint_, table_parameter_, compensation_);
+  compensation_tables_.lookUp(n, setpoint_);
+  const AxisLanes& compensation = compensation_tables_.values();
   for (int i = 0; i < lanes; ++i)
     backlash_[i] = backlashCompensation(backlash_[i], setpoint_delta_[i], backlash_half_[i]);
 
@@ -77,7 +80,7 @@ void ServoAxes::step(const AxisValues& __restrict setpoint, ServoSample& __restr
   // position loop acts on the error at the cycle's start (against the previous target); the
   // feed-forward is the speed (and the speed change) this cycle's move needs.
   for (int i = 0; i < lanes; ++i) {
-    const double command = setpoint_[i] - compensation_[i];
+    const double command = setpoint_[i] - compensation[i];
     const double ffw_velocity = (command - command_[i]) / cycle;
     const double ffw_acceleration = (ffw_velocity - ffw_velocity_[i]) / cycle;
     const double speed_setpoint = kv_[i] * (target_[i] - motor_[i]) +
@@ -96,9 +99,10 @@ void ServoAxes::step(const AxisValues& __restrict setpoint, ServoSample& __restr
   }
 
   // 3. Mechanics between the motor and the table, and the sample at the cycle's end.
-  pitch_error_tables_.lookUp(n, motor_, table_parameter_, pitch_error_value_);
+  pitch_error_tables_.lookUp(n, motor_);
+  const AxisLanes& pitch_error = pitch_error_tables_.values();
   for (int i = 0; i < lanes; ++i) {
-    const double nut = motor_[i] + pitch_error_value_[i];
+    const double nut = motor_[i] + pitch_error[i];
     play_lag_[i] = takeUpPlay(play_lag_[i], nut - last_nut_[i], play_half_[i]);
     last_nut_[i] = nut;
     actual_[i] = nut - play_sign_[i] * play_lag_[i];

@@ -4,6 +4,7 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <limits>
 #include <vector>
 
 #include "ncc/machine/axes.h"
@@ -63,28 +64,35 @@ class PitchValues {
 // One kind of table (the control's LEC, or the simulated leadscrew's error) for all axes of a
 // machine, for the servo model's cycle: the divisions of all axes side by side (a loop the
 // compiler vectorises: over the axes' lanes, axis_lanes.h), then the interpolation where an
-// axis has a table.
+// axis has a table and has moved. It holds the values it looked up: an axis at rest (its
+// parameter bit-identical to the last one) keeps its value without a second interpolation.
 class PitchTables {
  public:
   using Values = AxisLanes;
 
-  PitchTables() { step_.fill(1.0); }  // no table: a harmless division
+  PitchTables() {
+    step_.fill(1.0);  // no table: a harmless division
+    last_parameter_.fill(std::numeric_limits<double>::quiet_NaN());  // equal to nothing
+  }
   // Each axis at most once; an empty table adds nothing.
   void add(int axis, const PitchTable& table);
 
-  // value[i] = the value at position[i] for each axis i < n with a table; the others' values
-  // are left alone (0 in the servo model). `parameter` is scratch.
-  void lookUp(int n, const Values& position, Values& __restrict parameter, Values& value) const {
+  // values()[i] = the value at position[i] for each axis i < n with a table; 0 for the others.
+  void lookUp(int n, const Values& position) {
     if (axis_count_ == 0) return;
     const int lanes = laneCount(n);
+    Values parameter;
     for (int i = 0; i < lanes; ++i)
       parameter[i] = pitchParameter(position[i], start_[i], step_[i]);
     for (int k = 0; k < axis_count_; ++k) {
       const int i = axes_[k];
-      value[i] = values_[i].at(parameter[i]);
+      if (parameter[i] == last_parameter_[i]) continue;  // (NaN: never equal, looked up)
+      last_parameter_[i] = parameter[i];
+      value_[i] = values_[i].at(parameter[i]);
     }
   }
-  // The same for one axis (0 without a table).
+  const Values& values() const { return value_; }
+  // The same for one axis (0 without a table), without keeping it.
   double valueAt(int axis, double position) const {
     return values_[axis].empty()
                ? 0.0
@@ -97,6 +105,8 @@ class PitchTables {
   std::array<PitchValues, kMaxAxes> values_;  // copies, allocated when added
   std::array<int, kMaxAxes> axes_{};          // the axes with a table, in order
   int axis_count_ = 0;
+  Values last_parameter_{};  // of each axis' last lookUp (NaN before the first)
+  Values value_{};           // the value there
 };
 
 inline void PitchTables::add(int axis, const PitchTable& table) {

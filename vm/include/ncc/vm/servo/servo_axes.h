@@ -58,15 +58,14 @@ class ServoAxes {
   Values backlash_half_{};  // MD 32450 / 2
   Values play_half_{};     // |mechanical play| / 2
   Values play_sign_{};     // +1: encoder ahead of the table, -1: behind
+  // The tables, and their values at the last lookup (0 without a table): compensation at the
+  // setpoint, error at the motor position.
   PitchTables compensation_tables_;  // the control's LEC
   PitchTables pitch_error_tables_;   // the simulated leadscrew's error
 
   // State.
   Values setpoint_{};           // last setpoint
   Values setpoint_delta_{};     // its change in the last cycle
-  Values table_parameter_{};    // scratch: a pitch table's parameter by axis
-  Values compensation_{};       // LEC value at this cycle's setpoint (0 without a table)
-  Values pitch_error_value_{};  // leadscrew error at the motor position (0 without a table)
   Values backlash_{};           // backlash compensation now: +-half or 0
   Values command_{};            // last command without the backlash step (the feed-forward's)
   Values target_{};             // position controller's setpoint: the (symmetrised) command
