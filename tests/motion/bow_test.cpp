@@ -288,6 +288,33 @@ TEST(BowChains, AnEllipseInCoarseChordsRunsAtItsCurvaturesSpeed) {
   }
 }
 
+TEST(BowChains, AnEllipseInFineChordsRunsAsFastAsInCoarseOnes) {
+  // The same ellipse (b = 5) in 0.005 mm chords: each bow takes the lower of two bounds
+  // (bowShape), and where they are close the choice flips from bow to bow, so the limits of
+  // neighbouring bows alternate between a faster and a slower set. The fast ones made runs of
+  // one bow, each ending at a = 0, and the speed could not ramp: 1.9 s (written with 9
+  // decimals to `ncc run`: 3.6 s, a third of the bows runs of their own). A faster short
+  // segment now joins the run before it (LookAhead, tooShortToSplit): 1.3 s.
+  // Chords of equal length, as CAM systems write them (ellipse() steps the angle evenly),
+  // the coordinates in whole nanometres (written with 9 decimals: exact, they take 1.2 s).
+  const MachineConfig m = defaultMachine();
+  auto nm = [](double x) { return std::round(x * 1e9) / 1e9; };
+  std::vector<MotionPrimitive> prog;
+  AxisValues p = xyz(10.0, 0.0, 0.0);
+  for (double t = 0.0; t < 2.0 * std::numbers::pi;) {
+    t += 0.005 / std::hypot(10.0 * std::sin(t), 5.0 * std::cos(t));
+    const AxisValues q = t >= 2.0 * std::numbers::pi
+                             ? xyz(10.0, 0.0, 0.0)
+                             : xyz(nm(10.0 * std::cos(t)), nm(5.0 * std::sin(t)), 0.0);
+    prog.push_back(line(p, q, 6000.0));
+    p = q;
+  }
+  const Trace bowed = run(m, prog, 4096);
+  EXPECT_LT(bowed.ticks(), 1500u);
+  expectWithinAxisLimits(m, bowed);
+  EXPECT_LE(worstDeviation(bowed, prog), m.corner_tolerance);
+}
+
 TEST(BowChains, AWaveThroughItsInflectionsIsOneChain) {
   // A sine wave (amplitude 0.5 mm, 3.14 mm long) in 0.05 mm chords at F3000, the curve of the
   // six-axis benchmark: its curvature changes sign every half wave. The noise rule looks at
