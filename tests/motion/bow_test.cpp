@@ -335,6 +335,22 @@ TEST(BowChains, AWaveThroughItsInflectionsIsOneChain) {
   EXPECT_LE(worstDeviation(t, prog), m.corner_tolerance);
 }
 
+TEST(BowChains, ABowedChainStaysBowedThroughModerateNoise) {
+  // A circle r 10 in 0.2 mm chords rounded to 0.1 um: the rounding moves the second
+  // difference of the polygon's curvature to about a tenth of the curvature, around the noise
+  // rule's threshold, so some vertices passed it and others did not, and bows (curvature k)
+  // and blends (curvature 0 at their ends) alternated: 3.5 s. Once bowing, a chain now goes
+  // on while the change is within half the curvature (kSmoothKeep): 1.8 s.
+  const MachineConfig m = defaultMachine();
+  const double r = 10.0;
+  const std::vector<MotionPrimitive> prog = polygonCircle(
+      r, static_cast<int>(std::lround(2.0 * std::numbers::pi * r / 0.2)), 6000.0, 1e-4);
+  const Trace t = run(m, prog, 4096);
+  EXPECT_LT(t.ticks(), 2000u);
+  expectWithinAxisLimits(m, t);
+  EXPECT_LE(worstDeviation(t, prog), m.corner_tolerance);
+}
+
 TEST(BowChains, NoisyChordsAreSmoothedByBlends) {
   // A circle r 10 in 0.05 mm chords rounded to 1 um, as a CAM system writes it: the rounding
   // moves the polygon's curvature by many times itself from vertex to vertex. Bowed through

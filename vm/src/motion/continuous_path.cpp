@@ -16,8 +16,10 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 constexpr double kChainMaxTurn = 0.1;
 // The polygon is smooth (not noisy) at a vertex where the second difference of its curvature
 // vectors over three vertices is at most this share of their size (ContinuousPath::
-// smoothPolygon).
+// smoothPolygon); a chain already bowed at the vertex before goes on up to kSmoothKeep (near
+// the threshold, bows and blends alternated, slower than either throughout).
 constexpr double kSmoothChange = 0.1;
+constexpr double kSmoothKeep = 0.5;
 // A bow's d2x/ds2 off the chain's reference by at most e reads in a sampled jerk as at most
 // 1.5 e v^2 / T (docs/planner.md, "Chains"), budgeted like a curvature step of 1.5 e.
 constexpr double kResidualWeight = 1.5;
@@ -191,7 +193,8 @@ bool ContinuousPath::smoothPolygon(const AxisValues& k) const {
   // a smooth curve's by the polygon's curvature vectors K at this vertex and the two before:
   // on a smooth curve their second difference is tiny (K'' l^2), also where the curvature
   // changes sign; a rounding of d makes it about 4 d / l^2. Smooth: at most kSmoothChange of
-  // the largest of the three (one vertex known before: their difference; none: smooth).
+  // the largest of the three (one vertex known before: their difference; none: smooth), or
+  // kSmoothKeep where the line before starts bowed.
   const HeldMove& a = held_;
   if (a.polygon_curvatures == 0) return true;
   const int n = limits_.count;
@@ -206,7 +209,8 @@ bool ContinuousPath::smoothPolygon(const AxisValues& k) const {
     before += k1[i] * k1[i];
     before_that += both ? k2[i] * k2[i] : 0.0;
   }
-  return std::sqrt(change) <= kSmoothChange * std::sqrt(std::max({here, before, before_that}));
+  const double share = a.start_bowed ? kSmoothKeep : kSmoothChange;
+  return std::sqrt(change) <= share * std::sqrt(std::max({here, before, before_that}));
 }
 
 PathSegment ContinuousPath::heldProgrammed() const {

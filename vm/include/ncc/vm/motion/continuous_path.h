@@ -10,7 +10,8 @@
 //    its chords in proportion to their lengths) and one curvature vector, so the path passes
 //    it with continuous velocity and acceleration; a bow stays within the tolerance of its
 //    chord, and noisy chains (the polygon's curvature varying from vertex to vertex by more
-//    than kSmoothChange in its second difference) are not bowed. Without a bow, the polygon itself is followed where it stays
+//    than kSmoothChange in its second difference; kSmoothKeep once bowed) are not bowed.
+//    Without a bow, the polygon itself is followed where it stays
 //    within a few nanometres of the curve, its deviation budgeted as "wiggle" in the sampled
 //    acceleration and jerk (docs/planner.md, "Chains").
 //  - blend: the corner is replaced by a curvature-continuous CornerBlend that stays within
