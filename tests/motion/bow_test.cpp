@@ -252,6 +252,22 @@ std::vector<MotionPrimitive> ellipse(double b, double chord, double feed) {
   return prog;
 }
 
+// A chain run through the planner on `m`, checked against every axis limit and the corner
+// tolerance of its chords.
+Trace runChain(const MachineConfig& m, const std::vector<MotionPrimitive>& prog) {
+  Trace t = run(m, prog, 4096);
+  expectWithinAxisLimits(m, t);
+  EXPECT_LE(worstDeviation(t, prog), m.corner_tolerance);
+  return t;
+}
+
+// A circle r 10 in chords of about `chord` mm at F6000, the vertices rounded to `rounding`.
+std::vector<MotionPrimitive> roundedCircle(double chord, double rounding) {
+  const double r = 10.0;
+  return polygonCircle(r, static_cast<int>(std::lround(2.0 * std::numbers::pi * r / chord)),
+                       6000.0, rounding);
+}
+
 TEST(BowChains, CoarseChordsOfACircleRunLikeTheArc) {
   // R 10 in 0.2 mm chords at F6000: bowed, the chain runs like the arc itself (the quintics
   // through the vertices with the circle's tangents and curvature are the circle within
@@ -280,11 +296,7 @@ TEST(BowChains, AnEllipseInCoarseChordsRunsAtItsCurvaturesSpeed) {
   // 1.6 and 1.7 s.
   const MachineConfig m = defaultMachine();
   for (double b : {5.0, 2.0}) {
-    const std::vector<MotionPrimitive> prog = ellipse(b, 0.05, 6000.0);
-    const Trace bowed = run(m, prog, 4096);
-    EXPECT_LT(bowed.ticks(), 1800u) << b;
-    expectWithinAxisLimits(m, bowed);
-    EXPECT_LE(worstDeviation(bowed, prog), m.corner_tolerance) << b;
+    EXPECT_LT(runChain(m, ellipse(b, 0.05, 6000.0)).ticks(), 1800u) << b;
   }
 }
 
@@ -309,10 +321,7 @@ TEST(BowChains, AnEllipseInFineChordsRunsAsFastAsInCoarseOnes) {
     prog.push_back(line(p, q, 6000.0));
     p = q;
   }
-  const Trace bowed = run(m, prog, 4096);
-  EXPECT_LT(bowed.ticks(), 1500u);
-  expectWithinAxisLimits(m, bowed);
-  EXPECT_LE(worstDeviation(bowed, prog), m.corner_tolerance);
+  EXPECT_LT(runChain(m, prog).ticks(), 1500u);
 }
 
 TEST(BowChains, AWaveThroughItsInflectionsIsOneChain) {
@@ -329,10 +338,7 @@ TEST(BowChains, AWaveThroughItsInflectionsIsOneChain) {
     prog.push_back(line(p, q, 3000.0));
     p = q;
   }
-  const Trace t = run(m, prog, 4096);
-  EXPECT_LT(t.ticks(), 3200u);
-  expectWithinAxisLimits(m, t);
-  EXPECT_LE(worstDeviation(t, prog), m.corner_tolerance);
+  EXPECT_LT(runChain(m, prog).ticks(), 3200u);
 }
 
 TEST(BowChains, ABowedChainStaysBowedThroughModerateNoise) {
@@ -341,14 +347,7 @@ TEST(BowChains, ABowedChainStaysBowedThroughModerateNoise) {
   // rule's threshold, so some vertices passed it and others did not, and bows (curvature k)
   // and blends (curvature 0 at their ends) alternated: 3.5 s. Once bowing, a chain now goes
   // on while the change is within half the curvature (kSmoothKeep): 1.8 s.
-  const MachineConfig m = defaultMachine();
-  const double r = 10.0;
-  const std::vector<MotionPrimitive> prog = polygonCircle(
-      r, static_cast<int>(std::lround(2.0 * std::numbers::pi * r / 0.2)), 6000.0, 1e-4);
-  const Trace t = run(m, prog, 4096);
-  EXPECT_LT(t.ticks(), 2000u);
-  expectWithinAxisLimits(m, t);
-  EXPECT_LE(worstDeviation(t, prog), m.corner_tolerance);
+  EXPECT_LT(runChain(defaultMachine(), roundedCircle(0.2, 1e-4)).ticks(), 2000u);
 }
 
 TEST(BowChains, NoisyChordsAreSmoothedByBlends) {
@@ -357,14 +356,7 @@ TEST(BowChains, NoisyChordsAreSmoothedByBlends) {
   // its points, the path would follow the noise (10 to 14 s); the noise rule leaves the
   // vertices to the blends (within the tolerance, off the points), as before bows: 8 s (the
   // polygon without a tolerance: 31 s).
-  const MachineConfig m = defaultMachine();
-  const double r = 10.0;
-  const std::vector<MotionPrimitive> prog = polygonCircle(
-      r, static_cast<int>(std::lround(2.0 * std::numbers::pi * r / 0.05)), 6000.0, 1e-3);
-  const Trace t = run(m, prog, 4096);
-  EXPECT_LT(t.ticks(), 8200u);
-  expectWithinAxisLimits(m, t);
-  EXPECT_LE(worstDeviation(t, prog), m.corner_tolerance);
+  EXPECT_LT(runChain(defaultMachine(), roundedCircle(0.05, 1e-3)).ticks(), 8200u);
 }
 
 }  // namespace
