@@ -306,7 +306,9 @@ TEST(BowChains, AnEllipseInFineChordsRunsAsFastAsInCoarseOnes) {
   // neighbouring bows alternate between a faster and a slower set. The fast ones made runs of
   // one bow, each ending at a = 0, and the speed could not ramp: 1.9 s (written with 9
   // decimals to `ncc run`: 3.6 s, a third of the bows runs of their own). A faster short
-  // segment now joins the run before it (LookAhead, tooShortToSplit): 1.3 s.
+  // segment now joins the run before it while the faster tail is no longer than the rest
+  // (LookAhead, tooShortToSplit): 1.55 s (1.34 s with no bound, which made feed steps up
+  // crawl: LookAhead.AFeedStepUpDoesNotDragTheFastStretch).
   // Chords of equal length, as CAM systems write them (ellipse() steps the angle evenly),
   // the coordinates in whole nanometres (written with 9 decimals: exact, they take 1.2 s).
   const MachineConfig m = defaultMachine();
@@ -321,7 +323,7 @@ TEST(BowChains, AnEllipseInFineChordsRunsAsFastAsInCoarseOnes) {
     prog.push_back(line(p, q, 6000.0));
     p = q;
   }
-  EXPECT_LT(runChain(m, prog).ticks(), 1500u);
+  EXPECT_LT(runChain(m, prog).ticks(), 1700u);
 }
 
 TEST(BowChains, AWaveThroughItsInflectionsIsOneChain) {

@@ -29,6 +29,7 @@ bool close(double a, double b) { return std::abs(a - b) <= kJoinBand * std::max(
 // to accelerate in: alternating F5000 / F5100 on 10 um crawled at 15 mm/s.
 constexpr double kShortRunGain = 0.1;
 constexpr double kShortRunSpeedRatio = 0.8;
+constexpr double kFasterTailShare = 1.0;
 bool tooShortToSplit(const Run& run, const SegmentLimits& limits, double length) {
   const double v_lo = std::min(run.limits.velocity, limits.velocity);
   const double a = std::min(run.limits.acceleration, limits.acceleration);
@@ -36,9 +37,13 @@ bool tooShortToSplit(const Run& run, const SegmentLimits& limits, double length)
   if (!(a > 0.0 && j > 0.0 && v_lo > 0.0)) return false;
   // Only near speeds: a short slow segment joined to fast ones slows them all (the corpus
   // program bear took 0.46 % longer than with no such joins; with this bound 0.07 % less).
-  // A faster segment leaves the run's speed as it is: it slows nobody but itself, within
-  // the length checked below.
-  const bool faster = limits.velocity >= run.limits.velocity;
+  // A faster segment leaves the run's speed as it is and slows nobody but itself: it joins
+  // whatever its speed while the faster segments at the run's end stay within
+  // kFasterTailShare of the rest (bows among slower ones, where bowShape's two bounds
+  // alternate), not beyond (a feed step up, whose fast stretch would crawl at the slow speed,
+  // more so under a low feed override).
+  const bool faster = limits.velocity > run.limits.velocity &&
+                      run.faster_tail + length <= kFasterTailShare * (run.length - run.faster_tail);
   if (!faster && v_lo < kShortRunSpeedRatio * std::max(run.limits.velocity, limits.velocity))
     return false;
   return reachableGain(v_lo, run.length + length, a, j) <= kShortRunGain * v_lo;
@@ -131,6 +136,7 @@ void LookAhead::push(const QueuedSegment& segment, MotionPrimitive::Kind kind,
     last->length += length;
     ++last->segments;
     last->stop_after = stop_after;
+    last->faster_tail = limits.velocity > last->limits.velocity ? last->faster_tail + length : 0.0;
     // Limits below the run's by rounding only leave it as it is (kSameLimit).
     if (lowersLast(segment, limits)) lowerTo(*last, limits, segment.feed_limit);
   } else {

@@ -68,6 +68,9 @@ struct Run {
   // Lowest entry the motion under way can brake to (set by setScales, 0 otherwise).
   double entry_floor = 0.0;
   double entry_before = 0.0;  // entry_planned before the last setScales
+  // Length of the segments at its end that are faster than it (joined as short ones,
+  // tooShortToSplit, they run at its speed).
+  double faster_tail = 0.0;
 };
 
 // Where the motion under way is committed to when the speed limits change: at run offset
