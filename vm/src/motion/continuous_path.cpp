@@ -407,15 +407,18 @@ void ContinuousPath::queueBow(QueuedSegment& seg, const EndVertex& vertex, doubl
   // chords: once) or a chain starts (its first bow joins the run of the next ones, and a run
   // takes the lowest limits of its segments); not where the shape changes from bow to bow (a
   // sine, an ellipse), where every bow paid for a search: 30 us each, 4x the simulation time
-  // of a six-axis program.
-  ChainShape seen = chain;  // (searched or not: a shape seen before repeats)
+  // of a six-axis program. A shape seen before repeats, searched or not: the two lookups
+  // that tell also answer chainLimits' own (the limits with the envelope are `searched`, if
+  // any; those without it, for a shape that does not repeat, are not cached).
+  const SegmentLimits* searched = cachedChainLimits(held_.feed, chain, jerk_share);
+  ChainShape seen = chain;
   seen.ramp_envelope = false;
-  const bool repeats = !held_.start_bowed || chain == last_bow_shape_ ||
-                       cachedChainLimits(held_.feed, chain, jerk_share) != nullptr ||
+  const bool repeats = searched != nullptr || !held_.start_bowed || chain == last_bow_shape_ ||
                        cachedChainLimits(held_.feed, seen, jerk_share) != nullptr;
   last_bow_shape_ = chain;
   chain.ramp_envelope = repeats;
-  SegmentLimits limits = chainLimits(seg.path, held_.feed, chain, jerk_share);
+  SegmentLimits limits =
+      searched != nullptr ? *searched : newChainLimits(seg.path, held_.feed, chain, jerk_share);
   limits.velocity = std::min(limits.velocity,
                              curvatureStepLimit(kResidualWeight * residual, chain.involved));
   // (The feed over the speed bound is the same for the chain's bows.)
@@ -436,6 +439,11 @@ SegmentLimits ContinuousPath::chainLimits(const PathSegment& line, double feed,
   // A chain line's limits depend on nothing else: its tangent and normal are bounded by 1 on
   // every involved axis (limits.h), whatever its direction.
   if (const SegmentLimits* cached = cachedChainLimits(feed, chain, jerk_share)) return *cached;
+  return newChainLimits(line, feed, chain, jerk_share);
+}
+
+SegmentLimits ContinuousPath::newChainLimits(const PathSegment& line, double feed,
+                                             const ChainShape& chain, double jerk_share) {
   ChainLimits& slot = chain_cache_[chain_cache_next_];
   chain_cache_next_ = (chain_cache_next_ + 1) % chain_cache_.size();
   slot = {true, feed, jerk_share, chain, segmentLimits(line, limits_, false, feed, chain, jerk_share)};

@@ -195,6 +195,9 @@ class ContinuousPath {
   // The cached limits of that shape, if any.
   const SegmentLimits* cachedChainLimits(double feed, const ChainShape& chain,
                                          double jerk_share) const;
+  // Its limits computed and cached, for a shape known not to be cached.
+  SegmentLimits newChainLimits(const PathSegment& line, double feed, const ChainShape& chain,
+                               double jerk_share);
 
   const AxisLimits& limits_;
   LookAhead& queue_;
