@@ -23,7 +23,7 @@ double firstRunJerk(const std::vector<AxisValues>& points, End end) {
   MachineConfig machine = defaultMachine();
   machine.corner_tolerance = 0.0;  // no blends: a small turn is a kink
   const AxisLimits limits = AxisLimits::from(machine);
-  LookAhead queue(64, 1e9);
+  LookAhead queue(64, WindowReach::of(limits));
   ContinuousPath path(limits, queue);
   for (std::size_t i = 1; i < points.size(); ++i)
     path.move(PathSegment::line(points[i - 1], points[i], limits.count), 100.0, 100.0, false, {});

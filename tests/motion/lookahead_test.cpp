@@ -3,6 +3,7 @@
 // from the review of a first version, which lowered runs already planned for.
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <vector>
 
@@ -100,6 +101,79 @@ TEST(LookAhead, AFeedStepUpDoesNotDragTheFastStretch) {
     EXPECT_EQ(t.points.back(), prog.back().to);
     EXPECT_LT(t.ticks(), override_share == 1.0 ? 4400u : 9000u) << override_share;
   }
+}
+
+// No run limit below the machine's weakest axis: WindowReach::lengthFor takes those.
+constexpr double kAxisLimits = std::numeric_limits<double>::infinity();
+
+// Pushes 0.1 mm lines along X at `feed` from `x` while the planner wants more; returns the
+// path pushed (mm) and moves `x` on.
+double readAhead(MotionPlanner& planner, double& x, double feed) {
+  const double start = x;
+  while (planner.canAccept()) {
+    EXPECT_TRUE(planner.push(line(xyz(x, 0, 0), xyz(x + 0.1, 0, 0), feed)));
+    x += 0.1;
+  }
+  return x - start;
+}
+
+// The look-ahead reads as far as the queued moves need: twice the braking distance from the
+// fastest of them plus four cycles of travel (planner.md, "Window by braking distance").
+// Before, it read for the rapid speed of every axis at once, whatever was queued: 0.3 m, or
+// the whole ring on fine segments (4.5 ms of planning before the first tick of
+// tick_bench's program, and 2.5 MB of segments for each tick to stream through the caches).
+TEST(LookAhead, ReadsAheadTheBrakingDistanceOfWhatIsQueued) {
+  const MachineConfig m = defaultMachine();
+  const WindowReach reach = WindowReach::of(AxisLimits::from(m));
+  const double at_100 = reach.lengthFor(100.0, kAxisLimits, kAxisLimits);  // F6000: 10.7 mm
+  const double at_500 = reach.lengthFor(500.0, kAxisLimits, kAxisLimits);  // F30000: 150 mm
+  ASSERT_GT(at_100, 5.0);
+  MotionPlanner planner(m, 1 << 14);
+  double x = 0.0;
+  // One open run: its length beyond the running segment (the move held back for the next
+  // vertex and the running segment are pushed too).
+  const double slow = readAhead(planner, x, 6000.0);
+  EXPECT_GE(slow, at_100);
+  EXPECT_LE(slow, at_100 + 0.35);
+  // A faster move widens the reach once it is queued (pushed while the ring has room; the
+  // path holds each move back until the next one shows how it ends). The slow run now goes
+  // on into the fast one: it is planned to its exit when it starts, so the reach counts
+  // from its end.
+  for (int i = 0; i < 2; ++i, x += 0.1)
+    ASSERT_TRUE(planner.push(line(xyz(x, 0, 0), xyz(x + 0.1, 0, 0), 30000.0)));
+  EXPECT_TRUE(planner.canAccept());
+  const double fast = 0.2 + readAhead(planner, x, 30000.0);
+  EXPECT_GE(fast, at_500);
+  EXPECT_LE(fast, at_500 + 0.35);
+}
+
+// A run that ends at rest cuts the window: what follows it needs only its own reach, however
+// fast the moves before it were, and only once the path comes near it: the reach counts from
+// where the path is, so the moves after a stop are queued at the path's pace, not all at once
+// when the stop is queued. (RandomSuite.TheWindowReadsAsFarAsThePlanNeeds checks that they are
+// there in time.)
+TEST(LookAhead, AStopCutsTheReach) {
+  const MachineConfig m = defaultMachine();
+  const WindowReach reach = WindowReach::of(AxisLimits::from(m));
+  MotionPlanner planner(m, 1 << 14);
+  // F6000 lines, a dwell, F3000 lines: the path is at the first line's start, the dwell 20 mm
+  // ahead, beyond the reach of either feed (10.7 and 3.8 mm).
+  double x = 0.0;
+  for (int i = 0; i < 200; ++i, x += 0.1)
+    ASSERT_TRUE(planner.push(line(xyz(x, 0, 0), xyz(x + 0.1, 0, 0), 6000.0)));
+  ASSERT_TRUE(planner.push(dwell(xyz(x, 0, 0), 0.5)));
+  ASSERT_LT(reach.lengthFor(100.0, kAxisLimits, kAxisLimits), 15.0);
+  // After the dwell: the first move is wanted (the path holds each move back until the next
+  // one shows how it ends), then nothing, since the dwell is far.
+  EXPECT_TRUE(planner.canAccept());
+  const double after = readAhead(planner, x, 3000.0);
+  EXPECT_LE(after, 0.25);
+  // Before any tick, a rapid of 300 mm (it ends at rest) with the same lines after it: not
+  // wanted either, however fast the rapid.
+  MotionPlanner rapid_first(m, 1 << 14);
+  ASSERT_TRUE(rapid_first.push(rapid(xyz(0, 0, 0), xyz(300, 0, 0))));
+  double y = 300.0;
+  EXPECT_LE(readAhead(rapid_first, y, 6000.0), 0.25);
 }
 
 }  // namespace

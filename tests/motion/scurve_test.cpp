@@ -181,5 +181,28 @@ TEST(SCurve, StopThatFitsUpToRoundingEndsAtRest) {
   }
 }
 
+// The room an open run keeps for braking to an exit not known yet is the longest brake to any
+// exit speed: a jerk-limited brake to a lower speed can need more path than one to rest
+// (from 43.9 mm/s at 2000 mm/s^2 and 45000 mm/s^3: 1.448 mm to 6.04 mm/s, 1.371 mm to rest).
+TEST(SCurve, BrakingReserveIsTheLongestBrakeToAnyExit) {
+  EXPECT_GT(rampDistance(6.03518, 43.8884, 2000.0, 45000.0),
+            rampDistance(0.0, 43.8884, 2000.0, 45000.0));
+  for (const double a : {50.0, 2000.0, 20000.0}) {
+    for (const double j : {1000.0, 45000.0, 1e6}) {
+      for (const double v : {0.5, 43.8884, 500.0}) {
+        const double reserve = brakingReserve(v, a, j);
+        double longest = 0.0;
+        for (int k = 0; k <= 4000; ++k)
+          longest = std::max(longest, rampDistance(v * k / 4000.0, v, a, j));
+        // Never short of any exit's brake (the grid's), and not longer than the true maximum
+        // (within the grid's spacing of it).
+        EXPECT_GE(reserve, longest * (1.0 - 1e-12)) << a << " " << j << " " << v;
+        EXPECT_LE(reserve, longest * (1.0 + 1e-6)) << a << " " << j << " " << v;
+        EXPECT_GE(reserve, rampDistance(0.0, v, a, j));
+      }
+    }
+  }
+}
+
 }  // namespace
 }  // namespace ncc::vm::motion

@@ -102,7 +102,8 @@ Interpolator::PiecePlan Interpolator::planPiece(const PieceInputs& in) const {
   }
   if (in.open) {
     const double top = l.velocity;
-    const double brake = rampDistance(0.0, top, l.acceleration, l.jerk);
+    // The run's exit is not known yet: keep room for the longest brake to any speed.
+    const double brake = brakingReserve(top, l.acceleration, l.jerk);
     const double chunk = rest - brake;
     // Room to reach top speed and hold it for at least one cycle before the braking zone.
     if (chunk >= rampDistance(in.v0, top, l.acceleration, l.jerk) + top * cycle_) {
@@ -258,6 +259,9 @@ bool Interpolator::setpoint(uint64_t k, LookAhead& queue, bool closed, AxisValue
     const double s = at_piece_end ? piece_end_ : piece_start_ + st.s;
     const bool at_run_end = at_piece_end && piece_end_ == run.length;
     passFinishedSegments(queue, s, info);
+    // How far the path is in the run (a non-linear rapid: its share of the time).
+    const double time_share = duration_ > 0.0 ? std::clamp(tau / duration_, 0.0, 1.0) : 1.0;
+    queue.setFrontProgress(per_axis_ ? run.length * time_share : s);
     if (per_axis_ && !piece_done) {
       rapid_.position(tau, out);
       const AxisRapidMotion motion = rapid_.pathMotion(tau);

@@ -69,10 +69,93 @@ bool isTap(const Run& run) {
 
 }  // namespace
 
-LookAhead::LookAhead(std::size_t capacity, double window_length)
+LookAhead::LookAhead(std::size_t capacity, const WindowReach& reach)
     : segments_(std::max<std::size_t>(capacity, 2)),
       runs_(std::max<std::size_t>(capacity, 2)),
-      window_length_(window_length) {}
+      reach_machine_(reach) {}
+
+void LookAhead::QueuedExtremes::add(const SegmentLimits& l) {
+  velocity = std::max(velocity, l.velocity);
+  acceleration = std::min(acceleration, l.acceleration);
+  jerk = std::min(jerk, l.jerk);
+}
+
+bool LookAhead::wantsMore() const {
+  if (full()) return false;
+  // Between changes of the runs (a push, a run's end, a re-plan), only the path's progress
+  // moves.
+  if (window_.version != runs_changed_) window_ = windowNeeds();
+  if (window_.always) return true;
+  // After a cut, the path ahead counts from where the path is, so that the tail fills as the
+  // path comes nearer to it, at the path's pace, not all at once when the cut is queued (a
+  // long rapid before a chain). Without one, from the running segment's end.
+  double ahead = queued_length_;
+  if (window_.cut && segment_count_ > 0) {
+    const QueuedSegment& front = segmentAt(0);
+    ahead += std::max(front.run_offset + front.path.length() - front_progress_, 0.0);
+  }
+  if (ahead < window_.starting + window_.reach) return true;
+  // Long enough for braking in one S-curve; but runs end at a = 0 each, so braking through
+  // short ones needs more path. Enough once the starting runs' plan is cut off from the end
+  // (after a cut, asked once the path is within reach of it).
+  if (window_.cut && ahead - tail_.length > window_.reach) return false;
+  return !window_.cut_off;
+}
+
+LookAhead::WindowNeeds LookAhead::windowNeeds() const {
+  WindowNeeds needs;
+  needs.version = runs_changed_;
+  // A run that held an extreme has left (no run ending at rest is queued: the tail is every
+  // run). Until they are found again the old ones hold (a longer reach); found again once a
+  // quarter of the runs has left since the last time, so that the walk costs O(1) a run.
+  if (tail_stale_pops_ > 0 && 4 * tail_stale_pops_ > run_count_) {
+    tail_.extremes = QueuedExtremes{};
+    for (std::size_t i = 0; i < run_count_; ++i)
+      if (runAt(i).kind != MotionPrimitive::Kind::Dwell) tail_.extremes.add(runAt(i).limits);
+    tail_stale_pops_ = 0;
+  }
+  const QueuedExtremes& q = tail_.extremes;
+  needs.always = !(q.velocity > 0.0);
+  if (needs.always) return needs;
+  // (The ramps take a few hundred instructions: kept while the extremes are the same.)
+  if (!(q == reach_for_)) {
+    reach_for_ = q;
+    reach_for_length_ = reach_machine_.lengthFor(q.velocity, q.acceleration, q.jerk);
+  }
+  needs.reach = reach_for_length_;
+  needs.cut = tail_.cuts > 0;
+  const StartingRuns starting = startingRuns(
+      needs.cut ? static_cast<std::size_t>(tail_.last_cut + 1 - runs_popped_) : 0, q.velocity);
+  needs.starting = starting.length;
+  needs.cut_off = starting.end >= run_count_ || cutOffFromEnd(starting.end);
+  return needs;
+}
+
+LookAhead::StartingRuns LookAhead::startingRuns(std::size_t first, double v) const {
+  StartingRuns starting{first, 0.0};
+  double after_first = 0.0;  // from the first's end to the start of run i
+  for (std::size_t i = first; i + 1 < run_count_; ++i) {
+    if (i > first + 1 && after_first >= 2.0 * v * reach_machine_.cycle) break;
+    starting.length += runAt(i).length;
+    starting.end = i + 1;
+    if (i > first) after_first += runAt(i).length;
+  }
+  return starting;
+}
+
+bool LookAhead::cutOffFromEnd(std::size_t run) const {
+  for (std::size_t i = run; i < run_count_ && i < run + kCutOffScan; ++i)
+    if (runAt(i).entry_planned >= entryLimit(i)) return true;
+  return false;
+}
+
+void LookAhead::cutWindowAfter(std::size_t i) {
+  Run& run = runAt(i);
+  if (run.window_cut) return;
+  run.window_cut = true;
+  tail_ = Tail{.cuts = tail_.cuts + 1, .last_cut = runs_popped_ + i};
+  tail_stale_pops_ = 0;
+}
 
 const QueuedSegment* LookAhead::lastSegment() const {
   return segment_count_ == 0 ? nullptr : &segmentAt(segment_count_ - 1);
@@ -128,6 +211,8 @@ void LookAhead::push(const QueuedSegment& segment, MotionPrimitive::Kind kind,
   const bool dwell = kind == MotionPrimitive::Kind::Dwell;
   Run* last = run_count_ > 0 ? &runAt(run_count_ - 1) : nullptr;
   const bool join = last != nullptr && !dwell && joinsLast(segment, kind, limits, entry_limit);
+  // A run that starts from rest cuts the window before it.
+  if (!join && last != nullptr && !(entry_limit > 0.0)) cutWindowAfter(run_count_ - 1);
   QueuedSegment& slot = segmentAt(segment_count_);
   slot = segment;
   ++segment_count_;
@@ -153,10 +238,16 @@ void LookAhead::push(const QueuedSegment& segment, MotionPrimitive::Kind kind,
     ++run_count_;
     slot.run_offset = 0.0;
   }
+  // The window's tail (wantsMore). (A join never continues a run that ends at rest:
+  // joinsLast.)
+  tail_.length += length;
+  if (!dwell) tail_.extremes.add(runAt(run_count_ - 1).limits);
+  if (stop_after) cutWindowAfter(run_count_ - 1);
   stale_from_ = std::min(stale_from_, run_count_ - 1);  // the run pushed to
   pass_pending_ = true;
   if (!defer_pass_) backwardPass();
   ++version_;
+  ++runs_changed_;
 }
 
 void LookAhead::runDeferredBackwardPass() {
@@ -166,8 +257,12 @@ void LookAhead::runDeferredBackwardPass() {
 
 void LookAhead::stopAfterLast() {
   // Its exit is already 0 (it ends the window); later pushes read the flag.
-  if (run_count_ > 0) runAt(run_count_ - 1).stop_after = true;
+  if (run_count_ > 0) {
+    runAt(run_count_ - 1).stop_after = true;
+    cutWindowAfter(run_count_ - 1);
+  }
   ++version_;
+  ++runs_changed_;
 }
 
 double LookAhead::velocity(std::size_t i) const { return velocityWith(i, scales_); }
@@ -233,6 +328,7 @@ void LookAhead::replan(const Commitment& committed) {
   }
   backwardPass(true);
   ++version_;
+  ++runs_changed_;
   if (run_count_ == 0) return;
   // From the committed state on, brake as hard as the limits allow: where that cannot reach a
   // junction's new entry, the entry is raised to what it can reach. The previous plan got
@@ -289,10 +385,24 @@ void LookAhead::popSegment() {
 
 void LookAhead::popRun() {
   if (run_count_ == 0) return;
+  const Run& front = runAt(0);
+  if (front.window_cut) {
+    --tail_.cuts;  // the last of them: the tail is every queued run, as kept
+  } else if (tail_.cuts == 0) {  // a run of the tail leaves
+    const QueuedExtremes& q = tail_.extremes;
+    const SegmentLimits& l = front.limits;
+    if (tail_stale_pops_ > 0 ||
+        (front.kind != MotionPrimitive::Kind::Dwell &&
+         (l.velocity >= q.velocity || l.acceleration <= q.acceleration || l.jerk <= q.jerk)))
+      ++tail_stale_pops_;
+  }
   run_head_ = wrap(run_head_ + 1, runs_.size());
+  ++runs_popped_;
+  front_progress_ = 0.0;
   --run_count_;
   front_started_ = false;
   ++version_;
+  ++runs_changed_;
 }
 
 }  // namespace ncc::vm::motion

@@ -8,27 +8,11 @@
 
 namespace ncc::vm::motion {
 
-double windowLength(const AxisLimits& l) {
-  double v = 0.0, a = std::numeric_limits<double>::infinity(), j = a;
-  double sum = 0.0;
-  for (int i = 0; i < l.count; ++i) {
-    const double top = std::max(l.rapid_velocity[i], l.feed_velocity[i]);
-    sum += top * top;
-    a = std::min(a, l.acceleration[i]);
-    j = std::min(j, l.jerk[i]);
-  }
-  v = std::sqrt(sum);
-  if (l.count == 0 || v == 0.0) return 0.0;
-  // An open run accelerates to top speed and must still be able to brake: twice the braking
-  // distance, plus a few cycles of travel so the interpolator's pieces stay long.
-  return 2.0 * rampDistance(0.0, v, a, kSmoothJerkShare * j) + 4.0 * v * l.ipo_cycle;
-}
-
 MotionPlanner::MotionPlanner(const MachineConfig& machine, std::size_t window_capacity)
     : limits_(AxisLimits::from(machine)),
       rapid_limits_(limits_),
       queue_(std::max<std::size_t>(window_capacity, 2 * ContinuousPath::kSlotsPerMove),
-             windowLength(limits_)),
+             WindowReach::of(limits_)),
       path_(limits_, queue_),
       interpolator_(machine.start_position, rapid_limits_) {
   CornerBlend::prepareTables();  // at load, not in the first tick that blends a corner

@@ -1,6 +1,7 @@
 #include "ncc/vm/motion/scurve.h"
 
 #include <algorithm>
+#include <initializer_list>
 #include <cmath>
 
 namespace ncc::vm::motion {
@@ -56,6 +57,18 @@ PathState VelocityRamp::at(double tau) const {
 
 double rampDistance(double v1, double v2, double a_max, double j_max) {
   return VelocityRamp::make(std::min(v1, v2), std::max(v1, v2), a_max, j_max).distance;
+}
+
+double brakingReserve(double v, double a_max, double j_max) {
+  // rampDistance(v_exit, v) with dv = v - v_exit: (v + v_exit) sqrt(dv / j) while the ramp is
+  // triangular (dv <= b = a^2/j), (v + v_exit) (dv / a + a / j) / 2 beyond. Each is largest
+  // where its slope in v_exit is 0 (v_exit = v/3, and b/2), so the longest is there, at the
+  // border of the two (v_exit = v - b), or at v_exit = 0.
+  const double b = fullJerkVelocity(a_max, j_max);
+  double longest = rampDistance(0.0, v, a_max, j_max);
+  for (const double v_exit : {v / 3.0, 0.5 * b, v - b})
+    if (v_exit > 0.0 && v_exit < v) longest = std::max(longest, rampDistance(v_exit, v, a_max, j_max));
+  return longest;
 }
 
 double reachableGain(double v, double length, double a_max, double j_max) {

@@ -20,6 +20,9 @@
 // velocity (see Interpolator). Two fixed-capacity rings hold segments and runs, allocated in
 // the constructor; nothing allocates or throws afterwards.
 //
+// Window: it wants input (wantsMore) until more could not change the plan of the runs about
+// to start: the braking reach of what is queued, from the last run that ends at rest.
+//
 // The operator's live controls (setScales): under the feed override every run's speed limit
 // is its planned limit, at most its programmed feed times the feed scale; a rapid run's is its
 // planned limit times the rapid scale; under feed hold every speed limit is 0. A change
@@ -33,6 +36,7 @@
 #include "ncc/vm/events.h"
 #include "ncc/vm/motion/limits.h"
 #include "ncc/vm/motion/path.h"
+#include "ncc/vm/motion/window_reach.h"
 
 namespace ncc::vm::motion {
 
@@ -64,6 +68,9 @@ struct Run {
   double entry_limit = 0.0;    // junction velocity limit at its start (0: from rest)
   double entry_planned = 0.0;  // backward pass result
   bool stop_after = false;     // ends at rest whatever follows (G09/G61, M00, dwell...)
+  // It ends at rest (stop_after, or the next run starts from rest): more input after it cannot
+  // change its plan or any before it (LookAhead::wantsMore).
+  bool window_cut = false;
   double feed_limit = std::numeric_limits<double>::infinity();  // lowest of its segments'
   // Lowest entry the motion under way can brake to (set by setScales, 0 otherwise).
   double entry_floor = 0.0;
@@ -83,15 +90,26 @@ struct Commitment {
 
 class LookAhead {
  public:
-  // `window_length`: queued path length beyond the running segment after which more input
-  // cannot change the plan (canAccept turns false).
-  LookAhead(std::size_t capacity, double window_length);
+  // `reach`: the machine's braking reach (wantsMore).
+  LookAhead(std::size_t capacity, const WindowReach& reach);
 
   bool empty() const { return segment_count_ == 0; }
   bool full() const { return segment_count_ == segments_.size(); }
   std::size_t room() const { return segments_.size() - segment_count_; }
   std::size_t size() const { return segment_count_; }
-  bool wantsMore() const { return !full() && queued_length_ < window_length_; }
+  // Whether more input could still change the plan: the ring has room, and either the path
+  // queued is shorter than the reach (WindowReach) for the runs it holds or the plan of the
+  // runs about to start still depends on where the window ends (cutOffFromEnd). A run that
+  // ends at rest cuts the window (Run::window_cut): only the runs after the last such run
+  // count, and the path from its end (nothing moving after it: yes); without one, the path
+  // after the running segment. The runs about to start (startingRuns) are planned to their
+  // exits when they start, so the reach counts from their end. Not in the tick: it may walk
+  // runs.
+  bool wantsMore() const;
+  // Where the path is in the front run (its run offset; for a non-linear rapid, its share of
+  // the time times the run's length), set by the interpolator each tick: how much of the
+  // queued path is still ahead, for the reach after a cut (wantsMore).
+  void setFrontProgress(double offset) { front_progress_ = offset; }
 
   // Appends a segment (caller checks !full()). `entry_limit` is the junction limit with the
   // previous segment; the segment joins the last run when the junction does not bind and
@@ -202,8 +220,61 @@ class LookAhead {
   bool pass_pending_ = false;
   std::size_t stale_from_ = 0;
   uint64_t version_ = 0;
-  double window_length_ = 0.0;
+  uint64_t runs_changed_ = 0;  // like version_, but not for a segment's end within a run
+  WindowReach reach_machine_;
   double queued_length_ = 0.0;  // lengths of the segments behind the front one
+  // The runs after the last queued run that ends at rest (every queued run when none does),
+  // for wantsMore(). Kept as runs are pushed (a join only lowers a run's limits); an extreme
+  // that leaves with a popped run is found again by a later wantsMore() (in the preparation,
+  // not in the tick that popped it).
+  struct QueuedExtremes {
+    double velocity = 0.0;  // the highest speed limit of the moving runs (0: none)
+    double acceleration = std::numeric_limits<double>::infinity();  // the lowest
+    double jerk = std::numeric_limits<double>::infinity();          // the lowest
+    void add(const SegmentLimits& l);
+    bool operator==(const QueuedExtremes&) const = default;
+  };
+  struct Tail {
+    std::size_t cuts = 0;       // queued runs with window_cut
+    uint64_t last_cut = 0;      // the last of them, counted from the first run ever pushed
+    double length = 0.0;        // path pushed after it
+    QueuedExtremes extremes;    // of the moving runs after it
+  };
+  // Queued run i ends at rest: it cuts the window, and nothing follows it yet.
+  void cutWindowAfter(std::size_t i);
+  // Of the runs from `first` on, those whose pieces may start before the next preparation
+  // queues more (the first, the next, and any starting within two cycles of travel at `v`
+  // after the first's end), closed runs only (the last queued run's end is not known).
+  // Their exits are planned when they start, so the reach counts from there.
+  struct StartingRuns {
+    std::size_t end = 0;  // the run after them
+    double length = 0.0;
+  };
+  StartingRuns startingRuns(std::size_t first, double v) const;
+  // Whether the plan of the runs before `run` is cut off from the window's end: a run from
+  // `run` on enters at its own cap. More input only raises the planned entries near the end
+  // (the window then ends moving, not at rest), so it cannot reach past such a run. Looks at
+  // kCutOffScan runs at most: beyond them, not cut off.
+  bool cutOffFromEnd(std::size_t run) const;
+  static constexpr std::size_t kCutOffScan = 64;
+  uint64_t runs_popped_ = 0;  // over the ring's life: the front run's index
+  double front_progress_ = 0.0;  // setFrontProgress
+  mutable Tail tail_;
+  // What wantsMore() needs of the path ahead, worked out again when the queue changes.
+  struct WindowNeeds {
+    uint64_t version = std::numeric_limits<uint64_t>::max();  // runs_changed_ it is for
+    bool always = false;   // nothing moving in the tail: more input is wanted
+    bool cut = false;      // a run ending at rest is queued
+    double reach = 0.0;    // the tail's WindowReach
+    double starting = 0.0;  // the length of the runs about to start (startingRuns)
+    bool cut_off = false;  // their plan is cut off from the window's end (cutOffFromEnd)
+  };
+  WindowNeeds windowNeeds() const;
+  mutable WindowNeeds window_;
+  mutable QueuedExtremes reach_for_{.velocity = -1.0};  // the last reach worked out
+  mutable double reach_for_length_ = 0.0;
+  // Runs popped since one that held an extreme of the tail left (0: the extremes are exact).
+  mutable std::size_t tail_stale_pops_ = 0;
   SpeedScales scales_;
 };
 

@@ -37,8 +37,8 @@ class MotionPlanner {
   // `window_capacity`: most segments held by the look-ahead (the ring is allocated here).
   MotionPlanner(const MachineConfig& machine, std::size_t window_capacity);
 
-  // True while pushing more would still change the plan: the ring has room and the queued
-  // path is shorter than the braking distance from top speed.
+  // True while pushing more could still change the plan: the ring has room and the queued
+  // path is shorter than the look-ahead's reach (LookAhead::wantsMore).
   bool canAccept() const { return hasRoom() && queue_.wantsMore(); }
   // True while the ring has room for any primitive (push succeeds).
   bool hasRoom() const { return queue_.room() >= ContinuousPath::kSlotsPerMove; }
@@ -146,10 +146,5 @@ class MotionPlanner {
   SourcePosition spindle_alarm_where_;
   bool ended_ = false;
 };
-
-// The look-ahead window length: twice the braking distance from the machine's top path speed
-// (rapid on every axis at once) with the weakest axis' acceleration and jerk, plus a few
-// cycles of travel. Longer windows cannot change the plan.
-double windowLength(const AxisLimits& limits);
 
 }  // namespace ncc::vm::motion

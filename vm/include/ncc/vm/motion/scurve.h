@@ -36,6 +36,12 @@ struct VelocityRamp {
 
 // Distance a ramp between v1 and v2 (either order) needs.
 double rampDistance(double v1, double v2, double a_max, double j_max);
+// The room to keep for braking from `v` to an exit not known yet: the longest
+// rampDistance(v_exit, v) over v_exit in [0, v]. A jerk-limited brake to a lower speed can
+// need more path than one to rest (it is shorter in time but faster): from 43.9 mm/s at
+// 2000 mm/s^2 and 45000 mm/s^3, 1.448 mm to 6.04 mm/s against 1.371 mm to rest; up to 9 %
+// more at v_exit = v/3.
+double brakingReserve(double v, double a_max, double j_max);
 
 // The highest velocity reachable from `v` (accelerating) within distance `length`; by
 // symmetry also the highest velocity from which one can brake to `v` within `length`.
