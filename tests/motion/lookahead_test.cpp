@@ -117,34 +117,73 @@ double readAhead(MotionPlanner& planner, double& x, double feed) {
   return x - start;
 }
 
-// The look-ahead reads as far as the queued moves need: twice the braking distance from the
-// fastest of them plus four cycles of travel (planner.md, "Window by braking distance").
-// Before, it read for the rapid speed of every axis at once, whatever was queued: 0.3 m, or
-// the whole ring on fine segments (4.5 ms of planning before the first tick of
-// tick_bench's program, and 2.5 MB of segments for each tick to stream through the caches).
+// Pushes 2 mm moves at `feed` zigzagging at right angles while the planner wants more (each
+// corner a stop, with corner_tolerance 0); returns the path pushed (mm).
+double readZigzag(MotionPlanner& planner, double feed) {
+  AxisValues p{};
+  double pushed = 0.0;
+  for (int i = 0; planner.canAccept(); ++i) {
+    const AxisValues q = xyz(p[0] + (i % 2 == 0 ? 2.0 : 0.0), p[1] + (i % 2 == 0 ? 0.0 : 2.0), 0);
+    EXPECT_TRUE(planner.push(line(p, q, feed)));
+    p = q;
+    pushed += 2.0;
+  }
+  return pushed;
+}
+
+// The look-ahead reads as far as the queued moves need: twice the braking reserve of the
+// fastest of them plus four cycles of travel (planner.md, "Window by braking distance"), here
+// past the stops at the zigzag's corners, counted from where the path is. Before, it read
+// for the rapid speed of every axis at once, whatever was queued: 0.3 m (4.5 ms of planning
+// before the first tick of tick_bench's program, 1024 segments of 2.4 KB).
 TEST(LookAhead, ReadsAheadTheBrakingDistanceOfWhatIsQueued) {
-  const MachineConfig m = defaultMachine();
+  MachineConfig m = defaultMachine();
+  m.corner_tolerance = 0.0;
   const WindowReach reach = WindowReach::of(AxisLimits::from(m));
-  const double at_100 = reach.lengthFor(100.0, kAxisLimits, kAxisLimits);  // F6000: 10.7 mm
-  const double at_500 = reach.lengthFor(500.0, kAxisLimits, kAxisLimits);  // F30000: 150 mm
-  ASSERT_GT(at_100, 5.0);
-  MotionPlanner planner(m, 1 << 14);
-  double x = 0.0;
-  // One open run: its length beyond the running segment (the move held back for the next
-  // vertex and the running segment are pushed too).
-  const double slow = readAhead(planner, x, 6000.0);
-  EXPECT_GE(slow, at_100);
-  EXPECT_LE(slow, at_100 + 0.35);
-  // A faster move widens the reach once it is queued (pushed while the ring has room; the
-  // path holds each move back until the next one shows how it ends). The slow run now goes
-  // on into the fast one: it is planned to its exit when it starts, so the reach counts
-  // from its end.
-  for (int i = 0; i < 2; ++i, x += 0.1)
-    ASSERT_TRUE(planner.push(line(xyz(x, 0, 0), xyz(x + 0.1, 0, 0), 30000.0)));
-  EXPECT_TRUE(planner.canAccept());
-  const double fast = 0.2 + readAhead(planner, x, 30000.0);
-  EXPECT_GE(fast, at_500);
-  EXPECT_LE(fast, at_500 + 0.35);
+  for (const double feed : {6000.0, 30000.0}) {
+    const double at = reach.lengthFor(feed / 60.0, kAxisLimits, kAxisLimits);  // 10.7, 150 mm
+    MotionPlanner planner(m, 1 << 14);
+    const double read = readZigzag(planner, feed);
+    EXPECT_GE(read, at) << feed;
+    EXPECT_LE(read, at + 3 * 2.0) << feed;  // the move held back, the last one, the rounding
+  }
+}
+
+// The same program queued whole before the first tick (no window).
+Trace runWhole(const MachineConfig& m, const std::vector<MotionPrimitive>& prog) {
+  return run(
+      m, prog, 1 << 14, 50'000'000, false, {},
+      [&](MotionPlanner& planner) {
+        for (const MotionPrimitive& p : prog) ASSERT_TRUE(planner.push(p));
+        planner.endOfProgram();
+      },
+      [](uint64_t) { return false; });
+}
+
+// A run that may start before the next preparation is never the last one queued: a segment
+// that lowers its limits could not join it once it runs (joinsLast), as it would with the
+// whole program known, and would make a run of its own (review 10). A feed step down, and a
+// lower F above the axis cap (only the limit the override scales is lower): each runs as it
+// does with the whole program queued (with a window that stopped at the reach: 958 ticks
+// against 950, and 1440 against 1420).
+TEST(LookAhead, ASegmentThatLowersARunJoinsItBeforeItStarts) {
+  const MachineConfig m = defaultMachine();
+  const std::vector<std::vector<MotionPrimitive>> programs = {
+      {line(xyz(0, 0, 0), xyz(10, 0, 0), 3000.0), line(xyz(10, 0, 0), xyz(10, 30, 0), 3000.0),
+       line(xyz(10, 30, 0), xyz(10, 30.2, 0), 2990.0),
+       line(xyz(10, 30.2, 0), xyz(10, 30.4, 0), 2980.0),
+       line(xyz(10, 30.4, 0), xyz(10, 30.6, 0), 2970.0)},
+      {line(xyz(0, 0, 0), xyz(0, 100, 0), 10000.0), line(xyz(0, 100, 0), xyz(0, -100, 0), 40000.0),
+       line(xyz(0, -100, 0), xyz(0, -100.033, 0), 36000.0),
+       line(xyz(0, -100.033, 0), xyz(0, -100.066, 0), 35000.0)},
+  };
+  for (const std::vector<MotionPrimitive>& prog : programs) {
+    const Trace windowed = run(m, prog);
+    const Trace whole = runWhole(m, prog);
+    ASSERT_EQ(windowed.ticks(), whole.ticks());
+    for (uint64_t k = 0; k < whole.ticks(); ++k)
+      for (int i = 0; i < 3; ++i) EXPECT_NEAR(windowed.points[k][i], whole.points[k][i], 1e-12);
+  }
 }
 
 // A run that ends at rest cuts the window: what follows it needs only its own reach, however

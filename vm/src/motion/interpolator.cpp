@@ -102,8 +102,7 @@ Interpolator::PiecePlan Interpolator::planPiece(const PieceInputs& in) const {
   }
   if (in.open) {
     const double top = l.velocity;
-    // The run's exit is not known yet: keep room for the longest brake to any speed.
-    const double brake = brakingReserve(top, l.acceleration, l.jerk);
+    const double brake = rampDistance(0.0, top, l.acceleration, l.jerk);
     const double chunk = rest - brake;
     // Room to reach top speed and hold it for at least one cycle before the braking zone.
     if (chunk >= rampDistance(in.v0, top, l.acceleration, l.jerk) + top * cycle_) {

@@ -99,7 +99,7 @@ bool LookAhead::wantsMore() const {
   // short ones needs more path. Enough once the starting runs' plan is cut off from the end
   // (after a cut, asked once the path is within reach of it).
   if (window_.cut && ahead - tail_.length > window_.reach) return false;
-  return !window_.cut_off;
+  return !window_.settled;
 }
 
 LookAhead::WindowNeeds LookAhead::windowNeeds() const {
@@ -114,20 +114,36 @@ LookAhead::WindowNeeds LookAhead::windowNeeds() const {
       if (runAt(i).kind != MotionPrimitive::Kind::Dwell) tail_.extremes.add(runAt(i).limits);
     tail_stale_pops_ = 0;
   }
-  const QueuedExtremes& q = tail_.extremes;
-  needs.always = !(q.velocity > 0.0);
-  if (needs.always) return needs;
+  QueuedExtremes q = tail_.extremes;
+  needs.cut = tail_.cuts > 0;
+  if (!(q.velocity > 0.0)) {
+    // Nothing moving after the last cut. The last queued run ends there: what follows it is
+    // wanted once the path is within that run's reach of the end (a zigzag that stops at
+    // every corner would else be read to the ring's end). Nothing moving queued: wanted now.
+    const Run* last = run_count_ > 0 ? &runAt(run_count_ - 1) : nullptr;
+    needs.always = last == nullptr || last->kind == MotionPrimitive::Kind::Dwell ||
+                   !(last->limits.velocity > 0.0);
+    if (needs.always) return needs;
+    q = QueuedExtremes{};
+    q.add(last->limits);
+    needs.reach = reach_machine_.lengthFor(q.velocity, q.acceleration, q.jerk);
+    needs.settled = true;
+    return needs;
+  }
   // (The ramps take a few hundred instructions: kept while the extremes are the same.)
   if (!(q == reach_for_)) {
     reach_for_ = q;
     reach_for_length_ = reach_machine_.lengthFor(q.velocity, q.acceleration, q.jerk);
   }
   needs.reach = reach_for_length_;
-  needs.cut = tail_.cuts > 0;
   const StartingRuns starting = startingRuns(
       needs.cut ? static_cast<std::size_t>(tail_.last_cut + 1 - runs_popped_) : 0, q.velocity);
   needs.starting = starting.length;
-  needs.cut_off = starting.end >= run_count_ || cutOffFromEnd(starting.end);
+  // Settled once a run after those about to start is queued (the last queued run, still
+  // open, must not be one of them: a segment that lowers its limits could no longer join it
+  // once it runs, joinsLast, and would make a run of its own), and it is cut off from the
+  // window's end.
+  needs.settled = starting.end + 1 < run_count_ && cutOffFromEnd(starting.end);
   return needs;
 }
 

@@ -101,10 +101,11 @@ class LookAhead {
   // queued is shorter than the reach (WindowReach) for the runs it holds or the plan of the
   // runs about to start still depends on where the window ends (cutOffFromEnd). A run that
   // ends at rest cuts the window (Run::window_cut): only the runs after the last such run
-  // count, and the path from its end (nothing moving after it: yes); without one, the path
-  // after the running segment. The runs about to start (startingRuns) are planned to their
-  // exits when they start, so the reach counts from their end. Not in the tick: it may walk
-  // runs.
+  // count, and the path from where the path is; without one, the path after the running
+  // segment. The runs about to start (startingRuns) are planned to their exits when they
+  // start, so the reach counts from their end, and none of them may be the last queued run
+  // (a segment that lowers its limits could no longer join it once it runs). Not in the
+  // tick: it may walk runs.
   bool wantsMore() const;
   // Where the path is in the front run (its run offset; for a non-linear rapid, its share of
   // the time times the run's length), set by the interpolator each tick: how much of the
@@ -267,7 +268,8 @@ class LookAhead {
     bool cut = false;      // a run ending at rest is queued
     double reach = 0.0;    // the tail's WindowReach
     double starting = 0.0;  // the length of the runs about to start (startingRuns)
-    bool cut_off = false;  // their plan is cut off from the window's end (cutOffFromEnd)
+    // The runs about to start are closed and their plan is cut off from the window's end.
+    bool settled = false;
   };
   WindowNeeds windowNeeds() const;
   mutable WindowNeeds window_;
