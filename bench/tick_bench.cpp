@@ -79,9 +79,9 @@ BENCHMARK(BM_Tick6Axes);
 // program, so the benchmark also runs the program several times and keeps, per tick, the
 // fastest of its runs: preemption rarely hits the same tick in every run, while the VM's own
 // cost does. The largest of those per-tick minima ("replayed worst") is the worst-case cost
-// of a tick of this program. The first tick is reported on its own: it runs with cold
-// caches after the window fill (4 ms of planning evicted its code and the servo's state), a
-// one-off at program start.
+// of a tick of this program. The first tick is reported on its own: it runs after the
+// window fill (a rapid and a few moves here; a program that is one long run fills the ring),
+// with the caches that planning left, a one-off at program start.
 void BM_WorstTick6Axes(benchmark::State& state) {
   const ncc::MachineConfig m = ncc::bench::sixAxes();
   ncc::vm::ControllerOptions split;
