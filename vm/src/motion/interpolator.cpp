@@ -258,9 +258,11 @@ bool Interpolator::setpoint(uint64_t k, LookAhead& queue, bool closed, AxisValue
     const double s = at_piece_end ? piece_end_ : piece_start_ + st.s;
     const bool at_run_end = at_piece_end && piece_end_ == run.length;
     passFinishedSegments(queue, s, info);
-    // How far the path is in the run (a non-linear rapid: its share of the time).
-    const double time_share = duration_ > 0.0 ? std::clamp(tau / duration_, 0.0, 1.0) : 1.0;
-    queue.setFrontProgress(per_axis_ ? run.length * time_share : s);
+    // How far the path is in the run (a non-linear rapid: its share of the time; the
+    // division only there, the tick's common case is a line or an arc).
+    queue.setFrontProgress(
+        !per_axis_ ? s
+                   : run.length * (duration_ > 0.0 ? std::clamp(tau / duration_, 0.0, 1.0) : 1.0));
     if (per_axis_ && !piece_done) {
       rapid_.position(tau, out);
       const AxisRapidMotion motion = rapid_.pathMotion(tau);

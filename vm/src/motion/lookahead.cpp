@@ -304,7 +304,8 @@ void LookAhead::popRun() {
   if (run_count_ == 0) return;
   const Run& front = runAt(0);
   if (front.window_cut) {
-    --tail_.cuts;  // the last of them: the tail is every queued run, as kept
+    // (If it was the last cut, every queued run is now the tail, which tail_ already holds.)
+    --tail_.cuts;
   } else if (tail_.cuts == 0) {  // a run of the tail leaves
     const QueuedExtremes& q = tail_.extremes;
     const SegmentLimits& l = front.limits;

@@ -48,19 +48,17 @@ LookAhead::WindowNeeds LookAhead::windowNeeds() const {
   }
   QueuedExtremes q = tail_.extremes;
   needs.cut = tail_.cuts > 0;
-  if (!(q.velocity > 0.0)) {
-    // Nothing moving after the last cut. The last queued run ends there: what follows it is
-    // wanted once the path is within that run's reach of the end (a zigzag that stops at
-    // every corner would else be read to the ring's end). Nothing moving queued: wanted now.
+  // Nothing moving after the last cut: the last queued run ends there, and what follows it
+  // is wanted once the path is within that run's reach of the end (a zigzag that stops at
+  // every corner would else be read to the ring's end). Nothing moving queued: wanted now.
+  const bool tail_empty = !(q.velocity > 0.0);
+  if (tail_empty) {
     const Run* last = run_count_ > 0 ? &runAt(run_count_ - 1) : nullptr;
     needs.always = last == nullptr || last->kind == MotionPrimitive::Kind::Dwell ||
                    !(last->limits.velocity > 0.0);
     if (needs.always) return needs;
     q = QueuedExtremes{};
     q.add(last->limits);
-    needs.reach = reach_machine_.lengthFor(q.velocity, q.acceleration, q.jerk);
-    needs.settled = true;
-    return needs;
   }
   // (The ramps take a few hundred instructions: kept while the extremes are the same.)
   if (!(q == reach_for_)) {
@@ -68,6 +66,10 @@ LookAhead::WindowNeeds LookAhead::windowNeeds() const {
     reach_for_length_ = reach_machine_.lengthFor(q.velocity, q.acceleration, q.jerk);
   }
   needs.reach = reach_for_length_;
+  if (tail_empty) {
+    needs.settled = true;  // no run after the cut to start
+    return needs;
+  }
   const StartingRuns starting = startingRuns(
       needs.cut ? static_cast<std::size_t>(tail_.last_cut + 1 - runs_popped_) : 0, q.velocity);
   needs.starting = starting.length;
@@ -101,7 +103,10 @@ void LookAhead::cutWindowAfter(std::size_t i) {
   Run& run = runAt(i);
   if (run.window_cut) return;
   run.window_cut = true;
-  tail_ = Tail{.cuts = tail_.cuts + 1, .last_cut = runs_popped_ + i};
+  const std::size_t cuts = tail_.cuts + 1;
+  tail_ = Tail{};
+  tail_.cuts = cuts;
+  tail_.last_cut = runs_popped_ + i;
   tail_stale_pops_ = 0;
 }
 

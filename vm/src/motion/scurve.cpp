@@ -1,8 +1,8 @@
 #include "ncc/vm/motion/scurve.h"
 
 #include <algorithm>
-#include <initializer_list>
 #include <cmath>
+#include <initializer_list>
 
 namespace ncc::vm::motion {
 namespace {

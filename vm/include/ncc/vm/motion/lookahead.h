@@ -273,7 +273,7 @@ class LookAhead {
   };
   WindowNeeds windowNeeds() const;
   mutable WindowNeeds window_;
-  mutable QueuedExtremes reach_for_{.velocity = -1.0};  // the last reach worked out
+  mutable QueuedExtremes reach_for_{.velocity = -1.0};  // the last reach worked out (none)
   mutable double reach_for_length_ = 0.0;
   // Runs popped since one that held an extreme of the tail left (0: the extremes are exact).
   mutable std::size_t tail_stale_pops_ = 0;
