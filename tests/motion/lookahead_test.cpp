@@ -149,17 +149,6 @@ TEST(LookAhead, ReadsAheadTheBrakingDistanceOfWhatIsQueued) {
   }
 }
 
-// The same program queued whole before the first tick (no window).
-Trace runWhole(const MachineConfig& m, const std::vector<MotionPrimitive>& prog) {
-  return run(
-      m, prog, 1 << 14, 50'000'000, false, {},
-      [&](MotionPlanner& planner) {
-        for (const MotionPrimitive& p : prog) ASSERT_TRUE(planner.push(p));
-        planner.endOfProgram();
-      },
-      [](uint64_t) { return false; });
-}
-
 // A run that may start before the next preparation is never the last one queued: a segment
 // that lowers its limits could not join it once it runs (joinsLast), as it would with the
 // whole program known, and would make a run of its own (review 10). A feed step down, and a
@@ -179,7 +168,7 @@ TEST(LookAhead, ASegmentThatLowersARunJoinsItBeforeItStarts) {
   };
   for (const std::vector<MotionPrimitive>& prog : programs) {
     const Trace windowed = run(m, prog);
-    const Trace whole = runWhole(m, prog);
+    const Trace whole = runWholeQueued(m, prog);
     ASSERT_EQ(windowed.ticks(), whole.ticks());
     for (uint64_t k = 0; k < whole.ticks(); ++k)
       for (int i = 0; i < 3; ++i) EXPECT_NEAR(windowed.points[k][i], whole.points[k][i], 1e-12);

@@ -109,6 +109,19 @@ inline Trace run(const MachineConfig& machine, const std::vector<MotionPrimitive
   return trace;
 }
 
+// The same run with the whole program queued before the first tick (no look-ahead window):
+// what the plan is with everything known.
+inline Trace runWholeQueued(const MachineConfig& machine,
+                            const std::vector<MotionPrimitive>& program) {
+  return run(
+      machine, program, 1 << 14, 50'000'000, false, {},
+      [&](vm::motion::MotionPlanner& planner) {
+        for (const MotionPrimitive& m : program) ASSERT_TRUE(planner.push(m));
+        planner.endOfProgram();
+      },
+      [](uint64_t) { return false; });
+}
+
 // splitmix64: the same sequence on every platform (std distributions are not portable).
 class Random {
  public:

@@ -226,13 +226,7 @@ TEST(RandomSuite, TheWindowReadsAsFarAsThePlanNeeds) {
     Generator gen(seed);
     const std::vector<MotionPrimitive> prog = gen.program(40);
     const Trace windowed = run(m, prog, 1 << 14);
-    const Trace whole = run(
-        m, prog, 1 << 14, 50'000'000, false, {},
-        [&](vm::motion::MotionPlanner& planner) {
-          for (const MotionPrimitive& p : prog) ASSERT_TRUE(planner.push(p));
-          planner.endOfProgram();
-        },
-        [](uint64_t) { return false; });
+    const Trace whole = runWholeQueued(m, prog);
     ASSERT_EQ(windowed.ticks(), whole.ticks()) << seed;
     double worst = 0.0;
     for (uint64_t k = 0; k < whole.ticks(); ++k)
