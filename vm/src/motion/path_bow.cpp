@@ -51,12 +51,17 @@ Split split(const AxisValues& v, const AxisValues& c, int n) {
   return {along, std::sqrt(std::max(dot(v, v, n) - along * along, 0.0))};
 }
 
-// Control points of dx/ds (4th degree), d2x/ds2 (3rd) and d3x/ds3 (2nd).
+// Control points of dx/ds (4th degree), d2x/ds2 (3rd) and d3x/ds3 (2nd). Set and read for
+// the segment's axes only (not zeroed: setBowBounds runs once per chord of a chain).
 struct BowHull {
-  std::array<AxisValues, 5> velocity{};
-  std::array<AxisValues, 4> curvature{};
-  std::array<AxisValues, 3> rate{};
+  std::array<AxisValues, 5> velocity;
+  std::array<AxisValues, 4> curvature;
+  std::array<AxisValues, 3> rate;
 };
+
+// max(acc, x clamped at 0), ignoring a NaN x as std::max(acc, x) does: the largest of values
+// kept squared, so that one square root (monotone, correctly rounded) gives the largest root.
+double maxSquare(double acc, double x) { return std::max(acc, std::max(x, 0.0)); }
 
 }  // namespace
 
@@ -158,16 +163,21 @@ void PathSegment::setBowBounds() {
     b.reference_across = parts.across;
     b.residual = std::max(norm(r1, n), norm(r2, n));
   }
+  // Largest sizes through their squares (one root each; the same values as a root per point).
   double slowest = 1.0;  // of x' . c, at least |x'|'s smallest
+  double speed2 = 0.0;
   for (const AxisValues& v : h.velocity) {
-    b.speed = std::max(b.speed, norm(v, n));
+    speed2 = maxSquare(speed2, dot(v, v, n));
     slowest = std::min(slowest, dot(v, c, n));
     for (int i = 0; i < n; ++i) b.tangent[i] = std::max(b.tangent[i], std::abs(v[i]));
   }
+  b.speed = std::sqrt(speed2);
+  double curvature2 = 0.0;
   for (const AxisValues& k : h.curvature) {
-    b.curvature = std::max(b.curvature, norm(k, n));
+    curvature2 = maxSquare(curvature2, dot(k, k, n));
     for (int i = 0; i < n; ++i) b.axis_curvature[i] = std::max(b.axis_curvature[i], std::abs(k[i]));
   }
+  b.curvature = std::sqrt(curvature2);
   // d3x/ds3 = q(u) = q0 + q1 u + q2 u^2 from its Bezier points (the hull is loose here: 6 k^2
   // on a circle whose d3x/ds3 is k^2): sampled at kRateSamples + 1 points. Between two, q is
   // their linear interpolation (within the larger of their sizes) plus q2 (u - u_a)(u - u_b),
@@ -184,15 +194,18 @@ void PathSegment::setBowBounds() {
   const double q00 = dot(q0, q0, n), q01 = dot(q0, q1, n), q02 = dot(q0, q2, n);
   const double q11 = dot(q1, q1, n), q12 = dot(q1, q2, n), q22 = dot(q2, q2, n);
   const double c0 = dot(q0, c, n), c1 = dot(q1, c, n), c2 = q2_parts.along;
+  double rate2 = 0.0, across2 = 0.0;
   for (int k = 0; k <= kRateSamples; ++k) {
     const double u = static_cast<double>(k) / kRateSamples;
     const double size2 = std::max(
         q00 + u * (2.0 * q01 + u * (q11 + 2.0 * q02 + u * (2.0 * q12 + u * q22))), 0.0);
     const double along = c0 + u * (c1 + u * c2);
-    b.rate = std::max(b.rate, std::sqrt(size2));
+    rate2 = maxSquare(rate2, size2);
     b.rate_along = std::max(b.rate_along, std::abs(along));
-    b.rate_across = std::max(b.rate_across, std::sqrt(std::max(size2 - along * along, 0.0)));
+    across2 = maxSquare(across2, size2 - along * along);
   }
+  b.rate = std::sqrt(rate2);
+  b.rate_across = std::sqrt(across2);
   constexpr double kBetween = 0.25 / (kRateSamples * kRateSamples);
   b.rate += kBetween * norm(q2, n);
   b.rate_along += kBetween * std::abs(q2_parts.along);
@@ -213,8 +226,14 @@ void PathSegment::setBowBounds() {
   // The tangent within the chord's direction (the rotation of a circle lies along the
   // tangent, which turns from c by at most this angle's sine).
   double off = 0.0;
-  if (slowest > 0.0)
-    for (const AxisValues& v : h.velocity) off = std::max(off, split(v, c, n).across / slowest);
+  if (slowest > 0.0) {
+    double across2 = 0.0;  // (a division by slowest > 0 is monotone too)
+    for (const AxisValues& v : h.velocity) {
+      const double along = dot(v, c, n);
+      across2 = maxSquare(across2, dot(v, v, n) - along * along);
+    }
+    off = std::sqrt(across2) / slowest;
+  }
   b.off_chord = std::min(off, 1.0);
 }
 

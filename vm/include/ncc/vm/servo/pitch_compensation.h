@@ -4,7 +4,6 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
-#include <limits>
 #include <vector>
 
 #include "ncc/machine/axes.h"
@@ -13,23 +12,28 @@
 
 namespace ncc::vm {
 
-// The position in support-point steps from the table's start: the lookup's division, apart so
-// that the servo model can do it for all axes at once.
+// The position in support-point steps from the table's start.
 inline double pitchParameter(double position, double start, double step) {
   return (position - start) / step;
 }
 
+// The clamped parameter of a lookup: t held within [0, last], a NaN at 0 (the first value).
+inline double pitchClamp(double t, double last) {
+  t = t > 0.0 ? t : 0.0;  // (false for NaN)
+  return t < last ? t : last;
+}
+
 // The value at parameter t of a table of values[0..last_index]; `last` is last_index as a
-// double.
+// double. The same arithmetic at every t, with no branch on where t lies: value k plus the
+// fraction of the step to value k + 1 (the last value again past the end, so that the last
+// value comes out exactly, as every support point does: plus 0 times the step).
 inline double pitchInterpolate(const double* values, size_t last_index, double last, double t) {
-  // `!(t > 0)` also catches NaN: hold the first value rather than index with it.
-  if (!(t > 0.0)) return values[0];
-  if (t >= last) return values[last_index];
-  // 0 < t < last here, so truncation is floor (and much cheaper without SSE4.1).
+  t = pitchClamp(t, last);
+  // 0 <= t <= last here, so truncation is floor (and much cheaper without SSE4.1).
   const int64_t k = static_cast<int64_t>(t);
   const double frac = t - static_cast<double>(k);
-  if (frac == 0.0) return values[k];
-  return values[k] + frac * (values[k + 1] - values[k]);
+  const double next = values[static_cast<size_t>(k) < last_index ? k + 1 : k];
+  return values[k] + frac * (next - values[k]);
 }
 
 // 0 for an empty table. Exact at support points whose offset from `start` is a whole number
@@ -41,80 +45,63 @@ inline double pitchValue(const PitchTable& table, double position) {
                           pitchParameter(position, table.start, table.step));
 }
 
-// A table's values owned by the servo model: copied once at construction (the tick path
-// allocates nothing), interpolated with the same arithmetic as pitchValue().
-class PitchValues {
- public:
-  PitchValues() = default;
-  explicit PitchValues(const std::vector<double>& values)
-      : values_(values),
-        last_index_(values_.empty() ? 0 : values_.size() - 1),
-        last_(static_cast<double>(last_index_)) {}
-
-  bool empty() const { return values_.empty(); }
-  // At parameter t = pitchParameter(position, start, step); the table must not be empty.
-  double at(double t) const { return pitchInterpolate(values_.data(), last_index_, last_, t); }
-
- private:
-  std::vector<double> values_;
-  size_t last_index_ = 0;  // of the last support point
-  double last_ = 0.0;      // the same as a double
-};
-
 // One kind of table (the control's LEC, or the simulated leadscrew's error) for all axes of a
-// machine, for the servo model's cycle: the divisions of all axes side by side (a loop the
-// compiler vectorises: over the axes' lanes, axis_lanes.h), then the interpolation where an
-// axis has a table and has moved. It holds the values it looked up: an axis at rest (its
-// parameter bit-identical to the last one) keeps its value without a second interpolation.
+// machine, for the servo model's cycle. Every lane has a table (0 where the axis has none,
+// and on the padding lane), each padded with its last value once more, so that one loop with
+// no branch looks up every lane with pitchValue()'s arithmetic: a fixed cost per cycle.
 class PitchTables {
  public:
   using Values = AxisLanes;
 
   PitchTables() {
     step_.fill(1.0);  // no table: a harmless division
-    last_parameter_.fill(std::numeric_limits<double>::quiet_NaN());  // equal to nothing
+    offset_.fill(0);  // the table of 0 at the start of values_
   }
-  // Each axis at most once; an empty table adds nothing.
+  // Each axis at most once; an empty table adds nothing. Copies the values (allocates: at
+  // load, never in the cycle).
   void add(int axis, const PitchTable& table);
 
   // values()[i] = the value at position[i] for each axis i < n with a table; 0 for the others.
   void lookUp(int n, const Values& position) {
-    if (axis_count_ == 0) return;
+    if (!any_) return;
     const int lanes = laneCount(n);
-    Values parameter;
-    for (int i = 0; i < lanes; ++i)
-      parameter[i] = pitchParameter(position[i], start_[i], step_[i]);
-    for (int k = 0; k < axis_count_; ++k) {
-      const int i = axes_[k];
-      if (parameter[i] == last_parameter_[i]) continue;  // (NaN: never equal, looked up)
-      last_parameter_[i] = parameter[i];
-      value_[i] = values_[i].at(parameter[i]);
+    for (int i = 0; i < lanes; ++i) {
+      const double t = pitchClamp(pitchParameter(position[i], start_[i], step_[i]), last_[i]);
+      const int64_t k = static_cast<int64_t>(t);  // 0 <= t <= last: floor
+      const double frac = t - static_cast<double>(k);
+      const double* v = values_.data() + offset_[i] + k;
+      value_[i] = v[0] + frac * (v[1] - v[0]);
     }
   }
   const Values& values() const { return value_; }
   // The same for one axis (0 without a table), without keeping it.
   double valueAt(int axis, double position) const {
-    return values_[axis].empty()
-               ? 0.0
-               : values_[axis].at(pitchParameter(position, start_[axis], step_[axis]));
+    const size_t last_index = static_cast<size_t>(last_[axis]);
+    return pitchInterpolate(values_.data() + offset_[axis], last_index, last_[axis],
+                            pitchParameter(position, start_[axis], step_[axis]));
   }
 
  private:
   Values start_{};
   Values step_{};
-  std::array<PitchValues, kMaxAxes> values_;  // copies, allocated when added
-  std::array<int, kMaxAxes> axes_{};          // the axes with a table, in order
-  int axis_count_ = 0;
-  Values last_parameter_{};  // of each axis' last lookUp (NaN before the first)
-  Values value_{};           // the value there
+  Values last_{};  // the last support point's index
+  // All tables one after the other, each padded: first {0, 0}, every lane's table until one
+  // is added. Offsets rather than pointers, so that a copy needs nothing of the original.
+  std::vector<double> values_{0.0, 0.0};
+  std::array<size_t, kAxisLanes> offset_{};
+  bool any_ = false;
+  Values value_{};  // each lane's value at the last lookUp
 };
 
 inline void PitchTables::add(int axis, const PitchTable& table) {
   if (table.values.empty()) return;
   start_[axis] = table.start;
   step_[axis] = table.step;
-  values_[axis] = PitchValues(table.values);
-  axes_[axis_count_++] = axis;
+  last_[axis] = static_cast<double>(table.values.size() - 1);
+  offset_[axis] = values_.size();
+  values_.insert(values_.end(), table.values.begin(), table.values.end());
+  values_.push_back(table.values.back());
+  any_ = true;
 }
 
 }  // namespace ncc::vm
