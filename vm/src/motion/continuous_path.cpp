@@ -42,21 +42,6 @@ void keepSpeedCap(SegmentLimits& limits, bool curve) {
   else if (!(limits.velocity > 0.0)) limits.velocity = kMinPathVelocity;
 }
 
-// Rounds a positive value down / up to the grid 2^(k/steps).
-double roundDown(double x, double steps) {
-  if (!(x > 0.0) || !std::isfinite(x)) return x;
-  return std::min(x, std::exp2(std::floor(steps * std::log2(x)) / steps));
-}
-double roundUp(double x, double steps) {
-  if (!(x > 0.0) || !std::isfinite(x)) return x;
-  return std::max(x, std::exp2(std::ceil(steps * std::log2(x)) / steps));
-}
-// A chain line's limits are rounded down to a 4.4 % grid, so that neighbouring lines have
-// equal limits and join one run. Its shape is rounded up, so that its lines share one shape
-// and their limits are computed once: the curvature on a 1.1 % grid; the wiggle (the
-// polygon's deviation from the curve, at most a fifth of the jerk) on a 19 % grid, since it
-// changes with every chord length.
-constexpr double kLimitGridSteps = 16.0, kCurvatureGridSteps = 64.0, kWiggleGridSteps = 4.0;
 
 }  // namespace
 
@@ -245,16 +230,16 @@ void ContinuousPath::bowShape(const PathSegment& bow, ChainShape& chain, double&
   // While the speed changes, the residual's part of a third difference gains 2 v a_t e
   // beside 1.5 e v^2 / T (review 8): covered by counting 2/3 e more curvature in the cross
   // term 3 v a_t k (and, more than needed, in the centripetal one).
-  chain.curvature = roundUp(bow.maxCurvature() + 2.0 / 3.0 * residual, kCurvatureGridSteps);
-  chain.rate_along = roundUp(by_reference ? bow.bowReferenceRateAlongChord() : bow.bowRateAlongChord(),
-                             kCurvatureGridSteps);
+  chain.curvature = grids_.curvature.round(bow.maxCurvature() + 2.0 / 3.0 * residual);
+  chain.rate_along = grids_.rate_along.round(by_reference ? bow.bowReferenceRateAlongChord()
+                                                    : bow.bowRateAlongChord());
   // These three are small on a circle (a thousandth of the rotation, and 1e-7 and 1e-4 over
   // 1) and change with every chord's length: coarser grids, so that a chain's bows share a
   // few shapes and their limits are computed once.
-  chain.rate_across = roundUp(by_reference ? bow.bowReferenceRateAcrossChord() : bow.bowRateAcrossChord(),
-                              kWiggleGridSteps);
-  chain.speed = 1.0 + roundUp(bow.maxSpeed() - 1.0, 1.0);
-  chain.stretch = 1.0 + roundUp(bow.parameterStretch() - 1.0, 1.0);
+  chain.rate_across = grids_.rate_across.round(by_reference ? bow.bowReferenceRateAcrossChord()
+                                                      : bow.bowRateAcrossChord());
+  chain.speed = 1.0 + grids_.speed.round(bow.maxSpeed() - 1.0);
+  chain.stretch = 1.0 + grids_.stretch.round(bow.parameterStretch() - 1.0);
 }
 
 void ContinuousPath::setChainAxes(ChainShape& chain, const EndVertex& vertex) const {
@@ -262,7 +247,7 @@ void ContinuousPath::setChainAxes(ChainShape& chain, const EndVertex& vertex) co
   // vertex (a stop, a kink, a blend) the line's own direction is where it starts or ends.
   const bool chain_start = held_.start_curvature > 0.0, chain_end = vertex.curvature > 0.0;
   for (int i = 0; i < limits_.count; ++i) {
-    chain.wiggle[i] = roundUp(std::max(held_.start_wiggle[i], vertex.wiggle[i]), kWiggleGridSteps);
+    chain.wiggle[i] = grids_.wiggle[i].round(std::max(held_.start_wiggle[i], vertex.wiggle[i]));
     const bool moves = held_.direction[i] != 0.0 ||
                        (chain_start && held_.previous_direction[i] != 0.0) ||
                        (chain_end && vertex.next_direction[i] != 0.0);
@@ -275,9 +260,9 @@ void ContinuousPath::enqueueChainLine(QueuedSegment& seg, SegmentLimits limits, 
   // Neighbouring lines of a chain differ slightly in their limits; rounded down to a common
   // grid (the speed only below the feed), their limits are equal and they join one run (one
   // S-curve, not one per 10 um).
-  if (limits.velocity < feed_cap) limits.velocity = roundDown(limits.velocity, kLimitGridSteps);
-  limits.acceleration = roundDown(limits.acceleration, kLimitGridSteps);
-  limits.jerk = roundDown(limits.jerk, kLimitGridSteps);
+  if (limits.velocity < feed_cap) limits.velocity = grids_.velocity.round(limits.velocity);
+  limits.acceleration = grids_.acceleration.round(limits.acceleration);
+  limits.jerk = grids_.jerk.round(limits.jerk);
   keepSpeedCap(limits, true);
   limits.acceleration = std::min(limits.acceleration, kinkAcceleration(limits.velocity, vertex));
   enqueue(seg, MotionPrimitive::Kind::Line, limits, held_.start_limit, stop_after);
@@ -317,7 +302,7 @@ void ContinuousPath::queueHeld(const AxisValues& end, double end_trim, const End
   }
   ChainShape chain;
   const double end_curvature = vertex.curvature;
-  chain.curvature = roundUp(std::max(held_.start_curvature, end_curvature), kCurvatureGridSteps);
+  chain.curvature = grids_.polygon_curvature.round(std::max(held_.start_curvature, end_curvature));
   setChainAxes(chain, vertex);
   chain.rate_along = chain.curvature * chain.curvature;  // the circle's rotation
   SegmentLimits limits = chain.curvature > 0.0

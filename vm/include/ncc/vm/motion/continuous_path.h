@@ -30,6 +30,7 @@
 #include <optional>
 
 #include "ncc/vm/events.h"
+#include "ncc/vm/motion/grid_cell.h"
 #include "ncc/vm/motion/limits.h"
 #include "ncc/vm/motion/lookahead.h"
 #include "ncc/vm/motion/path.h"
@@ -214,6 +215,22 @@ class ContinuousPath {
   ChainShape last_bow_shape_;  // the shape of the last bow queued (queueBow)
   std::array<ChainLimits, 32> chain_cache_{};  // the last shapes seen, replaced in turn
   std::size_t chain_cache_next_ = 0;
+  // The grids a chain's shape and limits are rounded to, each quantity with its last cell.
+  // A chain line's limits are rounded down to a 4.4 % grid, so that neighbouring lines have
+  // equal limits and join one run. Its shape is rounded up, so that its lines share one shape
+  // and their limits are computed once: the curvature on a 1.1 % grid; the wiggle (the
+  // polygon's deviation from the curve, at most a fifth of the jerk) on a 19 % grid, since
+  // it changes with every chord length. A cell changes no result, only what it costs: it is
+  // mutable, so that the const steps that round a shape keep theirs.
+  struct Grids {
+    static constexpr int kLimitSteps = 16, kCurvatureSteps = 64, kWiggleSteps = 4;
+    GridCell<kLimitSteps, false> velocity, acceleration, jerk;
+    GridCell<kCurvatureSteps, true> curvature, polygon_curvature, rate_along;
+    GridCell<kWiggleSteps, true> rate_across;
+    GridCell<1, true> speed, stretch;
+    std::array<GridCell<kWiggleSteps, true>, kMaxAxes> wiggle;
+  };
+  mutable Grids grids_;
 };
 
 }  // namespace ncc::vm::motion
