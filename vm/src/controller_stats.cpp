@@ -13,9 +13,10 @@ constexpr double kErrorBoundSlack = 1e-6;
 
 }  // namespace
 
-void StatisticsAccumulator::add(uint64_t k, double time, const AxisValues& commanded,
-                                const AxisValues& actual, const AxisValues& following_error,
-                                bool rapid, double path_velocity) {
+void StatisticsAccumulator::add(uint64_t k, double time, const AxisValues& __restrict commanded,
+                                const AxisValues& __restrict actual,
+                                const AxisValues& __restrict following_error, bool rapid,
+                                double path_velocity) {
   const int n = axis_count_;
   if (!started_) {  // the first tick: no previous setpoint, so no motion yet
     previous_ = commanded;

@@ -51,9 +51,11 @@ class StatisticsAccumulator {
 
   // Tick k (k increases by one per call). `rapid`: the run being interpolated is a rapid;
   // `path_velocity` 0 marks a tick where a run starts or stops, whose chord still belongs to
-  // the previous tick's run.
-  void add(uint64_t k, double time, const AxisValues& commanded, const AxisValues& actual,
-           const AxisValues& following_error, bool rapid, double path_velocity);
+  // the previous tick's run. The arrays are not the accumulator's own (__restrict: its loop
+  // over the axes vectorises without checking that at run time).
+  void add(uint64_t k, double time, const AxisValues& __restrict commanded,
+           const AxisValues& __restrict actual, const AxisValues& __restrict following_error,
+           bool rapid, double path_velocity);
 
   const RunStatistics& statistics() const { return stats_; }
 
