@@ -9,7 +9,7 @@ namespace ncc::vm {
 constexpr double kKvToPerSecond = 1000.0 / 60.0;
 
 ServoAxes::ServoAxes(const MachineConfig& machine, int axis_count)
-    : count_(axis_count), cycle_(machine.ipo_cycle_seconds) {
+    : count_(axis_count), cycle_(machine.ipo_cycle_seconds), rate_(1.0 / cycle_) {
   for (int i = 0; i < count_; ++i) {
     const ServoConfig& s = machine.axes[i].servo;
     kv_[i] = s.kv * kKvToPerSecond;
@@ -59,7 +59,7 @@ void ServoAxes::reset(const AxisValues& position) {
 void ServoAxes::step(const AxisValues& __restrict setpoint, ServoSample& __restrict out) {
   const int n = count_;
   const int lanes = laneCount(n);  // the loops to it vectorise; a padding lane stays 0
-  const double cycle = cycle_;
+  const double cycle = cycle_, rate = rate_;
 
   // The setpoint into the axes' lanes (only those: an entry beyond them is not an axis).
   for (int i = 0; i < n; ++i) {
@@ -81,8 +81,10 @@ void ServoAxes::step(const AxisValues& __restrict setpoint, ServoSample& __restr
   // feed-forward is the speed (and the speed change) this cycle's move needs.
   for (int i = 0; i < lanes; ++i) {
     const double command = setpoint_[i] - compensation[i];
-    const double ffw_velocity = (command - command_[i]) / cycle;
-    const double ffw_acceleration = (ffw_velocity - ffw_velocity_[i]) / cycle;
+    // Per cycle to per second by a product with 1/T rather than a division by T: three
+    // divisions a lane were a tenth of the servo model's time (the last bit may differ).
+    const double ffw_velocity = (command - command_[i]) * rate;
+    const double ffw_acceleration = (ffw_velocity - ffw_velocity_[i]) * rate;
     const double speed_setpoint = kv_[i] * (target_[i] - motor_[i]) +
                                   velocity_ffw_[i] * ffw_velocity +
                                   torque_ffw_[i] * ffw_acceleration;
@@ -108,7 +110,7 @@ void ServoAxes::step(const AxisValues& __restrict setpoint, ServoSample& __restr
     actual_[i] = nut - play_sign_[i] * play_lag_[i];
     following_error_[i] = target_[i] - motor_[i];
     position_error_[i] = command_[i] + backlash_[i] - motor_[i];
-    acceleration_[i] = (speed_[i] - last_speed_[i]) / cycle;
+    acceleration_[i] = (speed_[i] - last_speed_[i]) * rate;
   }
   // All kMaxAxes entries: those beyond the axes are 0 (their lanes are never set).
   copyAxes(setpoint_, out.setpoint);

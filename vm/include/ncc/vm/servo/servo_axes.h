@@ -47,6 +47,7 @@ class ServoAxes {
 
   int count_ = 0;
   double cycle_ = 0.001;  // T, s
+  double rate_ = 1000.0;  // 1/T, 1/s: differences per cycle become per second by a product
 
   // Parameters (constant after construction).
   Values kv_{};            // 1/s
