@@ -1,6 +1,7 @@
 // GridCell: the planner's grid rounding with the last cell kept gives the computed rounding
 // bit for bit, for values inside the cell, on and next to its grid values, and for values
 // that are not positive and finite.
+#include <algorithm>
 #include <bit>
 #include <cmath>
 #include <cstdint>
@@ -38,6 +39,20 @@ std::vector<double> values() {
   }
   const double inf = std::numeric_limits<double>::infinity();
   v.insert(v.end(), {0.0, -0.0, -1.0, inf, -inf, std::nan(""), 1.3, 5e-324, 1e308});
+  // The ends of the range, each walk after a value that may set a cell next to it: the top
+  // octave (where log2 rounds to 1024 just below DBL_MAX) and the subnormals (whose grid
+  // steps have few digits).
+  const double top = std::numeric_limits<double>::max();
+  for (double x = 1.7e308; x < top; x = std::nextafter(x * (1.0 + 1e-4), inf)) v.push_back(x);
+  for (double x = top, k = 0; k < 2000; ++k, x = std::nextafter(x, 0.0)) v.push_back(x);
+  v.push_back(1.75e308);
+  v.push_back(top);
+  const double tiny = std::numeric_limits<double>::denorm_min();
+  for (int k = 1; k < 3000; k += 7) v.push_back(k * tiny);
+  for (int k = 400; k < 600; ++k) v.insert(v.end(), {k * tiny, (k + 80) * tiny});
+  for (double x = std::numeric_limits<double>::min() * 4; x > tiny;
+       x = std::min(x * 0.93, std::nextafter(x, 0.0)))  // (a subnormal's product may not fall)
+    v.push_back(x);
   return v;
 }
 
@@ -68,6 +83,18 @@ TEST(GridCell, RoundsAsComputedOnEveryGrid) {
   expectComputedRounding<4, true>();
   expectComputedRounding<1, true>();
   expectComputedRounding<64, false>();
+  expectComputedRounding<4, false>();
+  expectComputedRounding<1, false>();
+}
+
+// Found in review: a rounding-down cell set in the top octave returned 2^(1024 - 1/16) for
+// DBL_MAX, whose computed rounding is DBL_MAX itself (log2 rounds to 1024 there).
+TEST(GridCell, TheTopOctaveIsComputed) {
+  GridCell<16, false> down;
+  const double top = std::numeric_limits<double>::max();
+  EXPECT_EQ(down.round(1.75e308), roundDownToGrid(1.75e308, 16));
+  EXPECT_EQ(down.round(top), roundDownToGrid(top, 16));
+  EXPECT_EQ(roundDownToGrid(top, 16), top);
 }
 
 TEST(GridCell, RoundsToTheGrid) {

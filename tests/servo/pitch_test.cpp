@@ -36,6 +36,27 @@ TEST(PitchTable, EndValuesHeldOutside) {
   EXPECT_EQ(vm::pitchValue(PitchTable{0.0, 1.0, {0.5}}, 3.0), 0.5);
 }
 
+// At a support point and outside the table the value is the entry as it is (found in
+// review: computed as v + 0 (v' - v), a -0 entry came out +0, and two huge neighbours whose
+// difference overflows gave a NaN).
+TEST(PitchTable, EntriesComeOutAsTheyAre) {
+  const PitchTable signed_zero{0.0, 1.0, {-0.0, 0.001}};
+  for (double x : {0.0, -5.0, std::nan("")}) {
+    EXPECT_TRUE(std::signbit(vm::pitchValue(signed_zero, x))) << x;
+    vm::PitchTables tables;
+    tables.add(0, signed_zero);
+    vm::PitchTables::Values position{};
+    position[0] = x;
+    tables.lookUp(1, position);
+    EXPECT_TRUE(std::signbit(tables.values()[0])) << x;
+    EXPECT_TRUE(std::signbit(tables.valueAt(0, x))) << x;
+  }
+  const PitchTable huge{0.0, 1.0, {1e308, -1e308}};
+  EXPECT_EQ(vm::pitchValue(huge, 0.0), 1e308);
+  EXPECT_EQ(vm::pitchValue(huge, 1.0), -1e308);
+  EXPECT_EQ(vm::pitchValue(huge, 7.0), -1e308);
+}
+
 // The servo model's per-cycle path (all axes' divisions side by side, then the interpolation)
 // gives pitchValue() bit for bit: inside, between and outside the support points, and NaN;
 // an axis whose position repeats keeps its value, one that moves gets the new one.

@@ -183,8 +183,9 @@ void PathSegment::setBowBounds() {
   // their linear interpolation (within the larger of their sizes) plus q2 (u - u_a)(u - u_b),
   // at most |q2| h^2 / 4 for a step h; likewise its part along the chord and the rest.
   constexpr int kRateSamples = 16;
-  AxisValues q0 = h.rate[0], q1{}, q2{};
+  AxisValues q0{}, q1{}, q2{};
   for (int i = 0; i < n; ++i) {
+    q0[i] = h.rate[0][i];
     q1[i] = 2.0 * (h.rate[1][i] - h.rate[0][i]);
     q2[i] = h.rate[0][i] - 2.0 * h.rate[1][i] + h.rate[2][i];
   }

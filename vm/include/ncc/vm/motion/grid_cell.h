@@ -35,19 +35,25 @@ class GridCell {
     if (x > inner_low_ && x < inner_high_) return grid_value_;
     const double rounded = kUp ? roundUpToGrid(x, kSteps) : roundDownToGrid(x, kSteps);
     // Kept only where x lies strictly inside the cell (not on a grid value, not a NaN). The
-    // other bound is a step of the grid away, within a few units in the last place.
+    // other bound is a step of the grid away, within a few units in the last place: so only
+    // a cell of normal doubles (a subnormal's step loses those digits, and past DBL_MAX the
+    // bound is inf, where log2 itself rounds to 1024 and the computed grid value is x).
     if (kUp ? rounded > x : rounded < x) {
-      grid_value_ = rounded;
       const double low = kUp ? rounded * kOctaveShare : rounded;
       const double high = kUp ? rounded : rounded / kOctaveShare;
-      inner_low_ = low * (1.0 + kMargin);
-      inner_high_ = high * (1.0 - kMargin);
+      if (low >= std::numeric_limits<double>::min() && high <= kLargestKept) {
+        grid_value_ = rounded;
+        inner_low_ = low * (1.0 + kMargin);
+        inner_high_ = high * (1.0 - kMargin);
+      }
     }
     return rounded;
   }
 
  private:
   static constexpr double kMargin = 1e-9;
+  // Cells up to here only: far from DBL_MAX, where log2 rounds to 1024.
+  static constexpr double kLargestKept = 1e300;
   // 2^(-1/kSteps), from one grid value to the next one down (only the margins use it).
   static inline const double kOctaveShare = std::exp2(-1.0 / kSteps);
 

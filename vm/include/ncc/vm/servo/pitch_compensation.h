@@ -23,17 +23,24 @@ inline double pitchClamp(double t, double last) {
   return t < last ? t : last;
 }
 
+// Value `at` plus the fraction `frac` of the step to `next`; at a support point (frac 0) the
+// value itself, as it is: a select, not a branch, and not at + 0 (next - at), which would
+// turn a -0 entry into +0 and two huge neighbours' inf difference into a NaN.
+inline double pitchBetween(double at, double next, double frac) {
+  const double between = at + frac * (next - at);
+  return frac != 0.0 ? between : at;
+}
+
 // The value at parameter t of a table of values[0..last_index]; `last` is last_index as a
-// double. The same arithmetic at every t, with no branch on where t lies: value k plus the
-// fraction of the step to value k + 1 (the last value again past the end, so that the last
-// value comes out exactly, as every support point does: plus 0 times the step).
+// double. The same arithmetic at every t, with no branch on where t lies (the last value
+// again past the end).
 inline double pitchInterpolate(const double* values, size_t last_index, double last, double t) {
   t = pitchClamp(t, last);
   // 0 <= t <= last here, so truncation is floor (and much cheaper without SSE4.1).
   const int64_t k = static_cast<int64_t>(t);
   const double frac = t - static_cast<double>(k);
   const double next = values[static_cast<size_t>(k) < last_index ? k + 1 : k];
-  return values[k] + frac * (next - values[k]);
+  return pitchBetween(values[k], next, frac);
 }
 
 // 0 for an empty table. Exact at support points whose offset from `start` is a whole number
@@ -70,7 +77,7 @@ class PitchTables {
       const int64_t k = static_cast<int64_t>(t);  // 0 <= t <= last: floor
       const double frac = t - static_cast<double>(k);
       const double* v = values_.data() + offset_[i] + k;
-      value_[i] = v[0] + frac * (v[1] - v[0]);
+      value_[i] = pitchBetween(v[0], v[1], frac);
     }
   }
   const Values& values() const { return value_; }
