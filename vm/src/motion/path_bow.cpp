@@ -42,13 +42,19 @@ double dot(const AxisValues& a, const AxisValues& b, int n) {
   return sum;
 }
 
+// The square of v's part across the unit vector c, given its part along c (rounding may take
+// it below 0).
+double acrossSquared(const AxisValues& v, double along, int n) {
+  return dot(v, v, n) - along * along;
+}
+
 // The parts of v along the unit vector c and across it (their sizes; along signed).
 struct Split {
   double along, across;
 };
 Split split(const AxisValues& v, const AxisValues& c, int n) {
   const double along = dot(v, c, n);
-  return {along, std::sqrt(std::max(dot(v, v, n) - along * along, 0.0))};
+  return {along, std::sqrt(std::max(acrossSquared(v, along, n), 0.0))};
 }
 
 // Control points of dx/ds (4th degree), d2x/ds2 (3rd) and d3x/ds3 (2nd). Set and read for
@@ -229,10 +235,8 @@ void PathSegment::setBowBounds() {
   double off = 0.0;
   if (slowest > 0.0) {
     double across2 = 0.0;  // (a division by slowest > 0 is monotone too)
-    for (const AxisValues& v : h.velocity) {
-      const double along = dot(v, c, n);
-      across2 = maxSquare(across2, dot(v, v, n) - along * along);
-    }
+    for (const AxisValues& v : h.velocity)
+      across2 = maxSquare(across2, acrossSquared(v, dot(v, c, n), n));
     off = std::sqrt(across2) / slowest;
   }
   b.off_chord = std::min(off, 1.0);

@@ -33,7 +33,7 @@ inline double pitchBetween(double at, double next, double frac) {
 
 // The value at parameter t of a table of values[0..last_index]; `last` is last_index as a
 // double. The same arithmetic at every t, with no branch on where t lies (the last value
-// again past the end).
+// again as the next one past the end).
 inline double pitchInterpolate(const double* values, size_t last_index, double last, double t) {
   t = pitchClamp(t, last);
   // 0 <= t <= last here, so truncation is floor (and much cheaper without SSE4.1).
@@ -54,8 +54,8 @@ inline double pitchValue(const PitchTable& table, double position) {
 
 // One kind of table (the control's LEC, or the simulated leadscrew's error) for all axes of a
 // machine, for the servo model's cycle. Every lane has a table (0 where the axis has none,
-// and on the padding lane), each padded with its last value once more, so that one loop with
-// no branch looks up every lane with pitchValue()'s arithmetic: a fixed cost per cycle.
+// and on the padding lane), so that one loop with no branch looks up every lane with
+// pitchValue()'s arithmetic: a fixed cost per cycle.
 class PitchTables {
  public:
   using Values = AxisLanes;
@@ -72,29 +72,23 @@ class PitchTables {
   void lookUp(int n, const Values& position) {
     if (!any_) return;
     const int lanes = laneCount(n);
-    for (int i = 0; i < lanes; ++i) {
-      const double t = pitchClamp(pitchParameter(position[i], start_[i], step_[i]), last_[i]);
-      const int64_t k = static_cast<int64_t>(t);  // 0 <= t <= last: floor
-      const double frac = t - static_cast<double>(k);
-      const double* v = values_.data() + offset_[i] + k;
-      value_[i] = pitchBetween(v[0], v[1], frac);
-    }
+    for (int i = 0; i < lanes; ++i) value_[i] = valueAt(i, position[i]);
   }
   const Values& values() const { return value_; }
   // The same for one axis (0 without a table), without keeping it.
   double valueAt(int axis, double position) const {
-    const size_t last_index = static_cast<size_t>(last_[axis]);
-    return pitchInterpolate(values_.data() + offset_[axis], last_index, last_[axis],
+    return pitchInterpolate(values_.data() + offset_[axis], last_index_[axis], last_[axis],
                             pitchParameter(position, start_[axis], step_[axis]));
   }
 
  private:
   Values start_{};
   Values step_{};
-  Values last_{};  // the last support point's index
-  // All tables one after the other, each padded: first {0, 0}, every lane's table until one
-  // is added. Offsets rather than pointers, so that a copy needs nothing of the original.
-  std::vector<double> values_{0.0, 0.0};
+  std::array<size_t, kAxisLanes> last_index_{};  // the last support point's index
+  Values last_{};                                // the same as a double
+  // All tables one after the other: first {0}, every lane's table until one is added.
+  // Offsets rather than pointers, so that a copy needs nothing of the original.
+  std::vector<double> values_{0.0};
   std::array<size_t, kAxisLanes> offset_{};
   bool any_ = false;
   Values value_{};  // each lane's value at the last lookUp
@@ -104,10 +98,10 @@ inline void PitchTables::add(int axis, const PitchTable& table) {
   if (table.values.empty()) return;
   start_[axis] = table.start;
   step_[axis] = table.step;
-  last_[axis] = static_cast<double>(table.values.size() - 1);
+  last_index_[axis] = table.values.size() - 1;
+  last_[axis] = static_cast<double>(last_index_[axis]);
   offset_[axis] = values_.size();
   values_.insert(values_.end(), table.values.begin(), table.values.end());
-  values_.push_back(table.values.back());
   any_ = true;
 }
 
