@@ -93,6 +93,33 @@ TEST(PitchTable, ServoLookupIsPitchValue) {
   expectPitchValues();
 }
 
+// The cycle keeps each lane's interval: jumps across the whole table and back, and a grid
+// whose support points round together (step 0.5 where a double's spacing is 2, so that some
+// intervals are empty) still give pitchValue() bit for bit, every value one of the entries or
+// between two neighbours.
+TEST(PitchTable, KeptIntervalsGivePitchValue) {
+  const PitchTable coarse = table();
+  const PitchTable rounded{1e16, 0.5, {1.0, 2.0, 3.0, 4.0, 5.0, 6.0}};
+  vm::PitchTables tables;
+  tables.add(0, coarse);
+  tables.add(1, rounded);
+  const double jumps[] = {-1000.0, 9.99, -19.99, 1000.0, -10.0, -10.000000001, 0.0, 10.0};
+  for (double x : jumps) {
+    vm::PitchTables::Values position{};
+    position[0] = x;
+    position[1] = 1e16 + 2.0 * x / 1000.0;  // about 1e16 - 2 .. 1e16 + 2
+    tables.lookUp(2, position);
+    EXPECT_EQ(tables.values()[0], vm::pitchValue(coarse, position[0])) << x;
+    EXPECT_EQ(tables.values()[1], vm::pitchValue(rounded, position[1])) << x;
+    EXPECT_GE(tables.values()[1], 1.0) << x;
+    EXPECT_LE(tables.values()[1], 6.0) << x;
+  }
+  EXPECT_EQ(vm::pitchValue(rounded, 1e16 + 4.0), 6.0);  // past the last point (1e16 + 2.5 -> 2)
+  // Before the first point: held at it, where x_0 = x_1 = x_2 = 1e16, and of support points
+  // that coincide the last one holds.
+  EXPECT_EQ(vm::pitchValue(rounded, 1e16 - 2.0), 3.0);
+}
+
 // At rest at x, the table is at x + e(x) without compensation; with the same table as LEC
 // compensation it is at x up to the second-order term e(x) * e'(x).
 TEST(PitchTable, ServoModelAppliesAndCompensatesTheError) {

@@ -1,9 +1,17 @@
 #pragma once
 // Leadscrew pitch-error tables: the value at a machine position, linearly interpolated between
 // equidistant support points and held at the end values outside them (LEC, notes §4.1).
+//
+// The support points are x_k = start + k step, computed so (pitchSupport) by every lookup: the
+// grid is the same floating-point numbers everywhere, a position at one of them gives its
+// entry exactly, and a position's interval [x_k, x_k+1) is a function of the position alone.
+// Within it the value is v_k + (p - x_k) s_k, with the interval's slope
+// s_k = (v_k+1 - v_k) / step: the servo's cycle keeps each axis's interval and, while the
+// axis stays in it, looks up with a subtraction, a product and a sum (no division).
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <limits>
 #include <vector>
 
 #include "ncc/machine/axes.h"
@@ -12,58 +20,68 @@
 
 namespace ncc::vm {
 
-// The position in support-point steps from the table's start.
-inline double pitchParameter(double position, double start, double step) {
-  return (position - start) / step;
+// Support point k of a table.
+inline double pitchSupport(double start, double step, std::size_t k) {
+  return start + static_cast<double>(k) * step;
 }
 
-// The clamped parameter of a lookup: t held within [0, last], a NaN at 0 (the first value).
-inline double pitchClamp(double t, double last) {
-  t = t > 0.0 ? t : 0.0;  // (false for NaN)
-  return t < last ? t : last;
+// The position held within [first, last], the first and last support points; a NaN goes to
+// the first.
+inline double pitchClamp(double position, double first, double last) {
+  position = position > first ? position : first;  // (false for NaN)
+  return position < last ? position : last;
 }
 
-// Value `at` plus the fraction `frac` of the step to `next`; at a support point (frac 0) the
-// value itself, as it is: a select, not a branch, and not at + 0 (next - at), which would
-// turn a -0 entry into +0 and two huge neighbours' inf difference into a NaN.
-inline double pitchBetween(double at, double next, double frac) {
-  const double between = at + frac * (next - at);
-  return frac != 0.0 ? between : at;
+// The interval of a clamped position p: the last support point at or before it. The quotient
+// finds it up to rounding; the comparisons with the grid itself decide.
+inline std::size_t pitchIndex(double p, double start, double step, std::size_t last_index) {
+  double t = (p - start) / step;
+  t = t > 0.0 ? t : 0.0;
+  const double last = static_cast<double>(last_index);
+  t = t < last ? t : last;
+  std::size_t k = static_cast<std::size_t>(t);
+  while (k > 0 && p < pitchSupport(start, step, k)) --k;
+  while (k < last_index && p >= pitchSupport(start, step, k + 1)) ++k;
+  return k;
 }
 
-// The value at parameter t of a table of values[0..last_index]; `last` is last_index as a
-// double. The same arithmetic at every t, with no branch on where t lies (the last value
-// again as the next one past the end).
-inline double pitchInterpolate(const double* values, size_t last_index, double last, double t) {
-  t = pitchClamp(t, last);
-  // 0 <= t <= last here, so truncation is floor (and much cheaper without SSE4.1).
-  const int64_t k = static_cast<int64_t>(t);
-  const double frac = t - static_cast<double>(k);
-  const double next = values[static_cast<size_t>(k) < last_index ? k + 1 : k];
-  return pitchBetween(values[k], next, frac);
+// The slope after support point k (0 after the last).
+inline double pitchSlope(const double* values, std::size_t k, std::size_t last_index,
+                         double step) {
+  return k < last_index ? (values[k + 1] - values[k]) / step : 0.0;
 }
 
-// 0 for an empty table. Exact at support points whose offset from `start` is a whole number
-// of steps in floating point (e.g. start 0, step 10, position 30).
+// The value `distance` (>= 0) past a support point whose entry is `at`. At the point itself,
+// the entry as it is: a select, not at + 0 s, which would turn a -0 entry into +0 and an
+// infinite slope (two huge neighbours) into a NaN.
+inline double pitchAlong(double at, double slope, double distance) {
+  const double along = at + distance * slope;
+  return distance > 0.0 ? along : at;
+}
+
+// 0 for an empty table.
 inline double pitchValue(const PitchTable& table, double position) {
-  const size_t n = table.values.size();
+  const std::size_t n = table.values.size();
   if (n == 0) return 0.0;
-  return pitchInterpolate(table.values.data(), n - 1, static_cast<double>(n - 1),
-                          pitchParameter(position, table.start, table.step));
+  const std::size_t last_index = n - 1;
+  const double p = pitchClamp(position, table.start,
+                              pitchSupport(table.start, table.step, last_index));
+  const std::size_t k = pitchIndex(p, table.start, table.step, last_index);
+  return pitchAlong(table.values[k], pitchSlope(table.values.data(), k, last_index, table.step),
+                    p - pitchSupport(table.start, table.step, k));
 }
 
 // One kind of table (the control's LEC, or the simulated leadscrew's error) for all axes of a
-// machine, for the servo model's cycle. Every lane has a table (0 where the axis has none,
-// and on the padding lane), so that one loop with no branch looks up every lane with
-// pitchValue()'s arithmetic: a fixed cost per cycle.
+// machine, for the servo model's cycle: pitchValue() for every lane, bit for bit. Each lane
+// keeps the interval of its last lookup; a lane without a table has the table {0} (one
+// interval, never left). The cycle clamps and tests every lane, finds a new interval only for
+// the lanes that left theirs (a division and a comparison or two each: at most the cost of
+// the plain lookup), then interpolates every lane, in loops that vectorise.
 class PitchTables {
  public:
   using Values = AxisLanes;
 
-  PitchTables() {
-    step_.fill(1.0);  // no table: a harmless division
-    offset_.fill(0);  // the table of 0 at the start of values_
-  }
+  PitchTables();
   // Each axis at most once; an empty table adds nothing. Copies the values (allocates: at
   // load, never in the cycle).
   void add(int axis, const PitchTable& table);
@@ -72,37 +90,44 @@ class PitchTables {
   void lookUp(int n, const Values& position) {
     if (!any_) return;
     const int lanes = laneCount(n);
-    for (int i = 0; i < lanes; ++i) value_[i] = valueAt(i, position[i]);
+    for (int i = 0; i < lanes; ++i) {
+      const double p = pitchClamp(position[i], first_[i], last_[i]);
+      clamped_[i] = p;
+      left_[i] = int{p < from_[i]} | int{p >= to_[i]} ? 1.0 : 0.0;
+    }
+    for (int i = 0; i < lanes; ++i)
+      if (left_[i] != 0.0) enter(i, clamped_[i]);
+    for (int i = 0; i < lanes; ++i)
+      value_[i] = pitchAlong(at_[i], slope_[i], clamped_[i] - from_[i]);
   }
   const Values& values() const { return value_; }
   // The same for one axis (0 without a table), without keeping it.
-  double valueAt(int axis, double position) const {
-    return pitchInterpolate(values_.data() + offset_[axis], last_index_[axis], last_[axis],
-                            pitchParameter(position, start_[axis], step_[axis]));
-  }
+  double valueAt(int axis, double position) const;
 
  private:
+  struct Interval {
+    double from, to, at, slope;
+  };
+  // Lane `axis`'s interval holding the clamped position p.
+  Interval intervalAt(int axis, double p) const;
+  void enter(int axis, double p);
+
+  // Each lane's table.
   Values start_{};
   Values step_{};
-  std::array<size_t, kAxisLanes> last_index_{};  // the last support point's index
-  Values last_{};                                // the same as a double
+  Values first_{}, last_{};                          // its first and last support points
+  std::array<std::size_t, kAxisLanes> last_index_{};  // the last support point's index
   // All tables one after the other: first {0}, every lane's table until one is added.
   // Offsets rather than pointers, so that a copy needs nothing of the original.
   std::vector<double> values_{0.0};
-  std::array<size_t, kAxisLanes> offset_{};
+  std::array<std::size_t, kAxisLanes> offset_{};
   bool any_ = false;
-  Values value_{};  // each lane's value at the last lookUp
+  // Each lane's interval [from, to) at its last lookup, its entry and slope; the clamped
+  // position and the value there.
+  Values from_{}, to_{}, at_{}, slope_{};
+  Values clamped_{};
+  Values left_{};  // 1 where the clamped position left the interval
+  Values value_{};
 };
-
-inline void PitchTables::add(int axis, const PitchTable& table) {
-  if (table.values.empty()) return;
-  start_[axis] = table.start;
-  step_[axis] = table.step;
-  last_index_[axis] = table.values.size() - 1;
-  last_[axis] = static_cast<double>(last_index_[axis]);
-  offset_[axis] = values_.size();
-  values_.insert(values_.end(), table.values.begin(), table.values.end());
-  any_ = true;
-}
 
 }  // namespace ncc::vm
