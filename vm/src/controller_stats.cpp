@@ -52,11 +52,11 @@ void StatisticsAccumulator::add(uint64_t k, double time, const AxisValues& __res
   (chord_rapid ? stats_.rapid_length : stats_.feed_length) += chord;
   previous_rapid_ = rapid;
 
-  // Commanded direction.
-  const double norm = std::sqrt(norm2);
-  if (chord > 0.0 && norm > kMinDirectionNorm) {
+  // Commanded direction (its norm is taken on the ticks that use it: a root a tick was a fifth
+  // of this function's time).
+  if (chord2 > 0.0 && norm2 > kMinDirectionNorm * kMinDirectionNorm) {
     direction_slot_ = 1 - direction_slot_;
-    direction_norm_ = norm;
+    direction_norm2_ = norm2;
   }
 
   // Contour error. It is a part of e: |e - (e.u)u| <= |e| for |u| = 1 (or u = 0), and
@@ -67,9 +67,10 @@ void StatisticsAccumulator::add(uint64_t k, double time, const AxisValues& __res
   if (!(error2 * (1.0 + kErrorBoundSlack) < max2)) {
     const AxisValues& direction = directions_[direction_slot_];
     AxisValues u{}, e{};
+    const double direction_norm = std::sqrt(direction_norm2_);
     double along = 0.0;
     for (int i = 0; i < n; ++i) {
-      u[i] = direction[i] / direction_norm_;
+      u[i] = direction[i] / direction_norm;
       e[i] = actual[i] - commanded[i];
       along += e[i] * u[i];
     }

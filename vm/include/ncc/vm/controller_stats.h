@@ -66,12 +66,12 @@ class StatisticsAccumulator {
   bool previous_rapid_ = false;
   AxisValues previous_{};        // c_{k-1}
   AxisValues before_previous_{}; // c_{k-2}
-  // The unit commanded direction is directions_[direction_slot_] / direction_norm_ (zero
+  // The unit commanded direction is directions_[direction_slot_] / sqrt(direction_norm2_) (zero
   // before the first move), divided out only on ticks that need it. The other slot takes
   // each tick's candidate, so that keeping it is a flip, not a copy.
   AxisValues directions_[2]{};
   int direction_slot_ = 0;
-  double direction_norm_ = 1.0;
+  double direction_norm2_ = 1.0;
 };
 
 }  // namespace ncc::vm
