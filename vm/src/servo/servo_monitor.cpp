@@ -63,13 +63,4 @@ void ServoMonitors::check(const ServoAxes& __restrict axes) {
   }
 }
 
-bool ServoMonitors::anyAlarm() const {
-  // Over every lane (a fixed count; the padding lanes are 0), with no branch per axis, and an
-  // OR of comparisons rather than a sum of the codes: a chain of ten dependent additions took
-  // 2.7 % of a simulation's time, waiting on each other's latency.
-  int any = 0;
-  for (int i = 0; i < kAxisLanes; ++i) any |= int{code_[i] != 0.0};
-  return any != 0;
-}
-
 }  // namespace ncc::vm

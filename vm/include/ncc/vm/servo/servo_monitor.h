@@ -2,6 +2,7 @@
 // Axis monitoring of the servo model (notes §4.1; Sinumerik A3): following-error ("contour")
 // monitoring, standstill monitoring, and counts of limit violations of the actual motion.
 #include <array>
+#include <bit>
 #include <cstdint>
 
 #include "ncc/machine/machine_config.h"
@@ -47,8 +48,15 @@ class ServoMonitors {
   // vectorised loop run-time overlap checks.)
   void check(const ServoAxes& __restrict axes);
   int alarmCode(int axis) const { return static_cast<int>(code_[axis]); }
-  // Whether any axis tripped an alarm in the last check().
-  bool anyAlarm() const;
+  // Whether any axis tripped an alarm in the last check(). Over every lane (a fixed count; the
+  // padding lanes are 0), as an OR of the codes' bits: a code is +0.0 or a positive number,
+  // so its bits are 0 exactly when it is none. Integer ORs vectorise; the comparisons of
+  // doubles were ten scalar compares, 2 % of a simulation's time.
+  bool anyAlarm() const {
+    std::uint64_t any = 0;
+    for (int i = 0; i < kAxisLanes; ++i) any |= std::bit_cast<std::uint64_t>(code_[i]);
+    return any != 0;
+  }
   LimitViolations violations(int axis) const {
     return {static_cast<int64_t>(travel_count_[axis]),
             static_cast<int64_t>(velocity_count_[axis]),
