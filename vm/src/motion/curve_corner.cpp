@@ -146,7 +146,10 @@ std::optional<CurveCorner> fitCurveCorner(const PathSegment& in, const PathSegme
     double worst = 0.0;
     const double step = c.curve.length() / kDeviationSamples;
     std::array<double, kDeviationSamples + 1> samples{};  // 0 at both ends, on the path
-    for (int k = 1; k < kDeviationSamples && worst <= tolerance; ++k) {
+    // Every sample, also past the tolerance: the largest is what the next trim is scaled by
+    // (stopped at the first sample past it, a miss by far read as a near one, and the trim
+    // shrank by 5 % an attempt).
+    for (int k = 1; k < kDeviationSamples; ++k) {
       samples[k] = deviationAt(c.curve, step * k, in_part, out_part);
       worst = std::max(worst, samples[k]);
     }
