@@ -412,8 +412,11 @@ void ContinuousPath::queueBow(QueuedSegment& seg, const EndVertex& vertex, doubl
 
 const SegmentLimits* ContinuousPath::cachedChainLimits(double feed, const ChainShape& chain,
                                                        double jerk_share) const {
+  // The curvature first: it tells the shapes of a chain apart (the feed and the share are
+  // mostly the same in every entry), so that a miss costs one comparison per entry.
   for (const ChainLimits& c : chain_cache_) {
-    if (c.valid && c.feed == feed && c.jerk_share == jerk_share && c.shape == chain)
+    if (c.shape.curvature == chain.curvature && c.valid && c.feed == feed &&
+        c.jerk_share == jerk_share && c.shape == chain)
       return &c.limits;
   }
   return nullptr;
