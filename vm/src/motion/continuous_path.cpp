@@ -270,12 +270,13 @@ void ContinuousPath::enqueueChainLine(QueuedSegment& seg, SegmentLimits limits, 
 
 void ContinuousPath::queueHeld(const AxisValues& end, double end_trim, const EndVertex& vertex,
                                bool stop_after, bool end_at_rest) {
-  QueuedSegment seg;
-  seg.where = held_.where;
   const bool start_at_rest = held_.start_limit <= 0.0, end_at_stop = stop_after || end_at_rest;
   const bool resting_end =
       !held_.arc && held_.start_bowed != vertex.bowed && (vertex.bowed ? start_at_rest : end_at_stop);
-  seg.path = heldPart(end, end_trim, vertex.bowed ? &vertex.bow : nullptr, !resting_end);
+  // The path built in place (a segment is 2.4 KB: assigning it zeroed and copied as much).
+  QueuedSegment seg{.path = heldPart(end, end_trim, vertex.bowed ? &vertex.bow : nullptr,
+                                     !resting_end),
+                    .where = held_.where};
   if (resting_end) bowRestingEnd(seg.path, vertex.bowed);
   seg.exact_stop = stop_after && held_.exact_stop;
   seg.feed_limit = held_.feed_limit;
