@@ -219,10 +219,15 @@ void LookAhead::backwardPass(bool full) {
   for (std::size_t i = run_count_; i-- > first;) {
     Run& run = runAt(i);
     if (run.stop_after) exit = 0.0;
+    // The speed reachable over the run is at least its exit: a limit no higher than that
+    // binds without solving for it (a cube root; runs at the same speed, as along a chain).
+    const double limit = entryLimit(i);
     const double entry = std::max(
         run.entry_floor,
-        std::min(entryLimit(i),
-                 reachableVelocity(exit, run.length, run.limits.acceleration, run.limits.jerk)));
+        limit <= exit ? limit
+                      : std::min(limit, reachableVelocity(exit, run.length,
+                                                          run.limits.acceleration,
+                                                          run.limits.jerk)));
     // A run not pushed to since the last pass whose entry stays: earlier runs are unchanged.
     if (!full && i < stale_from_ && entry == run.entry_planned) break;
     run.entry_planned = entry;
