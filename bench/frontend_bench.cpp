@@ -99,7 +99,8 @@ void BM_ReadAndLower(benchmark::State& state) {
     uint32_t file = sources.addBuffer("bench.nc", program);
     ncc::frontend::BlockReader reader(sources, file, diags);
     CountingSink sink;
-    ncc::passes::Lowering lowering({.dialect = ncc::Dialect::FanucM, .machine = &machine}, diags, sink);
+    ncc::passes::Lowering lowering(
+        {.dialect = ncc::Dialect::FanucM, .machine = &machine, .program_dir = {}}, diags, sink);
     while (auto block = reader.next()) {
       ++read;
       if (lowering.lower(*block).program_end) break;

@@ -255,7 +255,10 @@ TEST(Verifier, ChecksTheProgramAgainstTheMachine) {
   EXPECT_EQ(verifyCode(p, options), "NCC7113");
 
   MachineConfig four = machine;
-  four.axes.push_back(AxisConfig{"A", AxisKind::Rotary});
+  AxisConfig rotary;
+  rotary.name = "A";
+  rotary.kind = AxisKind::Rotary;
+  four.axes.push_back(rotary);
   options.machine = &four;
   EXPECT_EQ(verifyCode(p, options), "NCC7113");
 }

@@ -53,12 +53,15 @@ void checkGolden(const std::string& name) {
     if (m.kind == "arc") {
       for (int i = 0; i < 3; ++i) {
         double c = field(line, "center", axes[i]);
-        if (!std::isnan(c) && line.find("\"" + std::string(axes[i]) + "\"", line.find("center")) != std::string::npos)
+        if (!std::isnan(c) && line.find("\"" + std::string(axes[i]) + "\"", line.find("center")) != std::string::npos) {
           EXPECT_NEAR(m.center[i], c, 1e-9) << "center " << axes[i];
+        }
       }
       EXPECT_EQ(m.cw, line.find("\"cw\": true") != std::string::npos);
     }
-    if (m.kind != "rapid") EXPECT_NEAR(m.feed, field(line, "", "feed"), 1e-9);
+    if (m.kind != "rapid") {
+      EXPECT_NEAR(m.feed, field(line, "", "feed"), 1e-9);
+    }
   }
   EXPECT_EQ(n, r.moves.size());
 }
