@@ -57,6 +57,21 @@ TEST(SCurve, ReachableVelocityInvertsRampDistance) {
   }
 }
 
+// Never below the start speed, also where the gain is below its last digit (review 12: the
+// trapezoid's root rounded a unit under v; the look-ahead's backward pass relies on it).
+TEST(SCurve, ReachableVelocityIsAtLeastTheStart) {
+  const double v = 364.96261011721595;
+  EXPECT_GE(reachableVelocity(v, 3.28e-9, 0.00143, 1.07e9), v);
+  EXPECT_GE(reachableVelocity(9.02e-187, 3.98e-281, 1.86e-123, 6.48e7), 9.02e-187);
+  motion_test::Random rng(12);
+  for (int n = 0; n < 20000; ++n) {
+    const double w = std::exp(rng.uniform(-20.0, 7.0));
+    const double L = std::exp(rng.uniform(-25.0, 5.0));
+    const double a = std::exp(rng.uniform(-8.0, 10.0)), j = std::exp(rng.uniform(0.0, 22.0));
+    EXPECT_GE(reachableVelocity(w, L, a, j), w) << w << " " << L << " " << a << " " << j;
+  }
+}
+
 TEST(SCurve, UnreachableEndVelocityIsReported) {
   // 0 -> 100 mm/s needs more than 1 mm.
   const SCurveProfile up = planProfile(1.0, 0.0, 100.0, 200.0, kA, kJ);

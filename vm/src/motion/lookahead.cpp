@@ -219,8 +219,9 @@ void LookAhead::backwardPass(bool full) {
   for (std::size_t i = run_count_; i-- > first;) {
     Run& run = runAt(i);
     if (run.stop_after) exit = 0.0;
-    // The speed reachable over the run is at least its exit: a limit no higher than that
-    // binds without solving for it (a cube root; runs at the same speed, as along a chain).
+    // The speed reachable over the run is at least its exit (reachableGain() >= 0): a limit
+    // no higher than that binds without solving for it (a cube root; runs at the same speed,
+    // as along a chain).
     const double limit = entryLimit(i);
     const double entry = std::max(
         run.entry_floor,

@@ -91,7 +91,9 @@ double reachableGain(double v, double length, double a_max, double j_max) {
   // Trapezoidal: (w^2 - v^2) / (2a) + (v + w) a / (2j) = L, i.e. w^2 + b w + c = 0 with
   // c = v b - v^2 - 2 a L < 0. Positive root in the cancellation-free form.
   const double c = v * b - v * v - 2.0 * a_max * length;
-  return -2.0 * c / (b + std::sqrt(b * b - 4.0 * c)) - v;
+  // Never below 0: where a^2/j and a L / v are below v's last digit the root rounds a unit or
+  // two under v (review 12), and the look-ahead relies on reaching at least v.
+  return std::max(-2.0 * c / (b + std::sqrt(b * b - 4.0 * c)) - v, 0.0);
 }
 
 double reachableVelocity(double v, double length, double a_max, double j_max) {
