@@ -1,5 +1,7 @@
 #include "ncc/machine/servo_config.h"
 
+#include <cmath>
+
 namespace ncc {
 namespace {
 
@@ -19,5 +21,16 @@ constexpr ServoNumberKey kServoNumberKeys[] = {
 }  // namespace
 
 std::span<const ServoNumberKey> servoNumberKeys() { return kServoNumberKeys; }
+
+std::optional<PitchTableFault> pitchTableFault(const PitchTable& table) {
+  for (std::size_t k = 1; k < table.values.size(); ++k) {
+    const double point = pitchSupport(table.start, table.step, k);
+    if (!(std::isfinite(point) && point > pitchSupport(table.start, table.step, k - 1)))
+      return PitchTableFault{PitchTableFault::Kind::Grid, k};
+    if (!std::isfinite((table.values[k] - table.values[k - 1]) / table.step))
+      return PitchTableFault{PitchTableFault::Kind::Slope, k};
+  }
+  return std::nullopt;
+}
 
 }  // namespace ncc

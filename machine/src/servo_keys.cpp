@@ -20,6 +20,8 @@ bool readPitchTable(const toml::node& node, std::string_view what, const std::st
   }
   PitchTable table;
   bool ok = true, has_values = false;
+  const toml::node* step_node = nullptr;     // where a fault of the table is reported
+  const toml::array* values_node = nullptr;
   for (const auto& [key_ptr, value_ptr] : inFileOrder(*t)) {
     const toml::key& key = *key_ptr;
     const toml::node& value = *value_ptr;
@@ -27,6 +29,7 @@ bool readPitchTable(const toml::node& node, std::string_view what, const std::st
     if (key == "start") {
       if (auto v = ctx.number(value, what_key)) table.start = *v; else ok = false;
     } else if (key == "step") {
+      step_node = &value;
       auto v = ctx.number(value, what_key);
       if (v && *v <= 0) {
         ctx.error(kBadValue, ctx.at(value), cat("'", what_key, "' of ", axis, " must be above 0"));
@@ -47,6 +50,7 @@ bool readPitchTable(const toml::node& node, std::string_view what, const std::st
         ok = false;
         continue;
       }
+      values_node = arr;
       for (const toml::node& el : *arr) {
         if (auto v = ctx.number(el, what_key)) table.values.push_back(*v); else ok = false;
       }
@@ -59,6 +63,22 @@ bool readPitchTable(const toml::node& node, std::string_view what, const std::st
   if (!has_values) {
     ctx.error(kBadValue, ctx.at(node), cat("'", what, "' of ", axis, " has no 'values'"));
     ok = false;
+  }
+  if (ok) {
+    if (const std::optional<PitchTableFault> fault = pitchTableFault(table)) {
+      const std::size_t k = fault->index;
+      if (fault->kind == PitchTableFault::Kind::Grid) {
+        ctx.error(kBadValue, ctx.at(step_node != nullptr ? *step_node : node),
+                  cat("'", what, ".step' of ", axis, " is too small for its ", table.values.size(),
+                      " support points: start + ", k, " step is not a finite number above start + ",
+                      k - 1, " step"));
+      } else {
+        ctx.error(kBadValue, ctx.at(values_node != nullptr ? *values_node->get(k) : node),
+                  cat("'", what, ".values' of ", axis, ": values[", k, "] - values[", k - 1,
+                      "] over the step is not a finite slope"));
+      }
+      ok = false;
+    }
   }
   if (ok) out = std::move(table);
   return ok;

@@ -82,6 +82,11 @@ TEST(Controller, CreateRefusesAMachineItCannotRun) {
       {"pitch_error.start of X", [](MachineConfig& m) { m.axes[0].servo.pitch_error.start = std::nan(""); }},
       {"pitch_compensation.values[1] of Z",
        [](MachineConfig& m) { m.axes[2].servo.pitch_compensation.values = {0.0, std::nan(""), 0.0}; }},
+      // A grid whose support points coincide, and a slope that overflows (review 12).
+      {"pitch_error.step of Y",
+       [](MachineConfig& m) { m.axes[1].servo.pitch_error = PitchTable{1e16, 0.5, {0.0, 0.001}}; }},
+      {"pitch_error.values[1] of X",
+       [](MachineConfig& m) { m.axes[0].servo.pitch_error = PitchTable{0.0, 1e-312, {0.0, 0.01}}; }},
       {"start_position of Y", [](MachineConfig& m) { m.start_position[1] = std::nan(""); }},
   };
   for (const Case& c : cases) {

@@ -127,6 +127,16 @@ TEST(ServoKeys, BadValuesAreReported) {
   EXPECT_EQ(onlyError("[machine.axis.X]\npitch_error = [0.0, 1.0]\n"),
             "machine.toml:2:15: error[NCC0303]: wrong type for 'pitch_error': expected a table "
             "{ start, step, values }, found a list");
+  // Support points that coincide (a step below the positions' last digit), and a slope that
+  // overflows (review 12: a lookup walked the grid, or gave inf).
+  EXPECT_EQ(onlyError("[machine.axis.X]\n"
+                      "pitch_error = { start = 1e16, step = 0.5, values = [0.0, 0.001] }\n"),
+            "machine.toml:2:38: error[NCC0306]: 'pitch_error.step' of X is too small for its 2 "
+            "support points: start + 1 step is not a finite number above start + 0 step");
+  EXPECT_EQ(onlyError("[machine.axis.Y]\n"
+                      "pitch_compensation = { step = 0.5, values = [-1e308, 1e308] }\n"),
+            "machine.toml:2:54: error[NCC0306]: 'pitch_compensation.values' of Y: values[1] - "
+            "values[0] over the step is not a finite slope");
 }
 
 }  // namespace

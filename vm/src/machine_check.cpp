@@ -49,7 +49,9 @@ std::optional<bytecode::Error> checkValue(const Value& v, const std::string& axi
   return problem(absl::StrCat(std::string(v.key), " of ", axis), v.value, rangeText(v.range));
 }
 
-// A pitch table's start and values: a NaN there makes every actual position NaN.
+// A pitch table's start and values: a NaN there makes every actual position NaN. Its grid and
+// slopes (pitchTableFault): support points that coincide made a lookup walk the grid point by
+// point, and an infinite slope gave infinite positions.
 std::optional<bytecode::Error> checkTable(const PitchTable& table, const char* key,
                                           const std::string& axis) {
   if (!std::isfinite(table.start))
@@ -57,6 +59,18 @@ std::optional<bytecode::Error> checkTable(const PitchTable& table, const char* k
   for (std::size_t i = 0; i < table.values.size(); ++i)
     if (!std::isfinite(table.values[i]))
       return problem(absl::StrCat(key, ".values[", i, "] of ", axis), table.values[i], "finite");
+  if (!(table.step > 0.0)) return std::nullopt;  // reported as the step's range
+  if (const std::optional<PitchTableFault> fault = pitchTableFault(table)) {
+    const std::size_t k = fault->index;
+    if (fault->kind == PitchTableFault::Kind::Grid)
+      return problem(absl::StrCat(key, ".step of ", axis), table.step,
+                     absl::StrCat("large enough that start + k step gives ", table.values.size(),
+                                  " distinct finite support points (point ", k, " is ",
+                                  pitchSupport(table.start, table.step, k), ")"));
+    return problem(absl::StrCat(key, ".values[", k, "] of ", axis), table.values[k],
+                   absl::StrCat("within a finite slope of values[", k - 1, "] over the step ",
+                                table.step));
+  }
   return std::nullopt;
 }
 

@@ -3,7 +3,9 @@
 // simulated axis follows its setpoints, never the compiled code, so they are not in
 // MachineConfig::configHash(). Names follow the Sinumerik machine data they come from
 // (840Di extended functions, K3 / notes §4.1).
+#include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <span>
 #include <string_view>
 #include <vector>
@@ -21,6 +23,22 @@ struct PitchTable {
   std::vector<double> values;   // mm or deg
   friend bool operator==(const PitchTable&, const PitchTable&) = default;
 };
+
+// Support point k of a table, start + k step, as every lookup computes it.
+inline double pitchSupport(double start, double step, std::size_t k) {
+  return start + static_cast<double>(k) * step;
+}
+
+// Where a table with a finite start, a step above 0 and finite values cannot be used: its
+// support points must be distinct finite doubles (a step below the positions' last digit
+// made several of them one), and the slope between neighbours, (v_k - v_k-1) / step, finite
+// (a change over a subnormal step, or values near +-1e308, overflowed it).
+struct PitchTableFault {
+  enum class Kind : uint8_t { Grid, Slope };
+  Kind kind;
+  std::size_t index;  // the support point (Grid) or value (Slope) k >= 1 where it breaks
+};
+std::optional<PitchTableFault> pitchTableFault(const PitchTable& table);
 
 struct ServoConfig {
   double kv = 1.0;                       // MD 32200 POSCTRL_GAIN, (m/min)/mm = 16.67/s

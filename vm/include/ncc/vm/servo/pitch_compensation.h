@@ -2,7 +2,8 @@
 // Leadscrew pitch-error tables: the value at a machine position, linearly interpolated between
 // equidistant support points and held at the end values outside them (LEC, notes §4.1).
 //
-// The support points are x_k = start + k step, computed so (pitchSupport) by every lookup: the
+// The support points are x_k = start + k step, computed so (ncc::pitchSupport, servo_config.h)
+// by every lookup: the
 // grid is the same floating-point numbers everywhere, a position at one of them gives its
 // entry exactly, and a position's interval [x_k, x_k+1) is a function of the position alone.
 // Within it the value is v_k + (p - x_k) s_k, with the interval's slope
@@ -19,11 +20,6 @@
 #include "ncc/vm/servo/axis_lanes.h"
 
 namespace ncc::vm {
-
-// Support point k of a table.
-inline double pitchSupport(double start, double step, std::size_t k) {
-  return start + static_cast<double>(k) * step;
-}
 
 // The position held within [first, last], the first and last support points; a NaN goes to
 // the first.
