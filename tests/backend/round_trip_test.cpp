@@ -1,6 +1,7 @@
 // IR -> bytes -> load -> verify -> disassemble (golden) and -> re-encode (identical bytes).
 #include <fstream>
 #include <sstream>
+#include <vector>
 
 #include "gtest/gtest.h"
 #include "ncc/backend/bytecode_writer.h"
@@ -195,6 +196,32 @@ TEST(BytecodeWriter, EmptyProgramIsJustEnd) {
   ASSERT_FALSE(bytecode::verify(program));
   EXPECT_EQ(program.code, std::vector<uint8_t>{static_cast<uint8_t>(bytecode::Opcode::End)});
   EXPECT_EQ(program.header.dialect, Dialect::MazakM);
+}
+
+// The hinted lookup (the executor's, in program order) finds what the plain one finds, for
+// offsets asked in order, backwards, at random, between entries and before the first, with
+// repeated offsets in the table.
+TEST(LineTable, HintedLookupIsThePlainOne) {
+  bytecode::Program program;
+  for (uint32_t offset : {4u, 9u, 9u, 20u, 21u, 40u, 100u})
+    program.lines.push_back({offset, 0, offset, 1});
+  std::vector<uint32_t> asked;
+  for (uint32_t o = 0; o <= 110; ++o) asked.push_back(o);
+  for (uint32_t o = 110; o-- > 0;) asked.push_back(o);
+  for (uint32_t k = 0; k < 500; ++k) asked.push_back((k * 7919u) % 113u);
+  std::size_t hint = 0;
+  for (uint32_t o : asked) {
+    const bytecode::LineEntry* plain = program.lineFor(o);
+    EXPECT_EQ(program.lineFor(o, hint), plain) << o;
+    if (plain != nullptr) {
+      EXPECT_EQ(&program.lines[hint], plain) << o;
+    }
+  }
+  std::size_t beyond = 99;  // a hint past the table is only a hint
+  EXPECT_EQ(program.lineFor(50, beyond), program.lineFor(50));
+  bytecode::Program empty;
+  std::size_t none = 0;
+  EXPECT_EQ(empty.lineFor(3, none), nullptr);
 }
 
 }  // namespace

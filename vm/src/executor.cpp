@@ -81,7 +81,7 @@ Executor::Executor(const bytecode::Program& program, const MachineConfig& machin
 }
 
 SourcePosition Executor::where(uint32_t offset) const {
-  const bytecode::LineEntry* e = program_.lineFor(offset);
+  const bytecode::LineEntry* e = program_.lineFor(offset, line_hint_);
   return e == nullptr ? SourcePosition{} : SourcePosition{e->file, e->line, e->column};
 }
 

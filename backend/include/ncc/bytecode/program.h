@@ -1,6 +1,7 @@
 #pragma once
 // A loaded bytecode file: header, string pool, code, line table and program units. Produced
 // by the loader (loader.h), checked by the verifier (verifier.h), run by the VM.
+#include <cstddef>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -52,6 +53,9 @@ struct Program {
   int axisCount() const { return static_cast<int>(header.axes.size()); }
   // The entry covering `offset` (the last one at or before it), or nullptr.
   const LineEntry* lineFor(uint32_t offset) const;
+  // The same, starting from entry `hint` (updated to the entry found, where there is one):
+  // O(1) when offsets are asked in order, as an executor asks them.
+  const LineEntry* lineFor(uint32_t offset, std::size_t& hint) const;
 };
 
 }  // namespace ncc::bytecode

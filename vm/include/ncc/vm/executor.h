@@ -7,6 +7,7 @@
 // next() allocates nothing and never throws. The executor re-checks what it relies on, so an
 // unverified or corrupted program stops with an alarm instead of crashing.
 #include <array>
+#include <cstddef>
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -60,6 +61,7 @@ class Executor {
   bool push(Value v, uint32_t offset);
 
   const bytecode::Program& program_;
+  mutable std::size_t line_hint_ = 0;  // the line entry where() found last (program order)
   const int axis_count_;
   AxisValues position_{};
   std::vector<Value> variables_;  // sized once: header.variable_count
