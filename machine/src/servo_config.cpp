@@ -27,7 +27,7 @@ std::optional<PitchTableFault> pitchTableFault(const PitchTable& table) {
     const double point = pitchSupport(table.start, table.step, k);
     if (!(std::isfinite(point) && point > pitchSupport(table.start, table.step, k - 1)))
       return PitchTableFault{PitchTableFault::Kind::Grid, k};
-    if (!std::isfinite((table.values[k] - table.values[k - 1]) / table.step))
+    if (!std::isfinite(pitchSlope(table.values.data(), k - 1, table.values.size() - 1, table.step)))
       return PitchTableFault{PitchTableFault::Kind::Slope, k};
   }
   return std::nullopt;

@@ -42,7 +42,6 @@ void keepSpeedCap(SegmentLimits& limits, bool curve) {
   else if (!(limits.velocity > 0.0)) limits.velocity = kMinPathVelocity;
 }
 
-
 }  // namespace
 
 bool ContinuousPath::joinsMoving(MotionPrimitive::Kind kind) const {

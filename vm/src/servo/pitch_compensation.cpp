@@ -1,5 +1,7 @@
 #include "ncc/vm/servo/pitch_compensation.h"
 
+#include <limits>
+
 namespace ncc::vm {
 
 PitchTables::PitchTables() {

@@ -29,6 +29,13 @@ inline double pitchSupport(double start, double step, std::size_t k) {
   return start + static_cast<double>(k) * step;
 }
 
+// The slope after support point k of values[0..last_index], as every lookup computes it
+// (0 after the last).
+inline double pitchSlope(const double* values, std::size_t k, std::size_t last_index,
+                         double step) {
+  return k < last_index ? (values[k + 1] - values[k]) / step : 0.0;
+}
+
 // Where a table with a finite start, a step above 0 and finite values cannot be used: its
 // support points must be distinct finite doubles (a step below the positions' last digit
 // made several of them one), and the slope between neighbours, (v_k - v_k-1) / step, finite

@@ -2,17 +2,15 @@
 // Leadscrew pitch-error tables: the value at a machine position, linearly interpolated between
 // equidistant support points and held at the end values outside them (LEC, notes §4.1).
 //
-// The support points are x_k = start + k step, computed so (ncc::pitchSupport, servo_config.h)
-// by every lookup: the
-// grid is the same floating-point numbers everywhere, a position at one of them gives its
-// entry exactly, and a position's interval [x_k, x_k+1) is a function of the position alone.
-// Within it the value is v_k + (p - x_k) s_k, with the interval's slope
-// s_k = (v_k+1 - v_k) / step: the servo's cycle keeps each axis's interval and, while the
-// axis stays in it, looks up with a subtraction, a product and a sum (no division).
+// The support points are x_k = start + k step, computed so by every lookup (ncc::pitchSupport,
+// servo_config.h): the grid is the same floating-point numbers everywhere, a position at one
+// of them gives its entry exactly, and a position's interval [x_k, x_k+1) is a function of
+// the position alone. Within it the value is v_k + (p - x_k) s_k, with the interval's slope
+// s_k = (v_k+1 - v_k) / step (ncc::pitchSlope): the servo's cycle keeps each axis's interval
+// and, while the axis stays in it, looks up with a subtraction, a product and a sum (no
+// division).
 #include <array>
 #include <cstddef>
-#include <cstdint>
-#include <limits>
 #include <vector>
 
 #include "ncc/machine/axes.h"
@@ -39,12 +37,6 @@ inline std::size_t pitchIndex(double p, double start, double step, std::size_t l
   while (k > 0 && p < pitchSupport(start, step, k)) --k;
   while (k < last_index && p >= pitchSupport(start, step, k + 1)) ++k;
   return k;
-}
-
-// The slope after support point k (0 after the last).
-inline double pitchSlope(const double* values, std::size_t k, std::size_t last_index,
-                         double step) {
-  return k < last_index ? (values[k + 1] - values[k]) / step : 0.0;
 }
 
 // The value `distance` (>= 0) past a support point whose entry is `at`. At the point itself,
