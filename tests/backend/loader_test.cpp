@@ -1,6 +1,8 @@
 // The loader rejects every malformed container with a precise code.
 #include "ncc/bytecode/loader.h"
 
+#include "ncc/bytecode/checksum.h"
+
 #include "gtest/gtest.h"
 #include "test_programs.h"
 
@@ -11,6 +13,13 @@ std::string loadError(const std::vector<uint8_t>& bytes) {
   bytecode::Program program;
   std::optional<bytecode::Error> e = bytecode::load(bytes, program);
   return e ? e->code + ": " + e->message : "ok";
+}
+
+// A file edited on purpose, with its checksum written anew so that the edit reaches the check
+// behind the checksum.
+std::string tamperedError(std::vector<uint8_t> bytes) {
+  if (bytes.size() >= bytecode::kFixedHeaderSize) bytecode::sealChecksum(bytes);
+  return loadError(bytes);
 }
 
 void putU32(std::vector<uint8_t>& b, size_t at, uint32_t v) {
@@ -37,16 +46,31 @@ TEST(Loader, LoadsWhatTheWriterWrote) {
 
 TEST(Loader, HeaderBytesAreTheDocumentedLayout) {
   std::vector<uint8_t> b = test::serialise(test::smallProgram());
-  ASSERT_GE(b.size(), 56u + 3 * 16u);
+  ASSERT_GE(b.size(), 64u + 3 * 16u);
   EXPECT_EQ(std::string(b.begin(), b.begin() + 4), "NCCB");
-  EXPECT_EQ(b[4], 1);  // major, little-endian
+  EXPECT_EQ(b[4], 2);  // major, little-endian
   EXPECT_EQ(b[5], 0);
+  EXPECT_EQ(b[6], 0);  // minor
   EXPECT_EQ(b[9], 3);  // axis count
-  EXPECT_EQ(b[24], 56 + 3 * 16);  // code section offset = header size
-  EXPECT_EQ(b[56], 0);    // axis X: linear
-  EXPECT_EQ(b[57], 1);    // name length
-  EXPECT_EQ(b[58], 'X');
-  EXPECT_EQ(b[104], static_cast<uint8_t>(bytecode::Opcode::Rapid));  // first instruction
+  EXPECT_EQ(b[24], 64 + 3 * 16);  // code section offset = header size
+  EXPECT_EQ(bytecode::storedChecksum(b), bytecode::fileChecksum(b));
+  EXPECT_NE(bytecode::storedChecksum(b), 0u);
+  EXPECT_EQ(b[64], 0);    // axis X: linear
+  EXPECT_EQ(b[65], 1);    // name length
+  EXPECT_EQ(b[66], 'X');
+  EXPECT_EQ(b[112], static_cast<uint8_t>(bytecode::Opcode::Rapid));  // first instruction
+}
+
+TEST(Loader, ChecksumIsFnv1aOverBodyThenFixedHeader) {
+  std::vector<uint8_t> b = test::serialise(test::smallProgram());
+  // The documented definition, written out independently of checksum.cpp.
+  uint64_t h = 0xCBF29CE484222325ull;
+  auto step = [&h](uint8_t byte) { h = (h ^ byte) * 0x100000001B3ull; };
+  for (size_t i = 64; i < b.size(); ++i) step(b[i]);
+  for (size_t i = 0; i < 64; ++i) step(i >= 56 ? 0 : b[i]);
+  uint64_t stored = 0;
+  for (int i = 7; i >= 0; --i) stored = (stored << 8) | b[56 + i];
+  EXPECT_EQ(stored, h);
 }
 
 TEST(Loader, RejectsShortFile) {
@@ -62,53 +86,74 @@ TEST(Loader, RejectsBadMagic) {
 
 TEST(Loader, RejectsOtherMajorVersion) {
   std::vector<uint8_t> b = test::serialise(test::smallProgram());
-  b[4] = 2;
+  b[4] = 1;  // a 1.x file: no checksum, refused by version
   EXPECT_EQ(loadError(b).substr(0, 7), "NCC7003");
+  b[4] = 3;
+  EXPECT_EQ(loadError(b).substr(0, 7), "NCC7003");
+}
+
+TEST(Loader, RejectsEveryChangedByte) {
+  // FNV-1a detects any single changed byte, so every flip of every bit is refused: by the
+  // magic or version check in the first 8 bytes, by the checksum everywhere else.
+  const std::vector<uint8_t> b = test::serialise(test::smallProgram());
+  for (size_t i = 0; i < b.size(); ++i) {
+    for (int bit = 0; bit < 8; ++bit) {
+      std::vector<uint8_t> flipped = b;
+      flipped[i] ^= static_cast<uint8_t>(1u << bit);
+      const std::string code = loadError(flipped).substr(0, 7);
+      const char* expected = i < 4 ? "NCC7002" : i < 8 ? "NCC7003" : "NCC7016";
+      ASSERT_EQ(code, expected) << "byte " << i << " bit " << bit;
+    }
+  }
+  std::vector<uint8_t> zeroed = b;
+  zeroed[100] = 0;
+  zeroed[101] = 0xFF;
+  EXPECT_EQ(loadError(zeroed).substr(0, 7), "NCC7016");
 }
 
 TEST(Loader, RejectsBadHeaderFields) {
   std::vector<uint8_t> b = test::serialise(test::smallProgram());
   std::vector<uint8_t> dialect = b;
   dialect[8] = 77;
-  EXPECT_EQ(loadError(dialect).substr(0, 7), "NCC7004");
+  EXPECT_EQ(tamperedError(dialect).substr(0, 7), "NCC7004");
   std::vector<uint8_t> axes = b;
   axes[9] = 0;
-  EXPECT_EQ(loadError(axes).substr(0, 7), "NCC7004");
+  EXPECT_EQ(tamperedError(axes).substr(0, 7), "NCC7004");
   axes[9] = 10;
-  EXPECT_EQ(loadError(axes).substr(0, 7), "NCC7004");
+  EXPECT_EQ(tamperedError(axes).substr(0, 7), "NCC7004");
   std::vector<uint8_t> vars = b;
   putU32(vars, 12, 0);
-  EXPECT_EQ(loadError(vars).substr(0, 7), "NCC7004");
+  EXPECT_EQ(tamperedError(vars).substr(0, 7), "NCC7004");
   putU32(vars, 12, 100001);
-  EXPECT_EQ(loadError(vars).substr(0, 7), "NCC7004");
+  EXPECT_EQ(tamperedError(vars).substr(0, 7), "NCC7004");
 }
 
 TEST(Loader, RejectsBadAxisEntries) {
   std::vector<uint8_t> b = test::serialise(test::smallProgram());
   std::vector<uint8_t> kind = b;
-  kind[56] = 2;
-  EXPECT_EQ(loadError(kind).substr(0, 7), "NCC7005");
+  kind[64] = 2;
+  EXPECT_EQ(tamperedError(kind).substr(0, 7), "NCC7005");
   std::vector<uint8_t> duplicate = b;
-  duplicate[56 + 16 + 2] = 'X';  // second axis also named X
-  EXPECT_EQ(loadError(duplicate), "NCC7005: axis table entry 1: axis name 'X' repeated");
+  duplicate[64 + 16 + 2] = 'X';  // second axis also named X
+  EXPECT_EQ(tamperedError(duplicate), "NCC7005: axis table entry 1: axis name 'X' repeated");
   std::vector<uint8_t> padding = b;
-  padding[56 + 5] = 'Q';  // garbage after the name
-  EXPECT_EQ(loadError(padding).substr(0, 7), "NCC7005");
+  padding[64 + 5] = 'Q';  // garbage after the name
+  EXPECT_EQ(tamperedError(padding).substr(0, 7), "NCC7005");
 }
 
 TEST(Loader, RejectsSectionsThatDoNotTileTheFile) {
   std::vector<uint8_t> b = test::serialise(test::smallProgram());
   std::vector<uint8_t> trailing = b;
   trailing.push_back(0);
-  EXPECT_EQ(loadError(trailing), "NCC7006: 1 bytes after the last section");
+  EXPECT_EQ(tamperedError(trailing), "NCC7006: 1 bytes after the last section");
   std::vector<uint8_t> truncated(b.begin(), b.end() - 1);
-  EXPECT_EQ(loadError(truncated).substr(0, 7), "NCC7006");
+  EXPECT_EQ(tamperedError(truncated).substr(0, 7), "NCC7006");
   std::vector<uint8_t> huge = b;
   putU32(huge, 28, 0xFFFFFFF0u);  // code size
-  EXPECT_EQ(loadError(huge).substr(0, 7), "NCC7006");
+  EXPECT_EQ(tamperedError(huge).substr(0, 7), "NCC7006");
   std::vector<uint8_t> gap = b;
   putU32(gap, 24, 200);  // code offset
-  EXPECT_EQ(loadError(gap).substr(0, 7), "NCC7006");
+  EXPECT_EQ(tamperedError(gap).substr(0, 7), "NCC7006");
 }
 
 TEST(Loader, RejectsMalformedStringPool) {
@@ -118,10 +163,10 @@ TEST(Loader, RejectsMalformedStringPool) {
   const uint32_t strings = b[40] | (b[41] << 8) | (b[42] << 16) | (b[43] << 24);
   std::vector<uint8_t> count = b;
   putU32(count, strings, 1000);
-  EXPECT_EQ(loadError(count).substr(0, 7), "NCC7007");
+  EXPECT_EQ(tamperedError(count).substr(0, 7), "NCC7007");
   std::vector<uint8_t> length = b;
   putU32(length, strings + 4 + 4, 0x7FFFFFFF);  // string 1 ("" is string 0, 4 bytes)
-  EXPECT_EQ(loadError(length).substr(0, 7), "NCC7007");
+  EXPECT_EQ(tamperedError(length).substr(0, 7), "NCC7007");
 }
 
 TEST(Loader, RejectsLineTableOfPartialEntries) {
@@ -133,7 +178,7 @@ TEST(Loader, RejectsLineTableOfPartialEntries) {
   putU32(b, 40, strings - 1);
   const uint32_t strings_size = b[44] | (b[45] << 8);
   putU32(b, 44, strings_size + 1);
-  EXPECT_EQ(loadError(b).substr(0, 7), "NCC7008");
+  EXPECT_EQ(tamperedError(b).substr(0, 7), "NCC7008");
 }
 
 TEST(Loader, RejectsMissingUnits) {

@@ -6,7 +6,8 @@
 
 namespace ncc::bytecode {
 
-std::vector<uint8_t> encodeHeader(const Header& header, const SectionTable& sections) {
+std::vector<uint8_t> encodeHeader(const Header& header, const SectionTable& sections,
+                                  uint64_t checksum) {
   const int axis_count = static_cast<int>(header.axes.size());
   std::vector<uint8_t> out(headerSize(axis_count), 0);
   uint8_t* p = out.data();
@@ -22,6 +23,7 @@ std::vector<uint8_t> encodeHeader(const Header& header, const SectionTable& sect
     bytes::putU32(p, s.offset);
     bytes::putU32(p, s.size);
   }
+  bytes::putU64(p, checksum);
   for (const AxisInfo& axis : header.axes) {
     uint8_t* entry = p;
     const size_t length = std::min<size_t>(axis.name.size(), kMaxAxisNameLength);

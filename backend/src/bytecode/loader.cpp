@@ -5,6 +5,7 @@
 
 #include "absl/strings/str_cat.h"
 #include "bytes.h"
+#include "ncc/bytecode/checksum.h"
 #include "header_layout.h"
 
 namespace ncc::bytecode {
@@ -120,6 +121,16 @@ std::optional<Error> load(std::span<const uint8_t> bytes, Program& program) {
     return problem("NCC7003", absl::StrCat("bytecode version ", header.version_major, ".",
                                            header.version_minor, " is not supported (this is ",
                                            kVersionMajor, ".", kVersionMinor, ")"));
+  // Before any other field is trusted: a file changed after it was written (a flipped bit,
+  // a hand edit) is refused as a whole rather than run with different moves.
+  if (const uint64_t stored = storedChecksum(bytes), actual = fileChecksum(bytes);
+      stored != actual)
+    return problem("NCC7016", absl::StrCat("checksum mismatch: the header says ",
+                                           absl::Hex(stored, absl::kZeroPad16),
+                                           ", the contents give ",
+                                           absl::Hex(actual, absl::kZeroPad16),
+                                           " (the file was changed or damaged after it "
+                                           "was written)"));
   if (p[8] > static_cast<uint8_t>(Dialect::SiemensDin))
     return problem("NCC7004", absl::StrCat("header: unknown dialect ", p[8]));
   header.dialect = static_cast<Dialect>(p[8]);

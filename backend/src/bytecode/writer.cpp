@@ -32,6 +32,8 @@ StreamWriter::StreamWriter(std::ostream& out, Header header)
   std::vector<uint8_t> bytes = encodeHeader(header_, SectionTable{});
   header_size_ = static_cast<uint32_t>(bytes.size());
   writeBytes(bytes.data(), bytes.size());
+  // The axis table never changes; the fixed header is hashed last, once it is final.
+  hash_.update(std::span<const uint8_t>(bytes).subspan(kFixedHeaderSize));
   spool_ = std::tmpfile();  // nullptr: fall back to memory_spool_
 }
 
@@ -41,6 +43,11 @@ StreamWriter::~StreamWriter() {
 
 void StreamWriter::fail(std::string code, std::string message) {
   if (!error_) error_ = Error{std::move(code), std::move(message)};
+}
+
+void StreamWriter::writeHashed(const uint8_t* data, size_t size) {
+  hash_.update(std::span<const uint8_t>(data, size));
+  writeBytes(data, size);
 }
 
 void StreamWriter::writeBytes(const uint8_t* data, size_t size) {
@@ -63,20 +70,8 @@ void StreamWriter::emitRaw(const uint8_t* data, size_t size) {
     fail("NCC7010", "program too large for the bytecode format (code over 2 GiB)");
     return;
   }
-  writeBytes(data, size);
+  writeHashed(data, size);
   code_size_ += static_cast<uint32_t>(size);
-}
-
-void StreamWriter::patchJump(uint32_t jump_offset, uint32_t target) {
-  if (error_) return;
-  std::array<uint8_t, 4> operand;
-  uint8_t* p = operand.data();
-  bytes::putU32(p, target);
-  std::ostream::pos_type end = out_.tellp();
-  out_.seekp(start_ + std::streamoff(header_size_ + jump_offset + 1));
-  writeBytes(operand.data(), operand.size());
-  out_.seekp(end);
-  if (!out_) fail("NCC7011", "seek error on the output stream");
 }
 
 void StreamWriter::addLine(uint32_t file, uint32_t line, uint32_t column) {
@@ -119,7 +114,7 @@ std::optional<Error> StreamWriter::finish(const std::vector<std::string>& string
   const uint64_t line_bytes = line_count_ * kLineEntrySize;
   sections[1] = {static_cast<uint32_t>(at), static_cast<uint32_t>(line_bytes)};
   if (spool_ == nullptr) {
-    writeBytes(reinterpret_cast<const uint8_t*>(memory_spool_.data()), memory_spool_.size());
+    writeHashed(reinterpret_cast<const uint8_t*>(memory_spool_.data()), memory_spool_.size());
   } else {
     std::fflush(spool_);
     std::rewind(spool_);
@@ -131,7 +126,7 @@ std::optional<Error> StreamWriter::finish(const std::vector<std::string>& string
         fail("NCC7012", "cannot read the line table back from its temporary file");
         break;
       }
-      writeBytes(chunk.data(), want);
+      writeHashed(chunk.data(), want);
       left -= want;
     }
   }
@@ -160,11 +155,13 @@ std::optional<Error> StreamWriter::finish(const std::vector<std::string>& string
     fail("NCC7010", "program too large for the bytecode format (file over 4 GiB)");
     return error_;
   }
-  writeBytes(tail.data(), tail.size());
+  writeHashed(tail.data(), tail.size());
 
-  // Patch the section table now that every size is known.
+  // Patch the section table and the checksum now that every byte after the header is known.
   if (!error_) {
-    std::vector<uint8_t> header = encodeHeader(header_, sections);
+    const std::vector<uint8_t> unsealed = encodeHeader(header_, sections);
+    hash_.update(std::span<const uint8_t>(unsealed).first(kFixedHeaderSize));
+    std::vector<uint8_t> header = encodeHeader(header_, sections, hash_.value());
     std::ostream::pos_type end = out_.tellp();
     out_.seekp(start_);
     writeBytes(header.data(), header.size());

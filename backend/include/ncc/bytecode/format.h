@@ -1,5 +1,5 @@
 #pragma once
-// Bytecode v1: the constants of the file format (docs/bytecode.md describes every byte).
+// Bytecode v2: the constants of the file format (docs/bytecode.md describes every byte).
 // All integers are little-endian with explicit widths; doubles are IEEE-754 binary64 bit
 // patterns, so a file is byte-identical across hosts and compilers.
 #include <cstdint>
@@ -8,12 +8,14 @@
 namespace ncc::bytecode {
 
 inline constexpr char kMagic[4] = {'N', 'C', 'C', 'B'};
-inline constexpr uint16_t kVersionMajor = 1;
-inline constexpr uint16_t kVersionMinor = 1;
+// 2.0 added the file checksum (checksum.h) and the value bounds below; 1.x files are refused.
+inline constexpr uint16_t kVersionMajor = 2;
+inline constexpr uint16_t kVersionMinor = 0;
 
 // Fixed part of the header; the axis table (kAxisEntrySize bytes per axis) follows it and the
 // code section starts right after the axis table.
-inline constexpr uint32_t kFixedHeaderSize = 56;
+inline constexpr uint32_t kFixedHeaderSize = 64;
+inline constexpr uint32_t kChecksumOffset = 56;  // u64, the last field of the fixed header
 inline constexpr uint32_t kAxisEntrySize = 16;
 inline constexpr uint32_t kMaxAxisNameLength = 14;
 inline constexpr uint32_t kLineEntrySize = 16;  // code offset, file, line, column (u32 each)
@@ -24,7 +26,14 @@ inline constexpr uint32_t kMaxVariableCount = 100000;   // numbered variables #0
 inline constexpr uint32_t kDefaultVariableCount = 10000;
 inline constexpr int kMaxStackDepth = 64;                // value stack slots
 inline constexpr int64_t kMaxFunctionCode = 99999999;    // M / T numbers: at most 8 digits
-inline constexpr uint32_t kMaxExtraTurns = 1000000;
+// Bounds on values no valid program holds (docs/bytecode.md, "Value bounds"). A block can
+// program at most 99999.999 (8 digits, IS-B) and the controllers' length parameters stop at
+// 999999.999 mm: a coordinate or arc centre beyond 1e6 mm (or degrees) comes from no program
+// (and a run towards 1e300 would simulate for ever). Dwell: the manuals' G04 range ends at
+// 99999.999 s (or revolutions). Extra arc turns: 9999, the 4 digits of a helical turn count.
+inline constexpr double kMaxCoordinate = 1e6;   // |coordinate|, |centre|: mm or degrees
+inline constexpr double kMaxDwell = 1e5;        // seconds or spindle revolutions
+inline constexpr uint32_t kMaxExtraTurns = 9999;
 inline constexpr uint8_t kMaxReference = 4;              // G27/G28/G30 reference points 1..4
 
 // Section table order in the header.

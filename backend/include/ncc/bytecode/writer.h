@@ -2,7 +2,8 @@
 // Writes a bytecode file to a seekable stream without holding the program in memory: the
 // header is written first with an empty section table, code goes straight to the stream, the
 // line table is spooled to a temporary file, and finish() appends line table, string pool and
-// units, then seeks back to patch the section table. Memory use is independent of program
+// units, then seeks back to patch the section table and the checksum (checksum.h), which is
+// hashed as the bytes go out. Code already written is therefore never rewritten. Memory use is independent of program
 // length (the string pool and units are small and supplied at the end).
 #include <cstdint>
 #include <cstdio>
@@ -11,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "ncc/bytecode/checksum.h"
 #include "ncc/bytecode/error.h"
 #include "ncc/bytecode/instruction.h"
 #include "ncc/bytecode/program.h"
@@ -33,8 +35,6 @@ class StreamWriter {
   uint32_t emit(const Instruction& instruction);
   // Appends raw, already encoded code bytes (re-encoding a loaded program).
   void emitRaw(const uint8_t* data, size_t size);
-  // Rewrites the target of the JUMP / JUMP_IF_FALSE at `jump_offset` (forward labels).
-  void patchJump(uint32_t jump_offset, uint32_t target);
   // Records that code from offset() on comes from this source position. A repeat of the last
   // position adds nothing; a second entry at the same offset replaces the first.
   void addLine(uint32_t file, uint32_t line, uint32_t column);
@@ -49,6 +49,7 @@ class StreamWriter {
  private:
   void fail(std::string code, std::string message);
   void writeBytes(const uint8_t* data, size_t size);
+  void writeHashed(const uint8_t* data, size_t size);  // bytes after the fixed header
   void spoolLine(const LineEntry& entry, bool replace_last);
 
   std::ostream& out_;
@@ -60,6 +61,7 @@ class StreamWriter {
   std::string memory_spool_;        // used only if no temporary file can be created
   uint64_t line_count_ = 0;
   std::optional<LineEntry> last_line_;
+  Fnv1a64 hash_;                    // checksum of every byte after the fixed header so far
   bool finished_ = false;
   std::optional<Error> error_;
 };
