@@ -1,7 +1,10 @@
 #include "ncc/backend/bytecode_writer.h"
 
+#include <cmath>
+#include <filesystem>
 
 #include "absl/strings/str_cat.h"
+#include "absl/strings/str_format.h"
 #include "ncc/ir/verifier.h"
 
 namespace ncc::backend {
@@ -145,7 +148,43 @@ void BytecodeWriter::encode(const ir::Operation& op, const ir::Block& block) {
     in.reference = static_cast<uint8_t>(c->reference);
     in.axes = c->position;
   }
+  if (std::optional<std::string> beyond = outOfBounds(in)) {
+    error("NCC7017", block.loc, *beyond);
+    return;
+  }
   writer_.emit(in);
+}
+
+std::optional<std::string> BytecodeWriter::outOfBounds(const bytecode::Instruction& in) const {
+  using bytecode::Opcode;
+  auto beyond = [](double v) { return !(std::abs(v) <= bytecode::kMaxCoordinate); };
+  auto number = [](double v) { return absl::StrFormat("%.10g", v); };
+  const std::string coordinate_bound = absl::StrCat(
+      " is beyond +-", number(bytecode::kMaxCoordinate),
+      " mm (or degrees), the largest coordinate a bytecode program may hold");
+  const bool has_axes = in.op == Opcode::Rapid || in.op == Opcode::Line ||
+                        in.op == Opcode::Arc || in.op == Opcode::RefCheck;
+  if (has_axes) {
+    for (int i = 0; i < machine_.axisCount(); ++i) {
+      if (beyond(in.axes[i]))
+        return absl::StrCat("the ", machine_.axes[i].name, " position ", number(in.axes[i]),
+                            " (machine coordinates, after offsets)", coordinate_bound);
+    }
+  }
+  if (in.op == Opcode::Arc) {
+    if (beyond(in.center1) || beyond(in.center2))
+      return absl::StrCat("the arc centre (", number(in.center1), ", ", number(in.center2),
+                          ")", coordinate_bound);
+    if (in.turns > bytecode::kMaxExtraTurns)
+      return absl::StrCat(in.turns, " extra turns of an arc (at most ",
+                          bytecode::kMaxExtraTurns, ")");
+  }
+  if (in.op == Opcode::Dwell && !(in.value <= bytecode::kMaxDwell))
+    return absl::StrCat("a dwell of ", number(in.value),
+                        (in.flags & bytecode::kFlagRevolutions) ? " revolutions" : " s",
+                        " is beyond ", number(bytecode::kMaxDwell),
+                        ", the longest a bytecode program may hold");
+  return std::nullopt;
 }
 
 void BytecodeWriter::finish() {
@@ -156,9 +195,14 @@ void BytecodeWriter::finish() {
   end.op = bytecode::Opcode::End;
   writer_.emit(end);
   // String i is the name of source file i, so line-table file indices are the compiler's ids.
+  // Only the file's own name: the file then does not depend on how its path was spelled
+  // (a.nc, ./a.nc, /abs/a.nc), and it is the name the moves JSON prints.
   std::vector<std::string> strings;
   for (uint32_t file = 0; file <= sources_.fileCount(); ++file)
-    strings.push_back(file == 0 ? std::string() : sources_.displayName(file));
+    strings.push_back(file == 0 ? std::string()
+                                : std::filesystem::path(sources_.displayName(file))
+                                      .filename()
+                                      .string());
   uint32_t main = main_file_.value_or(sources_.fileCount() >= 1 ? 1 : 0);
   if (main >= strings.size()) main = 0;
   if (std::optional<bytecode::Error> e = writer_.finish(strings, {bytecode::Unit{0, main}}))

@@ -56,6 +56,45 @@ TEST(Verifier, RejectsUnknownFlagBits) {
   EXPECT_EQ(verifyCode(feed.finish()), "ok");
 }
 
+// Values no program holds (format.h, "Value bounds"): each is refused with NCC7103 and a
+// message naming the bound, instead of a run that simulates for hours.
+TEST(Verifier, RejectsValuesBeyondTheirBounds) {
+  auto message = [](auto build) {
+    Assembler a(test::xyzHeader());
+    build(a);
+    a.op(Opcode::End);
+    return verifyMessage(a.finish());
+  };
+  for (double v : {1e6 + 1, 1e9, -1e12, 1e308}) {
+    EXPECT_EQ(message([v](Assembler& a) { a.rapid({0, v, 0}); }).substr(0, 7), "NCC7103") << v;
+    EXPECT_EQ(message([v](Assembler& a) { a.line({v, 0, 0}, 100.0); }).substr(0, 7), "NCC7103");
+    EXPECT_EQ(message([v](Assembler& a) { a.arc({0, 0, 0}, 0, 1, v, 0.0, 100.0, 0); })
+                  .substr(0, 7),
+              "NCC7103");
+    EXPECT_EQ(message([v](Assembler& a) { a.refCheck(1, 1, {0, 0, v}); }).substr(0, 7),
+              "NCC7103");
+  }
+  EXPECT_EQ(message([](Assembler& a) { a.rapid({0, 1e9, 0}); }),
+            "NCC7103: code offset 000000 (RAPID): coordinate of Y 1e+09 is beyond the bound of "
+            "+-1e+06 mm (or degrees)");
+  EXPECT_EQ(message([](Assembler& a) { a.dwell(1e300); }),
+            "NCC7103: code offset 000000 (DWELL): dwell of 1e+300 s is beyond the bound of "
+            "100000");
+  EXPECT_EQ(message([](Assembler& a) { a.dwell(2e5, bytecode::kFlagRevolutions); })
+                .substr(0, 7),
+            "NCC7103");
+  EXPECT_EQ(message([](Assembler& a) {
+              a.arc({0, 0, 0}, 0, 1, 5.0, 0.0, 100.0, 0, bytecode::ArcPlane::XY, 1000000);
+            }),
+            "NCC7103: code offset 000000 (ARC): 1000000 extra turns (at most 9999)");
+  // The bounds themselves are valid.
+  EXPECT_EQ(message([](Assembler& a) {
+              a.rapid({1e6, -1e6, 0}).dwell(1e5);
+              a.arc({1e6, -1e6, 0}, 0, 1, 1e6, 0.0, 100.0, 0, bytecode::ArcPlane::XY, 9999);
+            }),
+            "ok");
+}
+
 TEST(Verifier, RejectsNonFiniteAndNonPositiveOperands) {
   const double nan = std::numeric_limits<double>::quiet_NaN();
   const double inf = std::numeric_limits<double>::infinity();

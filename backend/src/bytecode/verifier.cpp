@@ -103,10 +103,18 @@ class Verifier {
       if (std::isfinite(v)) return std::nullopt;
       return problem("NCC7104", absl::StrCat(at(offset, in), ": ", what, " is not finite"));
     };
+    // Finite and within ±kMaxCoordinate (mm or degrees).
+    auto coordinate = [&](double v, const std::string& what) -> std::optional<Error> {
+      if (auto e = finite(v, what)) return e;
+      if (std::abs(v) <= kMaxCoordinate) return std::nullopt;
+      return problem("NCC7103", absl::StrCat(at(offset, in), ": ", what, " ", v,
+                                             " is beyond the bound of +-", kMaxCoordinate,
+                                             " mm (or degrees)"));
+    };
     auto finiteAxes = [&]() -> std::optional<Error> {
       for (int i = 0; i < axis_count_; ++i)
-        if (auto e = finite(in.axes[i], absl::StrCat("coordinate of ",
-                                                     program_.header.axes[i].name)))
+        if (auto e = coordinate(in.axes[i], absl::StrCat("coordinate of ",
+                                                         program_.header.axes[i].name)))
           return e;
       return std::nullopt;
     };
@@ -139,14 +147,19 @@ class Verifier {
           return problem("NCC7103", absl::StrCat(at(offset, in), ": ", in.turns,
                                                  " extra turns (at most ", kMaxExtraTurns, ")"));
         if (auto e = positiveFeed()) return e;
-        if (auto e = finite(in.center1, "centre")) return e;
-        if (auto e = finite(in.center2, "centre")) return e;
+        if (auto e = coordinate(in.center1, "centre")) return e;
+        if (auto e = coordinate(in.center2, "centre")) return e;
         return finiteAxes();
       case Opcode::Dwell:
       case Opcode::SpindleSpeed:
         if (auto e = finite(in.value, "value")) return e;
         if (in.value < 0.0)
           return problem("NCC7104", absl::StrCat(at(offset, in), ": negative value ", in.value));
+        if (in.op == Opcode::Dwell && in.value > kMaxDwell)
+          return problem("NCC7103",
+                         absl::StrCat(at(offset, in), ": dwell of ", in.value,
+                                      (in.flags & kFlagRevolutions) ? " revolutions" : " s",
+                                      " is beyond the bound of ", kMaxDwell));
         return std::nullopt;
       case Opcode::ToolSelect:
       case Opcode::MCode:

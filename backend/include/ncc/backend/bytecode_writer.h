@@ -2,9 +2,13 @@
 // The backend: machine-space IR blocks -> bytecode v1, streamed. Each block's operations are
 // encoded as they arrive, straight into the output stream; the line table is spooled to a
 // temporary file (bytecode/writer.h), so memory does not grow with program length. finish()
-// appends END, the line table, the string pool (every source file name of the SourceManager,
-// indexed by file id) and the unit table, then patches the header.
+// appends END, the line table, the string pool (the name, without folders, of every source file
+// of the SourceManager, indexed by file id) and the unit table, then patches the header.
+// A value the verifier would refuse (a coordinate, arc centre, dwell or turn count beyond the
+// bounds of bytecode/format.h) is reported here as NCC7017 at its block, so the compiler never
+// writes a file the VM will not run.
 #include <optional>
+#include <string>
 #include <ostream>
 
 #include "ncc/bytecode/writer.h"
@@ -18,7 +22,7 @@ namespace ncc::backend {
 
 class BytecodeWriter : public ir::BlockSink {
  public:
-  // `diags` receives internal errors (NCC9001 invalid IR such as a work-space target, NCC9003
+  // `diags` receives NCC7017 (a value beyond the format's bounds), internal errors (NCC9001 invalid IR such as a work-space target, NCC9003
   // arc plane without its axes) and write errors (NCC70xx); nullptr keeps only ok().
   BytecodeWriter(std::ostream& out, const MachineConfig& machine, Dialect dialect,
                  const SourceManager& sources, DiagnosticEngine* diags = nullptr);
@@ -32,6 +36,8 @@ class BytecodeWriter : public ir::BlockSink {
  private:
   void error(std::string code, SourceLocation where, std::string message);
   void encode(const ir::Operation& op, const ir::Block& block);
+  // Why `in` holds a value beyond the format's bounds, or nullopt.
+  std::optional<std::string> outOfBounds(const bytecode::Instruction& in) const;
 
   const MachineConfig& machine_;
   const SourceManager& sources_;

@@ -1,7 +1,8 @@
 #pragma once
 // Checks everything about a loaded program before it runs, so that the executor can trust it:
 // every instruction decodes and ends inside the code, opcodes and flag bits are known, operands
-// are in range (axis indices, variable numbers, codes, finite doubles, positive feeds), jump
+// are in range (axis indices, variable numbers, codes, finite doubles, positive feeds,
+// coordinates, dwells and extra arc turns within the bounds of format.h), jump
 // targets are instruction starts, the value stack never underflows, stays within
 // kMaxStackDepth and has one depth at every join, execution cannot run off the end of the code,
 // an end of program is reachable, the line table is ordered and points at instruction starts
