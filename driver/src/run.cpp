@@ -33,7 +33,8 @@ bool loadProgram(Session& session, bytecode::Program& program, bool check_machin
   }
   if (!error) {
     bytecode::VerifyOptions options;
-    options.machine = &session.machine();
+    // Without the machine check (disassembly) the file's own axis table is all there is.
+    options.machine = check_machine ? &session.machine() : nullptr;
     options.check_config_hash = check_machine;
     error = bytecode::verify(program, options);
   }

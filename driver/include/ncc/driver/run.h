@@ -19,8 +19,9 @@ namespace ncc::driver {
 bool isBytecodeFile(const std::filesystem::path& path);
 
 // Compiles the session's input (or loads it when it is bytecode) and verifies the result
-// against the session's machine (`check_machine`: also that it was compiled for that machine;
-// off for disassembly). Errors are reported to the session's diagnostics.
+// against the session's machine (`check_machine`: its axes and that it was compiled for that
+// machine; off for disassembly, which reads the axes from the file). Errors are reported to
+// the session's diagnostics.
 bool loadProgram(Session& session, bytecode::Program& program, bool check_machine = true);
 
 struct RunResult {
