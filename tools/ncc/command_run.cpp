@@ -14,6 +14,7 @@
 #include "absl/strings/str_format.h"
 #include "cli.h"
 #include "pending_output.h"
+#include "run_summary.h"
 #include "ncc/bytecode/disassembler.h"
 #include "ncc/driver/json_output.h"
 #include "ncc/driver/run.h"
@@ -106,48 +107,6 @@ bool parseFeedHolds(const std::vector<std::string>& given, std::vector<driver::F
     }
   }
   return true;
-}
-
-// Samples of the servo model's actual motion beyond the machine's limits, by kind. (The
-// planner keeps the commanded setpoints within them; what the servo adds shows here.)
-std::string limitViolationsLine(const vm::RunStatistics& s, int axis_count) {
-  int64_t travel = 0, velocity = 0, acceleration = 0;
-  for (int i = 0; i < axis_count; ++i) {
-    travel += s.violations[i].travel;
-    velocity += s.violations[i].velocity;
-    acceleration += s.violations[i].acceleration;
-  }
-  return absl::StrFormat("limit violations   %d (servo actual: %d travel, %d velocity, %d acceleration ticks)",
-                         s.limit_violations, travel, velocity, acceleration);
-}
-
-// How often the look-ahead's depth held the speed down, and the setting that sets it.
-std::string lookaheadLine(const vm::RunStatistics& s, int lookahead_segments) {
-  const double share = s.ticks > 0 ? 100.0 * static_cast<double>(s.lookahead_limited_ticks) /
-                                         static_cast<double>(s.ticks)
-                                   : 0.0;
-  return absl::StrFormat("look-ahead limited %.1f %% of the time (%d segments: [machine] lookahead_segments)",
-                         share, lookahead_segments);
-}
-
-void printSummary(std::ostream& out, const driver::SimulationResult& sim,
-                  const bytecode::Program& program, double tick_seconds, int lookahead_segments) {
-  const vm::RunStatistics& s = sim.statistics;
-  out << absl::StrFormat("program time       %.3f s (%d ticks of %g ms)\n", s.program_time, s.ticks,
-                         tick_seconds * 1000.0)
-      << absl::StrFormat("path length        %.3f mm feed, %.3f mm rapid\n", s.feed_length, s.rapid_length)
-      << "max following error";
-  for (int i = 0; i < program.axisCount(); ++i)
-    out << absl::StrFormat("  %s %.4f", program.header.axes[i].name, s.max_following_error[i]);
-  out << " mm\n"
-      << absl::StrFormat("max contour error  %.4f mm (t = %.3f s)\n", s.max_contour_error,
-                         static_cast<double>(s.max_contour_error_tick) * tick_seconds)
-      << limitViolationsLine(s, program.axisCount()) << '\n'
-      << lookaheadLine(s, lookahead_segments) << '\n'
-      << "final position    ";
-  for (int i = 0; i < program.axisCount(); ++i)
-    out << ' ' << program.header.axes[i].name << driver::jsonNumber(sim.final_commanded[i]);
-  out << '\n' << "status             " << (sim.alarm ? "alarm " + sim.alarm->code : std::string("completed")) << '\n';
 }
 
 // Reports a run-time alarm like a compile diagnostic: file:line:col: error[CODE]: message.
