@@ -30,6 +30,7 @@ struct RunArgs {
   std::string input;
   std::string output;
   std::string emit = "summary";
+  uint64_t trace_every = 1;  // --trace-every N: every Nth tick
   uint64_t max_steps = driver::kDefaultMaxSteps;
   double feed_override = 100.0;   // %
   double rapid_override = 100.0;  // %
@@ -126,6 +127,7 @@ int runSimulation(driver::Session& session, const bytecode::Program& program, co
     driver::TraceHeader header;
     for (const bytecode::AxisInfo& axis : program.header.axes) header.axes.push_back(axis.name);
     header.tick_seconds = session.machine().ipo_cycle_seconds;
+    header.tick_every = args.trace_every;
     bool binary = !args.output.empty() && !absl::EndsWithIgnoreCase(args.output, ".csv");
     trace = binary ? driver::makeBinaryTraceWriter(output.stream(), header)
                    : driver::makeCsvTraceWriter(output.stream(), header);
@@ -222,12 +224,16 @@ void addRunCommand(CLI::App& app, int& exit_code) {
   CLI::App* cmd = app.add_subcommand("run", "compile (or load a .ncb) and run a program in the VM");
   cmd->add_option("input", args->input, "program source or .ncb file")->required();
   cmd->add_option("--emit", args->emit,
-                  "summary (default): the simulated run's figures; trace: setpoint and actual "
-                  "position of every axis per IPO tick (-o FILE.csv, or a compact binary trace "
-                  "for any other extension); moves: JSON Lines, one motion primitive per line; "
+                  "summary (default): the simulated run's figures; trace: setpoint, actual "
+                  "position of every axis and source line per IPO tick (-o FILE.csv, or a "
+                  "compact binary trace for any other extension); moves: JSON Lines, one motion primitive per line; "
                   "vars: JSON object of every non-vacant variable at the end")
       ->check(CLI::IsMember({"summary", "trace", "moves", "vars"}));
   cmd->add_option("-o,--output", args->output, "write the emitted output here (default: stdout)");
+  cmd->add_option("--trace-every", args->trace_every,
+                  "--emit=trace: write every Nth IPO tick only (ticks 0, N, 2N, ...)")
+      ->check(CLI::Range(uint64_t{1}, uint64_t{1000000000}))
+      ->capture_default_str();
   cmd->add_option("--max-steps", args->max_steps,
                   "stop with alarm NCC7204 after this many VM instructions (0: no limit); guards "
                   "against programs that loop forever")
