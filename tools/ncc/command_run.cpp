@@ -118,7 +118,7 @@ void reportAlarm(driver::Session& session, const bytecode::Program& program, con
   session.diagnostics().error(alarm.code, where, alarm.message);
 }
 
-// --emit=summary and --emit=trace: the program through the planner, interpolator and servo.
+// --emit=summary|summary-json|trace: the program through the planner, interpolator and servo.
 int runSimulation(driver::Session& session, const bytecode::Program& program, const RunArgs& args) {
   PendingOutput output;
   if (!output.open(args.output)) return kUsage;
@@ -148,19 +148,22 @@ int runSimulation(driver::Session& session, const bytecode::Program& program, co
     return kProgramError;
   }
   const MachineConfig& machine = session.machine();
+  const bool json = args.emit == "summary-json";
+  const bool summary_only = args.emit == "summary" || json;
   auto summary = [&](std::ostream& out) {
-    printSummary(out, sim, program, machine.ipo_cycle_seconds, machine.lookahead_segments);
+    const SummaryInput in{sim, program, machine.ipo_cycle_seconds, machine.lookahead_segments};
+    json ? printSummaryJson(out, in) : printSummary(out, in);
   };
   if (sim.alarm) {
     output.discard();
     reportAlarm(session, program, *sim.alarm);
     printDiagnostics(session);
-    if (args.emit == "summary") summary(std::cerr);
+    if (summary_only) summary(std::cerr);
     return kRuntimeAlarm;
   }
-  if (args.emit == "summary") summary(output.stream());
+  if (summary_only) summary(output.stream());
   if (!output.commit()) return kUsage;
-  if (!args.output.empty() && args.emit != "summary") summary(std::cout);
+  if (!args.output.empty() && !summary_only) summary(std::cout);
   return kOk;
 }
 
@@ -197,7 +200,8 @@ int runRun(const RunArgs& args) {
   }
   printDiagnostics(session);  // warnings of the compile
   session.diagnostics().clear();
-  if (args.emit == "summary" || args.emit == "trace") return runSimulation(session, program, args);
+  if (args.emit == "summary" || args.emit == "summary-json" || args.emit == "trace")
+    return runSimulation(session, program, args);
   return runExecutor(session, program, args);
 }
 
@@ -224,11 +228,12 @@ void addRunCommand(CLI::App& app, int& exit_code) {
   CLI::App* cmd = app.add_subcommand("run", "compile (or load a .ncb) and run a program in the VM");
   cmd->add_option("input", args->input, "program source or .ncb file")->required();
   cmd->add_option("--emit", args->emit,
-                  "summary (default): the simulated run's figures; trace: setpoint, actual "
-                  "position of every axis and source line per IPO tick (-o FILE.csv, or a "
-                  "compact binary trace for any other extension); moves: JSON Lines, one motion primitive per line; "
+                  "summary (default): the simulated run's figures; summary-json: the same as "
+                  "one JSON object; trace: setpoint, actual position of every axis and source "
+                  "line per IPO tick (-o FILE.csv, or a compact binary trace for any other "
+                  "extension); moves: JSON Lines, one motion primitive per line; "
                   "vars: JSON object of every non-vacant variable at the end")
-      ->check(CLI::IsMember({"summary", "trace", "moves", "vars"}));
+      ->check(CLI::IsMember({"summary", "summary-json", "trace", "moves", "vars"}));
   cmd->add_option("-o,--output", args->output, "write the emitted output here (default: stdout)");
   cmd->add_option("--trace-every", args->trace_every,
                   "--emit=trace: write every Nth IPO tick only (ticks 0, N, 2N, ...)")
