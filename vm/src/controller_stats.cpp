@@ -13,16 +13,15 @@ constexpr double kErrorBoundSlack = 1e-6;
 
 }  // namespace
 
-void StatisticsAccumulator::widen(AxisExtents& extents, const AxisValues& a,
-                                  const AxisValues& b) {
+void StatisticsAccumulator::widen(AxisExtents& extents, const AxisValues& point) {
   if (extents.empty) {
-    extents.min = a;
-    extents.max = a;
+    extents.min = point;
+    extents.max = point;
     extents.empty = false;
   }
   for (int i = 0; i < axis_count_; ++i) {
-    extents.min[i] = std::min({extents.min[i], a[i], b[i]});
-    extents.max[i] = std::max({extents.max[i], a[i], b[i]});
+    extents.min[i] = std::min(extents.min[i], point[i]);
+    extents.max[i] = std::max(extents.max[i], point[i]);
   }
 }
 
@@ -64,10 +63,15 @@ void StatisticsAccumulator::add(uint64_t k, double time, const AxisValues& __res
   const bool chord_rapid = path_velocity == 0.0 ? previous_rapid_ : rapid;
   (chord_rapid ? stats_.rapid_length : stats_.feed_length) += chord;
   previous_rapid_ = rapid;
-  // Extents: both ends of a chord that moves (its start may be the previous run's end point,
-  // which this run's path also passes).
-  if (chord2 > 0.0)
-    widen(chord_rapid ? stats_.rapid_extents : stats_.feed_extents, previous_, commanded);
+  // Extents: both ends of a chord that moves. Its start is in already when the previous
+  // moving chord was of the same kind; else it is the other kind's end point, which this
+  // kind's path also passes.
+  if (chord2 > 0.0) {
+    AxisExtents& extents = chord_rapid ? stats_.rapid_extents : stats_.feed_extents;
+    if (extents_rapid_ != static_cast<int>(chord_rapid)) widen(extents, previous_);
+    widen(extents, commanded);
+    extents_rapid_ = chord_rapid;
+  }
 
   // The motion this tick belongs to for the contour error: a tick at rest (a stop sample, a
   // dwell, a feed hold, the wait for the in-position window) belongs to the last run that

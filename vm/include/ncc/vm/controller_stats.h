@@ -80,6 +80,7 @@ class StatisticsAccumulator {
   bool started_ = false;
   bool previous_rapid_ = false;
   bool motion_rapid_ = false;    // the kind of the last tick that moved
+  int extents_rapid_ = -1;       // the kind of the last moving chord (-1: none yet)
   AxisValues previous_{};        // c_{k-1}
   AxisValues before_previous_{}; // c_{k-2}
   // The unit commanded direction is directions_[direction_slot_] / sqrt(direction_norm2_) (zero
@@ -89,7 +90,7 @@ class StatisticsAccumulator {
   int direction_slot_ = 0;
   double direction_norm2_ = 1.0;
 
-  void widen(AxisExtents& extents, const AxisValues& a, const AxisValues& b);
+  void widen(AxisExtents& extents, const AxisValues& point);
 };
 
 }  // namespace ncc::vm
