@@ -86,10 +86,11 @@ void StatisticsAccumulator::add(uint64_t k, double time, const AxisValues& __res
     direction_norm2_ = norm2;
   }
 
-  // Contour error (feed motion only: a rapid is not a contour). It is a part of e: |e - (e.u)u| <= |e| for |u| = 1 (or u = 0), and
-  // rounding adds about 1e-14 of it, far inside kErrorBoundSlack. A tick whose whole error
-  // is below the largest contour error so far cannot raise it: the unit direction and the
-  // projection, two dependent sums and a division per axis, are left out.
+  // Contour error, of feed motion only (a rapid is no contour). It is a part of e:
+  // |e - (e.u)u| <= |e| for |u| = 1 (or u = 0), and rounding adds about 1e-14 of it, far
+  // inside kErrorBoundSlack. A tick whose whole error is below the largest contour error so
+  // far cannot raise it: the unit direction and the projection, two dependent sums and a
+  // division per axis, are left out.
   const double max2 = stats_.max_contour_error * stats_.max_contour_error;
   if (!tick_rapid && !(error2 * (1.0 + kErrorBoundSlack) < max2)) {
     const AxisValues& direction = directions_[direction_slot_];
