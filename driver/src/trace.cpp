@@ -40,7 +40,8 @@ class CsvTraceWriter : public TraceWriter {
   }
   void write(const TraceRow& row) override {
     // Time from the integer tick, never accumulated.
-    row_ = absl::StrFormat("%.6f", static_cast<double>(row.tick) * header_.tick_seconds);
+    row_.clear();
+    absl::StrAppendFormat(&row_, "%.6f", static_cast<double>(row.tick) * header_.tick_seconds);
     const size_t n = header_.axes.size();
     for (size_t i = 0; i < n; ++i) appendMillimetres(row_ += ',', row.commanded[i]);
     for (size_t i = 0; i < n; ++i) appendMillimetres(row_ += ',', row.actual[i]);

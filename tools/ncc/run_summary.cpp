@@ -18,6 +18,7 @@ std::string sourceFileName(const bytecode::Program& program, const vm::SourcePos
   return std::filesystem::path(program.strings[where.file]).filename().string();
 }
 
+// A JSON string literal (file and axis names, alarm codes).
 std::string jsonString(const std::string& text) {
   std::string out = "\"";
   for (char c : text) {
