@@ -52,7 +52,7 @@ SimulationResult simulate(const bytecode::Program& program, const MachineConfig&
     }
     status = controller->tick(tick);
     if (status != vm::TickStatus::Running) break;
-    if (trace) trace->sample(tick.tick, tick.commanded, tick.actual);
+    if (trace) trace->sample(tick.tick, tick.commanded, tick.actual, tick.where.line);
     ++written;
   }
   result.statistics = controller->statistics();
@@ -60,7 +60,7 @@ SimulationResult simulate(const bytecode::Program& program, const MachineConfig&
   // the last one): that tick belongs in the trace too.
   if (trace && status == vm::TickStatus::Alarm && tick.tick == written &&
       result.statistics.ticks > written) {
-    trace->sample(tick.tick, tick.commanded, tick.actual);
+    trace->sample(tick.tick, tick.commanded, tick.actual, tick.where.line);
   }
   if (trace) trace->finish();
   result.final_commanded = tick.commanded;

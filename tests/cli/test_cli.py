@@ -433,7 +433,7 @@ class CliTest(unittest.TestCase):
         proc = ncc("run", good, "--emit=trace", "-o", csv_path)
         self.assertEqual(proc.returncode, 0, proc.stderr)
         rows = slurp(csv_path).splitlines()
-        self.assertEqual(rows[0], "t,X_cmd,Y_cmd,Z_cmd,X_act,Y_act,Z_act")
+        self.assertEqual(rows[0], "t,X_cmd,Y_cmd,Z_cmd,X_act,Y_act,Z_act,line")
         ticks = re.search(r"\((\d+) ticks", proc.stdout)
         self.assertIsNotNone(ticks, proc.stdout)
         self.assertEqual(len(rows) - 1, int(ticks.group(1)))

@@ -10,13 +10,13 @@ namespace {
 TEST(Trace, CsvHasHeaderAndOneRowPerTickWithTimeFromTheTickNumber) {
   std::ostringstream out;
   auto writer = makeCsvTraceWriter(out, TraceHeader{{"X", "Y"}, 0.001});
-  writer->sample(0, AxisValues{0.0, 0.0}, AxisValues{0.0, 0.0});
-  writer->sample(1, AxisValues{0.001, -2.5}, AxisValues{0.0005, -2.49999});
+  writer->sample(0, AxisValues{0.0, 0.0}, AxisValues{0.0, 0.0}, 3);
+  writer->sample(1, AxisValues{0.001, -2.5}, AxisValues{0.0005, -2.49999}, 4);
   writer->finish();
   EXPECT_EQ(out.str(),
-            "t,X_cmd,Y_cmd,X_act,Y_act\n"
-            "0.000000,0.000000,0.000000,0.000000,0.000000\n"
-            "0.001000,0.001000,-2.500000,0.000500,-2.499990\n");
+            "t,X_cmd,Y_cmd,X_act,Y_act,line\n"
+            "0.000000,0.000000,0.000000,0.000000,0.000000,3\n"
+            "0.001000,0.001000,-2.500000,0.000500,-2.499990,4\n");
 }
 
 TEST(Trace, BinaryRoundTripsToTheNanometre) {
@@ -29,7 +29,7 @@ TEST(Trace, BinaryRoundTripsToTheNanometre) {
     s.tick = k;
     s.commanded = AxisValues{0.0137 * k, -1000.0 + 0.5 * k, 250.000001};
     s.actual = AxisValues{0.0137 * k - 0.01, -1000.0 + 0.5 * k - 0.2, 250.0};
-    writer->sample(k, s.commanded, s.actual);
+    writer->sample(k, s.commanded, s.actual, static_cast<uint32_t>(k / 7));
     written.push_back(s);
   }
   writer->finish();
@@ -43,6 +43,7 @@ TEST(Trace, BinaryRoundTripsToTheNanometre) {
   ASSERT_EQ(read->samples.size(), written.size());
   for (size_t k = 0; k < written.size(); ++k) {
     EXPECT_EQ(read->samples[k].tick, k);
+    EXPECT_EQ(read->samples[k].line, k / 7);
     for (int i = 0; i < 3; ++i) {
       EXPECT_NEAR(read->samples[k].commanded[i], written[k].commanded[i], 0.5e-6);
       EXPECT_NEAR(read->samples[k].actual[i], written[k].actual[i], 0.5e-6);
@@ -55,7 +56,7 @@ TEST(Trace, MalformedBinaryIsRejected) {
   EXPECT_FALSE(readBinaryTrace(not_a_trace));
   std::stringstream truncated;
   auto writer = makeBinaryTraceWriter(truncated, TraceHeader{{"X"}, 0.001});
-  writer->sample(0, AxisValues{1.0}, AxisValues{1.0});
+  writer->sample(0, AxisValues{1.0}, AxisValues{1.0}, 1);
   std::string bytes = truncated.str();  // no end marker
   std::istringstream in(bytes.substr(0, bytes.size() - 1));
   EXPECT_FALSE(readBinaryTrace(in));

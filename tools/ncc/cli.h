@@ -33,5 +33,6 @@ void addCompileCommand(CLI::App& app, int& exit_code);
 void addCheckCommand(CLI::App& app, int& exit_code);
 void addDisCommand(CLI::App& app, int& exit_code);
 void addRunCommand(CLI::App& app, int& exit_code);
+void addTraceCommand(CLI::App& app, int& exit_code);
 
 }  // namespace ncc::cli

@@ -14,6 +14,7 @@
 #include "absl/strings/str_format.h"
 #include "cli.h"
 #include "pending_output.h"
+#include "run_summary.h"
 #include "ncc/bytecode/disassembler.h"
 #include "ncc/driver/json_output.h"
 #include "ncc/driver/run.h"
@@ -29,6 +30,7 @@ struct RunArgs {
   std::string input;
   std::string output;
   std::string emit = "summary";
+  uint64_t trace_every = 1;  // --trace-every N: every Nth tick
   uint64_t max_steps = driver::kDefaultMaxSteps;
   double feed_override = 100.0;   // %
   double rapid_override = 100.0;  // %
@@ -108,48 +110,6 @@ bool parseFeedHolds(const std::vector<std::string>& given, std::vector<driver::F
   return true;
 }
 
-// Samples of the servo model's actual motion beyond the machine's limits, by kind. (The
-// planner keeps the commanded setpoints within them; what the servo adds shows here.)
-std::string limitViolationsLine(const vm::RunStatistics& s, int axis_count) {
-  int64_t travel = 0, velocity = 0, acceleration = 0;
-  for (int i = 0; i < axis_count; ++i) {
-    travel += s.violations[i].travel;
-    velocity += s.violations[i].velocity;
-    acceleration += s.violations[i].acceleration;
-  }
-  return absl::StrFormat("limit violations   %d (servo actual: %d travel, %d velocity, %d acceleration ticks)",
-                         s.limit_violations, travel, velocity, acceleration);
-}
-
-// How often the look-ahead's depth held the speed down, and the setting that sets it.
-std::string lookaheadLine(const vm::RunStatistics& s, int lookahead_segments) {
-  const double share = s.ticks > 0 ? 100.0 * static_cast<double>(s.lookahead_limited_ticks) /
-                                         static_cast<double>(s.ticks)
-                                   : 0.0;
-  return absl::StrFormat("look-ahead limited %.1f %% of the time (%d segments: [machine] lookahead_segments)",
-                         share, lookahead_segments);
-}
-
-void printSummary(std::ostream& out, const driver::SimulationResult& sim,
-                  const bytecode::Program& program, double tick_seconds, int lookahead_segments) {
-  const vm::RunStatistics& s = sim.statistics;
-  out << absl::StrFormat("program time       %.3f s (%d ticks of %g ms)\n", s.program_time, s.ticks,
-                         tick_seconds * 1000.0)
-      << absl::StrFormat("path length        %.3f mm feed, %.3f mm rapid\n", s.feed_length, s.rapid_length)
-      << "max following error";
-  for (int i = 0; i < program.axisCount(); ++i)
-    out << absl::StrFormat("  %s %.4f", program.header.axes[i].name, s.max_following_error[i]);
-  out << " mm\n"
-      << absl::StrFormat("max contour error  %.4f mm (t = %.3f s)\n", s.max_contour_error,
-                         static_cast<double>(s.max_contour_error_tick) * tick_seconds)
-      << limitViolationsLine(s, program.axisCount()) << '\n'
-      << lookaheadLine(s, lookahead_segments) << '\n'
-      << "final position    ";
-  for (int i = 0; i < program.axisCount(); ++i)
-    out << ' ' << program.header.axes[i].name << driver::jsonNumber(sim.final_commanded[i]);
-  out << '\n' << "status             " << (sim.alarm ? "alarm " + sim.alarm->code : std::string("completed")) << '\n';
-}
-
 // Reports a run-time alarm like a compile diagnostic: file:line:col: error[CODE]: message.
 void reportAlarm(driver::Session& session, const bytecode::Program& program, const vm::Alarm& alarm) {
   SourceLocation where{0, alarm.where.line, alarm.where.column};
@@ -158,7 +118,7 @@ void reportAlarm(driver::Session& session, const bytecode::Program& program, con
   session.diagnostics().error(alarm.code, where, alarm.message);
 }
 
-// --emit=summary and --emit=trace: the program through the planner, interpolator and servo.
+// --emit=summary|summary-json|trace: the program through the planner, interpolator and servo.
 int runSimulation(driver::Session& session, const bytecode::Program& program, const RunArgs& args) {
   PendingOutput output;
   if (!output.open(args.output)) return kUsage;
@@ -167,6 +127,7 @@ int runSimulation(driver::Session& session, const bytecode::Program& program, co
     driver::TraceHeader header;
     for (const bytecode::AxisInfo& axis : program.header.axes) header.axes.push_back(axis.name);
     header.tick_seconds = session.machine().ipo_cycle_seconds;
+    header.tick_every = args.trace_every;
     bool binary = !args.output.empty() && !absl::EndsWithIgnoreCase(args.output, ".csv");
     trace = binary ? driver::makeBinaryTraceWriter(output.stream(), header)
                    : driver::makeCsvTraceWriter(output.stream(), header);
@@ -187,19 +148,22 @@ int runSimulation(driver::Session& session, const bytecode::Program& program, co
     return kProgramError;
   }
   const MachineConfig& machine = session.machine();
+  const bool json = args.emit == "summary-json";
+  const bool summary_only = args.emit == "summary" || json;
   auto summary = [&](std::ostream& out) {
-    printSummary(out, sim, program, machine.ipo_cycle_seconds, machine.lookahead_segments);
+    const SummaryInput in{sim, program, machine.ipo_cycle_seconds, machine.lookahead_segments};
+    json ? printSummaryJson(out, in) : printSummary(out, in);
   };
   if (sim.alarm) {
     output.discard();
     reportAlarm(session, program, *sim.alarm);
     printDiagnostics(session);
-    if (args.emit == "summary") summary(std::cerr);
+    if (summary_only) summary(std::cerr);
     return kRuntimeAlarm;
   }
-  if (args.emit == "summary") summary(output.stream());
+  if (summary_only) summary(output.stream());
   if (!output.commit()) return kUsage;
-  if (!args.output.empty() && args.emit != "summary") summary(std::cout);
+  if (!args.output.empty() && !summary_only) summary(std::cout);
   return kOk;
 }
 
@@ -236,7 +200,8 @@ int runRun(const RunArgs& args) {
   }
   printDiagnostics(session);  // warnings of the compile
   session.diagnostics().clear();
-  if (args.emit == "summary" || args.emit == "trace") return runSimulation(session, program, args);
+  if (args.emit == "summary" || args.emit == "summary-json" || args.emit == "trace")
+    return runSimulation(session, program, args);
   return runExecutor(session, program, args);
 }
 
@@ -263,12 +228,17 @@ void addRunCommand(CLI::App& app, int& exit_code) {
   CLI::App* cmd = app.add_subcommand("run", "compile (or load a .ncb) and run a program in the VM");
   cmd->add_option("input", args->input, "program source or .ncb file")->required();
   cmd->add_option("--emit", args->emit,
-                  "summary (default): the simulated run's figures; trace: setpoint and actual "
-                  "position of every axis per IPO tick (-o FILE.csv, or a compact binary trace "
-                  "for any other extension); moves: JSON Lines, one motion primitive per line; "
+                  "summary (default): the simulated run's figures; summary-json: the same as "
+                  "one JSON object; trace: setpoint, actual position of every axis and source "
+                  "line per IPO tick (-o FILE.csv, or a compact binary trace for any other "
+                  "extension); moves: JSON Lines, one motion primitive per line; "
                   "vars: JSON object of every non-vacant variable at the end")
-      ->check(CLI::IsMember({"summary", "trace", "moves", "vars"}));
+      ->check(CLI::IsMember({"summary", "summary-json", "trace", "moves", "vars"}));
   cmd->add_option("-o,--output", args->output, "write the emitted output here (default: stdout)");
+  cmd->add_option("--trace-every", args->trace_every,
+                  "--emit=trace: write every Nth IPO tick only (ticks 0, N, 2N, ...)")
+      ->check(CLI::Range(uint64_t{1}, uint64_t{1000000000}))
+      ->capture_default_str();
   cmd->add_option("--max-steps", args->max_steps,
                   "stop with alarm NCC7204 after this many VM instructions (0: no limit); guards "
                   "against programs that loop forever")

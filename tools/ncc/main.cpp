@@ -13,6 +13,7 @@ int main(int argc, char** argv) {
   addCheckCommand(app, exit_code);
   addDisCommand(app, exit_code);
   addRunCommand(app, exit_code);
+  addTraceCommand(app, exit_code);
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {

@@ -193,7 +193,7 @@ TickStatus Controller::tick(TickOutput& out) noexcept {
   last_.file = fileName(info.where.file);
   if (info.lookahead_limited) ++lookahead_limited_ticks_;
   stats_.add(k, last_.time, setpoint, sample.actual, sample.following_error,
-             !info.idle && info.kind == MotionPrimitive::Kind::Rapid, info.velocity);
+             !info.idle && info.kind == MotionPrimitive::Kind::Rapid, info.velocity, info.where);
   if (servo_.alarm().code != 0) raiseServoAlarm(servo_.alarm(), info.where);
   if (info.in_position_check && !waiting_in_position_) {
     waiting_in_position_ = true;

@@ -13,10 +13,22 @@ constexpr double kErrorBoundSlack = 1e-6;
 
 }  // namespace
 
+void StatisticsAccumulator::widen(AxisExtents& extents, const AxisValues& point) {
+  if (extents.empty) {
+    extents.min = point;
+    extents.max = point;
+    extents.empty = false;
+  }
+  for (int i = 0; i < axis_count_; ++i) {
+    extents.min[i] = std::min(extents.min[i], point[i]);
+    extents.max[i] = std::max(extents.max[i], point[i]);
+  }
+}
+
 void StatisticsAccumulator::add(uint64_t k, double time, const AxisValues& __restrict commanded,
                                 const AxisValues& __restrict actual,
                                 const AxisValues& __restrict following_error, bool rapid,
-                                double path_velocity) {
+                                double path_velocity, SourcePosition where) {
   const int n = axis_count_;
   if (!started_) {  // the first tick: no previous setpoint, so no motion yet
     previous_ = commanded;
@@ -51,6 +63,21 @@ void StatisticsAccumulator::add(uint64_t k, double time, const AxisValues& __res
   const bool chord_rapid = path_velocity == 0.0 ? previous_rapid_ : rapid;
   (chord_rapid ? stats_.rapid_length : stats_.feed_length) += chord;
   previous_rapid_ = rapid;
+  // Extents: both ends of a chord that moves. Its start is in already when the previous
+  // moving chord was of the same kind; else it is the other kind's end point, which this
+  // kind's path also passes.
+  if (chord2 > 0.0) {
+    AxisExtents& extents = chord_rapid ? stats_.rapid_extents : stats_.feed_extents;
+    if (extents_rapid_ != static_cast<int>(chord_rapid)) widen(extents, previous_);
+    widen(extents, commanded);
+    extents_rapid_ = chord_rapid;
+  }
+
+  // The motion this tick belongs to for the contour error: a tick at rest (a stop sample, a
+  // dwell, a feed hold, the wait for the in-position window) belongs to the last run that
+  // moved, so the servo settling after a rapid is not taken for a contour error.
+  const bool tick_rapid = path_velocity == 0.0 ? motion_rapid_ : rapid;
+  if (path_velocity != 0.0) motion_rapid_ = rapid;
 
   // Commanded direction (its norm is taken on the ticks that use it: a root a tick was a fifth
   // of this function's time).
@@ -59,12 +86,13 @@ void StatisticsAccumulator::add(uint64_t k, double time, const AxisValues& __res
     direction_norm2_ = norm2;
   }
 
-  // Contour error. It is a part of e: |e - (e.u)u| <= |e| for |u| = 1 (or u = 0), and
-  // rounding adds about 1e-14 of it, far inside kErrorBoundSlack. A tick whose whole error
-  // is below the largest contour error so far cannot raise it: the unit direction and the
-  // projection, two dependent sums and a division per axis, are left out.
+  // Contour error, of feed motion only (a rapid is no contour). It is a part of e:
+  // |e - (e.u)u| <= |e| for |u| = 1 (or u = 0), and rounding adds about 1e-14 of it, far
+  // inside kErrorBoundSlack. A tick whose whole error is below the largest contour error so
+  // far cannot raise it: the unit direction and the projection, two dependent sums and a
+  // division per axis, are left out.
   const double max2 = stats_.max_contour_error * stats_.max_contour_error;
-  if (!(error2 * (1.0 + kErrorBoundSlack) < max2)) {
+  if (!tick_rapid && !(error2 * (1.0 + kErrorBoundSlack) < max2)) {
     const AxisValues& direction = directions_[direction_slot_];
     AxisValues u{}, e{};
     const double direction_norm = std::sqrt(direction_norm2_);
@@ -83,6 +111,7 @@ void StatisticsAccumulator::add(uint64_t k, double time, const AxisValues& __res
     if (perpendicular2 > max2) {
       stats_.max_contour_error = std::sqrt(perpendicular2);
       stats_.max_contour_error_tick = k;
+      stats_.max_contour_error_where = where;
     }
   }
 

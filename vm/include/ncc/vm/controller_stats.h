@@ -16,7 +16,11 @@
 //    While the setpoint stands still the previous direction is kept. It is a local measure:
 //    with a lag l along an arc of radius r it also contains the sagitta l^2/(2r), and at a
 //    corner stop the lag still left along the previous segment counts once the next segment
-//    starts.
+//    starts. Only feed motion is a contour: ticks of a rapid (and the ticks at rest after one)
+//    are left out. The worst tick's source block is kept with it.
+//  - extents: per axis, the least and greatest commanded position over the ticks of feed
+//    motion and, separately, of rapid motion (both ends of every chord that moves, the chord
+//    belonging to the run as for the path length): the part's envelope in machine coordinates.
 //  - limit violations: the servo model's counts of samples beyond travel, velocity and
 //    acceleration limits (docs/servo.md, "Monitoring").
 #include <array>
@@ -28,6 +32,13 @@
 
 namespace ncc::vm {
 
+// The least and greatest commanded position of every axis over some of the motion.
+struct AxisExtents {
+  bool empty = true;  // no such motion: min and max are meaningless
+  AxisValues min{};
+  AxisValues max{};
+};
+
 struct RunStatistics {
   uint64_t ticks = 0;                  // ticks produced
   double program_time = 0.0;           // s
@@ -37,6 +48,9 @@ struct RunStatistics {
   AxisValues max_following_error{};    // |.|, per axis
   double max_contour_error = 0.0;      // mm
   uint64_t max_contour_error_tick = 0;
+  SourcePosition max_contour_error_where;  // the block interpolated on that tick
+  AxisExtents feed_extents;            // commanded positions over feed motion
+  AxisExtents rapid_extents;           // commanded positions over rapid motion
   std::array<LimitViolations, kMaxAxes> violations{};  // per axis
   int64_t limit_violations = 0;        // sum over axes and kinds
   // Ticks on which the path ramped to a peak below its top speed, or braked to rest, because a
@@ -50,12 +64,13 @@ class StatisticsAccumulator {
   explicit StatisticsAccumulator(int axis_count) : axis_count_(axis_count) {}
 
   // Tick k (k increases by one per call). `rapid`: the run being interpolated is a rapid;
-  // `path_velocity` 0 marks a tick where a run starts or stops, whose chord still belongs to
-  // the previous tick's run. The arrays are not the accumulator's own (__restrict: its loop
-  // over the axes vectorises without checking that at run time).
+  // `path_velocity` 0 marks a tick where a run starts or stops (or the path stands), which
+  // still belongs to the previous moving tick's run. `where`: the block being interpolated.
+  // The arrays are not the accumulator's own (__restrict: its loop over the axes vectorises
+  // without checking that at run time).
   void add(uint64_t k, double time, const AxisValues& __restrict commanded,
            const AxisValues& __restrict actual, const AxisValues& __restrict following_error,
-           bool rapid, double path_velocity);
+           bool rapid, double path_velocity, SourcePosition where);
 
   const RunStatistics& statistics() const { return stats_; }
 
@@ -64,6 +79,8 @@ class StatisticsAccumulator {
   RunStatistics stats_;
   bool started_ = false;
   bool previous_rapid_ = false;
+  bool motion_rapid_ = false;    // the kind of the last tick that moved
+  int extents_rapid_ = -1;       // the kind of the last moving chord (-1: none yet)
   AxisValues previous_{};        // c_{k-1}
   AxisValues before_previous_{}; // c_{k-2}
   // The unit commanded direction is directions_[direction_slot_] / sqrt(direction_norm2_) (zero
@@ -72,6 +89,8 @@ class StatisticsAccumulator {
   AxisValues directions_[2]{};
   int direction_slot_ = 0;
   double direction_norm2_ = 1.0;
+
+  void widen(AxisExtents& extents, const AxisValues& point);
 };
 
 }  // namespace ncc::vm
