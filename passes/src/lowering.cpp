@@ -165,7 +165,8 @@ LowerResult lowerBlock(LoweringCore& core, const ast::Block& block) {
   ctx.words = std::move(*decoded);
 
   applyModalCodes(ctx, result);
-  ctx.silent = dependsOnUnknown(ctx);
+  Dependence depends = dependsOnUnknown(ctx);
+  ctx.silent = depends.words;
   ctx.checkFormats();
   if (ctx.failed) return ctx.silent ? settleSilent(ctx, result) : reject(ctx);
   applyFeed(ctx);
@@ -177,6 +178,7 @@ LowerResult lowerBlock(LoweringCore& core, const ast::Block& block) {
     reject(ctx);
     return result;
   }
+  ctx.silent = depends.words || depends.motion;
   if (ctx.words.one_shot)
     oneShot(ctx);
   else

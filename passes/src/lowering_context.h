@@ -166,8 +166,14 @@ void forgetRejected(ControllerState& cs, const ast::Block& block, const DialectT
 // A block that could not be read at all (a syntax error): anything may have changed.
 void forgetEverything(ControllerState& cs);
 // Whether judging the block (decoded, its modal codes applied to `next`) needs state that
-// is unknown: then it is lowered `silent`.
-bool dependsOnUnknown(const BlockContext& ctx);
+// is unknown; such parts are lowered `silent`. `words`: its words themselves (formats, F, H:
+// units or the motion mode unknown); `motion`: its motion or one-shot code (start point,
+// G90/G91, plane, feed). Faults of words that do not depend are still reported.
+struct Dependence {
+  bool words = false;
+  bool motion = false;
+};
+Dependence dependsOnUnknown(const BlockContext& ctx);
 // After a block is lowered (reported or silent): the unknowns it determines again. A modal
 // code re-knows its group, F the feed, an absolute axis word its axis (`next.position` is
 // set from the word when the block itself did not get to it); an axis the block named on an

@@ -86,15 +86,13 @@ void forgetEverything(ControllerState& cs) {
   cs.unknown.feed = true;
 }
 
-bool dependsOnUnknown(const BlockContext& ctx) {
-  const U& before = ctx.core.cs.unknown;
-  if (!before.any()) return false;
-  const DecodedBlock& w = ctx.words;
-  uint32_t groups = before.groups & ~carriedGroups(w);
+namespace {
+
+// Whether the block's motion (or one-shot code) is judged against unknown state.
+bool motionDepends(const BlockContext& ctx, const U& before, uint32_t groups) {
   auto unknown = [&](GGroup g) { return (groups & U::groupBit(g)) != 0; };
+  const DecodedBlock& w = ctx.words;
   bool axes = w.anyAxis();
-  // Every value is read in the units in force; axis words are absolute or incremental.
-  if (unknown(GGroup::Units) && (axes || w.i || w.j || w.k || w.r || w.f)) return true;
   if (w.one_shot) {
     if (w.one_shot->entry->action == GAction::Dwell) return false;  // its X is a time
     // G28/G30/G92/G52/G53/G10 with axis words: relative to the position or a frame.
@@ -120,6 +118,24 @@ bool dependsOnUnknown(const BlockContext& ctx) {
       if (axis >= 0 && axis < kMaxAxes && (before.axes & (1u << axis))) return true;
   }
   return false;
+}
+
+}  // namespace
+
+Dependence dependsOnUnknown(const BlockContext& ctx) {
+  const U& before = ctx.core.cs.unknown;
+  if (!before.any()) return {};
+  const DecodedBlock& w = ctx.words;
+  uint32_t groups = before.groups & ~carriedGroups(w);
+  auto unknown = [&](GGroup g) { return (groups & U::groupBit(g)) != 0; };
+  // Every value is read in the units in force (its format too); where a length-offset change
+  // is allowed only in G00/G01 (Siemens) it is judged against the motion mode.
+  bool values = w.anyAxis() || w.i || w.j || w.k || w.r || w.f;
+  if ((unknown(GGroup::Units) && values) ||
+      (unknown(GGroup::Motion) && ctx.behaviour.length_comp_in_arc_is_error &&
+       (w.h || w.group(GGroup::LengthComp))))
+    return {.words = true, .motion = true};
+  return {.words = false, .motion = motionDepends(ctx, before, groups)};
 }
 
 void relearn(BlockContext& ctx) {
