@@ -1,6 +1,7 @@
 #include "ncc/driver/compile.h"
 
 #include <fstream>
+#include <string_view>
 #include <system_error>
 
 #include "absl/strings/str_cat.h"
@@ -28,10 +29,52 @@ ir::AxisNames axisNames(const MachineConfig& machine) {
   return names;
 }
 
-// Reads blocks and lowers them until the end of the program. After M02/M30 the rest of the file
-// is still read, so its syntax errors are reported (a FANUC file often carries subprograms
-// there), but nothing more is lowered. A '%' after the program's first block is the end of the
-// record (the tape ends there): nothing after it is read, and text there draws a warning.
+// The '%' end-of-record mark, alone or after a sequence number (`N194 %`).
+bool isEndOfRecord(std::string_view text) {
+  size_t i = 0;
+  if (i < text.size() && (text[i] == 'N' || text[i] == 'n')) {
+    ++i;
+    while (i < text.size() && text[i] >= '0' && text[i] <= '9') ++i;
+    while (i < text.size() && (text[i] == ' ' || text[i] == '\t')) ++i;
+  }
+  return i < text.size() && text[i] == '%';
+}
+
+// A program number starts another program (`O1000`, `:1000`): a subprogram stored after the
+// main program.
+bool startsProgram(std::string_view text) {
+  return !text.empty() && (text[0] == 'O' || text[0] == 'o' || text[0] == ':');
+}
+
+// The text after the closing '%' is not part of the program (the tape ends there): it is not
+// parsed, and text there draws one warning.
+void afterEndOfRecord(frontend::BlockReader& reader, DiagnosticEngine& diags) {
+  if (std::optional<frontend::BlockReader::Text> after = reader.nextText())
+    diags.warning("NCC0020", after->loc,
+                  "text after the closing '%' is not part of the program and is ignored");
+}
+
+// The text after M02/M30 is never executed (the control stops and rewinds there). It is not
+// parsed, so nothing there is an error; the first thing found draws one warning: a stored
+// subprogram (`O` number: not supported yet, issue 22) or other text. A '%' there closes the
+// record as usual.
+void afterProgramEnd(frontend::BlockReader& reader, DiagnosticEngine& diags) {
+  std::optional<frontend::BlockReader::Text> next = reader.nextText();
+  if (!next) return;
+  if (isEndOfRecord(next->text)) return afterEndOfRecord(reader, diags);
+  if (startsProgram(next->text)) {
+    diags.warning("NCC0021", next->loc,
+                  "a program after the end of the main program (M02/M30) is not executed: "
+                  "subprograms stored in the same file are not supported yet");
+    return;
+  }
+  diags.warning("NCC0022", next->loc,
+                "text after the end of the program (M02/M30) is never executed and is ignored");
+}
+
+// Reads blocks and lowers them until the end of the program: M02/M30, or a '%' after the
+// program's first block (the end of the record). What follows is never executed; it is not
+// parsed either, and draws a warning at most.
 void lowerProgram(Session& session, ir::BlockSink& entry) {
   frontend::BlockReader reader(session.sources(), session.mainFile(), session.diagnostics(),
                                readerOptionsFor(session.dialect()));
@@ -40,46 +83,51 @@ void lowerProgram(Session& session, ir::BlockSink& entry) {
   options.machine = &session.machine();
   options.program_dir = session.programDir();
   passes::Lowering lowering(options, session.diagnostics(), entry);
-  bool program_ended = false;
   bool seen_content = false;
+  uint64_t unreadable = 0;
   while (std::optional<ast::Block> block = reader.next()) {
+    if (reader.stats().rejected_blocks != unreadable) {
+      unreadable = reader.stats().rejected_blocks;
+      lowering.blockUnreadable();
+    }
     if (block->percent && seen_content) {
-      while (std::optional<ast::Block> after = reader.next()) {
-        if (!after->empty()) {
-          session.diagnostics().warning(
-              "NCC0020", after->loc,
-              "text after the closing '%' is not part of the program and is ignored");
-          break;
-        }
-      }
+      afterEndOfRecord(reader, session.diagnostics());
       break;
     }
     seen_content = seen_content || !block->empty();
-    if (program_ended) continue;
     passes::LowerResult result = lowering.lower(*block);
     if (result.switch_language) reader.setLanguage(*result.switch_language);
-    program_ended = result.program_end;
+    if (result.program_end) {
+      afterProgramEnd(reader, session.diagnostics());
+      break;
+    }
   }
   lowering.finish();
 }
 
-}  // namespace
-
-bool compileToSink(Session& session, ir::BlockSink& sink) {
+bool compileWith(Session& session, ir::BlockSink& sink, bool check_travel) {
   passes::PipelineOptions options;
   options.axis_count = session.machine().axisCount();
+  if (check_travel) options.travel_limits = &session.machine();
+  options.dialect = session.dialect();
   passes::PassManager pipeline(options, session.diagnostics(), sink);
   lowerProgram(session, pipeline.entry());
   return !session.diagnostics().hasErrors();
 }
+}  // namespace
+
+bool compileToSink(Session& session, ir::BlockSink& sink) {
+  return compileWith(session, sink, /*check_travel=*/false);
+}
 
 bool check(Session& session) {
-  // Discards the IR; every pass and the IR verifier still run, so their diagnostics appear.
+  // Discards the IR; every pass and the IR verifier still run, so their diagnostics appear,
+  // and motion targets are checked against the machine's travel limits.
   struct DiscardingSink : ir::BlockSink {
     void accept(ir::Block) override {}
     void finish() override {}
   } discard;
-  return compileToSink(session, discard);
+  return compileWith(session, discard, /*check_travel=*/true);
 }
 
 bool emitAst(Session& session, std::ostream& out) {

@@ -140,6 +140,21 @@ std::optional<ast::Block> BlockReader::next() {
   return std::nullopt;
 }
 
+std::optional<BlockReader::Text> BlockReader::nextText() {
+  Impl& r = *impl_;
+  std::string_view segment;
+  std::optional<std::string_view> annotation;
+  uint32_t column = 1;
+  while (r.nextSegment(segment, annotation, column)) {
+    size_t first = 0;
+    while (first < segment.size() && isBlank(segment[first])) ++first;
+    if (first == segment.size()) continue;
+    return Text{segment.substr(first),
+                SourceLocation{r.file, r.line_number, column + static_cast<uint32_t>(first)}};
+  }
+  return std::nullopt;
+}
+
 void BlockReader::setLanguage(Language language) { impl_->language = language; }
 Language BlockReader::language() const { return impl_->language; }
 const ReaderStats& BlockReader::stats() const { return impl_->stats; }

@@ -3,6 +3,7 @@
 // frame (work offset, G92 shift, G52 local shift, tool length). Small and copyable: a block
 // is lowered on a copy that replaces the state only when the block has no error. The offset
 // tables written by G10 live apart (OffsetTables) and are written at the commit.
+#include <cstdint>
 #include <map>
 #include <string>
 
@@ -11,6 +12,18 @@
 #include "ncc/passes/dialect_table.h"
 
 namespace ncc::passes {
+
+// What a rejected block would have written and no later block has determined again: the
+// state the real control would be in is not known there (error recovery, lowering_recovery.cpp).
+struct UnknownState {
+  AxisMask axes = 0;    // positions (the commanded point) of these axes
+  uint32_t groups = 0;  // bit (1 << GGroup) per modal group whose code is not known
+  bool feed = false;    // the F in force
+
+  static constexpr uint32_t groupBit(GGroup g) { return 1u << static_cast<unsigned>(g); }
+  bool group(GGroup g) const { return (groups & groupBit(g)) != 0; }
+  bool any() const { return axes != 0 || groups != 0 || feed; }
+};
 
 struct ControllerState {
   ir::Modal modal;
@@ -35,6 +48,7 @@ struct ControllerState {
   double length_pending = 0.0;
   bool feed_after_inverse_time = false;  // G94/G95 after G93 without a new F yet
   int last_g10_l2_p = 1;               // Mazak: G10 L2 without P reuses the last P
+  UnknownState unknown;                // nothing after power-on; see UnknownState
 };
 
 struct OffsetTables {

@@ -2,8 +2,9 @@
 // codes and F/H/D/S/T words are applied, then either its one-shot code or its motion is
 // lowered by the concept it belongs to (see lowering_context.h for the list), its M codes are
 // placed around that, words nothing read are reported, and only an error-free block commits:
-// offset-table writes, the new controller state and one IR block. This file holds the order
-// of those steps and nothing of their semantics.
+// offset-table writes, the new controller state and one IR block. A block that depends on
+// state an earlier rejected block left unknown is lowered silently (lowering_recovery.cpp).
+// This file holds the order of those steps and nothing of their semantics.
 #include "ncc/passes/lowering.h"
 
 #include <optional>
@@ -132,7 +133,25 @@ void commit(BlockContext& ctx) {
   out.exact_stop =
       ctx.words.exact_stop.has_value() || ctx.next.modal.path == ir::PathControl::ExactStop;
   out.ops = std::move(ctx.ops);
+  // While something is unknown (only after an error: the run fails anyway) targets may rest
+  // on it; later passes would judge them (travel limits) and report consequences.
+  if (ctx.next.unknown.any()) return;
   ctx.core.out.accept(std::move(out));
+}
+
+// A block rejected with a diagnostic: the state stays as it was, but what the block would
+// have written is unknown from now on.
+LowerResult reject(BlockContext& ctx) {
+  forgetRejected(ctx.core.cs, ctx.block, ctx.table, *ctx.core.machine);
+  return LowerResult{};
+}
+
+// A block lowered silently (it depends on unknown state): no diagnostic, no IR, no table
+// writes; the state takes what the block determines (relearn).
+LowerResult settleSilent(BlockContext& ctx, LowerResult result) {
+  relearn(ctx);
+  ctx.core.cs = ctx.next;
+  return result;
 }
 
 // Lowers one block on a copy of the controller state; commits it only without errors.
@@ -142,24 +161,33 @@ LowerResult lowerBlock(LoweringCore& core, const ast::Block& block) {
   DecodeContext decode{ctx.table, *core.machine, ctx.settings.policy, core.cs.modal.distance,
                        core.diags};
   auto decoded = decodeBlock(block, decode);
-  if (!decoded) return result;
+  if (!decoded) return reject(ctx);
   ctx.words = std::move(*decoded);
 
   applyModalCodes(ctx, result);
+  Dependence depends = dependsOnUnknown(ctx);
+  ctx.silent = depends.words;
   ctx.checkFormats();
-  if (ctx.failed) return LowerResult{};
+  if (ctx.failed) return ctx.silent ? settleSilent(ctx, result) : reject(ctx);
   applyFeed(ctx);
   applyLengthOffset(ctx);
   applyRadiusOffsetNumber(ctx);
   applySpindleAndToolWords(ctx);
-  if (ctx.failed) return result;
+  if (ctx.failed) {
+    if (ctx.silent) return settleSilent(ctx, result);
+    reject(ctx);
+    return result;
+  }
+  ctx.silent = depends.words || depends.motion;
   if (ctx.words.one_shot)
     oneShot(ctx);
   else
     lowerMotion(ctx);
   machineFunctions(ctx, result);
   checkUnused(ctx);
-  if (ctx.failed) return LowerResult{};
+  if (ctx.silent) return settleSilent(ctx, result);
+  if (ctx.failed) return reject(ctx);
+  relearn(ctx);
   commit(ctx);
   return result;
 }
@@ -192,6 +220,10 @@ LowerResult Lowering::lower(const ast::Block& block) {
   }
   if (block.words.empty() && block.statements.empty()) return {};
   return lowerBlock(st, block);
+}
+
+void Lowering::blockUnreadable() {
+  if (state_->table) forgetEverything(state_->cs);
 }
 
 void Lowering::finish() { state_->out.finish(); }

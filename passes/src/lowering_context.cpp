@@ -64,7 +64,7 @@ void LoweringCore::powerOn() {
 
 // ---- BlockContext: diagnostics and values ---------------------------------------------------
 void BlockContext::fail(Alarm a, SourceLocation loc, std::string message) {
-  core.diags.error(std::string(table.alarm(a)), loc, std::move(message));
+  if (!silent) core.diags.error(std::string(table.alarm(a)), loc, std::move(message));
   failed = true;
 }
 

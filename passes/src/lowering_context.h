@@ -10,6 +10,8 @@
 //   lowering_tool_offsets.cpp      H with G43/G44/G49, D, G10 L10-L13
 //   lowering_reference.cpp         G27, G28, G30
 //   lowering_machine_functions.cpp G04 dwell, S, T, M
+//   lowering_recovery.cpp          after a rejected block: what is unknown, which later
+//                                  blocks depend on it (skipped without a diagnostic)
 //   lowering_context.cpp           the helpers below, shared by all of them
 //
 // A block is lowered on a copy of the controller state (BlockContext::next); the driver
@@ -85,9 +87,13 @@ struct BlockContext {
   // Words some code of the block has read; the rest are reported as having no meaning.
   bool used_ijk = false, used_r = false, used_p = false, used_l = false;
   bool failed = false;
+  // The block depends on unknown state (lowering_recovery.cpp): it is lowered for its effects
+  // on the state only, and its errors are not reported (they would be consequences).
+  bool silent = false;
 
   // ---- diagnostics and values ----
-  // Reports an error with the dialect's alarm number; the block then produces no IR.
+  // Reports an error with the dialect's alarm number (unless `silent`); the block then
+  // produces no IR.
   void fail(Alarm a, SourceLocation loc, std::string message);
   // The integer value of an address such as H, D, P, L, M (nullopt after reporting).
   std::optional<int64_t> integer(const WordValue& w);
@@ -150,6 +156,29 @@ void referenceCheck(BlockContext& ctx, const GWord& g);  // G27
 void referenceReturn(BlockContext& ctx, const GWord& g, int n);
 // G30 / G27 P: the reference point number, `fallback` without P or after an error.
 int referenceNumber(BlockContext& ctx, const GWord& g, int fallback);
+
+// ---- lowering_recovery.cpp ----
+// A block rejected with a diagnostic: what it would have written becomes unknown in `cs`
+// (the axes it names, the modal groups of its G codes, F). Read from the AST, since the
+// block may not have decoded.
+void forgetRejected(ControllerState& cs, const ast::Block& block, const DialectTable& table,
+                    const MachineConfig& machine);
+// A block that could not be read at all (a syntax error): anything may have changed.
+void forgetEverything(ControllerState& cs);
+// Whether judging the block (decoded, its modal codes applied to `next`) needs state that
+// is unknown; such parts are lowered `silent`. `words`: its words themselves (formats, F, H:
+// units or the motion mode unknown); `motion`: its motion or one-shot code (start point,
+// G90/G91, plane, feed). Faults of words that do not depend are still reported.
+struct Dependence {
+  bool words = false;
+  bool motion = false;
+};
+Dependence dependsOnUnknown(const BlockContext& ctx);
+// After a block is lowered (reported or silent): the unknowns it determines again. A modal
+// code re-knows its group, F the feed, an absolute axis word its axis (`next.position` is
+// set from the word when the block itself did not get to it); an axis the block named on an
+// unknown base stays unknown.
+void relearn(BlockContext& ctx);
 
 // ---- lowering_machine_functions.cpp ----
 void dwell(BlockContext& ctx, const GWord& g);  // G04

@@ -372,11 +372,14 @@ class CliTest(unittest.TestCase):
         self.assertEqual([m["to"]["X"] for m in moves], [1.0])
         self.assertRegex(proc.stderr, r"p\.nc:5:1: warning\[NCC0020\]: text after the closing '%'")
 
-    def test_syntax_after_program_end_is_still_checked(self):
+    def test_text_after_program_end_is_never_executed_and_only_warned_about(self):
+        # Issue 21: what follows M02/M30 is never executed, so it is not an error (it was
+        # parsed and its syntax errors rejected the program before).
         prog = self.write("after.nc", "G00 X1.\nM30\nG00 X@@@\n")
         proc = ncc("check", prog)
-        self.assertEqual(proc.returncode, 1)
-        self.assertRegex(proc.stderr, r"after\.nc:3:\d+: error\[NCC1001\]")
+        self.assertEqual(proc.returncode, 0, proc.stderr)
+        self.assertRegex(proc.stderr, r"after\.nc:3:1: warning\[NCC0022\]")
+        self.assertNotIn("error", proc.stderr)
 
     def test_compile_refuses_to_overwrite_its_source(self):
         good = self.write("same.nc", GOOD)

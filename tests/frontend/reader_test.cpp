@@ -23,6 +23,24 @@ std::vector<std::string> readAll(const std::string& text, ReaderOptions options,
   return out;
 }
 
+TEST(Reader, NextTextReturnsUnparsedBlocksWithoutDiagnostics) {
+  SourceManager sm;
+  DiagnosticEngine diags(&sm);
+  uint32_t f = sm.addBuffer("t.nc", "M30\n\n  N194 %@@ ;O2000\n");
+  BlockReader reader(sm, f, diags);
+  ASSERT_TRUE(reader.next());
+  auto a = reader.nextText();
+  ASSERT_TRUE(a);
+  EXPECT_EQ(a->text, "N194 %@@ ");  // blanks before it skipped, ';' ends the block
+  EXPECT_EQ(a->loc, (SourceLocation{f, 3, 3}));
+  auto b = reader.nextText();
+  ASSERT_TRUE(b);
+  EXPECT_EQ(b->text, "O2000");
+  EXPECT_EQ(b->loc, (SourceLocation{f, 3, 13}));
+  EXPECT_FALSE(reader.nextText());
+  EXPECT_TRUE(diags.diagnostics().empty());
+}
+
 TEST(Reader, SemicolonEndsBlockInFanucMode) {
   ReaderOptions fanuc;  // default: ';' is the end-of-block character
   EXPECT_EQ(readAll("G0 X1.;G1 Y2. ; M30;\n", fanuc),

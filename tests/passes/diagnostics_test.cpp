@@ -145,10 +145,14 @@ INSTANTIATE_TEST_SUITE_P(Lowering, DiagnosticTest, testing::ValuesIn(kCases),
                          [](const testing::TestParamInfo<Case>& info) { return info.param.name; });
 
 TEST(Diagnostics, ErroneousBlockProducesNoIrAndLeavesTheStateAlone) {
-  Lowered r = lower(Dialect::FanucM, "G00 X5.\nG91 G81 X1.\nX1.\n");
+  // Whether the bad block's G91 took effect on the control is not known (issue 21): the X1.
+  // after it is neither judged nor emitted (recovery_test.cpp). G90 G80 and an absolute X
+  // determine the state again, and blocks are emitted again.
+  Lowered r = lower(Dialect::FanucM, "G00 X5.\nG91 G81 X1.\nX1.\nG90 G80 X2.\n");
   EXPECT_EQ(r.diags.size(), 1u);
   ASSERT_EQ(r.moves.size(), 2u);
-  EXPECT_EQ(r.moves[1].to[0], 1.0);  // the G91 of the bad block did not take effect
+  EXPECT_EQ(r.moves[1].line, 4);
+  EXPECT_EQ(r.moves[1].to[0], 2.0);
   EXPECT_EQ(r.blocks.size(), 2u);
 }
 

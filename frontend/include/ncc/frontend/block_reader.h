@@ -54,6 +54,15 @@ class BlockReader {
   // skipped (their words are not returned, so nothing half-parsed reaches semantics).
   std::optional<ast::Block> next();
 
+  // The next block's text, not parsed (so nothing is reported), and where it starts; nullopt
+  // at end of input. For text that is never executed: after the end of the program or the
+  // closing '%'. The view is valid until the next call.
+  struct Text {
+    std::string_view text;
+    SourceLocation loc;
+  };
+  std::optional<Text> nextText();
+
   // Switches the language for the blocks after the current one (G290 / G291).
   void setLanguage(Language language);
   Language language() const;

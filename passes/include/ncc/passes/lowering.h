@@ -37,6 +37,11 @@ class Lowering {
   // Lowers one block; IR blocks go to `out`. Errors are reported with the block's location
   // and the controller's alarm number; the erroneous block produces no IR.
   LowerResult lower(const ast::Block& block);
+  // A block the frontend could not read (a syntax error) was skipped: what it would have
+  // changed is not known, so every position and modal group is unknown until later blocks
+  // determine them again; blocks that depend on them get no diagnostic (docs/semantics.md,
+  // Error recovery).
+  void blockUnreadable();
   // End of input: finishes the sink. (None of fanuc-m, mazak-m, siemens-iso-m requires
   // M02/M30: Mazak memory operation implies M30, and the Siemens examples end without it.)
   void finish();

@@ -7,6 +7,8 @@
 
 #include "ncc/ir/ir.h"
 #include "ncc/ir/verifier.h"
+#include "ncc/machine/dialect.h"
+#include "ncc/machine/machine_config.h"
 #include "ncc/support/diagnostics.h"
 
 namespace ncc::passes {
@@ -15,6 +17,10 @@ struct PipelineOptions {
   int axis_count = 3;
   bool to_machine_space = true;  // false: stop in work space (debug printing)
   bool verify = true;            // run the IR verifier before the final sink
+  // Check motion targets against this machine's travel limits (`ncc check`; needs
+  // to_machine_space), reporting with the dialect's alarm numbers.
+  const MachineConfig* travel_limits = nullptr;
+  Dialect dialect = Dialect::FanucM;
 };
 
 class PassManager {

@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <ostream>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "ncc/support/source_location.h"
@@ -50,12 +51,19 @@ class DiagnosticEngine {
   // exhaust memory); the last stored one says so.
   void setErrorLimit(size_t limit) { error_limit_ = limit; }
 
-  // Prints every diagnostic in the order reported, each with its source line and a caret.
+  // Prints every diagnostic in the order reported, each with its source line (at most 120
+  // characters of it around the caret, "..." marking what is cut) and a caret.
   void print(std::ostream& out) const;
   // One diagnostic as text (without the quoted source line): "file:line:col: error[CODE]: msg".
+  // Locations store byte columns; the printed column counts characters (UTF-8 code points)
+  // of the source line.
   std::string format(const Diagnostic& d) const;
+  // The quoted source line and caret lines for a 1-based byte column (0: no caret).
+  static std::string quoteLine(std::string_view line, uint32_t byte_column);
 
  private:
+  std::string format(const Diagnostic& d, std::string_view line) const;
+
   const SourceManager* sources_;
   std::vector<Diagnostic> diagnostics_;
   size_t error_count_ = 0;
