@@ -46,20 +46,42 @@ bool startsProgram(std::string_view text) {
   return !text.empty() && (text[0] == 'O' || text[0] == 'o' || text[0] == ':');
 }
 
+// Blanks and ( ) comments only: nothing a control would read.
+bool onlyComments(std::string_view text) {
+  bool in_comment = false;
+  for (char c : text) {
+    if (in_comment)
+      in_comment = c != ')';
+    else if (c == '(')
+      in_comment = true;
+    else if (c != ' ' && c != '\t')
+      return false;
+  }
+  return true;
+}
+
+// The next block's text that is not only comments, or nullopt at the end of the file.
+std::optional<frontend::BlockReader::Text> nextNonComment(frontend::BlockReader& reader) {
+  std::optional<frontend::BlockReader::Text> next;
+  while ((next = reader.nextText()) && onlyComments(next->text)) {
+  }
+  return next;
+}
+
 // The text after the closing '%' is not part of the program (the tape ends there): it is not
 // parsed, and text there draws one warning.
 void afterEndOfRecord(frontend::BlockReader& reader, DiagnosticEngine& diags) {
-  if (std::optional<frontend::BlockReader::Text> after = reader.nextText())
+  if (std::optional<frontend::BlockReader::Text> after = nextNonComment(reader))
     diags.warning("NCC0020", after->loc,
                   "text after the closing '%' is not part of the program and is ignored");
 }
 
 // The text after M02/M30 is never executed (the control stops and rewinds there). It is not
-// parsed, so nothing there is an error; the first thing found draws one warning: a stored
-// subprogram (`O` number: not supported yet, issue 22) or other text. A '%' there closes the
-// record as usual.
+// parsed, so nothing there is an error; the first thing found (comments aside) draws one
+// warning: a stored subprogram (`O` number: not supported yet, issue 22) or other text. A '%'
+// there closes the record as usual.
 void afterProgramEnd(frontend::BlockReader& reader, DiagnosticEngine& diags) {
-  std::optional<frontend::BlockReader::Text> next = reader.nextText();
+  std::optional<frontend::BlockReader::Text> next = nextNonComment(reader);
   if (!next) return;
   if (isEndOfRecord(next->text)) return afterEndOfRecord(reader, diags);
   if (startsProgram(next->text)) {

@@ -89,6 +89,14 @@ class RecoveryTest(unittest.TestCase):
         errors = diagnostics(proc.stderr, "error")
         self.assertEqual([d["line"] for d in errors], ["2", "3"], proc.stderr)
 
+    def test_a_block_with_a_syntax_error_leaves_everything_unknown(self):
+        # What `G01 X@` would have done is not known: the arc after it is not judged.
+        prog = self.write("x.nc", "G90 G17 G00 X0 Y0\nG01 X@ F100.\nG02 X10. Y0 R2.\nM30\n")
+        proc = ncc("check", prog)
+        self.assertEqual(proc.returncode, 1)
+        errors = diagnostics(proc.stderr, "error")
+        self.assertEqual([(d["line"], d["code"]) for d in errors], [("2", "NCC1001")], proc.stderr)
+
     # ---- source lines in diagnostics -------------------------------------------------------
 
     def test_a_megabyte_line_gives_bounded_stderr(self):
@@ -141,6 +149,12 @@ class RecoveryTest(unittest.TestCase):
         self.assertNotIn("50.0", proc.stdout)
         warnings = diagnostics(proc.stderr, "warning")
         self.assertEqual([(d["line"], d["code"]) for d in warnings], [("3", "NCC0022")], proc.stderr)
+
+    def test_comments_after_m30_draw_no_warning(self):
+        prog = self.write("k.nc", "G90 G00 X1.\nM30\n(end of program)\n\n%\n(trailer)\n")
+        proc = ncc("check", prog)
+        self.assertEqual(proc.returncode, 0, proc.stderr)
+        self.assertEqual(diagnostics(proc.stderr), [], proc.stderr)
 
     def test_a_subprogram_after_m30_is_not_executed_nor_rejected(self):
         prog = self.write("s.nc", "O0001\nG90 G00 X1.\nM30\nO2000\nG01 X60. Q1.\nM99\n%\n")
