@@ -146,6 +146,7 @@ LowerResult lowerBlock(LoweringCore& core, const ast::Block& block) {
   ctx.words = std::move(*decoded);
 
   applyModalCodes(ctx, result);
+  core.decimal_points.block(ctx.words, ctx.settings.values, ctx.next.modal.units, *core.machine);
   ctx.checkFormats();
   if (ctx.failed) return LowerResult{};
   applyFeed(ctx);
@@ -194,6 +195,9 @@ LowerResult Lowering::lower(const ast::Block& block) {
   return lowerBlock(st, block);
 }
 
-void Lowering::finish() { state_->out.finish(); }
+void Lowering::finish() {
+  if (state_->table) state_->decimal_points.finish(state_->diags, state_->settings.values);
+  state_->out.finish();
+}
 
 }  // namespace ncc::passes
