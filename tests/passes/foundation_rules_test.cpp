@@ -156,6 +156,22 @@ TEST(FoundationRules, FanucArcsTakeNoTurnCount) {
             "1:15: error[NCC2014]: address P has no meaning in this block\n");
 }
 
+TEST(FoundationRules, MazakHelixMayCarryTwoLinearAxes) {
+  // §6-7 note: "two linear interpolation axes may be given": both move linearly with the arc.
+  const std::string machine =
+      "[machine]\naxes = [\"X\", \"Y\", \"Z\", \"U\"]\n[machine.work]\n"
+      "G54 = [0.0, 0.0, 0.0, 0.0]\n[machine.params]\n\n[start]\n"
+      "position = { X = 0.0, Y = 0.0, Z = 0.0, U = 0.0 }\n";
+  Lowered r = lower(Dialect::MazakM, "G17 G02 X20. Y0 I10. Z-2. U5. F100.\n", machine);
+  ASSERT_EQ(r.diagText(), "");
+  ASSERT_EQ(r.moves.size(), 1u);
+  EXPECT_EQ(r.moves[0].kind, "arc");
+  EXPECT_NEAR(r.moves[0].to[0], 20.0, 1e-9);
+  EXPECT_NEAR(r.moves[0].to[2], -2.0, 1e-9);
+  EXPECT_NEAR(r.moves[0].to[3], 5.0, 1e-9);
+  EXPECT_NEAR(r.moves[0].center[0], 10.0, 1e-9);
+}
+
 // ---- helical feed -------------------------------------------------------------------------
 
 TEST(FoundationRules, HelicalFeedIsAlongTheHelixOnMazakAndSiemensAlongTheArcOnFanuc) {
@@ -173,6 +189,25 @@ TEST(FoundationRules, HelicalFeedIsAlongTheHelixOnMazakAndSiemensAlongTheArcOnFa
   // An arc in its plane is the same in all three.
   Lowered flat = lower(Dialect::FanucM, "G00 X10. Y0\nG17 G03 X0 Y10. I-10. F100.\n");
   expectMoves(flat, kXYZ, {{"rapid", {{"X", 10}}}, {"arc", {{"X", 0}, {"Y", 10}}, {}, false, 100}});
+}
+
+// ---- G93 ----------------------------------------------------------------------------------
+
+TEST(FoundationRules, MazakInverseTimeArcFIsSpeedPerRadius) {
+  // §7-10 E8: G93 G02 Y-200. R100. F5 cuts at 5 x 100 = 500 mm/min; on FANUC and Siemens F is
+  // 1 / the block's time in minutes, so the feed is F x the arc length (5 x 314.16).
+  const char* program = "G93 G02 X0 Y-200. R100. F5\n";
+  Lowered mazak = lower(Dialect::MazakM, program);
+  expectMoves(mazak, kXYZ, {{"arc", {{"X", 0}, {"Y", -200}}, {{"X", 0}, {"Y", -100}}, true, 500}});
+  Lowered siemens = lower(Dialect::SiemensIsoM, program);
+  expectMoves(siemens, kXYZ,
+              {{"arc", {{"X", 0}, {"Y", -200}}, {{"X", 0}, {"Y", -100}}, true, 5 * 100 * 3.14159265}});
+}
+
+TEST(FoundationRules, InverseTimeNeedsFInEveryCuttingBlock) {
+  EXPECT_EQ(lower(Dialect::MazakM, "G93 G01 X10. F2.\nX20.\n").diagText(),
+            "2:1: error[816]: no feed rate: in inverse time feed (G93) every cutting block needs "
+            "its own F\n");
 }
 
 // ---- G04 ----------------------------------------------------------------------------------
