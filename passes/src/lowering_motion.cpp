@@ -157,13 +157,14 @@ uint32_t arcExtraTurns(BlockContext& ctx, bool closed) {
   (kind == T::PitchesP ? ctx.used_p : ctx.used_l) = true;
   auto n = ctx.integer(*word);
   if (!n) return 0;
-  int64_t least = (kind == T::FullCircleRepeatsL || closed) ? 1 : 0;
+  bool pitches = kind == T::PitchesP;
+  int64_t least = (!pitches || closed) ? 1 : 0;
   if (*n < least || *n > kMaxArcTurns) {
     ctx.fail(Alarm::ValueOutOfRange, word->loc,
-             absl::StrCat(kind == T::PitchesP ? "the number of helical pitches P"
-                                              : "the number of full-circle repeats L",
+             absl::StrCat(pitches ? "the number of helical pitches P"
+                                  : "the number of full-circle repeats L",
                           " must be ", least, " to ", kMaxArcTurns,
-                          closed && kind == T::PitchesP ? " for an arc that ends at its start" : ""));
+                          pitches && closed ? " for an arc that ends at its start" : ""));
     return 0;
   }
   return static_cast<uint32_t>(closed || kind == T::FullCircleRepeatsL ? *n - 1 : *n);
@@ -256,6 +257,7 @@ bool arc(BlockContext& ctx, const AxisValues& start, const AxisValues& target,
   double sweep = std::atan2(s.b - c.b, s.a - c.a) - std::atan2(e.b - c.b, e.a - c.a);
   if (!cw) sweep = -sweep;
   while (sweep <= 0) sweep += 2 * std::numbers::pi;
+  if (closed) sweep = 2 * std::numbers::pi;  // not a rounding residue of the angles
   sweep += 2 * std::numbers::pi * extra_turns;
   double plane_len = r * sweep;
   double lin = 0.0;

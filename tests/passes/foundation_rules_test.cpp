@@ -39,7 +39,8 @@ TEST(FoundationRules, RapidIsLinearOnMazakAndSiemensPerAxisOnFanuc) {
 // ---- G01 ----------------------------------------------------------------------------------
 
 TEST(FoundationRules, FirstCuttingBlockWithoutFeedIsTheDialectsAlarm) {
-  EXPECT_TRUE(absl::StrContains(lower(Dialect::MazakM, "G01 X10.\n").diagText(), "1:1: error[816]"));
+  EXPECT_TRUE(
+      absl::StrContains(lower(Dialect::MazakM, "G01 X10.\n").diagText(), "1:1: error[816]"));
   EXPECT_TRUE(
       absl::StrContains(lower(Dialect::SiemensIsoM, "G01 X10.\n").diagText(), "1:1: error[10860]"));
 }
@@ -50,7 +51,8 @@ TEST(FoundationRules, CentreWordsAreIncrementalEvenInG90) {
   for (Dialect d : {Dialect::MazakM, Dialect::SiemensIsoM}) {
     Lowered r = lower(d, "G90 G00 X10. Y0\nG02 X-10. Y0 I-10. F100.\n");
     expectMoves(r, kXYZ,
-                {{"rapid", {{"X", 10}}}, {"arc", {{"X", -10}, {"Y", 0}}, {{"X", 0}, {"Y", 0}}, true, 100}});
+                {{"rapid", {{"X", 10}}},
+                 {"arc", {{"X", -10}, {"Y", 0}}, {{"X", 0}, {"Y", 0}}, true, 100}});
   }
 }
 
@@ -181,11 +183,13 @@ TEST(FoundationRules, HelicalFeedIsAlongTheHelixOnMazakAndSiemensAlongTheArcOnFa
   const char* program = "G00 X10. Y0\nG17 G03 X0 Y10. Z-5. I-10. F100.\n";
   for (Dialect d : {Dialect::MazakM, Dialect::SiemensIsoM}) {
     Lowered r = lower(d, program);
-    expectMoves(r, kXYZ, {{"rapid", {{"X", 10}}}, {"arc", {{"X", 0}, {"Y", 10}, {"Z", -5}}, {}, false, 100}});
+    expectMoves(r, kXYZ,
+                {{"rapid", {{"X", 10}}}, {"arc", {{"X", 0}, {"Y", 10}, {"Z", -5}}, {}, false, 100}});
   }
   Lowered fanuc = lower(Dialect::FanucM, program);
   expectMoves(fanuc, kXYZ,
-              {{"rapid", {{"X", 10}}}, {"arc", {{"X", 0}, {"Y", 10}, {"Z", -5}}, {}, false, 104.9439}});
+              {{"rapid", {{"X", 10}}},
+               {"arc", {{"X", 0}, {"Y", 10}, {"Z", -5}}, {}, false, 104.9439}});
   // An arc in its plane is the same in all three.
   Lowered flat = lower(Dialect::FanucM, "G00 X10. Y0\nG17 G03 X0 Y10. I-10. F100.\n");
   expectMoves(flat, kXYZ, {{"rapid", {{"X", 10}}}, {"arc", {{"X", 0}, {"Y", 10}}, {}, false, 100}});
@@ -201,7 +205,8 @@ TEST(FoundationRules, MazakInverseTimeArcFIsSpeedPerRadius) {
   expectMoves(mazak, kXYZ, {{"arc", {{"X", 0}, {"Y", -200}}, {{"X", 0}, {"Y", -100}}, true, 500}});
   Lowered siemens = lower(Dialect::SiemensIsoM, program);
   expectMoves(siemens, kXYZ,
-              {{"arc", {{"X", 0}, {"Y", -200}}, {{"X", 0}, {"Y", -100}}, true, 5 * 100 * 3.14159265}});
+              {{"arc", {{"X", 0}, {"Y", -200}}, {{"X", 0}, {"Y", -100}}, true,
+                5 * 100 * 3.14159265}});
 }
 
 TEST(FoundationRules, InverseTimeNeedsFInEveryCuttingBlock) {
@@ -230,7 +235,8 @@ TEST(FoundationRules, MazakDwellInG95CountsRevolutionsInThousandths) {
   expectMoves(r, kXYZ,
               {{"dwell", {}, {}, false, -1, 1.5}, {"dwell", {}, {}, false, -1, 2.5},
                {"dwell", {}, {}, false, -1, 2.0}});
-  for (size_t b = 1; b < 4; ++b) EXPECT_TRUE(std::get<ir::Dwell>(r.blocks.at(b).ops.at(0)).revolutions);
+  for (size_t b = 1; b < 4; ++b)
+    EXPECT_TRUE(std::get<ir::Dwell>(r.blocks.at(b).ops.at(0)).revolutions);
   Lowered seconds =
       lower(Dialect::MazakM, "G95\nG04 X1500\n", xyzMachine("dwell_always_seconds = true"));
   ASSERT_EQ(seconds.diagText(), "");
