@@ -229,6 +229,18 @@ TEST(FoundationRules, MazakDwellXBeforeG04InInchIsReadAsACoordinate) {
   expectMoves(fanuc, kXYZ, {{"dwell", {}, {}, false, -1, 5}});
 }
 
+TEST(FoundationRules, DwellTimeIgnoresInchInput) {
+  // Mazak §8-1 table (0.0001 inch row: X 0.001-99999.999 s, P x 0.001 s); Siemens §3.3.1
+  // ("independent of the input and output unit"); FANUC alike: G04 after G20 is still seconds.
+  for (Dialect d : {Dialect::MazakM, Dialect::SiemensIsoM, Dialect::FanucM}) {
+    Lowered r = lower(d, "G20\nG04 X1000\nG04 P2500\nG04 X1.5\n",
+                      xyzMachine("decimal_point = \"standard\""));
+    expectMoves(r, kXYZ,
+                {{"dwell", {}, {}, false, -1, 1.0}, {"dwell", {}, {}, false, -1, 2.5},
+                 {"dwell", {}, {}, false, -1, 1.5}});
+  }
+}
+
 TEST(FoundationRules, MazakDwellInG95CountsRevolutionsInThousandths) {
   // §8-2: G95 G04 X_ / P_ in revolutions, input unit 0.001 rev; F92 bit 2 forces seconds.
   Lowered r = lower(Dialect::MazakM, "G95\nG04 X1500\nG04 P2500\nG04 X2.\n");
