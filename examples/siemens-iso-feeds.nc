@@ -5,7 +5,8 @@ N20 G01 Z-5. F200.
 N30 S1000 M03
 N40 G95 G01 X20. F0.1          ; 0.1 mm per revolution
 N50 G04 X2.                    ; two spindle revolutions in G95
-N60 G94 G04 P500               ; 500 ms
+N55 G94                        ; a dwell block holds nothing but G04 (§3.3.1)
+N60 G04 P500                   ; 500 ms
 N70 G20 G01 X1. F10.           ; inch input: 25.4 mm at 254 mm/min
 N80 G21 G00 Z10.
 N90 M30

@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "absl/strings/str_cat.h"
+#include "absl/strings/str_format.h"
 #include "expr_text.h"
 
 namespace ncc::passes {
@@ -10,6 +11,25 @@ namespace ncc::passes {
 namespace {
 
 constexpr double kMaxGCode = 10000.0;  // no G code of any table reaches G10000
+
+// A G word as written: `G05.1` stays `G05.1` (its value alone prints `G5.1`). The literal keeps
+// its count of digits, so the leading zeros are the digits its shortest form lacks. (A
+// trailing zero, `G5.10`, is shown as a leading one: no control numbers a code that way.)
+std::string writtenG(const ast::Expr& e) {
+  if (e.kind != ast::Expr::Kind::Number) return absl::StrCat("G", exprText(e));
+  std::string s = absl::StrFormat("%.4f", e.number);
+  while (s.back() == '0') s.pop_back();
+  if (s.back() == '.') s.pop_back();
+  size_t shown = 0;
+  for (char c : s) shown += c != '.';
+  if (s.size() > 1 && s[0] == '0' && s[1] == '.' && e.digits < shown) {
+    s.erase(0, 1);  // written ".5"
+    --shown;
+  }
+  if (e.digits > shown) s.insert(0, e.digits - shown, '0');
+  if (e.has_point && s.find('.') == std::string::npos) s += '.';
+  return absl::StrCat("G", s);
+}
 
 std::string groupLabel(const GCodeEntry& e) {
   return e.group_number < 10 ? absl::StrCat("0", e.group_number) : absl::StrCat(e.group_number);
@@ -33,15 +53,16 @@ class Decoder {
     for (const ast::Statement& st : block_.statements)
       fail(Alarm::MacroNotSupported, st.loc,
            "macro expressions/statements are not supported yet (macro statement)");
-    for (const ast::Word& w : block_.words)
-      if (w.address == "G") gWord(w);
+    for (size_t n = 0; n < block_.words.size(); ++n)
+      if (block_.words[n].address == "G") gWord(block_.words[n], static_cast<int>(n));
     initialDistance();
-    for (const ast::Word& w : block_.words) {
+    for (size_t n = 0; n < block_.words.size(); ++n) {
+      const ast::Word& w = block_.words[n];
       if (w.address == "G") {
         trackDistance(w);
         continue;
       }
-      otherWord(w);
+      otherWord(w, static_cast<int>(n));
     }
     if (failed_) return std::nullopt;
     return std::move(out_);
@@ -61,7 +82,7 @@ class Decoder {
     return false;
   }
 
-  void gWord(const ast::Word& w) {
+  void gWord(const ast::Word& w, int order) {
     double v;
     bool point;
     if (!literal(w, v, point)) return;
@@ -72,16 +93,17 @@ class Decoder {
     }
     if (!e) {
       fail(Alarm::UnknownGCode, w.loc,
-           absl::StrCat("G", exprText(w.value), " is not a G code of ",
+           absl::StrCat(writtenG(w.value), " is not a G code of ",
                         std::string(dialectName(ctx_.table.dialect))));
       return;
     }
     if (e->action == GAction::NotSupported) {
       fail(Alarm::CodeNotSupported, w.loc,
-           absl::StrCat(gCodeName(e->code10), " (", std::string(e->description), ") is not supported yet"));
+           absl::StrCat(writtenG(w.value), " (", std::string(e->description),
+                        ") is not supported yet"));
       return;
     }
-    GWord g{e, w.loc};
+    GWord g{e, w.loc, order};
     if (e->action == GAction::ExactStopOneShot) {
       out_.exact_stop = g;
       return;
@@ -154,7 +176,7 @@ class Decoder {
     slot = std::move(wv);
   }
 
-  void otherWord(const ast::Word& w) {
+  void otherWord(const ast::Word& w, int order) {
     const std::string& a = w.address;
     if (const char* what = unsupportedAddress(a)) {
       fail(Alarm::AddressNotSupported, w.loc,
@@ -166,6 +188,7 @@ class Decoder {
     wv.loc = w.loc;
     wv.mode = distance_;
     wv.address = a;
+    wv.order = order;
     int axis = ctx_.machine.axisIndex(a);
     if (axis >= 0 && axis < kMaxAxes) {
       if (!out_.first_axis_loc) out_.first_axis_loc = w.loc;

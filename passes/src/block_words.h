@@ -24,11 +24,13 @@ struct WordValue {
   SourceLocation loc;
   ir::DistanceMode mode = ir::DistanceMode::Absolute;  // G90/G91 in force for this word
   std::string address;
+  int order = 0;  // position among the block's words (Mazak reads `X5. G04` differently)
 };
 
 struct GWord {
   const GCodeEntry* entry = nullptr;
   SourceLocation loc;
+  int order = 0;
 };
 
 struct DecodedBlock {

@@ -115,6 +115,37 @@ constexpr GCodeEntry kCodes[] = {
     // group 22
     {501, G::Mirror, 22, true, A::CancelNoEffect, 0, "programmable mirror image cancel"},
     {511, G::Mirror, 22, false, A::NotSupported, 0, "programmable mirror image"},
+    // Further codes of the FANUC 30i series (the 30i manual's G-code table, notes §3.1, and
+    // the 30i-M functions): real on the control, not built in ncc yet. Listed so that they
+    // say "not supported yet" instead of "not a G code" (PS0010 stays for codes no table has).
+    {22, G::Other, 1, false, A::NotSupported, 0, "involute interpolation CW"},
+    {32, G::Other, 1, false, A::NotSupported, 0, "involute interpolation CCW"},
+    {23, G::Other, 1, false, A::NotSupported, 0, "exponential interpolation CW"},
+    {33, G::Other, 1, false, A::NotSupported, 0, "exponential interpolation CCW"},
+    {24, G::Other, 1, false, A::NotSupported, 0, "3-D circular interpolation CW"},
+    {34, G::Other, 1, false, A::NotSupported, 0, "3-D circular interpolation CCW"},
+    {51, G::Other, 0, false, A::NotSupported, 0, "AI contour control / nano smoothing"},
+    {54, G::Other, 0, false, A::NotSupported, 0, "HRV3/HRV4 control on/off"},
+    {62, G::Other, 1, false, A::NotSupported, 0, "NURBS interpolation"},
+    {70, G::Other, 0, false, A::NotSupported, 0, "hypothetical axis interpolation"},
+    {106, G::Other, 0, false, A::NotSupported, 0, "tool retract and recover"},
+    {121, G::Other, 21, false, A::NotSupported, 0, "polar coordinate interpolation"},
+    {131, G::Other, 21, false, A::NotSupported, 0, "polar coordinate interpolation cancel"},
+    {250, G::Other, 8, false, A::NotSupported, 0, "spindle speed fluctuation detection off"},
+    {260, G::Other, 8, false, A::NotSupported, 0, "spindle speed fluctuation detection on"},
+    {301, G::Other, 0, false, A::NotSupported, 0, "floating reference point return"},
+    {318, G::Other, 0, false, A::NotSupported, 0, "EGB skip"},
+    {412, G::Other, 7, false, A::NotSupported, 0, "3-D cutter compensation left"},
+    {422, G::Other, 7, false, A::NotSupported, 0, "3-D cutter compensation right"},
+    {435, G::Other, 8, false, A::NotSupported, 0, "tool center point control type 2"},
+    {531, G::Other, 0, false, A::NotSupported, 0, "tool axis direction control"},
+    {542, G::Other, 14, false, A::NotSupported, 0, "rotary table dynamic fixture offset"},
+    {681, G::Other, 16, false, A::NotSupported, 0, "3-D coordinate conversion"},
+    {682, G::Other, 16, false, A::NotSupported, 0, "tilted working plane command"},
+    {691, G::Other, 16, false, A::NotSupported, 0, "3-D coordinate conversion cancel"},
+    {721, G::Other, 0, false, A::NotSupported, 0, "figure copy (rotation)"},
+    {722, G::Other, 0, false, A::NotSupported, 0, "figure copy (parallel)"},
+    {911, G::Other, 0, false, A::NotSupported, 0, "maximum incremental command check"},
 };
 
 // Indexed by Alarm. FANUC numbers: PS0007/PS0010 from the 30i manual's alarm list; PS0009,
@@ -177,6 +208,10 @@ constexpr DialectBehaviour kBehaviour{
     .length_change_moves_default = true,
     .format_digits = 8,                     // FANUC: 8-digit address format (PS0003)
     .length_comp_in_arc_is_error = false,  // kept: a straight line at the modal F
+    .arc_turns = DialectBehaviour::ArcTurns::None,  // no turn count with G02/G03
+    .helical_feed_along_arc = true,         // HTG (No.1403#5) = 0: F along the arc (notes §4.3)
+    .dwell_x_before_g04_is_coordinate = false,
+    .dwell_block_alone = false,
 };
 }  // namespace
 

@@ -128,6 +128,15 @@ constexpr GCodeEntry kCodes[] = {
     // group 19
     {501, G::Mirror, 19, true, A::CancelNoEffect, 0, "programmable mirror image cancel"},
     {511, G::Mirror, 19, false, A::NotSupported, 0, "programmable mirror image"},
+    // Five-face machining (ch. 21): real codes of the control, not built in ncc yet.
+    {171, G::Other, 0, false, A::NotSupported, 0, "five-face machining: top face mode"},
+    {172, G::Other, 0, false, A::NotSupported, 0, "five-face machining: 0 deg face mode"},
+    {173, G::Other, 0, false, A::NotSupported, 0, "five-face machining: 90 deg face mode"},
+    {174, G::Other, 0, false, A::NotSupported, 0, "five-face machining: 180 deg face mode"},
+    {175, G::Other, 0, false, A::NotSupported, 0, "five-face machining: 270 deg face mode"},
+    {179, G::Other, 0, false, A::NotSupported, 0, "five-face machining: face mode cancel"},
+    {451, G::Other, 0, false, A::NotSupported, 0, "head offset"},
+    {491, G::Other, 0, false, A::NotSupported, 0, "head offset cancel"},
 };
 
 // Indexed by Alarm; numbers from the manual's alarm list (notes §6).
@@ -189,6 +198,10 @@ constexpr DialectBehaviour kBehaviour{
     .length_change_moves_default = true,    // §12-2: move = ±z + (lh1 - lh0)
     .format_digits = 8,                     // §5: "5+3 digits with a point, or 8 digits without" (809)
     .length_comp_in_arc_is_error = false,  // the notes do not forbid it
+    .arc_turns = DialectBehaviour::ArcTurns::PitchesP,  // §6-7: helical P = number of pitches
+    .helical_feed_along_arc = false,        // §6-7: F is the tangential speed of the tool
+    .dwell_x_before_g04_is_coordinate = true,  // §8-1: inch `X5. G04` = X50000 = 50 s
+    .dwell_block_alone = false,             // §8-1: M, S, T, B in a G04 block run with it
 };
 }  // namespace
 

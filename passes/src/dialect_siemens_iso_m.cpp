@@ -125,7 +125,7 @@ constexpr std::string_view kAlarms[] = {
     "NCC2015",  // AddressRepeated
     "NCC2020",  // SameGroupInBlock (not raised by default: the last one wins)
     "NCC2021",  // OneShotConflict
-    "NCC2030",  // DecimalPointNotAllowed (not raised: fractions are dropped)
+    "NCC2030",  // DecimalPointNotAllowed: G04 P (integer addresses drop the fraction)
     "NCC2031",  // ValueOutOfRange
     "NCC2032",  // TooManyMCodes (more than 5)
     "10860",    // FeedMissing
@@ -158,7 +158,7 @@ constexpr DialectBehaviour kBehaviour{
     .max_t_words = 1,
     .duplicate_h_d_last_wins = false,
     .integer_point_is_error = false,
-    .dwell_p_point_is_error = false,
+    .dwell_p_point_is_error = true,         // §3.3.1 table 3.8: "P takes no decimal point"
     .dwell_revolutions_default = false,     // MD20734 bit 2 = 0
     .reference_return_cancels_length = false,  // §2.2: TLC stays unless cancelled first
     .local_shift_per_work_offset = false,
@@ -173,6 +173,10 @@ constexpr DialectBehaviour kBehaviour{
     .length_change_moves_default = false,   // MD20382 TOOL_CORR_MOVE_MODE = FALSE
     .format_digits = 8,                     // ISO mode takes the FANUC 8-digit format
     .length_comp_in_arc_is_error = true,  // §3.5.2: "only in G00/G01 mode; in G02/G03 an error"
+    .arc_turns = DialectBehaviour::ArcTurns::FullCircleRepeatsL,  // §2.1.3: `G02 I J Ln`
+    .helical_feed_along_arc = false,        // §2.1.4: F is the tangential speed in 3-D space
+    .dwell_x_before_g04_is_coordinate = false,
+    .dwell_block_alone = true,              // §3.3.1: nothing but G04 in the dwell block
 };
 }  // namespace
 

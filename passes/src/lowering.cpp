@@ -165,6 +165,7 @@ LowerResult lowerBlock(LoweringCore& core, const ast::Block& block) {
   ctx.words = std::move(*decoded);
 
   applyModalCodes(ctx, result);
+  core.decimal_points.block(ctx.words, ctx.settings.values, ctx.next.modal.units, *core.machine);
   Dependence depends = dependsOnUnknown(ctx);
   ctx.silent = depends.words;
   ctx.checkFormats();
@@ -226,6 +227,9 @@ void Lowering::blockUnreadable() {
   if (state_->table) forgetEverything(state_->cs);
 }
 
-void Lowering::finish() { state_->out.finish(); }
+void Lowering::finish() {
+  if (state_->table) state_->decimal_points.finish(state_->diags, state_->settings.values);
+  state_->out.finish();
+}
 
 }  // namespace ncc::passes

@@ -23,6 +23,7 @@
 
 #include "block_words.h"
 #include "controller_state.h"
+#include "decimal_point_audit.h"
 #include "lowering_settings.h"
 #include "ncc/passes/lowering.h"
 
@@ -50,6 +51,7 @@ struct LoweringCore {
   LoweringSettings settings;
   ControllerState cs;
   OffsetTables tables;
+  DecimalPointAudit decimal_points;  // coordinate words without a point, over the file
   bool reported_dialect = false;
 
   LoweringCore(LoweringOptions o, DiagnosticEngine& d, ir::BlockSink& s);

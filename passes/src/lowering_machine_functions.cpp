@@ -3,13 +3,50 @@
 // motion (spindle, tool and coolant start before it; stops, ends and other M codes after it).
 // None of them moves an axis or changes the frame.
 #include <cmath>
+#include <optional>
+#include <string>
+#include <utility>
 
 #include "absl/strings/str_cat.h"
 #include "lowering_context.h"
 
 namespace ncc::passes {
 
+namespace {
+
+// Siemens §3.3.1: the dwell block holds G04 and its X or P only. The first other command of
+// the block, in written order (nullopt when there is none).
+std::optional<std::pair<SourceLocation, std::string>> otherThanDwell(const BlockContext& ctx) {
+  const DecodedBlock& w = ctx.words;
+  std::optional<std::pair<SourceLocation, std::string>> first;
+  int first_order = 0;
+  auto consider = [&](SourceLocation loc, int order, std::string what) {
+    if (!first || order < first_order) {
+      first = {loc, std::move(what)};
+      first_order = order;
+    }
+  };
+  for (const auto& g : w.modal)
+    if (g) consider(g->loc, g->order, gCodeName(g->entry->code10));
+  if (w.exact_stop) consider(w.exact_stop->loc, w.exact_stop->order, "G09");
+  for (const auto* v : {&w.f, &w.s, &w.h, &w.d})
+    if (*v) consider((*v)->loc, (*v)->order, (*v)->address);
+  for (const auto* list : {&w.t, &w.m})
+    for (const WordValue& v : *list) consider(v.loc, v.order, v.address);
+  return first;
+}
+
+}  // namespace
+
 void dwell(BlockContext& ctx, const GWord& g) {
+  if (ctx.behaviour.dwell_block_alone) {
+    if (auto other = otherThanDwell(ctx)) {
+      ctx.fail(Alarm::AddressWithoutMeaning, other->first,
+               absl::StrCat(other->second, " cannot be given in a dwell (G04) block: the block "
+                                           "holds nothing but G04 X or G04 P"));
+      return;
+    }
+  }
   int x = ctx.axisNamed("X");
   std::optional<WordValue> xw = x >= 0 ? ctx.words.axes[x] : std::nullopt;
   for (int i = 0; i < ctx.axisCount(); ++i) {
@@ -34,6 +71,14 @@ void dwell(BlockContext& ctx, const GWord& g) {
       return;
     }
     value = std::trunc(ctx.words.p->value) / 1000.0;  // ms, fraction ignored
+  } else if (xw && ctx.behaviour.dwell_x_before_g04_is_coordinate && xw->order < g.order) {
+    // Mazak §8-1: X before G04 is read as a coordinate, in least input increments of the
+    // length unit, and those count 0.001 s: in inch `X5. G04` = X50000 = 50 s.
+    const ValueRules& v = ctx.settings.values;
+    double count = (v.standard && !xw->point)
+                       ? xw->value
+                       : xw->value / v.lengthIncrement(ctx.next.modal.units);
+    value = std::round(count) * v.time_increment;
   } else if (xw) {
     value = ctx.settings.values.dwellX(xw->value, xw->point);
   } else {

@@ -142,6 +142,34 @@ PlaneAxes planeAxes(const BlockContext& ctx) {
   return {ctx.axisNamed("X"), ctx.axisNamed("Y"), &w.i, &w.j, &w.k, "XY", "G17"};
 }
 
+// Full turns beyond the arc's own sweep, from the dialect's turn count (0 when the block has
+// none or after an error). Mazak §6-7: P = p in l = Z / ((2 pi p + theta) / 2 pi), theta in
+// [0, 2 pi): an open arc runs theta + p turns (P omitted: p = 0), a closed one p turns (P
+// omitted: one, "P may be omitted when the number of pitches is 1"). Siemens §2.1.3: L = the
+// number of times a full circle `G02 I J Ln` is run (L omitted: once). R arcs take neither.
+constexpr int64_t kMaxArcTurns = 9999;  // the pitch number's range on the Mitsubishi-based Mazak
+
+uint32_t arcExtraTurns(BlockContext& ctx, bool closed) {
+  using T = DialectBehaviour::ArcTurns;
+  T kind = ctx.behaviour.arc_turns;
+  const std::optional<WordValue>& word = kind == T::PitchesP ? ctx.words.p : ctx.words.l;
+  if (kind == T::None || !word || (kind == T::FullCircleRepeatsL && !closed)) return 0;
+  (kind == T::PitchesP ? ctx.used_p : ctx.used_l) = true;
+  auto n = ctx.integer(*word);
+  if (!n) return 0;
+  bool pitches = kind == T::PitchesP;
+  int64_t least = (!pitches || closed) ? 1 : 0;
+  if (*n < least || *n > kMaxArcTurns) {
+    ctx.fail(Alarm::ValueOutOfRange, word->loc,
+             absl::StrCat(pitches ? "the number of helical pitches P"
+                                  : "the number of full-circle repeats L",
+                          " must be ", least, " to ", kMaxArcTurns,
+                          pitches && closed ? " for an arc that ends at its start" : ""));
+    return 0;
+  }
+  return static_cast<uint32_t>(closed || kind == T::FullCircleRepeatsL ? *n - 1 : *n);
+}
+
 bool arc(BlockContext& ctx, const AxisValues& start, const AxisValues& target,
          const ir::Frame& frame) {
   bool cw = ctx.next.motion == GAction::ArcCW;
@@ -158,7 +186,8 @@ bool arc(BlockContext& ctx, const AxisValues& start, const AxisValues& target,
   bool has_centre = pl.wa->has_value() || pl.wb->has_value();
   ctx.used_ijk = true;  // centre words are read (or, next to R, ignored by rule) here
   PlanePoint c;
-  if (ctx.words.r && end_given && !closed) {
+  bool by_radius = ctx.words.r && end_given && !closed;
+  if (by_radius) {
     // R beats I/J/K when an end point is given (Mazak §6-6, FANUC).
     ctx.used_r = true;
     double r = ctx.lengthValue(*ctx.words.r);
@@ -209,8 +238,12 @@ bool arc(BlockContext& ctx, const AxisValues& start, const AxisValues& target,
              absl::StrCat(cw ? "G02" : "G03", " needs the centre (I/J/K) or the radius (R)"));
     return false;
   }
+  // R arcs were handled above; a turn count belongs to I/J/K arcs only.
+  uint32_t extra_turns = by_radius ? 0 : arcExtraTurns(ctx, closed);
+  if (ctx.failed) return false;
   if (!checkFeed(ctx, true)) return false;
   ir::Arc a;
+  a.extra_turns = extra_turns;
   a.to = target;
   a.center = target;
   a.center[pl.a] = c.a;
@@ -219,18 +252,24 @@ bool arc(BlockContext& ctx, const AxisValues& start, const AxisValues& target,
   a.plane = ctx.next.modal.plane;
   a.clockwise = cw;
   a.feed_per_rev = ctx.next.modal.feed_mode == ir::FeedMode::PerRevolution;
+  // The arc's length in its plane and along the helix (the IR feed is the speed along it).
+  double r = distance(s, c);
+  double sweep = std::atan2(s.b - c.b, s.a - c.a) - std::atan2(e.b - c.b, e.a - c.a);
+  if (!cw) sweep = -sweep;
+  while (sweep <= 0) sweep += 2 * std::numbers::pi;
+  if (closed) sweep = 2 * std::numbers::pi;  // not a rounding residue of the angles
+  sweep += 2 * std::numbers::pi * extra_turns;
+  double plane_len = r * sweep;
+  double lin = 0.0;
+  for (int i = 0; i < ctx.axisCount(); ++i)
+    if (i != pl.a && i != pl.b) lin += (target[i] - start[i]) * (target[i] - start[i]);
+  double helix_len = std::sqrt(plane_len * plane_len + lin);
   if (ctx.next.modal.feed_mode == ir::FeedMode::InverseTime) {
-    double r = distance(s, c);
-    double sweep = std::atan2(s.b - c.b, s.a - c.a) - std::atan2(e.b - c.b, e.a - c.a);
-    if (!cw) sweep = -sweep;
-    while (sweep <= 0) sweep += 2 * std::numbers::pi;
-    double plane_len = r * sweep;
-    double lin = 0.0;
-    for (int i = 0; i < ctx.axisCount(); ++i)
-      if (i != pl.a && i != pl.b) lin += (target[i] - start[i]) * (target[i] - start[i]);
-    a.feed = ctx.behaviour.inverse_time_arc_per_radius
-                 ? ctx.next.modal.feed * r
-                 : ctx.next.modal.feed * std::sqrt(plane_len * plane_len + lin);
+    a.feed = ctx.behaviour.inverse_time_arc_per_radius ? ctx.next.modal.feed * r
+                                                       : ctx.next.modal.feed * helix_len;
+  } else if (ctx.behaviour.helical_feed_along_arc && lin > 0 && plane_len > 0) {
+    // FANUC: F is the speed along the arc; the helix is faster by its length / the arc's.
+    a.feed = ctx.next.modal.feed * helix_len / plane_len;
   } else {
     a.feed = ctx.next.modal.feed;
   }

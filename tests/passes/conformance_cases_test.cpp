@@ -27,7 +27,13 @@ const char* kRef1 = "reference_point_1 = { X = 0.0, Y = 0.0, Z = 0.0 }\n";
 
 TEST(MazakConformance, DecimalPointStandardType1) {
   Lowered r = lower(Dialect::MazakM, "G90 G0X123.45\nG0Y12345\nM30\n", mazak("", kOrigin));
-  expectMoves(r, kXYZ, {{"rapid", {{"X", 123.45}, {"Y", 0}}}, {"rapid", {{"X", 123.45}, {"Y", 12.345}}}});
+  // The program mixes both notations on purpose: the mixed-notation warning says so.
+  expectMoves(r, kXYZ, {{"rapid", {{"X", 123.45}, {"Y", 0}}}, {"rapid", {{"X", 123.45}, {"Y", 12.345}}}},
+              0.001,
+              "2:3: warning[NCC2034]: 1 coordinate word without a decimal point is read as least input "
+              "increments (the first: Y12345 = 12.345 mm) in a program that also writes decimal "
+              "points; write the point (`Z3.`) for whole units, or set decimal_point = "
+              "\"calculator\"\n");
 }
 
 TEST(MazakConformance, G01IncrementalPathLeastIncrement) {

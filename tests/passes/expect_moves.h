@@ -20,9 +20,11 @@ struct Expected {
   double seconds = -1.0;  // dwell
 };
 
+// `diags`: the diagnostics the run must report (warnings, e.g. NCC2034), none by default.
 inline void expectMoves(const Lowered& run, const std::vector<std::string>& axes,
-                        const std::vector<Expected>& expected, double tol = 0.001) {
-  ASSERT_EQ(run.diagText(), "");
+                        const std::vector<Expected>& expected, double tol = 0.001,
+                        const std::string& diags = "") {
+  ASSERT_EQ(run.diagText(), diags);
   ASSERT_EQ(run.moves.size(), expected.size()) << "moves differ in number";
   auto index = [&](const std::string& name) {
     for (size_t i = 0; i < axes.size(); ++i)

@@ -21,7 +21,11 @@ TEST(Modal, PerWordDistanceModeKeepsTheLastCode) {
 
 TEST(Modal, DecimalPointAndIntegerAddresses) {
   Lowered r = lower(Dialect::MazakM, "G01 X10 Y10. F100 S1200.5 T3\nM30\n");
-  expectMoves(r, kXYZ, {{"line", {{"X", 0.01}, {"Y", 10}}, {}, false, 100}});
+  expectMoves(r, kXYZ, {{"line", {{"X", 0.01}, {"Y", 10}}, {}, false, 100}}, 0.001,
+              "1:5: warning[NCC2034]: 1 coordinate word without a decimal point is read as least "
+              "input increments (the first: X10 = 0.01 mm) in a program that also writes decimal "
+              "points; write the point (`Z3.`) for whole units, or set decimal_point = "
+              "\"calculator\"\n");
   EXPECT_EQ(r.blocks[0].modal.spindle_speed, 1200.0);  // Mazak drops the fraction of S
   EXPECT_EQ(r.blocks[0].modal.tool, 3);
 }

@@ -36,7 +36,9 @@ TEST(Motion, IncrementalArcWithIJ) {
 
 TEST(Motion, HelicalFullCircleWithThirdAxis) {
   Lowered r = lower(Dialect::FanucM, "G17 G02 I5. Z-2. F50.\n");
-  expectMoves(r, kXYZ, {{"arc", {{"X", 0}, {"Y", 0}, {"Z", -2}}, {{"X", 5}, {"Y", 0}}, true, 50}});
+  // FANUC: F50 is the speed along the arc (31.416 mm); along the helix (31.480 mm) it is
+  // 50 x 31.480 / 31.416 = 50.101 (HTG = 0; Mazak and Siemens keep 50, see FoundationRules).
+  expectMoves(r, kXYZ, {{"arc", {{"X", 0}, {"Y", 0}, {"Z", -2}}, {{"X", 5}, {"Y", 0}}, true, 50.1012}});
 }
 
 TEST(Motion, G18ArcDirectionSeenFromPlusY) {

@@ -120,6 +120,18 @@ struct DialectBehaviour {
   // (axes, I J K R, F, G04 X, G10 R) at most this many least input increments.
   int format_digits;
   bool length_comp_in_arc_is_error;        // G43/G44/G49 only in G00/G01 mode (Siemens)
+  // A count of turns given with G02/G03: none (the address has no meaning), Mazak's helical
+  // P (§6-7: the number of pitches p in l = Z / ((2pi p + theta) / 2pi), theta in [0, 2pi)) or
+  // Siemens' full-circle L (§2.1.3: `G02 I J Ln` runs the full circle n times).
+  enum class ArcTurns : uint8_t { None, PitchesP, FullCircleRepeatsL } arc_turns;
+  // F of a helical arc is the speed along the arc in its plane (FANUC: the linear axis runs at
+  // F x its length / the arc length) rather than along the helix (Mazak §6-7, Siemens §2.1.4).
+  bool helical_feed_along_arc;
+  // Mazak §8-1: with inch input an X written before G04 is read as a coordinate, in least
+  // input increments, and then counted in 0.001 s: `X5. G04` = X50000 = 50 s.
+  bool dwell_x_before_g04_is_coordinate;
+  // Siemens §3.3.1: "the dwell block contains no command other than G04" (X or P).
+  bool dwell_block_alone;
 };
 
 struct DialectTable {
