@@ -12,6 +12,7 @@ SimulationResult simulate(const bytecode::Program& program, const MachineConfig&
   SimulationResult result;
   vm::ControllerOptions options;
   options.step_limit = settings.max_steps;
+  options.max_seconds = settings.max_seconds;
   options.feed_override = settings.feed_override;
   options.rapid_override = settings.rapid_override;
   options.max_feed_override = settings.feed_override;

@@ -70,6 +70,10 @@ struct ControllerOptions {
   // Executor instruction budget for the whole run (0: unlimited), alarm NCC7204 when hit.
   // Guards against a macro loop without motion, which would otherwise keep one tick busy.
   uint64_t step_limit = 0;
+  // Simulated-time limit of the run, s (0: unlimited), alarm NCC7208 naming the block
+  // (run_limits.h): at the tick that reaches it, or as soon as the moves before a block have
+  // run when that block cannot end before it even at the machine's top speed.
+  double max_seconds = 0.0;
   // Operator overrides at the start of the run (MotionPlanner::setOverrides): feed 0..2
   // (200 %), rapid 0..1. `max_feed_override` (0: `feed_override`) is the highest the feed
   // override may be turned to during the run (setFeedOverride); moves are planned for it.
@@ -169,6 +173,11 @@ class Controller {
   void raiseExecutorAlarm();
   void raiseSpindleAlarm();
   void raisePositioningAlarm(int axis, double error, SourcePosition where);
+  // NCC7208: the simulated-time limit; `needed` > 0 when a block's lower bound passed it.
+  void raiseTimeLimitAlarm(SourcePosition where, double needed);
+  // Adds the event's least duration to the run's; false (and the alarm pending) when that
+  // passes max_seconds.
+  bool withinTimeLimit(const Event& event);
   // After an exact stop or a rapid (SetpointInfo::in_position_check): true once every axis'
   // position error (encoder against the compensated setpoint) is within STOP_LIMIT_FINE;
   // raises 25080 after POSITIONING_TIME.
@@ -188,6 +197,11 @@ class Controller {
   ServoModel servo_;
   StatisticsAccumulator stats_;
   uint64_t lookahead_limited_ticks_ = 0;  // ticks with SetpointInfo::lookahead_limited
+  // The time limit in ticks (0: none), and the least time of what the executor produced so
+  // far; a block that would pass the limit waits in late_block_ until the queue has run.
+  uint64_t max_ticks_ = 0;
+  double least_seconds_ = 0.0;
+  std::optional<SourcePosition> late_block_;
 
   Event event_;                   // the executor's output slot (reused)
   bool event_pending_ = false;    // event_ was pulled but the planner had no room
