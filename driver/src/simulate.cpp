@@ -19,7 +19,8 @@ SimulationResult simulate(const bytecode::Program& program, const MachineConfig&
   for (const FeedOverrideTurn& turn : settings.feed_override_turns)
     options.max_feed_override = std::max(options.max_feed_override, turn.feed);
   bytecode::Error error;
-  std::unique_ptr<vm::Controller> controller = vm::Controller::create(program, machine, error, options);
+  std::unique_ptr<vm::Controller> controller =
+      vm::Controller::createBorrowing(program, machine, error, options);  // no copy of the code
   if (!controller) {
     result.error = absl::StrCat(error.code, ": ", error.message);
     return result;

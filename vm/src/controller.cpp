@@ -84,10 +84,35 @@ std::unique_ptr<Controller> Controller::create(bytecode::Program program,
   return std::make_unique<Controller>(std::move(program), machine, options);
 }
 
+std::unique_ptr<Controller> Controller::createBorrowing(const bytecode::Program& program,
+                                                        const MachineConfig& machine,
+                                                        bytecode::Error& error,
+                                                        const ControllerOptions& options) {
+  bytecode::VerifyOptions verify_options;
+  verify_options.machine = &machine;
+  if (std::optional<bytecode::Error> e = bytecode::verify(program, verify_options)) {
+    error = std::move(*e);
+    return nullptr;
+  }
+  if (std::optional<bytecode::Error> e = checkMachine(machine)) {
+    error = std::move(*e);
+    return nullptr;
+  }
+  // The constructor is private: make_unique cannot reach it.
+  return std::unique_ptr<Controller>(new Controller(nullptr, &program, machine, options));
+}
+
 Controller::Controller(bytecode::Program program, const MachineConfig& machine,
                        const ControllerOptions& options)
+    : Controller(std::make_unique<const bytecode::Program>(std::move(program)), nullptr, machine,
+                 options) {}
+
+Controller::Controller(std::unique_ptr<const bytecode::Program> owned,
+                       const bytecode::Program* borrowed, const MachineConfig& machine,
+                       const ControllerOptions& options)
     : machine_(machine),
-      program_(std::move(program)),
+      owned_program_(std::move(owned)),
+      program_(owned_program_ ? *owned_program_ : *borrowed),
       options_(options),
       executor_(program_, machine_),
       planner_(machine_, options.window_capacity != 0

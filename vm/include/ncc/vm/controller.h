@@ -105,6 +105,14 @@ class Controller {
                                             const MachineConfig& machine, bytecode::Error& error,
                                             const ControllerOptions& options = {});
 
+  // Like create(), but borrows `program` instead of taking it: `program` must outlive the
+  // controller. For a caller that keeps the program anyway (the CLI prints from it): a long
+  // program is not held twice (2 M blocks are about 100 MB of code and line table).
+  static std::unique_ptr<Controller> createBorrowing(const bytecode::Program& program,
+                                                     const MachineConfig& machine,
+                                                     bytecode::Error& error,
+                                                     const ControllerOptions& options = {});
+
   // `program` must have passed bytecode::verify() for `machine`. (If it has not, the executor
   // still stops with an alarm instead of crashing.) Keeps its own copies of both.
   Controller(bytecode::Program program, const MachineConfig& machine,
@@ -168,6 +176,9 @@ class Controller {
   int axisCount() const { return machine_.axisCount(); }
 
  private:
+  // Runs the program `owned` holds, or else the `borrowed` one.
+  Controller(std::unique_ptr<const bytecode::Program> owned, const bytecode::Program* borrowed,
+             const MachineConfig& machine, const ControllerOptions& options);
   void pullEvents();
   void raiseServoAlarm(const ServoAlarm& servo_alarm, SourcePosition where);
   void raiseExecutorAlarm();
@@ -186,7 +197,8 @@ class Controller {
 
   // Declaration order matters: the executor refers to program_.
   const MachineConfig machine_;
-  const bytecode::Program program_;
+  const std::unique_ptr<const bytecode::Program> owned_program_;  // null when borrowed
+  const bytecode::Program& program_;
   const ControllerOptions options_;
   Executor executor_;
   motion::MotionPlanner planner_;
