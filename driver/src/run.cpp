@@ -27,7 +27,7 @@ bool loadProgram(Session& session, bytecode::Program& program, bool check_machin
   } else {
     std::stringstream buffer;
     if (!emitBytecode(session, buffer)) return false;
-    std::string bytes = buffer.str();
+    std::string bytes = std::move(buffer).str();  // C++20: moved out, not copied
     error = bytecode::load(
         std::span<const uint8_t>(reinterpret_cast<const uint8_t*>(bytes.data()), bytes.size()), program);
   }

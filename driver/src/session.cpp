@@ -19,18 +19,24 @@ std::optional<SetupError> Session::open(const std::filesystem::path& input,
   if (!std::filesystem::is_regular_file(input, ec))
     return SetupError{absl::StrCat("cannot read '", input.string(), "': not a regular file")};
   input_ = input;
-  dialect_ = options.dialect.value_or(dialectFromFileName(input.filename().string()));
-  if (!dialectSupported(dialect_)) {
-    return SetupError{absl::StrCat("dialect '", std::string(dialectName(dialect_)),
-                                   "' is not supported yet (supported: fanuc-m, mazak-m, "
-                                   "siemens-iso-m)")};
-  }
+  // --dialect, else the machine file's [machine] dialect, else from the file name.
+  const Dialect by_name = dialectFromFileName(input.filename().string());
   if (options.machine_file) {
-    std::optional<MachineConfig> loaded = loadMachineFile(*options.machine_file, sources_, diags_);
+    MachineFileOptions file_options;
+    file_options.dialect = options.dialect;
+    file_options.default_dialect = by_name;
+    std::optional<MachineConfig> loaded =
+        loadMachineFile(*options.machine_file, sources_, diags_, file_options);
     if (!loaded) return SetupError{absl::StrCat("invalid machine file '", options.machine_file->string(), "'")};
     machine_ = std::move(*loaded);
   } else {
     machine_ = defaultMachine();
+  }
+  dialect_ = options.dialect.value_or(machine_.dialect.value_or(by_name));
+  if (!dialectSupported(dialect_)) {
+    return SetupError{absl::StrCat("dialect '", std::string(dialectName(dialect_)),
+                                   "' is not supported yet (supported: fanuc-m, mazak-m, "
+                                   "siemens-iso-m)")};
   }
   program_dir_ = options.program_dir.value_or(input.has_parent_path() ? input.parent_path()
                                                                       : std::filesystem::path("."));

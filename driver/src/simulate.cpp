@@ -12,13 +12,15 @@ SimulationResult simulate(const bytecode::Program& program, const MachineConfig&
   SimulationResult result;
   vm::ControllerOptions options;
   options.step_limit = settings.max_steps;
+  options.max_seconds = settings.max_seconds;
   options.feed_override = settings.feed_override;
   options.rapid_override = settings.rapid_override;
   options.max_feed_override = settings.feed_override;
   for (const FeedOverrideTurn& turn : settings.feed_override_turns)
     options.max_feed_override = std::max(options.max_feed_override, turn.feed);
   bytecode::Error error;
-  std::unique_ptr<vm::Controller> controller = vm::Controller::create(program, machine, error, options);
+  std::unique_ptr<vm::Controller> controller =
+      vm::Controller::createBorrowing(program, machine, error, options);  // no copy of the code
   if (!controller) {
     result.error = absl::StrCat(error.code, ": ", error.message);
     return result;

@@ -5,11 +5,14 @@
 
 #include <algorithm>
 #include <charconv>
+#include <cmath>
 #include <fstream>
 #include <set>
 #include <sstream>
 
 #include "absl/strings/ascii.h"
+#include "ncc/machine/bounds.h"
+#include "ncc/machine/travel.h"
 #include "param_reader.h"
 #include "servo_keys.h"
 #include "text.h"
@@ -115,7 +118,9 @@ class MachineFileReader {
     if (start && axes_ok) {
       if (const toml::table* t = ctx_.table(*start, "start")) readStart(*t);
     }
+    if (axes_ok) checkStartWithinTravel();
     if (ctx_.errorCount() != errors_before) return std::nullopt;
+    warnParamsWithoutEffect();
     return std::move(m_);
   }
 
@@ -125,7 +130,7 @@ class MachineFileReader {
     static constexpr std::string_view kKeys[] = {"axes",   "diameter_axes", "offsets",  "work",
                                                  "params", "axis",          "ipo_cycle",
                                                  "chord_tolerance", "corner_tolerance",
-                                                 "lookahead_segments"};
+                                                 "lookahead_segments", "dialect"};
     for (const auto& [key, node] : t)
       if (std::find(std::begin(kKeys), std::end(kKeys), key.str()) == std::end(kKeys))
         ctx_.unknownKey(key, "[machine]");
@@ -146,9 +151,13 @@ class MachineFileReader {
       if (const toml::table* w = ctx_.table(*n, "machine.work")) readWork(*w);
     if (const toml::node* n = t.get("axis"))
       if (const toml::table* a = ctx_.table(*n, "machine.axis")) readAxisLimits(*a);
-    readBounded(t, "ipo_cycle", Low::Excluded, 0.0, 0.1, "s", m_.ipo_cycle_seconds);
-    readBounded(t, "chord_tolerance", Low::Excluded, 0.0, 1.0, "mm", m_.chord_tolerance);
-    readBounded(t, "corner_tolerance", Low::Included, 0.0, 10.0, "mm", m_.corner_tolerance);
+    if (const toml::node* n = t.get("dialect")) readDialect(*n);
+    readBounded(t, "ipo_cycle", bounds::kMinIpoCycle, bounds::kMaxIpoCycle, "s",
+                m_.ipo_cycle_seconds);
+    readBounded(t, "chord_tolerance", bounds::kMinChordTolerance, bounds::kMaxChordTolerance,
+                "mm", m_.chord_tolerance);
+    readBounded(t, "corner_tolerance", bounds::kMinCornerTolerance, bounds::kMaxCornerTolerance,
+                "mm", m_.corner_tolerance, /*zero_allowed=*/true);  // 0: corners stop
     readCount(t, "lookahead_segments", MachineConfig::kMinLookaheadSegments,
               MachineConfig::kMaxLookaheadSegments, m_.lookahead_segments);
     return true;
@@ -169,23 +178,35 @@ class MachineFileReader {
                cat("'", key, "' must be at least ", low, " and at most ", high, ", not ", *v));
   }
 
-  enum class Low { Included, Excluded };
-  // [machine] `key`, if given: a number from `low` (included or not) to `high` into `field`,
-  // else an error naming the range.
-  void readBounded(const toml::table& t, std::string_view key, Low low_bound, double low,
-                   double high, std::string_view unit, double& field) {
+  // [machine] `key`, if given: a number from `low` to `high` (bounds.h), or 0 when
+  // `zero_allowed`, into `field`; else an error naming the range.
+  void readBounded(const toml::table& t, std::string_view key, double low, double high,
+                   std::string_view unit, double& field, bool zero_allowed = false) {
     const toml::node* n = t.get(key);
     if (!n) return;
     const std::optional<double> v = ctx_.number(*n, key);
     if (!v) return;
-    const bool above_low = low_bound == Low::Included ? *v >= low : *v > low;
-    if (above_low && *v <= high) {
+    if ((*v >= low && *v <= high) || (zero_allowed && *v == 0.0)) {
       field = *v;
       return;
     }
     ctx_.error(kBadValue, ctx_.at(*n),
-               cat("'", key, "' must be ", low_bound == Low::Included ? "at least " : "above ", low,
+               cat("'", key, "' must be ", zero_allowed ? "0 or " : "", "at least ", low,
                    " and at most ", high, " ", unit, ", not ", *v));
+  }
+
+  // [machine] dialect = "mazak-m": the dialect the machine's programs are written in
+  // (--dialect overrides it).
+  void readDialect(const toml::node& n) {
+    const std::optional<std::string> name = ctx_.string(n, "dialect");
+    if (!name) return;
+    if (const std::optional<Dialect> d = parseDialect(*name)) {
+      m_.dialect = *d;
+      return;
+    }
+    ctx_.error(kBadValue, ctx_.at(n),
+               cat("unknown dialect '", *name,
+                   "' (expected fanuc-m, fanuc-t, mazak-m, siemens-iso-m or siemens-din)"));
   }
 
   bool readAxes(const toml::node& node) {
@@ -448,6 +469,13 @@ class MachineFileReader {
       return std::nullopt;
     }
     if (!ok) return std::nullopt;
+    for (std::size_t i = 0; i < m_.axes.size(); ++i) {
+      if (std::abs(out[i]) <= bounds::kMaxCoordinate) continue;
+      ctx_.error(kBadValue, ctx_.at(node),
+                 cat("'", what, "' of ", m_.axes[i].name, " is ", out[i],
+                     ": coordinates must be within +-", bounds::kMaxCoordinate));
+      return std::nullopt;
+    }
     return out;
   }
 
@@ -485,9 +513,11 @@ class MachineFileReader {
                          " are given twice: in 'software_limits' and in ", table_name));
           continue;
         }
-        if (!is_travel && *v <= 0) {
+        const auto [low, high] = axisLimitRange(lkey.str());
+        if (!(*v >= low && *v <= high)) {
           ctx_.error(kBadValue, ctx_.at(value),
-                     cat("'", lkey.str(), "' of ", axis.name, " must be above 0"));
+                     cat("'", lkey.str(), "' of ", axis.name, " must be at least ", low,
+                         " and at most ", high, ", not ", *v));
           continue;
         }
         *field = *v;
@@ -496,6 +526,44 @@ class MachineFileReader {
         ctx_.error(kBadValue, ctx_.at(node),
                    cat("min_travel ", axis.min_travel, " of ", axis.name,
                        " must be below max_travel ", axis.max_travel));
+    }
+  }
+
+  // NCC0307 for every [machine.params] key the selected dialect does not apply.
+  void warnParamsWithoutEffect() {
+    const std::optional<Dialect> dialect =
+        options_.dialect ? options_.dialect : m_.dialect ? m_.dialect : options_.default_dialect;
+    if (!dialect) return;
+    for (const auto& [key, where] : param_locations_) {
+      const ParamSpec* spec = findParameter(key);
+      if (!spec || paramApplies(*spec, *dialect)) continue;
+      ctx_.warning(kNoEffect, where,
+                   cat("parameter '", key, "' has no effect in ", dialectName(*dialect),
+                       spec->applied_in.empty()
+                           ? " (ncc does not apply it in any dialect yet)"
+                           : cat(" (ncc applies it in ", spec->applied_in, ")")));
+    }
+  }
+
+  // The sane range of an axis limit (bounds.h).
+  static std::pair<double, double> axisLimitRange(std::string_view key) {
+    if (key == "rapid_velocity" || key == "max_velocity")
+      return {bounds::kMinVelocity, bounds::kMaxVelocity};
+    if (key == "max_acceleration") return {bounds::kMinAcceleration, bounds::kMaxAcceleration};
+    if (key == "max_jerk") return {bounds::kMinJerk, bounds::kMaxJerk};
+    return {-bounds::kMaxCoordinate, bounds::kMaxCoordinate};  // travel
+  }
+
+  // A start position outside an axis' travel range: the machine could not stand there (a real
+  // control would be in overtravel at power-on). Reported at the position's value.
+  void checkStartWithinTravel() {
+    if (!start_node_) return;
+    if (const std::optional<TravelViolation> v = travelViolation(m_.axes, m_.start_position)) {
+      const AxisConfig& a = m_.axes[static_cast<std::size_t>(v->axis)];
+      const auto it = start_value_locations_.find(v->axis);
+      ctx_.error(kBadValue, it != start_value_locations_.end() ? it->second : ctx_.at(*start_node_),
+                 cat("start position ", v->position, " of ", a.name, " is outside its travel [",
+                     a.min_travel, ", ", a.max_travel, "]"));
     }
   }
 
@@ -511,7 +579,14 @@ class MachineFileReader {
         ctx_.wrongType(node, "position", "a table by axis name ({ X = 0.0, ... })");
         continue;
       }
-      if (auto values = readAxisValues(node, "position")) m_.start_position = *values;
+      if (auto values = readAxisValues(node, "position")) {
+        m_.start_position = *values;
+        start_node_ = &node;
+        for (const auto& [key_ptr2, value_ptr2] : *node.as_table()) {
+          const int i = m_.axisIndex(key_ptr2.str());
+          if (i >= 0) start_value_locations_[i] = ctx_.at(value_ptr2);
+        }
+      }
     }
   }
 
@@ -521,6 +596,8 @@ class MachineFileReader {
   std::set<std::string> registers_seen_;
   std::set<int> travel_from_params_;
   std::map<std::string, SourceLocation> param_locations_;
+  const toml::node* start_node_ = nullptr;                 // [start] position, when read
+  std::map<int, SourceLocation> start_value_locations_;    // axis -> its value in it
 };
 
 std::optional<MachineConfig> parseRegistered(std::string_view text, uint32_t file,

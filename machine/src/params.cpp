@@ -329,6 +329,26 @@ std::vector<ParamSpec> buildRegistry() {
   std::vector<ParamSpec> out;
   out.reserve(specs.size());
   for (Spec& spec : specs) out.push_back(std::move(spec.s));
+  // Keys of the vocabulary that ncc reads and checks but does not apply yet (no pass or VM
+  // stage looks at them): they have no effect in any dialect, so a machine file setting one
+  // gets warning NCC0307. Every other key is applied in every dialect.
+  static constexpr std::string_view kNotApplied[] = {
+      "base_frames", "boring_shift_direction", "c_axis_clamp_m_code", "c_axis_unclamp_dwell",
+      "chamfer_address", "common_variables", "comp3d_normal_length", "corner_move_limit",
+      "cutting_edge_default", "cycle_safety_clearance", "drawing_dimension_input",
+      "eight_digit_program_numbers", "fs15_program_format", "g10_geometry_p_limit",
+      "gcode_system", "geometry_number_from_tool_select", "geometry_offset_method",
+      "geometry_wear_offsets", "index_table_1", "indexing_axes", "interference_check",
+      "machine_unit", "offset_applied_at", "offset_number_digits", "outer_corner_connection",
+      "parallel_axes", "peck_clearance", "peck_cycle_type", "peck_return", "reset_feed_mode",
+      "rigid_tap_retract_override", "rotation_angle_incremental", "rough_finish_pass_type1",
+      "rough_finish_pass_type2", "scale_factor_unit", "scale_per_axis", "second_geometry_axes",
+      "spindle_encoder", "startup_type", "t_code_digits", "tap_retract_percent", "tapping_type",
+      "thread_chamfer_signal", "tnrc_lookahead_blocks", "wear_offset_method"};
+  for (ParamSpec& spec : out)
+    if (std::find(std::begin(kNotApplied), std::end(kNotApplied), spec.key) !=
+        std::end(kNotApplied))
+      spec.applied_in = "";
   std::sort(out.begin(), out.end(),
             [](const ParamSpec& a, const ParamSpec& b) { return a.key < b.key; });
   return out;
@@ -344,6 +364,18 @@ const V* typed(const ParamValue* v) {
 const std::vector<ParamSpec>& parameterRegistry() {
   static const std::vector<ParamSpec> registry = buildRegistry();
   return registry;
+}
+
+bool paramApplies(const ParamSpec& spec, Dialect dialect) {
+  if (spec.applied_in == "all") return true;
+  for (std::string_view rest = spec.applied_in; !rest.empty();) {
+    const std::size_t comma = rest.find(',');
+    std::string_view name = rest.substr(0, comma);
+    while (!name.empty() && name.front() == ' ') name.remove_prefix(1);
+    if (name == dialectName(dialect)) return true;
+    rest = comma == std::string_view::npos ? std::string_view() : rest.substr(comma + 1);
+  }
+  return false;
 }
 
 const ParamSpec* findParameter(std::string_view key) {

@@ -51,6 +51,11 @@ std::vector<std::pair<const toml::key*, const toml::node*>> inFileOrder(const to
 
 void TomlContext::error(std::string_view code, SourceLocation where, std::string message) {
   pending_.push_back(Pending{std::string(code), where, std::move(message)});
+  ++errors_;
+}
+
+void TomlContext::warning(std::string_view code, SourceLocation where, std::string message) {
+  pending_.push_back(Pending{std::string(code), where, std::move(message), true});
 }
 
 void TomlContext::flush() {
@@ -58,8 +63,14 @@ void TomlContext::flush() {
     return a.where.line != b.where.line ? a.where.line < b.where.line
                                         : a.where.column < b.where.column;
   });
-  for (Pending& p : pending_) diags_.error(std::move(p.code), p.where, std::move(p.message));
+  for (Pending& p : pending_) {
+    if (p.is_warning)
+      diags_.warning(std::move(p.code), p.where, std::move(p.message));
+    else
+      diags_.error(std::move(p.code), p.where, std::move(p.message));
+  }
   pending_.clear();
+  errors_ = 0;
 }
 
 void TomlContext::unknownKey(const toml::key& key, std::string_view table_name) {

@@ -22,6 +22,7 @@ inline constexpr std::string_view kWrongType = "NCC0303";
 inline constexpr std::string_view kUnknownAxis = "NCC0304";
 inline constexpr std::string_view kBadAxes = "NCC0305";
 inline constexpr std::string_view kBadValue = "NCC0306";
+inline constexpr std::string_view kNoEffect = "NCC0307";  // a warning
 
 // "a string", "an integer", "a table", ...: how a TOML value's type is named in messages.
 std::string_view tomlTypeName(const toml::node& node);
@@ -45,7 +46,9 @@ class TomlContext {
   SourceLocation fileOnly() const { return SourceLocation{file_, 0, 0}; }
 
   void error(std::string_view code, SourceLocation where, std::string message);
-  size_t errorCount() const { return pending_.size(); }
+  // Reported with the errors, in file order; does not count as an error.
+  void warning(std::string_view code, SourceLocation where, std::string message);
+  size_t errorCount() const { return errors_; }
   void flush();
 
   // "unknown key 'foo' in [machine]", at the key.
@@ -66,8 +69,10 @@ class TomlContext {
     std::string code;
     SourceLocation where;
     std::string message;
+    bool is_warning = false;
   };
   uint32_t file_;
+  size_t errors_ = 0;
   DiagnosticEngine& diags_;
   std::vector<Pending> pending_;
 };

@@ -526,3 +526,41 @@ TEST(Controller, StepLimitStopsAMacroLoopWithoutMotion) {
 
 }  // namespace
 }  // namespace ncc
+
+namespace ncc {
+namespace {
+
+// createBorrowing runs the caller's program without copying it: the same ticks as create().
+TEST(Controller, BorrowingRunsTheSameTicksWithoutACopy) {
+  MachineConfig m = defaultMachine();
+  bytecode::Assembler a = controller_test::assemblerFor(m);
+  a.at(1, 1).rapid(controller_test::xyz(10, 0, 5));
+  a.at(1, 2).line(controller_test::xyz(10, 20, 5), 1200.0);
+  a.at(1, 3).op(bytecode::Opcode::ProgramEndRewind).op(bytecode::Opcode::End);
+  const bytecode::Program program = a.finish();
+  bytecode::Error error;
+  std::unique_ptr<vm::Controller> borrowing =
+      vm::Controller::createBorrowing(program, m, error);
+  ASSERT_TRUE(borrowing) << error.message;
+  EXPECT_EQ(&borrowing->program(), &program);
+  std::unique_ptr<vm::Controller> owning = controller_test::make(program, m);
+  EXPECT_NE(&owning->program(), &program);
+  vm::TickOutput x, y;
+  vm::TickStatus sx, sy;
+  do {
+    sx = borrowing->tick(x);
+    sy = owning->tick(y);
+    ASSERT_EQ(sx, sy);
+    ASSERT_EQ(x.commanded, y.commanded);
+    ASSERT_EQ(x.actual, y.actual);
+  } while (sx == vm::TickStatus::Running);
+  EXPECT_EQ(sx, vm::TickStatus::Finished);
+  // It verifies as create() does.
+  bytecode::Program other = program;
+  other.header.config_hash ^= 1;
+  EXPECT_EQ(vm::Controller::createBorrowing(other, m, error), nullptr);
+  EXPECT_EQ(error.code.substr(0, 5), "NCC71");
+}
+
+}  // namespace
+}  // namespace ncc

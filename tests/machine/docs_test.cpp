@@ -47,6 +47,10 @@ std::string renderParameterTable() {
     else if (bounded_below)
       meaning += ". At least " + number(s.min_value);
     if (s.max_items) meaning += ". At most " + std::to_string(s.max_items) + " entries";
+    if (s.applied_in.empty())
+      meaning += ". Read and checked, not applied yet (warning NCC0307)";
+    else if (s.applied_in != "all")
+      meaning += ". Applied in " + std::string(s.applied_in) + " only (else warning NCC0307)";
     out += "| `" + std::string(s.key) + "` | " + cell(paramTypeDescription(s.type)) + " | " +
            cell(s.default_text) + " | " + cell(s.dialects) + " | " + cell(meaning) + " |\n";
   }

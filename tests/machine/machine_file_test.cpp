@@ -355,20 +355,21 @@ TEST(MachineFile, AxisLimitErrors) {
   EXPECT_EQ(onlyError("[machine.axis.X]\nmin_travel = 10.0\nmax_travel = -10.0\n"),
             "machine.toml:1:1: error[NCC0306]: min_travel 10 of X must be below max_travel -10");
   EXPECT_EQ(onlyError("[machine.axis.Y]\nmax_jerk = 0.0\n"),
-            "machine.toml:2:12: error[NCC0306]: 'max_jerk' of Y must be above 0");
+            "machine.toml:2:12: error[NCC0306]: 'max_jerk' of Y must be at least 1 and at most "
+            "1e+09, not 0");
   EXPECT_EQ(onlyError("[machine.params]\nsoftware_limits = { X = [-1.0, 1.0] }\n"
                       "[machine.axis.X]\nmax_travel = 5.0\n"),
             "machine.toml:4:1: error[NCC0306]: travel limits of X are given twice: in "
             "'software_limits' and in [machine.axis.X]");
   EXPECT_EQ(onlyError("[machine]\nipo_cycle = 0.0\n"),
-            "machine.toml:2:13: error[NCC0306]: 'ipo_cycle' must be above 0 and at most 0.1 s, "
-            "not 0");
+            "machine.toml:2:13: error[NCC0306]: 'ipo_cycle' must be at least 0.0001 and at most "
+            "0.1 s, not 0");
   EXPECT_EQ(onlyError("[machine]\ncorner_tolerance = -0.1\n"),
-            "machine.toml:2:20: error[NCC0306]: 'corner_tolerance' must be at least 0 and at most 10 mm, "
-            "not -0.1");
+            "machine.toml:2:20: error[NCC0306]: 'corner_tolerance' must be 0 or at least 1e-06 and "
+            "at most 10 mm, not -0.1");
   EXPECT_EQ(onlyError("[machine]\nchord_tolerance = -0.001\n"),
-            "machine.toml:2:19: error[NCC0306]: 'chord_tolerance' must be above 0 and at most 1 mm, "
-            "not -0.001");
+            "machine.toml:2:19: error[NCC0306]: 'chord_tolerance' must be at least 1e-06 and at "
+            "most 1 mm, not -0.001");
   EXPECT_EQ(onlyError("[machine]\nlookahead_segments = 8\n"),
             "machine.toml:2:22: error[NCC0306]: 'lookahead_segments' must be at least 16 and at "
             "most 16384, not 8");

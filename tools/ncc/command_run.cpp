@@ -32,6 +32,7 @@ struct RunArgs {
   std::string emit = "summary";
   uint64_t trace_every = 1;  // --trace-every N: every Nth tick
   uint64_t max_steps = driver::kDefaultMaxSteps;
+  double max_time = vm::kDefaultMaxRunSeconds;  // s of simulated time
   double feed_override = 100.0;   // %
   double rapid_override = 100.0;  // %
   std::vector<std::string> feed_override_at;  // "SECONDS=PERCENT", as given
@@ -134,6 +135,7 @@ int runSimulation(driver::Session& session, const bytecode::Program& program, co
   }
   driver::SimulationOptions options;
   options.max_steps = args.max_steps;
+  options.max_seconds = args.max_time;
   options.feed_override = args.feed_override / 100.0;
   options.rapid_override = args.rapid_override / 100.0;
   if (!parseOverrideTurns("--feed-override-at", 200.0, args.feed_override_at,
@@ -242,6 +244,11 @@ void addRunCommand(CLI::App& app, int& exit_code) {
   cmd->add_option("--max-steps", args->max_steps,
                   "stop with alarm NCC7204 after this many VM instructions (0: no limit); guards "
                   "against programs that loop forever")
+      ->capture_default_str();
+  cmd->add_option("--max-time", args->max_time,
+                  "stop the simulated run with alarm NCC7208 after this many seconds of "
+                  "simulated time (0: no limit); also at once when a block cannot end before it")
+      ->check(CLI::Range(0.0, 1e12))
       ->capture_default_str();
   cmd->add_option("--feed-override", args->feed_override,
                   "feed override at the start of the simulated run, % of the programmed F")

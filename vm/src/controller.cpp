@@ -8,6 +8,7 @@
 #include "ncc/bytecode/loader.h"
 #include "ncc/bytecode/verifier.h"
 #include "ncc/vm/machine_check.h"
+#include "ncc/vm/run_limits.h"
 
 namespace ncc::vm {
 namespace {
@@ -83,10 +84,35 @@ std::unique_ptr<Controller> Controller::create(bytecode::Program program,
   return std::make_unique<Controller>(std::move(program), machine, options);
 }
 
+std::unique_ptr<Controller> Controller::createBorrowing(const bytecode::Program& program,
+                                                        const MachineConfig& machine,
+                                                        bytecode::Error& error,
+                                                        const ControllerOptions& options) {
+  bytecode::VerifyOptions verify_options;
+  verify_options.machine = &machine;
+  if (std::optional<bytecode::Error> e = bytecode::verify(program, verify_options)) {
+    error = std::move(*e);
+    return nullptr;
+  }
+  if (std::optional<bytecode::Error> e = checkMachine(machine)) {
+    error = std::move(*e);
+    return nullptr;
+  }
+  // The constructor is private: make_unique cannot reach it.
+  return std::unique_ptr<Controller>(new Controller(nullptr, &program, machine, options));
+}
+
 Controller::Controller(bytecode::Program program, const MachineConfig& machine,
                        const ControllerOptions& options)
+    : Controller(std::make_unique<const bytecode::Program>(std::move(program)), nullptr, machine,
+                 options) {}
+
+Controller::Controller(std::unique_ptr<const bytecode::Program> owned,
+                       const bytecode::Program* borrowed, const MachineConfig& machine,
+                       const ControllerOptions& options)
     : machine_(machine),
-      program_(std::move(program)),
+      owned_program_(std::move(owned)),
+      program_(owned_program_ ? *owned_program_ : *borrowed),
       options_(options),
       executor_(program_, machine_),
       planner_(machine_, options.window_capacity != 0
@@ -98,6 +124,11 @@ Controller::Controller(bytecode::Program program, const MachineConfig& machine,
       servo_(machine_),
       stats_(machine_.axisCount()) {
   executor_.setStepLimit(options_.step_limit);
+  if (options_.max_seconds > 0.0 && machine_.ipo_cycle_seconds > 0.0) {
+    // The first tick at or after the limit; beyond 2^63 ticks there is no limit to enforce.
+    const double ticks = std::ceil(options_.max_seconds / machine_.ipo_cycle_seconds);
+    max_ticks_ = ticks < 9.2e18 ? static_cast<uint64_t>(ticks) : 0;
+  }
   planner_.setOverrides(options_.feed_override, options_.rapid_override,
                         options_.max_feed_override);
   servo_.reset(machine_.start_position);
@@ -143,6 +174,11 @@ void Controller::pullEvents() {
         planner_.endOfProgram();
         return;
       }
+      if (!withinTimeLimit(event_)) {  // raised when the queue before it has run
+        input_done_ = true;
+        planner_.endOfProgram();
+        return;
+      }
       event_pending_ = true;
     }
     if (!planner_.accept(event_)) return;  // ring full: retried next tick
@@ -162,6 +198,12 @@ TickStatus Controller::tick(TickOutput& out) noexcept {
   if (options_.prepare_in_tick) prepare();
 
   const uint64_t k = next_tick_;
+  if (max_ticks_ != 0 && k >= max_ticks_) {
+    raiseTimeLimitAlarm(last_.where, 0.0);
+    last_.status = status_;
+    out = last_;
+    return status_;
+  }
   AxisValues setpoint{};
   motion::SetpointInfo info;
   if (waiting_in_position_) {
@@ -169,7 +211,9 @@ TickStatus Controller::tick(TickOutput& out) noexcept {
     info = held_info_;
   } else if (!planner_.setpoint(k, setpoint, info)) {
     // Everything queued has run: the program's end, or the block that raised an alarm.
-    if (executor_.alarm()) {
+    if (late_block_) {
+      raiseTimeLimitAlarm(*late_block_, least_seconds_);
+    } else if (executor_.alarm()) {
       raiseExecutorAlarm();
     } else if (planner_.spindleAlarm()) {
       raiseSpindleAlarm();
@@ -245,6 +289,34 @@ void Controller::raisePositioningAlarm(int axis, double error, SourcePosition wh
                 "STOP_LIMIT_FINE %.6f mm after POSITIONING_TIME %.3f s",
                 a.name.c_str(), error, a.servo.stop_limit_fine, a.servo.positioning_time);
   alarm_.code.assign("25080");
+  alarm_.message.assign(message);
+  alarm_.where = where;
+  has_alarm_ = true;
+  status_ = TickStatus::Alarm;
+}
+
+bool Controller::withinTimeLimit(const Event& event) {
+  if (options_.max_seconds <= 0.0 || event.kind != Event::Kind::Motion) return true;
+  least_seconds_ += minimumSeconds(event.motion, machine_,
+                                   std::max(options_.feed_override, options_.max_feed_override));
+  if (least_seconds_ <= options_.max_seconds) return true;
+  late_block_ = event.motion.where;
+  return false;
+}
+
+void Controller::raiseTimeLimitAlarm(SourcePosition where, double needed) {
+  char message[kAlarmMessageCapacity];
+  if (needed > 0.0) {
+    std::snprintf(message, sizeof message,
+                  "simulated time limit %.17g s reached: the run needs at least %.6g s by the "
+                  "end of this block (at the machine's top speed)",
+                  options_.max_seconds, needed);
+  } else {
+    std::snprintf(message, sizeof message,
+                  "simulated time limit %.17g s reached in this block (tick %llu)",
+                  options_.max_seconds, static_cast<unsigned long long>(next_tick_));
+  }
+  alarm_.code.assign("NCC7208");
   alarm_.message.assign(message);
   alarm_.where = where;
   has_alarm_ = true;

@@ -5,6 +5,7 @@
 #include "absl/strings/str_cat.h"
 #include "ncc/bytecode/disassembler.h"
 #include "ncc/bytecode/instruction.h"
+#include "ncc/machine/travel.h"
 
 namespace ncc::vm {
 
@@ -65,7 +66,10 @@ double numeric(bool vacant, double v) { return vacant ? 0.0 : v; }
 }  // namespace
 
 Executor::Executor(const bytecode::Program& program, const MachineConfig& machine)
-    : program_(program), axis_count_(program.axisCount()) {
+    : program_(program),
+      axis_count_(program.axisCount()),
+      axes_(machine.axes),
+      travel_alarms_(travelAlarmCodes(program.header.dialect)) {
   position_ = machine.start_position;
   const uint32_t count = program.header.variable_count <= bytecode::kMaxVariableCount
                              ? program.header.variable_count
@@ -97,6 +101,19 @@ bool Executor::raiseRefCheck(int axis, double reference, uint32_t offset) {
       "G27 reference position check failed: axis ", program_.header.axes[axis].name, " is at ",
       bytecode::formatNumber(position_[axis]), ", reference point is ",
       bytecode::formatNumber(reference));
+  return false;
+}
+
+bool Executor::raiseTravel(const TravelViolation& v, uint32_t offset) {
+  const std::string_view code = v.above ? travel_alarms_.plus : travel_alarms_.minus;
+  raise("", "", offset);
+  alarm_->code = std::string(code);
+  alarm_->message = absl::StrCat(
+      v.above ? "+" : "-", " overtravel (stored stroke limit): axis ",
+      static_cast<std::size_t>(v.axis) < axes_.size() ? axes_[v.axis].name : std::string("?"),
+      " would reach ", bytecode::formatNumber(v.position), ", beyond ",
+      v.above ? "max_travel " : "min_travel ", bytecode::formatNumber(v.limit),
+      "; the move is not started");
   return false;
 }
 
@@ -171,6 +188,17 @@ bool Executor::next(Event& out) {
           }
           // A straight move to where the tool already is moves nothing: no primitive.
           if (in.op != Opcode::Arc && sameAxes(m.from, m.to, axis_count_)) continue;
+          // Stored stroke limit, before the move: its end point (a straight or per-axis move
+          // stays within the box of its ends) or the arc's whole extent.
+          std::optional<TravelViolation> beyond;
+          if (in.op == Opcode::Arc) {
+            beyond = arcTravelViolation(axes_, ArcMove{m.from, m.to, m.axis1, m.axis2,
+                                                       in.center1, in.center2, m.cw,
+                                                       m.extra_turns});
+          } else {
+            beyond = travelViolation(axes_, m.to);
+          }
+          if (beyond) return raiseTravel(*beyond, at);
           position_ = m.to;
         }
         out.kind = Event::Kind::Motion;

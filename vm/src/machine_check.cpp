@@ -5,12 +5,11 @@
 #include <string_view>
 
 #include "absl/strings/str_cat.h"
+#include "ncc/machine/bounds.h"
+#include "ncc/machine/travel.h"
 
 namespace ncc::vm {
 namespace {
-
-// The machine file's upper bound for [machine] ipo_cycle (machine_file.cpp).
-constexpr double kMaxIpoCycle = 0.1;
 
 bytecode::Error problem(const std::string& what, double value, const std::string& rule) {
   return {"NCC7115", absl::StrCat("machine configuration: ", what, " is ", value, "; it must be ",
@@ -18,6 +17,10 @@ bytecode::Error problem(const std::string& what, double value, const std::string
 }
 
 bool positive(double v) { return std::isfinite(v) && v > 0.0; }
+bool within(double v, double low, double high) { return v >= low && v <= high; }
+std::string rangeRule(double low, double high) {
+  return absl::StrCat("at least ", low, " and at most ", high);
+}
 bool nonNegative(double v) { return std::isfinite(v) && v >= 0.0; }
 
 struct Value {
@@ -77,22 +80,34 @@ std::optional<bytecode::Error> checkTable(const PitchTable& table, const char* k
 }  // namespace
 
 std::optional<bytecode::Error> checkMachine(const MachineConfig& m) {
-  if (!(positive(m.ipo_cycle_seconds) && m.ipo_cycle_seconds <= kMaxIpoCycle))
-    return problem("ipo_cycle", m.ipo_cycle_seconds, "above 0 and at most 0.1 s");
-  if (!positive(m.chord_tolerance)) return problem("chord_tolerance", m.chord_tolerance, "above 0");
-  if (!nonNegative(m.corner_tolerance))
-    return problem("corner_tolerance", m.corner_tolerance, "at least 0");
+  using namespace bounds;
+  if (!within(m.ipo_cycle_seconds, kMinIpoCycle, kMaxIpoCycle))
+    return problem("ipo_cycle", m.ipo_cycle_seconds,
+                   absl::StrCat(rangeRule(kMinIpoCycle, kMaxIpoCycle), " s"));
+  if (!within(m.chord_tolerance, kMinChordTolerance, kMaxChordTolerance))
+    return problem("chord_tolerance", m.chord_tolerance,
+                   rangeRule(kMinChordTolerance, kMaxChordTolerance));
+  if (m.corner_tolerance != 0.0 &&
+      !within(m.corner_tolerance, kMinCornerTolerance, kMaxCornerTolerance))
+    return problem("corner_tolerance", m.corner_tolerance,
+                   absl::StrCat("0 or ", rangeRule(kMinCornerTolerance, kMaxCornerTolerance)));
   for (std::size_t i = 0; i < m.axes.size(); ++i) {
     const AxisConfig& a = m.axes[i];
     const std::string& name = a.name;
     // The machine file's ranges, which a configuration built in code skips.
     const ServoConfig& servo = a.servo;
-    const Value limits[] = {{"rapid_velocity", a.rapid_velocity, NumberRange::Positive},
-                            {"max_velocity", a.max_velocity, NumberRange::Positive},
-                            {"max_acceleration", a.max_acceleration, NumberRange::Positive},
-                            {"max_jerk", a.max_jerk, NumberRange::Positive}};
-    for (const Value& v : limits)
-      if (auto e = checkValue(v, name)) return e;
+    struct Limit {
+      const char* key;
+      double value, low, high;
+    };
+    const Limit limits[] = {
+        {"rapid_velocity", a.rapid_velocity, kMinVelocity, kMaxVelocity},
+        {"max_velocity", a.max_velocity, kMinVelocity, kMaxVelocity},
+        {"max_acceleration", a.max_acceleration, kMinAcceleration, kMaxAcceleration},
+        {"max_jerk", a.max_jerk, kMinJerk, kMaxJerk}};
+    for (const Limit& l : limits)
+      if (!within(l.value, l.low, l.high))
+        return problem(absl::StrCat(l.key, " of ", name), l.value, rangeRule(l.low, l.high));
     for (const ServoNumberKey& k : servoNumberKeys())
       if (auto e = checkValue({k.name, servo.*k.field, k.range}, name)) return e;
     const Value steps[] = {
@@ -104,10 +119,16 @@ std::optional<bytecode::Error> checkMachine(const MachineConfig& m) {
     if (auto e = checkTable(servo.pitch_compensation, "pitch_compensation", name)) return e;
     if (i < m.start_position.size() && !std::isfinite(m.start_position[i]))
       return problem(absl::StrCat("start_position of ", name), m.start_position[i], "finite");
-    if (!(std::isfinite(a.min_travel) && std::isfinite(a.max_travel) &&
-          a.min_travel < a.max_travel))
+    if (!(within(a.min_travel, -kMaxCoordinate, kMaxCoordinate) &&
+          within(a.max_travel, -kMaxCoordinate, kMaxCoordinate) && a.min_travel < a.max_travel))
       return problem(absl::StrCat("min_travel of ", name), a.min_travel,
-                     absl::StrCat("finite and below max_travel ", a.max_travel));
+                     absl::StrCat("within +-", kMaxCoordinate, " and below max_travel ",
+                                  a.max_travel));
+  }
+  if (const std::optional<TravelViolation> v = travelViolation(m.axes, m.start_position)) {
+    const AxisConfig& a = m.axes[static_cast<std::size_t>(v->axis)];
+    return problem(absl::StrCat("start_position of ", a.name), v->position,
+                   absl::StrCat("within its travel [", a.min_travel, ", ", a.max_travel, "]"));
   }
   return std::nullopt;
 }

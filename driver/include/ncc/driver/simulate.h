@@ -11,6 +11,7 @@
 #include "ncc/machine/machine_config.h"
 #include "ncc/vm/controller_stats.h"
 #include "ncc/vm/events.h"
+#include "ncc/vm/run_limits.h"
 
 namespace ncc::driver {
 
@@ -45,6 +46,8 @@ struct FeedHoldSpan {
 // The operator's settings for a simulated run.
 struct SimulationOptions {
   uint64_t max_steps = 0;       // VM instruction budget (0: no limit), alarm NCC7204
+  // Simulated-time limit, s (0: no limit), alarm NCC7208 (vm/run_limits.h).
+  double max_seconds = vm::kDefaultMaxRunSeconds;
   double feed_override = 1.0;   // fraction, up to 2 (200 %), at the start
   double rapid_override = 1.0;  // fraction, up to 1
   // Turns of the feed override during the run, in time order. Moves are planned for the

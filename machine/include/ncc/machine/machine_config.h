@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "ncc/machine/axes.h"
+#include "ncc/machine/dialect.h"
 #include "ncc/machine/params.h"
 #include "ncc/machine/servo_config.h"
 
@@ -79,6 +80,9 @@ struct MachineConfig {
   int lookahead_segments = 1024;
   static constexpr int kMinLookaheadSegments = 16, kMaxLookaheadSegments = 16384;
   ParameterSet params;                   // [machine.params]
+  // [machine] dialect: the language of the machine's programs, when the file names it
+  // (`--dialect` overrides it). Not hashed: the bytecode header carries the dialect.
+  std::optional<Dialect> dialect;
 
   int axisIndex(std::string_view name) const;  // -1 if not configured
   int axisCount() const { return static_cast<int>(axes.size()); }

@@ -18,6 +18,12 @@ struct MachineFileOptions {
   // Read only [machine] and [start] and ignore every other top-level key: lets a conformance
   // case.toml (title, [expect], ...) be loaded as it is, with its own line numbers.
   bool ignore_other_top_level_keys = false;
+  // The dialect the programs are read in: `dialect` (the command line's --dialect) when set,
+  // else the file's [machine] dialect, else `default_dialect` (from the program's file name).
+  // When one is known, a [machine.params] key that has no effect in it (paramApplies) is
+  // warning NCC0307 naming the key, at its value.
+  std::optional<Dialect> dialect;
+  std::optional<Dialect> default_dialect;
 };
 
 // Returns the machine, or nullopt after reporting every error found to `diags`.

@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "ncc/machine/axes.h"
+#include "ncc/machine/dialect.h"
 
 namespace ncc {
 
@@ -63,6 +64,10 @@ struct ParamSpec {
   std::string_view meaning;
   // Additions (all optional):
   std::string_view dialects = {};  // "fanuc-t, mazak-m": who reads it (documentation)
+  // The dialects in which ncc applies the key: "all", a list like `dialects`, or "" (stored
+  // and checked, applied nowhere yet). A machine file setting a key that does not apply in
+  // the selected dialect gets warning NCC0307 naming it (paramApplies).
+  std::string_view applied_in = "all";
   std::vector<std::string_view> choices = {};  // String: the accepted values
   double min_value = -1e300;       // Number/Integer (and list elements, table values)
   double max_value = 1e300;
@@ -76,6 +81,8 @@ struct ParamSpec {
 // The registry of every known key, in documentation (alphabetical) order.
 const std::vector<ParamSpec>& parameterRegistry();
 const ParamSpec* findParameter(std::string_view key);
+// True when ncc applies `spec` in `dialect` (ParamSpec::applied_in).
+bool paramApplies(const ParamSpec& spec, Dialect dialect);
 
 class ParameterSet {
  public:

@@ -70,6 +70,10 @@ struct ControllerOptions {
   // Executor instruction budget for the whole run (0: unlimited), alarm NCC7204 when hit.
   // Guards against a macro loop without motion, which would otherwise keep one tick busy.
   uint64_t step_limit = 0;
+  // Simulated-time limit of the run, s (0: unlimited), alarm NCC7208 naming the block
+  // (run_limits.h): at the tick that reaches it, or as soon as the moves before a block have
+  // run when that block cannot end before it even at the machine's top speed.
+  double max_seconds = 0.0;
   // Operator overrides at the start of the run (MotionPlanner::setOverrides): feed 0..2
   // (200 %), rapid 0..1. `max_feed_override` (0: `feed_override`) is the highest the feed
   // override may be turned to during the run (setFeedOverride); moves are planned for it.
@@ -100,6 +104,14 @@ class Controller {
   static std::unique_ptr<Controller> create(bytecode::Program program,
                                             const MachineConfig& machine, bytecode::Error& error,
                                             const ControllerOptions& options = {});
+
+  // Like create(), but borrows `program` instead of taking it: `program` must outlive the
+  // controller. For a caller that keeps the program anyway (the CLI prints from it): a long
+  // program is not held twice (2 M blocks are about 100 MB of code and line table).
+  static std::unique_ptr<Controller> createBorrowing(const bytecode::Program& program,
+                                                     const MachineConfig& machine,
+                                                     bytecode::Error& error,
+                                                     const ControllerOptions& options = {});
 
   // `program` must have passed bytecode::verify() for `machine`. (If it has not, the executor
   // still stops with an alarm instead of crashing.) Keeps its own copies of both.
@@ -164,11 +176,19 @@ class Controller {
   int axisCount() const { return machine_.axisCount(); }
 
  private:
+  // Runs the program `owned` holds, or else the `borrowed` one.
+  Controller(std::unique_ptr<const bytecode::Program> owned, const bytecode::Program* borrowed,
+             const MachineConfig& machine, const ControllerOptions& options);
   void pullEvents();
   void raiseServoAlarm(const ServoAlarm& servo_alarm, SourcePosition where);
   void raiseExecutorAlarm();
   void raiseSpindleAlarm();
   void raisePositioningAlarm(int axis, double error, SourcePosition where);
+  // NCC7208: the simulated-time limit; `needed` > 0 when a block's lower bound passed it.
+  void raiseTimeLimitAlarm(SourcePosition where, double needed);
+  // Adds the event's least duration to the run's; false (and the alarm pending) when that
+  // passes max_seconds.
+  bool withinTimeLimit(const Event& event);
   // After an exact stop or a rapid (SetpointInfo::in_position_check): true once every axis'
   // position error (encoder against the compensated setpoint) is within STOP_LIMIT_FINE;
   // raises 25080 after POSITIONING_TIME.
@@ -177,7 +197,8 @@ class Controller {
 
   // Declaration order matters: the executor refers to program_.
   const MachineConfig machine_;
-  const bytecode::Program program_;
+  const std::unique_ptr<const bytecode::Program> owned_program_;  // null when borrowed
+  const bytecode::Program& program_;
   const ControllerOptions options_;
   Executor executor_;
   motion::MotionPlanner planner_;
@@ -188,6 +209,11 @@ class Controller {
   ServoModel servo_;
   StatisticsAccumulator stats_;
   uint64_t lookahead_limited_ticks_ = 0;  // ticks with SetpointInfo::lookahead_limited
+  // The time limit in ticks (0: none), and the least time of what the executor produced so
+  // far; a block that would pass the limit waits in late_block_ until the queue has run.
+  uint64_t max_ticks_ = 0;
+  double least_seconds_ = 0.0;
+  std::optional<SourcePosition> late_block_;
 
   Event event_;                   // the executor's output slot (reused)
   bool event_pending_ = false;    // event_ was pulled but the planner had no room

@@ -16,6 +16,7 @@
 
 #include "ncc/bytecode/program.h"
 #include "ncc/machine/machine_config.h"
+#include "ncc/machine/travel.h"
 #include "ncc/vm/events.h"
 
 namespace ncc::vm {
@@ -30,7 +31,10 @@ class Executor {
   Executor(const bytecode::Program& program, const MachineConfig& machine);
 
   // Runs to the next event and stores it in `out`. Returns false at the end of the program
-  // (END, or the call after M02/M30 was returned) or on an alarm (see alarm()).
+  // (END, or the call after M02/M30 was returned) or on an alarm (see alarm()). A move that
+  // would leave an axis' travel range (its end point, or any point of an arc) is not emitted:
+  // the dialect's stored-stroke-limit alarm instead (travelAlarmCodes(): FANUC OT0500/OT0501,
+  // Sinumerik 10720, Mazak NCC7210), naming the axis and the block.
   bool next(Event& out);
 
   bool finished() const { return finished_; }
@@ -56,6 +60,8 @@ class Executor {
 
   bool raise(const char* code, const char* message, uint32_t offset);
   bool raiseRefCheck(int axis, double reference, uint32_t offset);
+  // The dialect's stored-stroke-limit alarm for a move that would leave the travel range.
+  bool raiseTravel(const TravelViolation& violation, uint32_t offset);
   SourcePosition where(uint32_t offset) const;
   bool pop(Value& out, uint32_t offset);
   bool push(Value v, uint32_t offset);
@@ -63,6 +69,8 @@ class Executor {
   const bytecode::Program& program_;
   mutable std::size_t line_hint_ = 0;  // the line entry where() found last (program order)
   const int axis_count_;
+  const std::vector<AxisConfig> axes_;   // travel limits (a copy, sized once)
+  const TravelAlarmCodes travel_alarms_;  // of the program's dialect
   AxisValues position_{};
   std::vector<Value> variables_;  // sized once: header.variable_count
   std::array<Value, bytecode::kMaxStackDepth> stack_{};
