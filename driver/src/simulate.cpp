@@ -15,6 +15,7 @@ SimulationResult simulate(const bytecode::Program& program, const MachineConfig&
   options.feed_override = settings.feed_override;
   options.rapid_override = settings.rapid_override;
   options.max_feed_override = settings.feed_override;
+  options.observer = settings.observer;
   for (const FeedOverrideTurn& turn : settings.feed_override_turns)
     options.max_feed_override = std::max(options.max_feed_override, turn.feed);
   bytecode::Error error;
@@ -54,6 +55,7 @@ SimulationResult simulate(const bytecode::Program& program, const MachineConfig&
     if (status != vm::TickStatus::Running) break;
     if (trace) trace->sample(tick.tick, tick.commanded, tick.actual);
     ++written;
+    if (settings.progress && written % kProgressTicks == 0) settings.progress(tick);
   }
   result.statistics = controller->statistics();
   // A servo alarm comes with the new tick that tripped it (an executor alarm or the end repeats
@@ -65,6 +67,7 @@ SimulationResult simulate(const bytecode::Program& program, const MachineConfig&
   if (trace) trace->finish();
   result.final_commanded = tick.commanded;
   if (const vm::Alarm* alarm = controller->alarm()) result.alarm = *alarm;
+  result.variables = controller->variables();
   return result;
 }
 

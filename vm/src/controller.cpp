@@ -151,6 +151,7 @@ void Controller::pullEvents() {
       input_done_ = true;
       return;
     }
+    if (options_.observer) options_.observer->onEvent(event_);
   }
 }
 
