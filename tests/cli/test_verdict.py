@@ -412,10 +412,12 @@ class VerdictTest(unittest.TestCase):
 
     # --- progress on a terminal -------------------------------------------------------------
 
-    def run_on_pty(self, args):
-        """Runs ncc with stderr on a pseudo-terminal; returns (exit code, what the terminal got)."""
+    def run_on_pty(self, args, stdout_too=False):
+        """Runs ncc with stderr (and stdout if asked) on a pseudo-terminal; returns (exit code,
+        what the terminal got)."""
         master, slave = pty.openpty()
-        proc = subprocess.Popen([NCC, *args], stdout=subprocess.DEVNULL, stderr=slave, stdin=subprocess.DEVNULL)
+        proc = subprocess.Popen([NCC, *args], stdout=slave if stdout_too else subprocess.DEVNULL, stderr=slave,
+                                stdin=subprocess.DEVNULL)
         os.close(slave)
         seen = b""
         while True:
@@ -444,9 +446,29 @@ class VerdictTest(unittest.TestCase):
         self.assertEqual(proc.returncode, 0)
         self.assertNotIn("ncc: running", proc.stderr)
         self.assertEqual(proc.stderr, "")
+        # Moves streaming to the same terminal: no progress line between them.
+        code, seen = self.run_on_pty(["run", prog, "--emit=moves"], stdout_too=True)
+        self.assertEqual(code, 0, seen)
+        self.assertIn('"kind": "line"', seen)
+        self.assertNotIn("ncc: running", seen)
         # A short run shows nothing even on a terminal.
         code, seen = self.run_on_pty(["run", self.write("good.nc", GOOD), "-o", out])
         self.assertEqual((code, seen), (0, ""))
+
+    def test_compile_progress_on_a_terminal(self):
+        lines = ["G21 G90 G17 G94"] + [f"G01 X{i % 100 * 0.5:.1f} Y{i % 37 * 0.3:.1f} F3000." for i in range(300000)]
+        prog = self.write("big.nc", "\n".join(lines + ["M30"]) + "\n")
+        out = os.path.join(self.dir, "big.ncb")
+        start = time.monotonic()
+        proc = ncc("compile", prog, "-o", out)
+        took = time.monotonic() - start
+        self.assertEqual((proc.returncode, proc.stderr), (0, ""))
+        if took < 1.5:
+            self.skipTest(f"the compile took {took:.1f} s here: too short for the progress line")
+        code, seen = self.run_on_pty(["compile", prog, "-o", out])
+        self.assertEqual(code, 0, seen)
+        self.assertRegex(seen, r"ncc: compiling: \d+ blocks, line \d+ \(\d+ % of the file\)")
+        self.assertTrue(seen.endswith("\r\x1b[K"))
 
 
 if __name__ == "__main__":

@@ -35,7 +35,8 @@ int runCompile(const CompileArgs& args) {
   if (!output.open(out, session.inputFiles())) return kUsage;
   bool ok = false;
   {
-    CompileProgress progress(session);
+    // Not while text streams to the terminal the line would be drawn on.
+    CompileProgress progress(session, !(output.toStdout() && args.emit != "bytecode" && stdoutIsTerminal()));
     if (args.emit == "bytecode" && output.toStdout()) {
       // The writer patches its section table at the end: stdout cannot seek, so the bytes
       // are collected first.

@@ -211,8 +211,11 @@ int runController(driver::Session& session, const bytecode::Program& program, co
                    : driver::makeCsvTraceWriter(output.stream(), header);
   }
   // The percentage of the file only for a source input (a .ncb's lines are not the source's).
+  // Not while moves or a trace stream to the terminal the line would be drawn on.
+  const bool streams_to_terminal =
+      output.toStdout() && (args.emit == "moves" || args.emit == "trace") && stdoutIsTerminal();
   Progress progress("running", session, /*clock_every=*/1,
-                    driver::isBytecodeInput(session) ? 0 : session.mainFile());
+                    driver::isBytecodeInput(session) ? 0 : session.mainFile(), !streams_to_terminal);
   RunObserver observer(program, args.emit == "moves" ? &output.stream() : nullptr, progress);
   options.observer = &observer;
   if (progress.enabled()) options.progress = [&](const vm::TickOutput& t) { progress.tick(t.time); };

@@ -78,8 +78,8 @@ bool PendingOutput::open(const std::string& path, std::vector<driver::InputFile>
   if (folder.empty()) folder = ".";
   std::string pattern = (folder / ("." + target.filename().string() + ".XXXXXX")).string();
   installSignalHandlers();
-  // Registered before the file exists (the name is filled in by mkstemp in place): a signal
-  // between the two then unlinks a name that is not there yet, harmlessly.
+  // mkstemp fills in the name in place, in the buffer the signal handler reads; the handler
+  // is armed once the file exists.
   g_temp_registered = 0;
   int fd = -1;
   if (pattern.size() < sizeof g_temp_path) {

@@ -30,10 +30,12 @@ uint64_t countLines(driver::Session& session) {
 
 }  // namespace
 
+bool stdoutIsTerminal() { return isatty(STDOUT_FILENO) == 1; }
+
 Progress::Progress(const char* verb, driver::Session& session, uint32_t clock_every,
-                   uint32_t main_file)
+                   uint32_t main_file, bool wanted)
     : verb_(verb),
-      enabled_(isatty(STDERR_FILENO) == 1),
+      enabled_(wanted && isatty(STDERR_FILENO) == 1),
       main_file_(main_file),
       clock_every_(std::max(clock_every, 1u)) {
   if (!enabled_) return;
@@ -72,8 +74,9 @@ void Progress::clear() {
   drawn_ = false;
 }
 
-CompileProgress::CompileProgress(driver::Session& session)
-    : session_(session), progress_("compiling", session, /*clock_every=*/256, session.mainFile()) {
+CompileProgress::CompileProgress(driver::Session& session, bool wanted)
+    : session_(session),
+      progress_("compiling", session, /*clock_every=*/256, session.mainFile(), wanted) {
   if (!progress_.enabled()) return;
   session_.setBlockObserver([this](const SourceLocation& where) {
     progress_.block(where.file, where.line);

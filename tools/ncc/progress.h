@@ -11,13 +11,18 @@
 
 namespace ncc::cli {
 
+// True when stdout is a terminal: output streamed there would break the progress line.
+bool stdoutIsTerminal();
+
 class Progress {
  public:
   // `verb` names the stage ("compiling", "running"); the clock is read every `clock_every`
   // calls of tick(). Counts the main file's lines (for the percentage) only when the display
   // is enabled.
-  // `main_file`: the source id whose lines give the percentage (0: none shown).
-  Progress(const char* verb, driver::Session& session, uint32_t clock_every, uint32_t main_file);
+  // `main_file`: the source id whose lines give the percentage (0: none shown). `wanted`
+  // false: never shown (the command streams its output to the same terminal).
+  Progress(const char* verb, driver::Session& session, uint32_t clock_every, uint32_t main_file,
+           bool wanted = true);
   ~Progress() { clear(); }
   Progress(const Progress&) = delete;
   Progress& operator=(const Progress&) = delete;
@@ -53,7 +58,7 @@ class Progress {
 // Hooks a compile's progress (Session::setBlockObserver) for the lifetime of this object.
 class CompileProgress {
  public:
-  explicit CompileProgress(driver::Session& session);
+  CompileProgress(driver::Session& session, bool wanted = true);
   ~CompileProgress();
 
  private:
