@@ -25,8 +25,12 @@ std::optional<SetupError> unreadable(const std::filesystem::path& input) {
   auto fail = [&](const std::string& why) {
     return SetupError{"NCC0001", absl::StrCat("cannot read '", input.string(), "': ", why)};
   };
-  if (!std::filesystem::exists(input, ec)) return fail("no such file");
-  if (!std::filesystem::is_regular_file(input, ec)) return fail("not a regular file");
+  const std::filesystem::file_status status = std::filesystem::status(input, ec);
+  if (!std::filesystem::exists(status)) {
+    // A folder on the way that cannot be searched is not "no such file".
+    return fail(ec && ec != std::errc::no_such_file_or_directory ? ec.message() : "no such file");
+  }
+  if (!std::filesystem::is_regular_file(status)) return fail("not a regular file");
   std::ifstream probe(input, std::ios::binary);
   if (!probe) return fail(std::strerror(errno));
   return std::nullopt;
