@@ -411,6 +411,7 @@ class VerdictTest(unittest.TestCase):
             (["check", prog, "--machine", os.path.join(self.dir, "none.toml")], "NCC0003"),
             (["check", prog, "--machine", self.write("bad.toml", "[machine]\naxes = 3\n")], "NCC0003"),
             (["run", prog, "-o", os.path.join(self.dir, "no", "such", "dir.txt")], "NCC0004"),
+            (["run", prog, "-o", self.dir], "NCC0004"),
             (["run", prog, "--feed-hold-at", "x"], "NCC0006"),
             (["dis", prog], "NCC0007"),
             (["run", prog, "--bogus"], "NCC0010"),

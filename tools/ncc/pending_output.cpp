@@ -73,6 +73,11 @@ bool PendingOutput::open(const std::string& path, std::vector<driver::InputFile>
   inputs_ = std::move(inputs);
   if (path_.empty()) return true;
   if (outputIsAnInput(path_, inputs_)) return false;
+  std::error_code ec;
+  if (std::filesystem::is_directory(path_, ec)) {  // said now, not after a long run
+    printError("NCC0004", "cannot write '" + path_ + "': it is a folder");
+    return false;
+  }
   const std::filesystem::path target(path_);
   std::filesystem::path folder = target.parent_path();
   if (folder.empty()) folder = ".";
