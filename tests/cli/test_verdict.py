@@ -322,6 +322,25 @@ class VerdictTest(unittest.TestCase):
     def test_sigterm_removes_the_temporary_output(self):
         self.interrupted_run(signal.SIGTERM)
 
+    def test_an_ignored_hangup_stays_ignored(self):
+        # nohup: a SIGHUP the caller ignores must not end the run.
+        prog = self.write("long.nc", LONG)
+        out = os.path.join(self.dir, "m.jsonl")
+        proc = subprocess.Popen([NCC, "run", prog, "--emit=moves", "-o", out], stdout=subprocess.DEVNULL,
+                                stderr=subprocess.DEVNULL,
+                                preexec_fn=lambda: signal.signal(signal.SIGHUP, signal.SIG_IGN))
+        deadline = time.monotonic() + 30
+        while not leftovers(self.dir, ["long.nc"]) and time.monotonic() < deadline and proc.poll() is None:
+            time.sleep(0.01)
+        self.assertIsNone(proc.poll(), "the run ended before the signal")
+        proc.send_signal(signal.SIGHUP)
+        time.sleep(0.3)
+        self.assertIsNone(proc.poll(), "an ignored SIGHUP ended the run")
+        proc.send_signal(signal.SIGTERM)
+        proc.wait(timeout=30)
+        self.assertEqual(proc.returncode, -signal.SIGTERM)
+        self.assertEqual(leftovers(self.dir, ["long.nc"]), [])
+
     def test_json_stays_valid_for_any_file_name(self):
         name = b'q"b\\s\x01t\x7f\xff\xc3(\xe2\x82\xac.nc'
         path = os.path.join(self.dir.encode(), name)
@@ -472,20 +491,25 @@ class VerdictTest(unittest.TestCase):
         self.assertEqual((code, seen), (0, ""))
 
     def test_compile_progress_on_a_terminal(self):
-        lines = ["G21 G90 G17 G94"] + [f"G01 X{i % 100 * 0.5:.1f} Y{i % 37 * 0.3:.1f} F3000." for i in range(300000)]
-        prog = self.write("big.nc", "\n".join(lines + ["M30"]) + "\n")
+        # A program long enough to compile for 2 s here (the line appears after about 1 s).
         out = os.path.join(self.dir, "big.ncb")
-        start = time.monotonic()
-        proc = ncc("compile", prog, "-o", out)
-        took = time.monotonic() - start
-        self.assertEqual((proc.returncode, proc.stderr), (0, ""))
-        if took < 1.5:
-            self.skipTest(f"the compile took {took:.1f} s here: too short for the progress line")
+        blocks = 250000
+        while True:
+            lines = ["G21 G90 G17 G94"] + [f"G01 X{i % 100 * 0.5:.1f} Y{i % 37 * 0.3:.1f} F3000." for i in range(blocks)]
+            prog = self.write("big.nc", "\n".join(lines + ["M30"]) + "\n")
+            start = time.monotonic()
+            proc = ncc("compile", prog, "-o", out)
+            took = time.monotonic() - start
+            self.assertEqual((proc.returncode, proc.stderr), (0, ""))
+            if took >= 2.0:
+                break
+            if blocks >= 2000000:
+                self.skipTest(f"{blocks} blocks compile in {took:.1f} s here: too fast for the progress line")
+            blocks *= 2
         code, seen = self.run_on_pty(["compile", prog, "-o", out])
         self.assertEqual(code, 0, seen)
         self.assertRegex(seen, r"ncc: compiling: \d+ blocks, line \d+ \(\d+ % of the file\)")
         self.assertTrue(seen.endswith("\r\x1b[K"))
-
 
 if __name__ == "__main__":
     NCC = os.path.abspath(sys.argv.pop(1))

@@ -4,6 +4,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <cerrno>
 #include <csignal>
 #include <cstring>
 #include <iostream>
@@ -35,7 +36,12 @@ void installSignalHandlers() {
   struct sigaction action {};
   action.sa_handler = removeTempAndReraise;
   sigemptyset(&action.sa_mask);
-  for (int sig : {SIGINT, SIGTERM, SIGHUP}) sigaction(sig, &action, nullptr);
+  for (int sig : {SIGINT, SIGTERM, SIGHUP}) {
+    // A signal the caller ignores (nohup, a background job's SIGINT) stays ignored.
+    struct sigaction current {};
+    if (sigaction(sig, nullptr, &current) == 0 && current.sa_handler == SIG_IGN) continue;
+    sigaction(sig, &action, nullptr);
+  }
 }
 
 void unregisterTemp() { g_temp_registered = 0; }
@@ -87,6 +93,7 @@ bool PendingOutput::open(const std::string& path, std::vector<driver::InputFile>
   // is armed once the file exists.
   g_temp_registered = 0;
   int fd = -1;
+  errno = ENAMETOOLONG;
   if (pattern.size() < sizeof g_temp_path) {
     std::memcpy(g_temp_path, pattern.c_str(), pattern.size() + 1);
     fd = mkstemp(g_temp_path);
