@@ -116,6 +116,7 @@ void lowerProgram(Session& session, ir::BlockSink& entry) {
       afterEndOfRecord(reader, session.diagnostics());
       break;
     }
+    if (session.blockObserver()) session.blockObserver()(block->loc);
     seen_content = seen_content || !block->empty();
     passes::LowerResult result = lowering.lower(*block);
     if (result.switch_language) reader.setLanguage(*result.switch_language);
@@ -169,37 +170,6 @@ bool emitBytecode(Session& session, std::ostream& out) {
                                  &session.diagnostics());
   bool ok = compileToSink(session, writer);
   return ok && writer.ok() && !session.diagnostics().hasErrors();
-}
-
-CompileFileResult compileToFile(Session& session, const std::filesystem::path& out) {
-  std::error_code ec;
-  if (std::filesystem::equivalent(out, session.input(), ec)) {
-    return {CompileFileResult::OutputError,
-            absl::StrCat("refusing to write the bytecode over its own source '", out.string(), "'")};
-  }
-  std::filesystem::path temp = out;
-  temp += ".tmp";
-  bool ok = false;
-  {
-    std::ofstream file(temp, std::ios::binary | std::ios::trunc);
-    if (!file) return {CompileFileResult::OutputError, absl::StrCat("cannot write '", temp.string(), "'")};
-    ok = emitBytecode(session, file);
-    file.flush();
-    if (ok && !file) {
-      std::filesystem::remove(temp, ec);
-      return {CompileFileResult::OutputError, absl::StrCat("write error on '", temp.string(), "'")};
-    }
-  }
-  if (!ok) {
-    std::filesystem::remove(temp, ec);
-    return {CompileFileResult::ProgramErrors, {}};
-  }
-  std::filesystem::rename(temp, out, ec);
-  if (ec) {
-    std::filesystem::remove(temp, ec);
-    return {CompileFileResult::OutputError, absl::StrCat("cannot create '", out.string(), "'")};
-  }
-  return {CompileFileResult::Ok, {}};
 }
 
 }  // namespace ncc::driver

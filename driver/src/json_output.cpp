@@ -41,28 +41,63 @@ void writeAxes(std::ostream& out, const bytecode::Program& program, const AxisVa
   out << '}';
 }
 
-// The file's own name (no folders), JSON-escaped.
+// The file's own name (no folders).
 std::string fileName(const bytecode::Program& program, uint32_t index) {
-  std::string name = index < program.strings.size()
-                         ? std::filesystem::path(program.strings[index]).filename().string()
-                         : std::string();
-  std::string escaped;
-  for (char c : name) {
-    if (c == '"' || c == '\\') escaped += '\\';
-    if (static_cast<unsigned char>(c) < 0x20) {
-      escaped += absl::StrFormat("\\u%04x", c);
-      continue;
-    }
-    escaped += c;
-  }
-  return escaped;
+  return index < program.strings.size()
+             ? std::filesystem::path(program.strings[index]).filename().string()
+             : std::string();
+}
+
+// Length of the well-formed UTF-8 sequence at the start of `s` (RFC 3629: no overlong forms,
+// no surrogates, at most U+10FFFF), or 0.
+size_t utf8Length(std::string_view s) {
+  const auto byte = [&](size_t i) { return static_cast<unsigned char>(s[i]); };
+  const unsigned char c = byte(0);
+  size_t n = 0;
+  unsigned char lo = 0x80, hi = 0xBF;  // range of the second byte
+  if (c >= 0xC2 && c <= 0xDF) n = 2;
+  else if (c >= 0xE0 && c <= 0xEF) n = 3, lo = c == 0xE0 ? 0xA0 : 0x80, hi = c == 0xED ? 0x9F : 0xBF;
+  else if (c >= 0xF0 && c <= 0xF4) n = 4, lo = c == 0xF0 ? 0x90 : 0x80, hi = c == 0xF4 ? 0x8F : 0xBF;
+  else return 0;
+  if (s.size() < n || byte(1) < lo || byte(1) > hi) return 0;
+  for (size_t i = 2; i < n; ++i)
+    if (byte(i) < 0x80 || byte(i) > 0xBF) return 0;
+  return n;
 }
 
 }  // namespace
 
+std::string jsonString(std::string_view text) {
+  std::string quoted = "\"";
+  for (size_t i = 0; i < text.size();) {
+    const unsigned char c = static_cast<unsigned char>(text[i]);
+    if (c == '"' || c == '\\') {
+      quoted += '\\';
+      quoted += static_cast<char>(c);
+    } else if (c < 0x20 || c == 0x7F) {
+      quoted += absl::StrFormat("\\u%04x", c);
+    } else if (c >= 0x80) {
+      const size_t n = utf8Length(text.substr(i));
+      if (n == 0) {  // not UTF-8: the replacement character, so the JSON stays valid
+        quoted += "\\ufffd";
+        ++i;
+        continue;
+      }
+      quoted.append(text.substr(i, n));
+      i += n;
+      continue;
+    } else {
+      quoted += static_cast<char>(c);
+    }
+    ++i;
+  }
+  quoted += '"';
+  return quoted;
+}
+
 void writeMoveJson(std::ostream& out, const vm::MotionPrimitive& m, const bytecode::Program& program) {
-  out << "{\"line\": " << m.where.line << ", \"file\": \"" << fileName(program, m.where.file)
-      << "\", \"kind\": \"" << kindName(m.kind) << '"';
+  out << "{\"line\": " << m.where.line << ", \"file\": " << jsonString(fileName(program, m.where.file))
+      << ", \"kind\": \"" << kindName(m.kind) << '"';
   if (m.kind == vm::MotionPrimitive::Kind::Dwell) {
     out << ", \"seconds\": " << jsonNumber(m.seconds);
     if (m.revolutions) out << ", \"revolutions\": true";
@@ -87,9 +122,15 @@ void writeVariablesJson(std::ostream& out, const std::vector<std::pair<std::stri
   out << '{';
   for (size_t i = 0; i < vars.size(); ++i) {
     if (i) out << ", ";
-    out << '"' << vars[i].first << "\": " << jsonNumber(vars[i].second);
+    out << jsonString(vars[i].first) << ": " << jsonNumber(vars[i].second);
   }
   out << "}\n";
+}
+
+void writeAlarmJson(std::ostream& out, const vm::Alarm& alarm, const bytecode::Program& program) {
+  out << "{\"kind\": \"alarm\", \"code\": " << jsonString(alarm.code) << ", \"line\": "
+      << alarm.where.line << ", \"file\": " << jsonString(fileName(program, alarm.where.file))
+      << ", \"message\": " << jsonString(alarm.message) << "}\n";
 }
 
 }  // namespace ncc::driver

@@ -20,16 +20,30 @@ bool isBytecodeFile(const std::filesystem::path& path) {
   return absl::EndsWithIgnoreCase(path.string(), ".ncb");
 }
 
+bool isBytecodeInput(const Session& session) {
+  if (const std::string* bytes = session.stdinContents()) return absl::StartsWith(*bytes, "NCCB");
+  return isBytecodeFile(session.input());
+}
+
+namespace {
+
+std::optional<bytecode::Error> loadBytes(std::string_view bytes, bytecode::Program& program) {
+  return bytecode::load(
+      std::span<const uint8_t>(reinterpret_cast<const uint8_t*>(bytes.data()), bytes.size()), program);
+}
+
+}  // namespace
+
 bool loadProgram(Session& session, bytecode::Program& program, bool check_machine) {
   std::optional<bytecode::Error> error;
-  if (isBytecodeFile(session.input())) {
-    error = bytecode::loadFile(session.input(), program);
+  if (isBytecodeInput(session)) {
+    const std::string* from_stdin = session.stdinContents();
+    error = from_stdin ? loadBytes(*from_stdin, program) : bytecode::loadFile(session.input(), program);
   } else {
     std::stringstream buffer;
     if (!emitBytecode(session, buffer)) return false;
-    std::string bytes = std::move(buffer).str();  // C++20: moved out, not copied
-    error = bytecode::load(
-        std::span<const uint8_t>(reinterpret_cast<const uint8_t*>(bytes.data()), bytes.size()), program);
+    const std::string bytes = std::move(buffer).str();  // C++20: moved out, not copied
+    error = loadBytes(bytes, program);
   }
   if (!error) {
     bytecode::VerifyOptions options;

@@ -16,6 +16,7 @@ SimulationResult simulate(const bytecode::Program& program, const MachineConfig&
   options.feed_override = settings.feed_override;
   options.rapid_override = settings.rapid_override;
   options.max_feed_override = settings.feed_override;
+  options.observer = settings.observer;
   for (const FeedOverrideTurn& turn : settings.feed_override_turns)
     options.max_feed_override = std::max(options.max_feed_override, turn.feed);
   bytecode::Error error;
@@ -56,6 +57,7 @@ SimulationResult simulate(const bytecode::Program& program, const MachineConfig&
     if (status != vm::TickStatus::Running) break;
     if (trace) trace->sample(tick.tick, tick.commanded, tick.actual, tick.where.line);
     ++written;
+    if (settings.progress && written % kProgressTicks == 0) settings.progress(tick);
   }
   result.statistics = controller->statistics();
   // A servo alarm comes with the new tick that tripped it (an executor alarm or the end repeats
@@ -67,6 +69,7 @@ SimulationResult simulate(const bytecode::Program& program, const MachineConfig&
   if (trace) trace->finish();
   result.final_commanded = tick.commanded;
   if (const vm::Alarm* alarm = controller->alarm()) result.alarm = *alarm;
+  result.variables = controller->variables();
   return result;
 }
 

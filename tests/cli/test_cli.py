@@ -412,14 +412,17 @@ class CliTest(unittest.TestCase):
         self.assertNotIn("\x00", proc.stderr)
         self.assertIn("  G00 X1.?[2J Y?", proc.stderr)
 
-    def test_instruction_budget_stops_a_run_with_an_alarm_and_no_file(self):
+    def test_instruction_budget_stops_a_run_with_an_alarm_recorded_in_the_moves(self):
+        # Issue 21: the moves up to an alarm stay, and the file ends with the alarm (it used to
+        # be discarded).
         good = self.write("a.nc", GOOD)
         out = os.path.join(self.dir, "moves.jsonl")
         proc = ncc("run", good, "--emit=moves", "-o", out, "--max-steps", "2")
         self.assertEqual(proc.returncode, 3, proc.stderr)
         self.assertIn("error[NCC7204]", proc.stderr)
-        self.assertFalse(os.path.exists(out))
-        self.assertFalse(os.path.exists(out + ".tmp"))
+        last = json.loads(slurp(out).splitlines()[-1])
+        self.assertEqual((last["kind"], last["code"]), ("alarm", "NCC7204"))
+        self.assertEqual(sorted(os.listdir(self.dir)), ["a.nc", "moves.jsonl"])
         self.assertEqual(ncc("run", good, "--emit=moves", "-o", out, "--max-steps", "0").returncode, 0)
 
     def test_feed_per_revolution_without_spindle_is_an_alarm_at_its_block(self):

@@ -1,9 +1,11 @@
 #pragma once
 // The `ncc` command line: options shared by every command and the command entry points.
-// Exit codes (docs/cli.md): 0 ok, 1 errors in the program, 2 usage, 3 alarm at run time.
+// Exit codes (docs/cli.md): 0 ok, 1 errors in the program, 2 usage (also an unreadable input
+// or an output that cannot be written), 3 alarm at run time.
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <string_view>
 
 #include "CLI/CLI.hpp"
 #include "ncc/driver/session.h"
@@ -11,6 +13,9 @@
 namespace ncc::cli {
 
 enum ExitCode : int { kOk = 0, kProgramError = 1, kUsage = 2, kRuntimeAlarm = 3 };
+
+// A driver error on stderr: `ncc: error[CODE]: message` (codes NCC00xx in docs/cli.md).
+void printError(std::string_view code, std::string_view message);
 
 // --dialect, --machine, --program-dir: accepted by every command.
 struct CommonOptions {
@@ -22,7 +27,8 @@ struct CommonOptions {
   std::optional<std::string> toSessionOptions(driver::SessionOptions& out) const;
 };
 
-// Opens a session for `input`, printing setup errors. Returns an exit code on failure.
+// Opens a session for `input` ("-": the standard input), printing setup errors. Returns an
+// exit code on failure.
 std::optional<int> openSession(driver::Session& session, const std::filesystem::path& input,
                                const CommonOptions& common);
 

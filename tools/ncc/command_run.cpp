@@ -1,5 +1,5 @@
-// `ncc run IN [--emit=moves|vars] [-o FILE]` (IN is a source program or a .ncb file) and
-// `ncc dis FILE.ncb`.
+// `ncc run IN [--emit=summary|trace|moves|vars] [-o FILE]` (IN is a source program or a .ncb
+// file, "-" the standard input) and `ncc dis FILE.ncb`.
 #include <algorithm>
 #include <charconv>
 #include <cmath>
@@ -10,10 +10,12 @@
 #include <vector>
 
 #include "absl/strings/match.h"
+#include "absl/strings/str_cat.h"
 #include "absl/strings/str_split.h"
 #include "absl/strings/str_format.h"
 #include "cli.h"
 #include "pending_output.h"
+#include "progress.h"
 #include "run_summary.h"
 #include "ncc/bytecode/disassembler.h"
 #include "ncc/driver/json_output.h"
@@ -72,9 +74,9 @@ bool parseOverrideTurns(const char* option, double max_percent,
     double seconds = 0.0, percent = 0.0;
     if (!parsePair(text, seconds, percent) || seconds < 0.0 ||
         !(percent >= 1.0 && percent <= max_percent)) {
-      std::cerr << "ncc: error: " << option << " '" << text
-                << "': expected SECONDS=PERCENT with SECONDS >= 0 and PERCENT in 1.." << max_percent
-                << "\n";
+      printError("NCC0006", absl::StrCat(option, " '", text,
+                                         "': expected SECONDS=PERCENT with SECONDS >= 0 and "
+                                         "PERCENT in 1..", max_percent));
       return false;
     }
     turns.push_back({seconds, percent / 100.0});
@@ -93,9 +95,9 @@ bool parseFeedHolds(const std::vector<std::string>& given, std::vector<driver::F
     double seconds = 0.0, duration = 0.0;
     if (!parsePair(text, seconds, duration) || seconds < 0.0 || !(duration > 0.0) ||
         duration > kMaxFeedHoldSeconds) {
-      std::cerr << "ncc: error: --feed-hold-at '" << text
-                << "': expected SECONDS=DURATION in seconds, SECONDS >= 0 and DURATION above 0 "
-                   "and at most 86400 (a day)\n";
+      printError("NCC0006", absl::StrCat("--feed-hold-at '", text,
+                                         "': expected SECONDS=DURATION in seconds, SECONDS >= 0 "
+                                         "and DURATION above 0 and at most 86400 (a day)"));
       return false;
     }
     holds.push_back({seconds, duration});
@@ -103,8 +105,8 @@ bool parseFeedHolds(const std::vector<std::string>& given, std::vector<driver::F
   sortBySeconds(holds);
   for (std::size_t i = 1; i < holds.size(); ++i) {
     if (holds[i].seconds < holds[i - 1].seconds + holds[i - 1].duration) {
-      std::cerr << "ncc: error: --feed-hold-at: the holds at " << holds[i - 1].seconds << " s and "
-                << holds[i].seconds << " s overlap\n";
+      printError("NCC0006", absl::StrCat("--feed-hold-at: the holds at ", holds[i - 1].seconds,
+                                         " s and ", holds[i].seconds, " s overlap"));
       return false;
     }
   }
@@ -119,20 +121,35 @@ void reportAlarm(driver::Session& session, const bytecode::Program& program, con
   session.diagnostics().error(alarm.code, where, alarm.message);
 }
 
-// --emit=summary|summary-json|trace: the program through the planner, interpolator and servo.
-int runSimulation(driver::Session& session, const bytecode::Program& program, const RunArgs& args) {
-  PendingOutput output;
-  if (!output.open(args.output)) return kUsage;
-  std::unique_ptr<driver::TraceWriter> trace;
-  if (args.emit == "trace") {
-    driver::TraceHeader header;
-    for (const bytecode::AxisInfo& axis : program.header.axes) header.axes.push_back(axis.name);
-    header.tick_seconds = session.machine().ipo_cycle_seconds;
-    header.tick_every = args.trace_every;
-    bool binary = !args.output.empty() && !absl::EndsWithIgnoreCase(args.output, ".csv");
-    trace = binary ? driver::makeBinaryTraceWriter(output.stream(), header)
-                   : driver::makeCsvTraceWriter(output.stream(), header);
+// Sees the executor's events as the controller takes them: writes the moves (--emit=moves,
+// streamed: memory stays flat) and counts blocks for the progress display.
+class RunObserver : public vm::EventObserver {
+ public:
+  RunObserver(const bytecode::Program& program, std::ostream* moves, Progress& progress)
+      : program_(program), moves_(moves), progress_(progress) {}
+  void onEvent(const vm::Event& e) override {
+    const vm::SourcePosition& where =
+        e.kind == vm::Event::Kind::Motion ? e.motion.where : e.machine.where;
+    if (where.line != last_.line || where.file != last_.file) {
+      progress_.block(where.file, where.line);
+      last_ = where;
+    }
+    if (moves_ && e.kind == vm::Event::Kind::Motion) driver::writeMoveJson(*moves_, e.motion, program_);
   }
+
+ private:
+  const bytecode::Program& program_;
+  std::ostream* moves_;
+  Progress& progress_;
+  vm::SourcePosition last_;
+};
+
+// Every output mode runs the program through the whole controller (executor, planner,
+// interpolator, servo model): the same checks, so the same alarm and exit code whatever is
+// emitted. What an alarm leaves (docs/cli.md, "Output files"): the summary says it in its
+// status line; a trace keeps the ticks up to the alarm; the moves keep those taken before
+// it and end with an alarm record; vars writes nothing (there is no end state).
+int runController(driver::Session& session, const bytecode::Program& program, const RunArgs& args) {
   driver::SimulationOptions options;
   options.max_steps = args.max_steps;
   options.max_seconds = args.max_time;
@@ -144,9 +161,34 @@ int runSimulation(driver::Session& session, const bytecode::Program& program, co
                           options.rapid_override_turns) ||
       !parseFeedHolds(args.feed_hold_at, options.feed_holds))
     return kUsage;
+  PendingOutput output;
+  if (!output.open(args.output, session.inputFiles())) return kUsage;
+  std::unique_ptr<driver::TraceWriter> trace;
+  if (args.emit == "trace") {
+    driver::TraceHeader header;
+    for (const bytecode::AxisInfo& axis : program.header.axes) header.axes.push_back(axis.name);
+    header.tick_seconds = session.machine().ipo_cycle_seconds;
+    header.tick_every = args.trace_every;
+    bool binary = !output.toStdout() && !absl::EndsWithIgnoreCase(args.output, ".csv");
+    trace = binary ? driver::makeBinaryTraceWriter(output.stream(), header)
+                   : driver::makeCsvTraceWriter(output.stream(), header);
+  }
+  // The percentage of the file only for a source input (a .ncb's lines are not the source's).
+  // Not while moves or a trace stream to the terminal the line would be drawn on.
+  const bool streams_to_terminal =
+      output.toStdout() && (args.emit == "moves" || args.emit == "trace") && stdoutIsTerminal();
+  Progress progress("running", session, /*clock_every=*/1,
+                    driver::isBytecodeInput(session) ? 0 : session.mainFile(), !streams_to_terminal);
+  RunObserver observer(program, args.emit == "moves" ? &output.stream() : nullptr, progress);
+  options.observer = &observer;
+  if (progress.enabled()) options.progress = [&](const vm::TickOutput& t) { progress.tick(t.time); };
   driver::SimulationResult sim = driver::simulate(program, session.machine(), trace.get(), options);
+  progress.clear();
   if (!sim.error.empty()) {
-    std::cerr << "ncc: error: " << sim.error << '\n';
+    // "CODE: message" from the controller's load.
+    const std::size_t colon = sim.error.find(": ");
+    if (colon == std::string::npos) printError("NCC7100", sim.error);
+    else printError(sim.error.substr(0, colon), sim.error.substr(colon + 2));
     return kProgramError;
   }
   const MachineConfig& machine = session.machine();
@@ -156,62 +198,44 @@ int runSimulation(driver::Session& session, const bytecode::Program& program, co
     const SummaryInput in{sim, program, machine.ipo_cycle_seconds, machine.lookahead_segments};
     json ? printSummaryJson(out, in) : printSummary(out, in);
   };
+  if (summary_only) summary(output.stream());
+  if (args.emit == "moves" && sim.alarm) driver::writeAlarmJson(output.stream(), *sim.alarm, program);
+  if (args.emit == "vars" && !sim.alarm) driver::writeVariablesJson(output.stream(), sim.variables);
+  bool written = true;
+  if (args.emit == "vars" && sim.alarm) output.discard();
+  else written = output.commit();
+  if (written && args.emit == "trace" && !output.toStdout()) summary(std::cout);
   if (sim.alarm) {
-    output.discard();
     reportAlarm(session, program, *sim.alarm);
     printDiagnostics(session);
-    if (summary_only) summary(std::cerr);
-    return kRuntimeAlarm;
   }
-  if (summary_only) summary(output.stream());
-  if (!output.commit()) return kUsage;
-  if (!args.output.empty() && !summary_only) summary(std::cout);
-  return kOk;
-}
-
-// --emit=moves and --emit=vars: the executor's motion primitives and variables.
-int runExecutor(driver::Session& session, const bytecode::Program& program, const RunArgs& args) {
-  // Moves stream out as the VM produces them (memory stays flat on long programs); a file
-  // appears only when the run completes.
-  PendingOutput output;
-  if (!output.open(args.output)) return kUsage;
-  driver::EventHandler on_event;
-  if (args.emit == "moves") {
-    on_event = [&](const vm::Event& e) {
-      if (e.kind == vm::Event::Kind::Motion) driver::writeMoveJson(output.stream(), e.motion, program);
-    };
-  }
-  driver::RunResult result = driver::runProgram(program, session.machine(), on_event, args.max_steps);
-  if (result.alarm) {
-    output.discard();
-    reportAlarm(session, program, *result.alarm);
-    printDiagnostics(session);
-    return kRuntimeAlarm;
-  }
-  if (args.emit == "vars") driver::writeVariablesJson(output.stream(), result.variables);
-  return output.commit() ? kOk : kUsage;
+  if (!written) return kUsage;
+  return sim.alarm ? kRuntimeAlarm : kOk;
 }
 
 int runRun(const RunArgs& args) {
   driver::Session session;
   if (std::optional<int> failed = openSession(session, args.input, args.common)) return *failed;
   bytecode::Program program;
-  if (!driver::loadProgram(session, program)) {
+  bool loaded = false;
+  {
+    CompileProgress progress(session);
+    loaded = driver::loadProgram(session, program);
+  }
+  if (!loaded) {
     printDiagnostics(session);
     return kProgramError;
   }
   printDiagnostics(session);  // warnings of the compile
   session.diagnostics().clear();
-  if (args.emit == "summary" || args.emit == "summary-json" || args.emit == "trace")
-    return runSimulation(session, program, args);
-  return runExecutor(session, program, args);
+  return runController(session, program, args);
 }
 
 int runDis(const std::string& input, const CommonOptions& common) {
   driver::Session session;
   if (std::optional<int> failed = openSession(session, input, common)) return *failed;
-  if (!driver::isBytecodeFile(input)) {
-    std::cerr << "ncc: error: '" << input << "' is not a bytecode file (compile it first: ncc compile)\n";
+  if (!driver::isBytecodeInput(session)) {
+    printError("NCC0007", "'" + input + "' is not a bytecode file (compile it first: ncc compile)");
     return kUsage;
   }
   bytecode::Program program;
@@ -228,15 +252,16 @@ int runDis(const std::string& input, const CommonOptions& common) {
 void addRunCommand(CLI::App& app, int& exit_code) {
   auto args = std::make_shared<RunArgs>();
   CLI::App* cmd = app.add_subcommand("run", "compile (or load a .ncb) and run a program in the VM");
-  cmd->add_option("input", args->input, "program source or .ncb file")->required();
+  cmd->add_option("input", args->input, "program source or .ncb file (-: the standard input)")->required();
   cmd->add_option("--emit", args->emit,
                   "summary (default): the simulated run's figures; summary-json: the same as "
                   "one JSON object; trace: setpoint, actual position of every axis and source "
                   "line per IPO tick (-o FILE.csv, or a compact binary trace for any other "
                   "extension); moves: JSON Lines, one motion primitive per line; "
-                  "vars: JSON object of every non-vacant variable at the end")
+                  "vars: JSON object of every non-vacant variable at the end. Every mode runs the "
+                  "same simulation: the same alarms and exit code")
       ->check(CLI::IsMember({"summary", "summary-json", "trace", "moves", "vars"}));
-  cmd->add_option("-o,--output", args->output, "write the emitted output here (default: stdout)");
+  cmd->add_option("-o,--output", args->output, "write the emitted output here (default or -: stdout)");
   cmd->add_option("--trace-every", args->trace_every,
                   "--emit=trace: write every Nth IPO tick only (ticks 0, N, 2N, ...)")
       ->check(CLI::Range(uint64_t{1}, uint64_t{1000000000}))

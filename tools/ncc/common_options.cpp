@@ -5,6 +5,10 @@
 
 namespace ncc::cli {
 
+void printError(std::string_view code, std::string_view message) {
+  std::cerr << "ncc: error[" << code << "]: " << message << '\n';
+}
+
 void CommonOptions::addTo(CLI::App& command) {
   command.add_option("--dialect", dialect,
                      "fanuc-m | fanuc-t | mazak-m | siemens-iso-m | siemens-din "
@@ -34,12 +38,12 @@ std::optional<int> openSession(driver::Session& session, const std::filesystem::
                                const CommonOptions& common) {
   driver::SessionOptions options;
   if (std::optional<std::string> error = common.toSessionOptions(options)) {
-    std::cerr << "ncc: error: " << *error << '\n';
+    printError("NCC0002", *error);
     return kUsage;
   }
   if (std::optional<driver::SetupError> error = session.open(input, options)) {
     printDiagnostics(session);
-    std::cerr << "ncc: error: " << error->message << '\n';
+    printError(error->code, error->message);
     return kUsage;
   }
   return std::nullopt;

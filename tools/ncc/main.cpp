@@ -3,10 +3,15 @@
 
 #include "cli.h"
 
+#ifndef NCC_VERSION
+#define NCC_VERSION "unknown"
+#endif
+
 int main(int argc, char** argv) {
   using namespace ncc::cli;
   CLI::App app{"ncc: a compiler from CNC controller languages to motion bytecode, and its VM"};
   app.name("ncc");
+  app.set_version_flag("--version", "ncc " NCC_VERSION, "print the version and exit");
   app.require_subcommand(1);
   int exit_code = kOk;
   addCompileCommand(app, exit_code);
@@ -16,12 +21,11 @@ int main(int argc, char** argv) {
   addTraceCommand(app, exit_code);
   try {
     app.parse(argc, argv);
-  } catch (const CLI::CallForHelp& e) {
-    return app.exit(e);
-  } catch (const CLI::CallForAllHelp& e) {
+  } catch (const CLI::Success& e) {  // --help, --help-all, --version
     return app.exit(e);
   } catch (const CLI::ParseError& e) {
-    app.exit(e);
+    printError("NCC0010", e.what());
+    std::cerr << "Run with --help for more information.\n";
     return kUsage;
   }
   return exit_code;

@@ -187,6 +187,7 @@ void Controller::pullEvents() {
       input_done_ = true;
       return;
     }
+    if (options_.observer) options_.observer->onEvent(event_);
   }
 }
 

@@ -24,14 +24,4 @@ bool emitIr(Session& session, std::ostream& out);
 // Bytecode into a stream (seekable: the section table is patched at the end).
 bool emitBytecode(Session& session, std::ostream& out);
 
-// Bytecode into a file. Writes `out.tmp` and renames it over `out` only on success, so a
-// failed compile never leaves a partial output file (an existing `out` is left untouched).
-// An output that is the input itself, or cannot be written, is an OutputError (a usage
-// problem, with its message), not a program error.
-struct CompileFileResult {
-  enum Status { Ok, ProgramErrors, OutputError } status = Ok;
-  std::string output_error;
-};
-CompileFileResult compileToFile(Session& session, const std::filesystem::path& out);
-
 }  // namespace ncc::driver

@@ -2,6 +2,7 @@
 // JSON written by `ncc run --emit=moves|vars` (format in docs/cli.md).
 #include <ostream>
 #include <string>
+#include <string_view>
 #include <utility>
 #include <vector>
 
@@ -18,6 +19,14 @@ std::string jsonNumber(double value);
 // {"line": 12, "file": "part.nc", "kind": "line", "to": {"X": 10.0, ...}, "feed": 100.0}
 void writeMoveJson(std::ostream& out, const vm::MotionPrimitive& motion,
                    const bytecode::Program& program);
+
+// The run's last line when it stopped on an alarm:
+// {"kind": "alarm", "code": "NCC7207", "line": 3, "file": "part.nc", "message": "..."}
+void writeAlarmJson(std::ostream& out, const vm::Alarm& alarm, const bytecode::Program& program);
+
+// `text` as a JSON string, quotes included: '"', '\\', control characters and DEL escaped,
+// valid UTF-8 kept, every byte that is not part of valid UTF-8 written as \ufffd.
+std::string jsonString(std::string_view text);
 
 // {"#100": 3.0, "#101": 1.5}
 void writeVariablesJson(std::ostream& out, const std::vector<std::pair<std::string, double>>& vars);

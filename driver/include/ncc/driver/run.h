@@ -1,7 +1,8 @@
 #pragma once
-// `ncc run --emit=moves|vars`: obtain a verified program (compile the source, or load a .ncb
-// file), execute it in the VM and hand every event to the caller. (The simulated run, with
-// planner and servo, is simulate.h.)
+// Obtain a verified program (compile the source, or load a .ncb file) and execute it in the
+// VM's executor alone, handing every event to the caller. `ncc run` runs every output mode
+// through the whole controller instead (simulate.h): the planner's and the servo's alarms
+// exist only there.
 #include <cstdint>
 #include <functional>
 #include <optional>
@@ -17,6 +18,8 @@ namespace ncc::driver {
 
 // True when `path` names a bytecode file (by its magic number, else by the .ncb extension).
 bool isBytecodeFile(const std::filesystem::path& path);
+// True when the session's input (a file, or the standard input's bytes) is bytecode.
+bool isBytecodeInput(const Session& session);
 
 // Compiles the session's input (or loads it when it is bytecode) and verifies the result
 // against the session's machine (`check_machine`: its axes and that it was compiled for that

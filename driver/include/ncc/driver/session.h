@@ -3,8 +3,10 @@
 // the source manager and diagnostics every stage reports to. The CLI, the tests and the
 // benchmarks all start here.
 #include <filesystem>
+#include <functional>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "ncc/machine/dialect.h"
 #include "ncc/machine/machine_config.h"
@@ -19,10 +21,23 @@ struct SessionOptions {
   std::optional<std::filesystem::path> program_dir;   // default: the program's folder
 };
 
-// Why a session could not be opened; maps to exit code 2 (usage / configuration).
+// Why a session could not be opened; maps to exit code 2 (usage / configuration). Codes
+// (docs/cli.md): NCC0001 unreadable input, NCC0002 unknown or unsupported dialect, NCC0003
+// invalid machine file.
 struct SetupError {
+  std::string code;
   std::string message;
 };
+
+// A file a session reads, and what it is to the session ("the program", "the machine file",
+// "the subprogram"), for messages.
+struct InputFile {
+  std::filesystem::path path;
+  const char* role;
+};
+
+// The input name that means the standard input.
+inline constexpr const char* kStdinName = "-";
 
 class Session {
  public:
@@ -30,8 +45,9 @@ class Session {
   Session(const Session&) = delete;
   Session& operator=(const Session&) = delete;
 
-  // Registers `input`, resolves the dialect and loads the machine. On failure returns the
-  // reason (machine-file diagnostics are in diagnostics() as well).
+  // Registers `input` ("-": reads the standard input whole, shown as <stdin>), resolves the
+  // dialect and loads the machine. On failure returns the reason (machine-file diagnostics
+  // are in diagnostics() as well).
   std::optional<SetupError> open(const std::filesystem::path& input, const SessionOptions& options);
 
   SourceManager& sources() { return sources_; }
@@ -41,6 +57,16 @@ class Session {
   uint32_t mainFile() const { return main_file_; }
   const std::filesystem::path& input() const { return input_; }
   const std::filesystem::path& programDir() const { return program_dir_; }
+  // The standard input's bytes when the input is "-", else nullptr.
+  const std::string* stdinContents() const { return sources_.buffer(main_file_); }
+  // Every file on disk the session reads: the program (source or bytecode), the subprograms
+  // registered so far and the machine file. An output must never replace one of them.
+  std::vector<InputFile> inputFiles() const;
+  // Called with each block's location as the compile reads it (progress display); optional.
+  void setBlockObserver(std::function<void(const SourceLocation&)> observer) {
+    block_observer_ = std::move(observer);
+  }
+  const std::function<void(const SourceLocation&)>& blockObserver() const { return block_observer_; }
 
  private:
   SourceManager sources_;
@@ -50,6 +76,8 @@ class Session {
   uint32_t main_file_ = 0;
   std::filesystem::path input_;
   std::filesystem::path program_dir_;
+  std::optional<std::filesystem::path> machine_file_;
+  std::function<void(const SourceLocation&)> block_observer_;
 };
 
 // Dialects whose grammar and semantics exist today.

@@ -2,14 +2,17 @@
 // `ncc run`'s simulation: the program through the VM's planner, interpolator and servo model
 // (vm::Controller), tick by tick, optionally writing a trace.
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "ncc/bytecode/program.h"
 #include "ncc/driver/trace.h"
 #include "ncc/machine/machine_config.h"
 #include "ncc/vm/controller_stats.h"
+#include "ncc/vm/controller.h"
 #include "ncc/vm/events.h"
 #include "ncc/vm/run_limits.h"
 
@@ -20,6 +23,9 @@ struct SimulationResult {
   std::optional<vm::Alarm> alarm;  // the alarm that stopped the run
   AxisValues final_commanded{};    // the last setpoint
   std::string error;               // the program could not be loaded into the controller
+  // Non-vacant variables when the run stopped (the executor runs ahead of the motion by the
+  // look-ahead: exact at the program's end and at an executor alarm).
+  std::vector<std::pair<std::string, double>> variables;
 };
 
 // The operator turns the feed override knob to `feed` (fraction) at `seconds` into the run:
@@ -57,7 +63,13 @@ struct SimulationOptions {
   std::vector<RapidOverrideTurn> rapid_override_turns;
   // Feed holds, in time order, not overlapping.
   std::vector<FeedHoldSpan> feed_holds;
+  // Sees every executor event the controller takes (vm::EventObserver); optional.
+  vm::EventObserver* observer = nullptr;
+  // Called every kProgressTicks ticks with the latest one (progress display); optional.
+  std::function<void(const vm::TickOutput&)> progress;
 };
+
+inline constexpr uint64_t kProgressTicks = 4096;
 
 // Runs `program` to its end (or an alarm, or the instruction budget).
 SimulationResult simulate(const bytecode::Program& program, const MachineConfig& machine,

@@ -27,7 +27,10 @@
 #include <memory>
 #include <optional>
 #include <span>
+#include <string>
 #include <string_view>
+#include <utility>
+#include <vector>
 
 #include "ncc/bytecode/error.h"
 #include "ncc/bytecode/program.h"
@@ -59,6 +62,15 @@ struct TickOutput {
   TickStatus status = TickStatus::Running;
 };
 
+// Sees every executor event the controller takes into its look-ahead, in execution order
+// (`ncc run --emit=moves` streams the motion primitives from here). Called from prepare();
+// an event that raises an alarm as it is taken (G95 with the spindle stopped) is not passed.
+class EventObserver {
+ public:
+  virtual ~EventObserver() = default;
+  virtual void onEvent(const Event& event) = 0;
+};
+
 struct ControllerOptions {
   // Most motion segments the planner's look-ahead holds (allocated once); 0: the machine's
   // MachineConfig::lookahead_segments.
@@ -87,6 +99,8 @@ struct ControllerOptions {
   // bit-identical as long as prepare() runs once before the first tick and once between two
   // ticks.
   bool prepare_in_tick = true;
+  // Optional; must outlive the controller. No effect on the outputs.
+  EventObserver* observer = nullptr;
 };
 
 class Controller {
@@ -167,6 +181,9 @@ class Controller {
   // motion queued before them has run, i.e. when the block is reached; servo alarms (25050
   // contour, 25040 standstill) on the tick that trips them.
   const Alarm* alarm() const { return has_alarm_ ? &alarm_ : nullptr; }
+  // The program's non-vacant variables as the executor holds them (it runs ahead of the
+  // motion by the look-ahead; at the end of the program they are the final values).
+  std::vector<std::pair<std::string, double>> variables() const { return executor_.variables(); }
   // Run statistics so far (final once status() != Running).
   RunStatistics statistics() const;
 
