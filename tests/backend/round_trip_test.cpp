@@ -138,6 +138,77 @@ TEST(BytecodeWriter, WorkSpaceTargetIsAnInternalError) {
   EXPECT_NE(diags.diagnostics()[0].message.find("work-space"), std::string::npos);
 }
 
+// Values beyond the format's bounds are refused at their block (NCC7017), so the compiler
+// never writes a file that the verifier would refuse.
+TEST(BytecodeWriter, ValuesBeyondTheBoundsAreRefusedAtTheirBlock) {
+  struct Case {
+    ir::Operation op;
+    const char* words;
+  };
+  ir::Arc turns;
+  turns.space = ir::Space::Machine;
+  turns.feed = 100.0;
+  turns.to = {1.0, 0.0, 0.0};  // a full circle from the previous block's end
+  turns.center = {5.0, 0.0, 0.0};
+  turns.extra_turns = 1000;
+  ir::Arc centre = turns;
+  centre.extra_turns = 0;
+  centre.center = {0.0, -2e6, 0.0};
+  const Case cases[] = {
+      {ir::Rapid{{1.5e6, 0.0, 0.0}, ir::Space::Machine, ir::RapidType::Linear},
+       "the X position 1500000 (machine coordinates, after offsets) is beyond +-1000000"},
+      {ir::Linear{{0.0, 0.0, -1e300}, ir::Space::Machine, 100.0},
+       "the Z position -1e+300"},
+      {turns, "1000 extra turns of an arc (at most 999)"},
+      {centre, "the arc centre (0, -2000000)"},
+      {ir::Dwell{1e300, false}, "a dwell of 1e+300 s is beyond 100000"},
+      {ir::Dwell{2e5, true}, "a dwell of 200000 revolutions"},
+  };
+  for (const Case& c : cases) {
+    MachineConfig machine = defaultMachine();
+    SourceManager sources;
+    const uint32_t file = sources.addBuffer("part.nc", "");
+    DiagnosticEngine diags(&sources);
+    std::ostringstream out;
+    backend::BytecodeWriter writer(out, machine, Dialect::FanucM, sources, &diags);
+    writer.accept(block(file, 3, {ir::Rapid{{1.0, 0.0, 0.0}, ir::Space::Machine,
+                                            ir::RapidType::Linear}}));
+    writer.accept(block(file, 7, {c.op}));
+    writer.finish();
+    EXPECT_FALSE(writer.ok()) << c.words;
+    ASSERT_EQ(diags.diagnostics().size(), 1u) << c.words;
+    EXPECT_EQ(diags.diagnostics()[0].code, "NCC7017");
+    EXPECT_EQ(diags.diagnostics()[0].location.line, 7u);
+    EXPECT_NE(diags.diagnostics()[0].message.find(c.words), std::string::npos)
+        << diags.diagnostics()[0].message;
+  }
+}
+
+// The string pool names files without their folders: how the path was spelled does not
+// change the file.
+TEST(BytecodeWriter, StringPoolHoldsFileNamesWithoutFolders) {
+  std::string first;
+  for (const char* spelling : {"part.nc", "./part.nc", "/home/me/jobs/part.nc", "a/../part.nc"}) {
+    MachineConfig machine = defaultMachine();
+    SourceManager sources;
+    const uint32_t file = sources.addFile(spelling);
+    std::ostringstream out;
+    backend::BytecodeWriter writer(out, machine, Dialect::FanucM, sources);
+    writer.accept(block(file, 1, {ir::Rapid{{1.0, 2.0, 3.0}, ir::Space::Machine,
+                                            ir::RapidType::Linear}}));
+    writer.finish();
+    ASSERT_TRUE(writer.ok());
+    const std::string bytes = out.str();
+    bytecode::Program program;
+    ASSERT_FALSE(bytecode::load(std::span<const uint8_t>(
+                                    reinterpret_cast<const uint8_t*>(bytes.data()), bytes.size()),
+                                program));
+    EXPECT_EQ(program.strings, (std::vector<std::string>{"", "part.nc"})) << spelling;
+    if (first.empty()) first = bytes;
+    EXPECT_EQ(bytes, first) << spelling;
+  }
+}
+
 TEST(BytecodeWriter, ArcPlaneNeedsItsAxesOnTheMachine) {
   MachineConfig machine = defaultMachine();
   machine.axes.erase(machine.axes.begin() + 1);  // X Z: no Y, so no G17 arc

@@ -86,11 +86,11 @@ TEST(Verifier, RejectsValuesBeyondTheirBounds) {
   EXPECT_EQ(message([](Assembler& a) {
               a.arc({0, 0, 0}, 0, 1, 5.0, 0.0, 100.0, 0, bytecode::ArcPlane::XY, 1000000);
             }),
-            "NCC7103: code offset 000000 (ARC): 1000000 extra turns (at most 9999)");
+            "NCC7103: code offset 000000 (ARC): 1000000 extra turns (at most 999)");
   // The bounds themselves are valid.
   EXPECT_EQ(message([](Assembler& a) {
               a.rapid({1e6, -1e6, 0}).dwell(1e5);
-              a.arc({1e6, -1e6, 0}, 0, 1, 1e6, 0.0, 100.0, 0, bytecode::ArcPlane::XY, 9999);
+              a.arc({1e6, -1e6, 0}, 0, 1, 1e6, 0.0, 100.0, 0, bytecode::ArcPlane::XY, 999);
             }),
             "ok");
 }

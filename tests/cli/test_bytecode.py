@@ -166,7 +166,7 @@ class BytecodeCliTest(unittest.TestCase):
         edited = bytearray(data)
         struct.pack_into("<I", edited, arc + 5, 1000000)  # opcode, flags, plane, axes, turns
         stderr = self.run_bounded(bytes(edited))
-        self.assertIn("1000000 extra turns (at most 9999)", stderr)
+        self.assertIn("1000000 extra turns (at most 999)", stderr)
 
     def test_compiler_refuses_values_beyond_the_bounds_at_the_block(self):
         # No word can be written beyond 99999.999, but incremental moves add up and work

@@ -30,10 +30,11 @@ inline constexpr int64_t kMaxFunctionCode = 99999999;    // M / T numbers: at mo
 // program at most 99999.999 (8 digits, IS-B) and the controllers' length parameters stop at
 // 999999.999 mm: a coordinate or arc centre beyond 1e6 mm (or degrees) comes from no program
 // (and a run towards 1e300 would simulate for ever). Dwell: the manuals' G04 range ends at
-// 99999.999 s (or revolutions). Extra arc turns: 9999, the 4 digits of a helical turn count.
+// 99999.999 s (or revolutions). Extra arc turns: 999, the range of Sinumerik's TURN= (the
+// controllers' only word for extra turns); a million turns of a small arc simulate for hours.
 inline constexpr double kMaxCoordinate = 1e6;   // |coordinate|, |centre|: mm or degrees
 inline constexpr double kMaxDwell = 1e5;        // seconds or spindle revolutions
-inline constexpr uint32_t kMaxExtraTurns = 9999;
+inline constexpr uint32_t kMaxExtraTurns = 999;
 inline constexpr uint8_t kMaxReference = 4;              // G27/G28/G30 reference points 1..4
 
 // Section table order in the header.
