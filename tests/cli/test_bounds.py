@@ -10,6 +10,7 @@
 
 Run by ctest as: test_bounds.py NCC_BINARY
 """
+import json
 import os
 import re
 import struct
@@ -18,6 +19,8 @@ import sys
 import tempfile
 import time
 import unittest
+
+from test_bytecode import seal  # the documented checksum, for files edited on purpose
 
 NCC = None
 
@@ -125,7 +128,10 @@ max_travel = 20.0
         path = self.write("p.nc", "N10 G90 G00 X5.\nN20 G00 X50.\nN30 M30\n")
         proc = ncc("run", path, "--machine", machine, "--emit=moves")
         self.assertEqual(proc.returncode, ALARM_EXIT, proc.stderr)
-        self.assertEqual(len(proc.stdout.splitlines()), 1, proc.stdout)
+        # The move before the alarm, then the alarm record (the move beyond is not started).
+        records = [json.loads(line) for line in proc.stdout.splitlines()]
+        self.assertEqual([r["kind"] for r in records], ["rapid", "alarm"], proc.stdout)
+        self.assertEqual((records[1]["code"], records[1]["line"]), ("OT0500", 2))
         self.assertIn("OT0500", proc.stderr)
 
     def test_start_position_outside_travel_is_a_machine_file_error(self):
@@ -171,16 +177,20 @@ max_travel = 20.0
         proc = self.run_timed("run", literal)
         self.assertEqual(proc.returncode, ERROR_EXIT, proc.stderr)
         self.assertRegex(proc.stderr, r"l\.nc:1:\d+: error\[PS0003\]")
-        # Macro variables are not compiled yet, so the 1e300 s dwell comes in bytecode: a
-        # compiled G04 X1. patched to 1e300 s (the format allows any finite amount). The VM's
-        # time limit ends the run at once (or, where the verifier bounds dwells, the verifier),
-        # with a clear error either way.
-        ncb = self.patched("N10 G90 G00 X10.\nN20 G04 X1.\nN30 M30\n",
-                           bytes([0x13, 0x00]) + struct.pack("<d", 1.0),
-                           2, struct.pack("<d", 1e300))
+        # Macro variables are not compiled yet, so the dwell comes in bytecode: a compiled G04 X1.
+        # patched. 1e300 s is beyond the verifier's bound on dwells (1e5 s, docs/bytecode.md):
+        # refused before the run, exit 1.
+        dwell = bytes([0x13, 0x00]) + struct.pack("<d", 1.0)
+        ncb = self.patched("N10 G90 G00 X10.\nN20 G04 X1.\nN30 M30\n", dwell, 2, struct.pack("<d", 1e300))
         proc = self.run_timed("run", ncb, limit=10)
-        self.assertIn(proc.returncode, (ERROR_EXIT, ALARM_EXIT), proc.stderr)
-        self.assertRegex(proc.stderr, r"p\.nc:2:\d+: error\[NCC7(208|1\d\d)\]")
+        self.assertEqual(proc.returncode, ERROR_EXIT, proc.stderr)
+        self.assertIn("error[NCC7103]", proc.stderr)
+        # A dwell the verifier lets through but the time limit does not: the run ends at once
+        # with NCC7208 in the dwell's block, not after simulating it.
+        ncb = self.patched("N10 G90 G00 X10.\nN20 G04 X1.\nN30 M30\n", dwell, 2, struct.pack("<d", 99999.0))
+        proc = self.run_timed("run", ncb, "--max-time", "3600", limit=10)
+        self.assertEqual(proc.returncode, ALARM_EXIT, proc.stderr)
+        self.assertRegex(proc.stderr, r"p\.nc:2:\d+: error\[NCC7208\]")
 
     def patched(self, source, instruction, at, replacement):
         """Compiles `source` (as p.nc) and overwrites bytes of its one `instruction`."""
@@ -195,16 +205,21 @@ max_travel = 20.0
         self.assertEqual(data.find(instruction, found + 1), -1)
         data[found + at:found + at + len(replacement)] = replacement
         with open(ncb, "wb") as f:
-            f.write(data)
+            f.write(seal(data))
         return ncb
 
     def test_million_turn_arc_ends_within_seconds(self):
-        # The compiler never writes extra turns; patch a compiled full circle to 10^6 turns (the
-        # verifier's maximum).
-        ncb = self.patched("N10 G90 G00 X10. Y0\nN20 G03 X10. Y0 I-10. J0 F1000.\nN30 M30\n",
-                           bytes([0x12, 0x00, 0x00, 0x00, 0x01]) + struct.pack("<I", 0),
-                           5, struct.pack("<I", 1_000_000))
+        # The compiler never writes extra turns; patch a compiled full circle. 10^6 turns are
+        # beyond the verifier's bound (999, docs/bytecode.md): refused before the run, exit 1.
+        source = "N10 G90 G00 X10. Y0\nN20 G03 X10. Y0 I-10. J0 F1000.\nN30 M30\n"
+        arc = bytes([0x12, 0x00, 0x00, 0x00, 0x01]) + struct.pack("<I", 0)
+        ncb = self.patched(source, arc, 5, struct.pack("<I", 1_000_000))
         proc = self.run_timed("run", ncb, limit=10)
+        self.assertEqual(proc.returncode, ERROR_EXIT, proc.stderr)
+        self.assertIn("error[NCC7103]", proc.stderr)
+        # 999 turns of r 10 at F1000 take over an hour: a 600 s limit ends the run at once.
+        ncb = self.patched(source, arc, 5, struct.pack("<I", 999))
+        proc = self.run_timed("run", ncb, "--max-time", "600", limit=10)
         self.assertEqual(proc.returncode, ALARM_EXIT, proc.stderr)
         self.assertRegex(proc.stderr, r"p\.nc:2:\d+: error\[NCC7208\]")
 

@@ -160,15 +160,16 @@ TEST(RunLimits, TheClockStopsTheRunInItsBlock) {
   EXPECT_EQ(ok->status(), TickStatus::Finished);
 }
 
-TEST(RunLimits, AHugeDwellStopsOnceTheMovesBeforeItHaveRun) {
+TEST(RunLimits, ALongDwellStopsOnceTheMovesBeforeItHaveRun) {
   const MachineConfig m = defaultMachine();
   bytecode::Assembler a = assemblerFor(m);
   a.at(1, 1).rapid(xyz(10, 0, 0));
-  a.at(1, 2).dwell(1e300);
+  a.at(1, 2).dwell(1e5);  // the verifier's largest dwell (docs/bytecode.md)
   a.at(1, 3).op(bytecode::Opcode::ProgramEndRewind).op(bytecode::Opcode::End);
   vm::ControllerOptions options;
-  options.max_seconds = vm::kDefaultMaxRunSeconds;
+  options.max_seconds = 3600.0;
   std::unique_ptr<vm::Controller> ctl = make(a.finish(), m, options);
+  ASSERT_NE(ctl, nullptr);
   const std::vector<TickOutput> ticks = runAll(*ctl);
   ASSERT_EQ(ctl->status(), TickStatus::Alarm);
   EXPECT_EQ(ctl->alarm()->code, "NCC7208");
@@ -177,15 +178,17 @@ TEST(RunLimits, AHugeDwellStopsOnceTheMovesBeforeItHaveRun) {
   EXPECT_EQ(ticks.back().commanded[0], 10.0);
 }
 
-TEST(RunLimits, AMillionTurnArcStopsAtOnce) {
+TEST(RunLimits, AnArcOfTheMostTurnsStopsAtOnceUnderATighterLimit) {
   const MachineConfig m = defaultMachine();
   bytecode::Assembler a = assemblerFor(m);
   a.at(1, 1).rapid(xyz(10, 0, 0));
-  a.at(1, 2).arc(xyz(10, 0, 0), 0, 1, 0.0, 0.0, 1000.0, 0, bytecode::ArcPlane::XY, 1'000'000);
+  // The verifier's most extra turns (999, docs/bytecode.md): over 12,000 s at any speed.
+  a.at(1, 2).arc(xyz(10, 0, 0), 0, 1, 0.0, 0.0, 1000.0, 0, bytecode::ArcPlane::XY, 999);
   a.at(1, 3).op(bytecode::Opcode::ProgramEndRewind).op(bytecode::Opcode::End);
   vm::ControllerOptions options;
-  options.max_seconds = vm::kDefaultMaxRunSeconds;
+  options.max_seconds = 3600.0;
   std::unique_ptr<vm::Controller> ctl = make(a.finish(), m, options);
+  ASSERT_NE(ctl, nullptr);
   runAll(*ctl);
   ASSERT_EQ(ctl->status(), TickStatus::Alarm);
   EXPECT_EQ(ctl->alarm()->code, "NCC7208");
