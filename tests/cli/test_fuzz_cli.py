@@ -12,7 +12,8 @@ Mutants of three kinds are run in every output mode (summary, trace, moves, vars
     machines with values replaced by huge, negative, zero, non-numeric or missing ones.
 Each mutant must: exit with 0..3 (and print no sanitizer report, in an instrumented build),
 exit with the same code in every mode, leave nothing in its output folder when the exit code
-is not 0, and end within TIMEOUT seconds (`--max-steps` bounds the VM). All failures are
+is 1 or 2 (after an alarm, exit 3, only the documented output: the moves ending with the alarm
+record, the summary, the trace up to the alarm; nothing for vars), and end within TIMEOUT seconds (`--max-steps` bounds the VM). All failures are
 collected and printed together.
 
 The seed is fixed: the same mutants every run. NCC_FUZZ_CLI_SEED and NCC_FUZZ_CLI_COUNT
@@ -318,9 +319,19 @@ def run_mutant(mutant, workdir):
             failures.append(f"{mutant.name}: --emit={mode} exit code {proc.returncode} "
                             f"(a crash?) {first}")
         left = os.listdir(outdir)
-        if proc.returncode != 0 and left:
+        # An alarm (exit 3) is a verdict of a run that took place: the summary, the trace and
+        # the moves up to it stay (docs/cli.md, "Output files"), the moves ending with the alarm
+        # record; vars has no end state to write. Any other failure leaves nothing at all, and
+        # no run leaves a temporary file.
+        kept = {OUTPUT[mode]} if proc.returncode == 3 and mode != "vars" else set()
+        if proc.returncode != 0 and set(left) - kept:
             failures.append(f"{mutant.name}: --emit={mode} failed (exit {proc.returncode}) and "
                             f"left {left}: {first}")
+        if proc.returncode == 3 and mode == "moves" and OUTPUT[mode] in left:
+            with open(os.path.join(outdir, OUTPUT[mode]), "rb") as f:
+                lines = f.read().splitlines()
+            if not lines or b'"kind": "alarm"' not in lines[-1]:
+                failures.append(f"{mutant.name}: --emit=moves alarm without the alarm record")
         if proc.returncode == 0 and OUTPUT[mode] not in left:
             failures.append(f"{mutant.name}: --emit={mode} succeeded without writing -o")
     distinct = set(codes.values())
