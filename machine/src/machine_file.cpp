@@ -470,10 +470,10 @@ class MachineFileReader {
     }
     if (!ok) return std::nullopt;
     for (std::size_t i = 0; i < m_.axes.size(); ++i) {
-      if (std::abs(out[i]) <= bounds::kMaxCoordinate) continue;
+      if (std::abs(out[i]) <= bounds::kMaxPosition) continue;
       ctx_.error(kBadValue, ctx_.at(node),
                  cat("'", what, "' of ", m_.axes[i].name, " is ", out[i],
-                     ": coordinates must be within +-", bounds::kMaxCoordinate));
+                     ": positions must be within +-", bounds::kMaxPosition));
       return std::nullopt;
     }
     return out;

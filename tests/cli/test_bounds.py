@@ -235,6 +235,9 @@ max_travel = 20.0
             ("[machine.axis.X]\nrapid_velocity = 1e300\n", "rapid_velocity"),
             ("[machine.axis.X]\nmax_travel = 1e300\n", "max_travel"),
             ("[start]\nposition = { X = 1e300 }\n", "position"),
+            # Within the default travel (+-1e9) but beyond any program's coordinates (1e6): the
+            # first rapid would be a simulation of days.
+            ("[start]\nposition = { X = -99999999 }\n", "position"),
             ("[machine.work]\nG54 = { X = -1e300 }\n", "G54"),
         ]
         for text, key in cases:

@@ -195,6 +195,31 @@ TEST(RunLimits, AnArcOfTheMostTurnsStopsAtOnceUnderATighterLimit) {
   EXPECT_EQ(ctl->alarm()->where.line, 2u);
 }
 
+TEST(RunLimits, AnArcWhoseEndIsOffItsCircleIsRefused) {
+  // From X655.36 around (0, 0) to X10: the verifier cannot see the start, the executor can.
+  const MachineConfig m = defaultMachine();
+  bytecode::Assembler a = assemblerFor(m);
+  a.at(1, 1).rapid(xyz(655.36, 0, 0));
+  a.at(1, 2).arc(xyz(10, 0, 0), 0, 1, 0.0, 0.0, 1000.0, 0, bytecode::ArcPlane::XY, 0);
+  a.at(1, 3).op(bytecode::Opcode::ProgramEndRewind).op(bytecode::Opcode::End);
+  std::unique_ptr<vm::Controller> ctl = make(a.finish(), m, vm::ControllerOptions{});
+  ASSERT_NE(ctl, nullptr);
+  const std::vector<TickOutput> ticks = runAll(*ctl);
+  ASSERT_EQ(ctl->status(), TickStatus::Alarm);
+  EXPECT_EQ(ctl->alarm()->code, "NCC7211");
+  EXPECT_EQ(ctl->alarm()->where.line, 2u);
+  EXPECT_EQ(ticks.back().commanded[0], 655.36);
+  // Within arc_radius_tolerance (0.01 mm) the arc is a slight spiral, as compiled.
+  bytecode::Assembler b = assemblerFor(m);
+  b.at(1, 1).rapid(xyz(10, 0, 0));
+  b.at(1, 2).arc(xyz(-10.009, 0, 0), 0, 1, 0.0, 0.0, 1000.0, 0, bytecode::ArcPlane::XY, 0);
+  b.at(1, 3).op(bytecode::Opcode::ProgramEndRewind).op(bytecode::Opcode::End);
+  std::unique_ptr<vm::Controller> spiral = make(b.finish(), m, vm::ControllerOptions{});
+  ASSERT_NE(spiral, nullptr);
+  runAll(*spiral);
+  EXPECT_NE(spiral->status(), TickStatus::Alarm);
+}
+
 TEST(RunLimits, MinimumSecondsIsALowerBound) {
   MachineConfig m = defaultMachine();
   vm::MotionPrimitive dwell;

@@ -69,7 +69,8 @@ Executor::Executor(const bytecode::Program& program, const MachineConfig& machin
     : program_(program),
       axis_count_(program.axisCount()),
       axes_(machine.axes),
-      travel_alarms_(travelAlarmCodes(program.header.dialect)) {
+      travel_alarms_(travelAlarmCodes(program.header.dialect)),
+      arc_radius_tolerance_(machine.params.getNumber("arc_radius_tolerance", 0.01)) {
   position_ = machine.start_position;
   const uint32_t count = program.header.variable_count <= bytecode::kMaxVariableCount
                              ? program.header.variable_count
@@ -114,6 +115,15 @@ bool Executor::raiseTravel(const TravelViolation& v, uint32_t offset) {
       " would reach ", bytecode::formatNumber(v.position), ", beyond ",
       v.above ? "max_travel " : "min_travel ", bytecode::formatNumber(v.limit),
       "; the move is not started");
+  return false;
+}
+
+bool Executor::raiseArcRadius(double start_radius, double end_radius, uint32_t offset) {
+  raise("NCC7211", "", offset);
+  alarm_->message = absl::StrCat(
+      "the arc's end point is not on its circle: start radius ", bytecode::formatNumber(start_radius),
+      ", end radius ", bytecode::formatNumber(end_radius), " (difference above arc_radius_tolerance ",
+      bytecode::formatNumber(arc_radius_tolerance_), "; was the file edited?)");
   return false;
 }
 
@@ -192,6 +202,11 @@ bool Executor::next(Event& out) {
           // stays within the box of its ends) or the arc's whole extent.
           std::optional<TravelViolation> beyond;
           if (in.op == Opcode::Arc) {
+            // The compiler lets the radii differ by arc_radius_tolerance at most (a slight
+            // spiral); 1 um more for the rounding of a centre written in another unit.
+            const double r0 = std::hypot(m.from[m.axis1] - in.center1, m.from[m.axis2] - in.center2);
+            const double r1 = std::hypot(m.to[m.axis1] - in.center1, m.to[m.axis2] - in.center2);
+            if (!(std::abs(r1 - r0) <= arc_radius_tolerance_ + 1e-3)) return raiseArcRadius(r0, r1, at);
             beyond = arcTravelViolation(axes_, ArcMove{m.from, m.to, m.axis1, m.axis2,
                                                        in.center1, in.center2, m.cw,
                                                        m.extra_turns});

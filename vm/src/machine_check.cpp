@@ -117,8 +117,9 @@ std::optional<bytecode::Error> checkMachine(const MachineConfig& m) {
       if (auto e = checkValue(v, name)) return e;
     if (auto e = checkTable(servo.pitch_error, "pitch_error", name)) return e;
     if (auto e = checkTable(servo.pitch_compensation, "pitch_compensation", name)) return e;
-    if (i < m.start_position.size() && !std::isfinite(m.start_position[i]))
-      return problem(absl::StrCat("start_position of ", name), m.start_position[i], "finite");
+    if (i < m.start_position.size() && !within(m.start_position[i], -kMaxPosition, kMaxPosition))
+      return problem(absl::StrCat("start_position of ", name), m.start_position[i],
+                     absl::StrCat("within +-", kMaxPosition));
     if (!(within(a.min_travel, -kMaxCoordinate, kMaxCoordinate) &&
           within(a.max_travel, -kMaxCoordinate, kMaxCoordinate) && a.min_travel < a.max_travel))
       return problem(absl::StrCat("min_travel of ", name), a.min_travel,

@@ -25,8 +25,11 @@ inline constexpr double kMaxAcceleration = 1e6;
 // Axis jerk, mm/s^3: 1 to 1e9.
 inline constexpr double kMinJerk = 1.0;
 inline constexpr double kMaxJerk = 1e9;
-// Any machine coordinate (travel limits, start position, work offsets, reference points),
-// mm or deg: within +-1e9, the default travel range ("unlimited").
+// Travel limits, mm or deg: within +-1e9, the default travel range ("unlimited").
 inline constexpr double kMaxCoordinate = 1e9;
+// A position the machine stands at or offsets by (start position, work offsets, reference
+// points), mm or deg: within +-1e6, the bytecode's bound on any coordinate (docs/bytecode.md).
+// A start at 1e8 mm would make the first rapid a simulation of days.
+inline constexpr double kMaxPosition = 1e6;
 
 }  // namespace ncc::bounds

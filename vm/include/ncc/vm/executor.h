@@ -62,6 +62,9 @@ class Executor {
   bool raiseRefCheck(int axis, double reference, uint32_t offset);
   // The dialect's stored-stroke-limit alarm for a move that would leave the travel range.
   bool raiseTravel(const TravelViolation& violation, uint32_t offset);
+  // An arc whose end point is not on its circle (beyond arc_radius_tolerance): no compiled
+  // program holds one, and an edited file could make it a spiral of hours.
+  bool raiseArcRadius(double start_radius, double end_radius, uint32_t offset);
   SourcePosition where(uint32_t offset) const;
   bool pop(Value& out, uint32_t offset);
   bool push(Value v, uint32_t offset);
@@ -71,6 +74,7 @@ class Executor {
   const int axis_count_;
   const std::vector<AxisConfig> axes_;   // travel limits (a copy, sized once)
   const TravelAlarmCodes travel_alarms_;  // of the program's dialect
+  const double arc_radius_tolerance_;     // [machine.params] arc_radius_tolerance, as compiled
   AxisValues position_{};
   std::vector<Value> variables_;  // sized once: header.variable_count
   std::array<Value, bytecode::kMaxStackDepth> stack_{};
