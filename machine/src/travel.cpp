@@ -4,6 +4,8 @@
 #include <cmath>
 #include <numbers>
 
+#include "absl/strings/str_cat.h"
+
 namespace ncc {
 namespace {
 
@@ -117,6 +119,14 @@ TravelAlarmCodes travelAlarmCodes(Dialect dialect) {
   for (const DialectTravelAlarms& row : kTravelAlarms)
     if (row.dialect == dialect) return row.codes;
   return kTravelAlarms[0].codes;
+}
+
+std::string travelMessage(const TravelViolation& v, std::span<const AxisConfig> axes) {
+  const std::string axis =
+      static_cast<std::size_t>(v.axis) < axes.size() ? axes[v.axis].name : std::string("?");
+  return absl::StrCat(v.above ? "+" : "-", " overtravel (stored stroke limit): axis ", axis,
+                      " would reach ", v.position, ", beyond ",
+                      v.above ? "max_travel " : "min_travel ", v.limit);
 }
 
 }  // namespace ncc

@@ -1,72 +1,57 @@
-// Travel check: motion targets in machine coordinates against the axes' travel limits.
+// Travel check: motion in machine coordinates against the axes' travel limits.
 #include "ncc/passes/travel_check.h"
 
-#include <algorithm>
+#include <optional>
+#include <utility>
 #include <variant>
-
-#include "absl/strings/str_cat.h"
-#include "absl/strings/str_format.h"
 
 namespace ncc::passes {
 
 namespace {
 
-// The control's alarm for a target beyond the travel limits, per dialect.
-struct TravelAlarmEntry {
-  Dialect dialect;
-  TravelAlarms alarms;
-};
-constexpr TravelAlarmEntry kTravelAlarms[] = {
-    // FANUC: OT0500 + overtravel (soft limit 1), OT0501 - overtravel (soft limit 1).
-    {Dialect::FanucM, {"OT0500", "OT0501"}},
-    {Dialect::FanucT, {"OT0500", "OT0501"}},
-    // Mazak: the EIA/ISO notes give no alarm number for the stored stroke limit.
-    {Dialect::MazakM, {"NCC2090", "NCC2090"}},
-    // Sinumerik: 10720 "software limit switch + / -" (one number for both directions).
-    {Dialect::SiemensIsoM, {"10720", "10720"}},
-    {Dialect::SiemensDin, {"10720", "10720"}},
-};
-
-AxisValues targetOf(const ir::Operation& op, bool& moves) {
-  moves = true;
-  if (const auto* r = std::get_if<ir::Rapid>(&op)) return r->to;
-  if (const auto* l = std::get_if<ir::Linear>(&op)) return l->to;
-  if (const auto* a = std::get_if<ir::Arc>(&op)) return a->to;
-  moves = false;
-  return {};
+// The machine's indices of an arc plane's two axes (G17: X Y, G18: Z X, G19: Y Z), as the
+// backend finds them; -1 where the machine lacks one (the backend reports that).
+std::pair<int, int> planeAxes(const MachineConfig& machine, ir::Plane plane) {
+  switch (plane) {
+    case ir::Plane::XY: return {machine.axisIndex("X"), machine.axisIndex("Y")};
+    case ir::Plane::ZX: return {machine.axisIndex("Z"), machine.axisIndex("X")};
+    case ir::Plane::YZ: return {machine.axisIndex("Y"), machine.axisIndex("Z")};
+  }
+  return {-1, -1};
 }
 
 }  // namespace
 
-TravelAlarms travelAlarms(Dialect dialect) {
-  for (const TravelAlarmEntry& e : kTravelAlarms)
-    if (e.dialect == dialect) return e.alarms;
-  return {"NCC2090", "NCC2090"};
-}
-
 void TravelCheckPass::accept(ir::Block block) {
+  bool reported = false;  // one diagnostic per block
   for (const ir::Operation& op : block.ops) {
-    bool moves = false;
-    AxisValues to = targetOf(op, moves);
-    if (moves) check(to, block.loc);
+    std::optional<TravelViolation> beyond;
+    const AxisValues* to = nullptr;
+    if (const auto* r = std::get_if<ir::Rapid>(&op)) {
+      to = &r->to;
+      beyond = travelViolation(machine_.axes, *to);
+    } else if (const auto* l = std::get_if<ir::Linear>(&op)) {
+      to = &l->to;
+      beyond = travelViolation(machine_.axes, *to);
+    } else if (const auto* a = std::get_if<ir::Arc>(&op)) {
+      to = &a->to;
+      const auto [axis1, axis2] = planeAxes(machine_, a->plane);
+      if (axis1 >= 0 && axis2 >= 0) {
+        const ArcMove arc{position_,       a->to,           axis1,        axis2,
+                          a->center[axis1], a->center[axis2], a->clockwise, a->extra_turns};
+        beyond = arcTravelViolation(machine_.axes, arc);
+      } else {
+        beyond = travelViolation(machine_.axes, *to);
+      }
+    }
+    if (beyond && !reported) {
+      diags_.error(std::string(beyond->above ? alarms_.plus : alarms_.minus), block.loc,
+                   travelMessage(*beyond, machine_.axes));
+      reported = true;
+    }
+    if (to) position_ = *to;
   }
   next_.accept(std::move(block));
-}
-
-void TravelCheckPass::check(const AxisValues& to, SourceLocation where) {
-  int n = std::min(machine_.axisCount(), kMaxAxes);
-  for (int i = 0; i < n; ++i) {
-    const AxisConfig& axis = machine_.axes[i];
-    bool above = to[i] > axis.max_travel, below = to[i] < axis.min_travel;
-    if (!above && !below) continue;
-    const char* unit = axis.kind == AxisKind::Rotary ? "deg" : "mm";
-    diags_.error(std::string(above ? alarms_.positive : alarms_.negative), where,
-                 absl::StrFormat("%s overtravel: the target %s%.3f %s (machine coordinates) is "
-                                 "beyond the travel limit %.3f %s",
-                                 above ? "+" : "-", axis.name, to[i], unit,
-                                 above ? axis.max_travel : axis.min_travel, unit));
-    return;
-  }
 }
 
 }  // namespace ncc::passes

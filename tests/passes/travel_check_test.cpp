@@ -47,18 +47,39 @@ TEST(TravelCheck, ReportsTheFirstAxisBeyondItsLimitsWithTheDialectsAlarm) {
   EXPECT_EQ(diags.diagnostics()[0].code, "OT0500");
   EXPECT_EQ(diags.diagnostics()[0].location.line, 2u);
   EXPECT_EQ(diags.diagnostics()[0].message,
-            "+ overtravel: the target X500.500 mm (machine coordinates) is beyond the travel "
-            "limit 500.000 mm");
+            "+ overtravel (stored stroke limit): axis X would reach 500.5, beyond max_travel 500");
   EXPECT_EQ(diags.diagnostics()[1].code, "OT0501");
   EXPECT_EQ(diags.diagnostics()[1].location.line, 3u);
 }
 
-TEST(TravelCheck, AlarmNumbersAreDataPerDialect) {
-  EXPECT_EQ(travelAlarms(Dialect::FanucM).positive, "OT0500");
-  EXPECT_EQ(travelAlarms(Dialect::FanucM).negative, "OT0501");
-  EXPECT_EQ(travelAlarms(Dialect::SiemensIsoM).positive, "10720");
-  EXPECT_EQ(travelAlarms(Dialect::SiemensIsoM).negative, "10720");
-  EXPECT_EQ(travelAlarms(Dialect::MazakM).positive, "NCC2090");
+TEST(TravelCheck, AnArcThatBulgesPastALimitIsReportedLikeTheRunDoes) {
+  // Clockwise around (0, 0) from (-5, 0) to (5, 0) passes (0, 5): with Y's travel ending at
+  // 4 the arc leaves it while its end points do not.
+  MachineConfig machine = defaultMachine();
+  machine.axes[1].max_travel = 4.0;
+  DiagnosticEngine diags;
+  Count out;
+  TravelCheckPass pass(out, machine, Dialect::SiemensIsoM, diags);
+  pass.accept(blockTo(ir::Rapid{AxisValues{-5.0, 0.0, 0.0}, ir::Space::Machine}, 1));
+  ir::Arc arc;
+  arc.to = AxisValues{5.0, 0.0, 0.0};
+  arc.space = ir::Space::Machine;
+  arc.clockwise = true;
+  pass.accept(blockTo(arc, 2));
+  pass.finish();
+  ASSERT_EQ(diags.diagnostics().size(), 1u);
+  EXPECT_EQ(diags.diagnostics()[0].code, "10720");
+  EXPECT_EQ(diags.diagnostics()[0].location.line, 2u);
+  EXPECT_EQ(diags.diagnostics()[0].message,
+            "+ overtravel (stored stroke limit): axis Y would reach 5, beyond max_travel 4");
+}
+
+TEST(TravelCheck, AlarmNumbersAreTheVmsPerDialect) {
+  // One table for compile time and run time (ncc/machine/travel.h).
+  EXPECT_EQ(travelAlarmCodes(Dialect::FanucM).plus, "OT0500");
+  EXPECT_EQ(travelAlarmCodes(Dialect::FanucM).minus, "OT0501");
+  EXPECT_EQ(travelAlarmCodes(Dialect::SiemensIsoM).plus, "10720");
+  EXPECT_EQ(travelAlarmCodes(Dialect::MazakM).plus, "NCC7210");
 }
 
 }  // namespace

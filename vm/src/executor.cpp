@@ -109,12 +109,7 @@ bool Executor::raiseTravel(const TravelViolation& v, uint32_t offset) {
   const std::string_view code = v.above ? travel_alarms_.plus : travel_alarms_.minus;
   raise("", "", offset);
   alarm_->code = std::string(code);
-  alarm_->message = absl::StrCat(
-      v.above ? "+" : "-", " overtravel (stored stroke limit): axis ",
-      static_cast<std::size_t>(v.axis) < axes_.size() ? axes_[v.axis].name : std::string("?"),
-      " would reach ", bytecode::formatNumber(v.position), ", beyond ",
-      v.above ? "max_travel " : "min_travel ", bytecode::formatNumber(v.limit),
-      "; the move is not started");
+  alarm_->message = absl::StrCat(travelMessage(v, axes_), "; the move is not started");
   return false;
 }
 

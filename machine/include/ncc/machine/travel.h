@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <optional>
 #include <span>
+#include <string>
 #include <string_view>
 
 #include "ncc/machine/axes.h"
@@ -64,6 +65,10 @@ AxisBox arcExtent(const ArcMove& arc, int axis_count);
 // (the low side first). An arc whose end points are within travel may still bulge past it.
 std::optional<TravelViolation> arcTravelViolation(std::span<const AxisConfig> axes,
                                                   const ArcMove& arc);
+
+// The text of a stored-stroke-limit alarm, the same at compile time and at run time:
+// "+ overtravel (stored stroke limit): axis X would reach 50, beyond max_travel 10".
+std::string travelMessage(const TravelViolation& violation, std::span<const AxisConfig> axes);
 
 // The controller's alarm numbers for a stored stroke limit, per dialect (data, not code):
 // FANUC OT0500 (+) / OT0501 (-); Sinumerik 10720 (both directions, the sign in the text);
