@@ -186,7 +186,6 @@ class RecoveryTest(unittest.TestCase):
         errors = diagnostics(proc.stderr, "error")
         self.assertEqual([(d["line"], d["code"]) for d in errors], [("2", "OT0500"), ("4", "OT0501")], proc.stderr)
         self.assertIn("axis X would reach 600, beyond max_travel 500", proc.stderr)
-        self.assertIn("500.000", proc.stderr)
 
     def test_travel_check_takes_the_frame_into_account_and_the_dialect_alarm(self):
         # G54 X = 450: X100. in the work system is X550. on the machine.
