@@ -16,9 +16,10 @@ import re
 import struct
 import subprocess
 import sys
-import tempfile
 import time
 import unittest
+
+from cli_harness import ScratchDirTest
 
 from test_bytecode import seal  # the documented checksum, for files edited on purpose
 
@@ -47,20 +48,7 @@ def ncc(*args, timeout=30):
     return subprocess.run([NCC, *args], capture_output=True, text=True, timeout=timeout)
 
 
-class BoundsTest(unittest.TestCase):
-    def setUp(self):
-        self.tmp = tempfile.TemporaryDirectory()
-        self.dir = self.tmp.name
-
-    def tearDown(self):
-        self.tmp.cleanup()
-
-    def write(self, name, text):
-        path = os.path.join(self.dir, name)
-        with open(path, "w") as f:
-            f.write(text)
-        return path
-
+class BoundsTest(ScratchDirTest):
     def run_timed(self, *args, limit=20):
         start = time.monotonic()
         proc = ncc(*args, timeout=limit + 10)

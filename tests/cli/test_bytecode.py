@@ -9,8 +9,9 @@ import re
 import struct
 import subprocess
 import sys
-import tempfile
 import unittest
+
+from cli_harness import ScratchDirTest
 
 NCC = None
 
@@ -51,20 +52,7 @@ def code_offset(data):
     return struct.unpack_from("<I", data, 24)[0]
 
 
-class BytecodeCliTest(unittest.TestCase):
-    def setUp(self):
-        self.tmp = tempfile.TemporaryDirectory()
-        self.dir = self.tmp.name
-
-    def tearDown(self):
-        self.tmp.cleanup()
-
-    def write(self, name, data):
-        path = os.path.join(self.dir, name)
-        with open(path, "wb" if isinstance(data, bytes) else "w") as f:
-            f.write(data)
-        return path
-
+class BytecodeCliTest(ScratchDirTest):
     def compile(self, text, name="a.nc", *extra):
         src = self.write(name, text)
         out = os.path.join(self.dir, name.rsplit(".", 1)[0] + ".ncb")

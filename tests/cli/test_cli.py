@@ -9,8 +9,9 @@ import re
 import os
 import subprocess
 import sys
-import tempfile
 import unittest
+
+from cli_harness import ScratchDirTest
 
 NCC = None
 
@@ -27,20 +28,7 @@ def ncc(*args, cwd=None):
     return subprocess.run([NCC, *args], capture_output=True, text=True, timeout=60, cwd=cwd)
 
 
-class CliTest(unittest.TestCase):
-    def setUp(self):
-        self.tmp = tempfile.TemporaryDirectory()
-        self.dir = self.tmp.name
-
-    def tearDown(self):
-        self.tmp.cleanup()
-
-    def write(self, name, text):
-        path = os.path.join(self.dir, name)
-        with open(path, "w") as f:
-            f.write(text)
-        return path
-
+class CliTest(ScratchDirTest):
     def test_help_everywhere_exits_zero(self):
         for args in (["--help"], ["compile", "--help"], ["check", "--help"], ["dis", "--help"], ["run", "--help"]):
             proc = ncc(*args)

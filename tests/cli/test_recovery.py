@@ -10,8 +10,9 @@ import os
 import re
 import subprocess
 import sys
-import tempfile
 import unittest
+
+from cli_harness import ScratchDirTest
 
 NCC = None
 CORPUS = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "corpus")
@@ -27,20 +28,7 @@ def diagnostics(stderr, severity=None):
     return [d for d in found if severity is None or d["severity"] == severity]
 
 
-class RecoveryTest(unittest.TestCase):
-    def setUp(self):
-        self.tmp = tempfile.TemporaryDirectory()
-        self.dir = self.tmp.name
-
-    def tearDown(self):
-        self.tmp.cleanup()
-
-    def write(self, name, text, mode="w"):
-        path = os.path.join(self.dir, name)
-        with open(path, mode) as f:
-            f.write(text)
-        return path
-
+class RecoveryTest(ScratchDirTest):
     # ---- one root cause, one diagnostic ----------------------------------------------------
 
     def test_enier_mill_1003_has_no_arc_error_after_a_rejected_g41(self):

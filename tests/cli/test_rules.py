@@ -11,8 +11,9 @@ import os
 import re
 import subprocess
 import sys
-import tempfile
 import unittest
+
+from cli_harness import ScratchDirTest
 
 NCC = None
 
@@ -21,20 +22,7 @@ def ncc(*args):
     return subprocess.run([NCC, *args], capture_output=True, text=True, timeout=60)
 
 
-class RulesTest(unittest.TestCase):
-    def setUp(self):
-        self.tmp = tempfile.TemporaryDirectory()
-        self.dir = self.tmp.name
-
-    def tearDown(self):
-        self.tmp.cleanup()
-
-    def write(self, name, text):
-        path = os.path.join(self.dir, name)
-        with open(path, "w") as f:
-            f.write(text)
-        return path
-
+class RulesTest(ScratchDirTest):
     def moves(self, program, dialect):
         proc = ncc("run", self.write("p.nc", program), "--dialect", dialect, "--emit=moves")
         self.assertEqual(proc.returncode, 0, proc.stderr)

@@ -9,8 +9,9 @@ import os
 import re
 import subprocess
 import sys
-import tempfile
 import unittest
+
+from cli_harness import ScratchDirTest
 
 NCC = None
 EXAMPLES = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "examples")
@@ -40,20 +41,7 @@ def field(text, pattern):
     return match
 
 
-class SummaryTest(unittest.TestCase):
-    def setUp(self):
-        self.tmp = tempfile.TemporaryDirectory()
-        self.dir = self.tmp.name
-
-    def tearDown(self):
-        self.tmp.cleanup()
-
-    def write(self, name, text):
-        path = os.path.join(self.dir, name)
-        with open(path, "w") as f:
-            f.write(text)
-        return path
-
+class SummaryTest(ScratchDirTest):
     def run_ok(self, *args):
         proc = ncc(*args)
         self.assertEqual(proc.returncode, 0, proc.stderr)
@@ -160,17 +148,7 @@ class SummaryTest(unittest.TestCase):
         self.assertEqual(s["final_position"]["X"], 5.0)
 
 
-class TraceTest(unittest.TestCase):
-    def setUp(self):
-        self.tmp = tempfile.TemporaryDirectory()
-        self.dir = self.tmp.name
-
-    def tearDown(self):
-        self.tmp.cleanup()
-
-    def path(self, name):
-        return os.path.join(self.dir, name)
-
+class TraceTest(ScratchDirTest):
     def trace(self, program, name, *more):
         proc = ncc("run", program, "--emit=trace", "-o", self.path(name), *more)
         self.assertEqual(proc.returncode, 0, proc.stderr)

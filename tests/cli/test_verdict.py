@@ -18,6 +18,8 @@ import tempfile
 import time
 import unittest
 
+from cli_harness import ScratchDirTest
+
 NCC = None
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 sys.path.insert(0, os.path.join(ROOT, "tests", "conformance"))
@@ -160,20 +162,7 @@ class OneVerdictTest(unittest.TestCase):
             self.assertEqual(leftovers(tmp, inputs), [])
 
 
-class VerdictTest(unittest.TestCase):
-    def setUp(self):
-        self.tmp = tempfile.TemporaryDirectory()
-        self.dir = self.tmp.name
-
-    def tearDown(self):
-        self.tmp.cleanup()
-
-    def write(self, name, text, mode="w"):
-        path = os.path.join(self.dir, name)
-        with open(path, mode) as f:
-            f.write(text)
-        return path
-
+class VerdictTest(ScratchDirTest):
     def test_g95_without_spindle_is_the_same_alarm_in_every_mode(self):
         prog = self.write("g95.nc", G95)
         out = os.path.join(self.dir, "m.jsonl")
