@@ -37,19 +37,23 @@ TEST(TravelCheck, ReportsTheFirstAxisBeyondItsLimitsWithTheDialectsAlarm) {
   AxisValues inside{100.0, 0.0, -10.0}, above{500.5, 0.0, -10.0}, below{0.0, 0.0, -300.5};
   pass.accept(blockTo(ir::Rapid{inside, ir::Space::Machine}, 1));
   pass.accept(blockTo(ir::Linear{above, ir::Space::Machine, 100.0}, 2));
-  ir::Arc arc;
+  pass.accept(blockTo(ir::Rapid{inside, ir::Space::Machine}, 3));
+  ir::Arc arc;  // a helix around (50, 0) from X100 down to Z-300.5
   arc.to = below;
+  arc.center = AxisValues{50.0, 0.0, 0.0};
   arc.space = ir::Space::Machine;
-  pass.accept(blockTo(arc, 3));
+  pass.accept(blockTo(arc, 4));
   pass.finish();
-  EXPECT_EQ(out.blocks, 3);  // the pass reports, it does not drop blocks
+  EXPECT_EQ(out.blocks, 4);  // the pass reports, it does not drop blocks
   ASSERT_EQ(diags.diagnostics().size(), 2u);
   EXPECT_EQ(diags.diagnostics()[0].code, "OT0500");
   EXPECT_EQ(diags.diagnostics()[0].location.line, 2u);
   EXPECT_EQ(diags.diagnostics()[0].message,
             "+ overtravel (stored stroke limit): axis X would reach 500.5, beyond max_travel 500");
   EXPECT_EQ(diags.diagnostics()[1].code, "OT0501");
-  EXPECT_EQ(diags.diagnostics()[1].location.line, 3u);
+  EXPECT_EQ(diags.diagnostics()[1].location.line, 4u);
+  EXPECT_EQ(diags.diagnostics()[1].message,
+            "- overtravel (stored stroke limit): axis Z would reach -300.5, beyond min_travel -300");
 }
 
 TEST(TravelCheck, AnArcThatBulgesPastALimitIsReportedLikeTheRunDoes) {
