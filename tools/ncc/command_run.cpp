@@ -220,7 +220,9 @@ int runRun(const RunArgs& args) {
   bool loaded = false;
   {
     CompileProgress progress(session);
-    loaded = driver::loadProgram(session, program);
+    // Paged: the run's memory does not grow with the program (docs/cli.md, "Memory").
+    loaded = driver::loadProgram(session, program, /*check_machine=*/true,
+                                 driver::Residence::Paged);
   }
   if (!loaded) {
     printDiagnostics(session);
