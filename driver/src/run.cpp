@@ -51,7 +51,7 @@ std::optional<bytecode::Error> compilePaged(Session& session, bytecode::Program&
 }  // namespace
 
 bool loadProgram(Session& session, bytecode::Program& program, bool check_machine,
-                 Residence residence) {
+                 Residence residence, std::optional<SetupError>* setup_error) {
   std::optional<bytecode::Error> error;
   const bool paged = residence == Residence::Paged;
   if (isBytecodeInput(session)) {
@@ -63,6 +63,10 @@ bool loadProgram(Session& session, bytecode::Program& program, bool check_machin
     bool compiled = false;
     error = compilePaged(session, program, compiled);
     if (!compiled && !error) return false;
+    if (error && error->code == "NCC0004" && setup_error != nullptr) {
+      *setup_error = SetupError{error->code, error->message};
+      return false;
+    }
   } else {
     std::stringstream buffer;
     if (!emitBytecode(session, buffer)) return false;
@@ -78,7 +82,7 @@ bool loadProgram(Session& session, bytecode::Program& program, bool check_machin
   }
   if (error) {
     session.diagnostics().error(error->code, SourceLocation{session.mainFile(), 0, 0},
-                                absl::StartsWith(error->code, "NCC00")  // the scratch file
+                                error->code == "NCC0004"  // the scratch file
                                     ? error->message
                                     : absl::StrCat("invalid bytecode: ", error->message));
     return false;

@@ -111,8 +111,8 @@ class RunMemoryTest(unittest.TestCase):
         env = dict(os.environ, TMPDIR=os.path.join(self.dir, "no-such-folder"))
         proc = subprocess.run([NCC, "run", self.source[SMALL]], capture_output=True, text=True,
                               timeout=60, env=env)
-        self.assertNotEqual(proc.returncode, 0)
-        self.assertIn("NCC0004", proc.stderr)
+        self.assertEqual(proc.returncode, 2, proc.stderr)
+        self.assertIn("ncc: error[NCC0004]", proc.stderr)
         self.assertIn("no-such-folder", proc.stderr)
 
     def test_source_and_bytecode_runs_agree(self):

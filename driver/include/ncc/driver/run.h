@@ -34,9 +34,11 @@ enum class Residence {
 // Compiles the session's input (or loads it when it is bytecode) and verifies the result
 // against the session's machine (`check_machine`: its axes and that it was compiled for that
 // machine; off for disassembly, which reads the axes from the file). Errors are reported to
-// the session's diagnostics.
+// the session's diagnostics, except that a scratch file that cannot be made (NCC0004, a
+// problem of the environment, not of the program) goes to `setup_error` when one is given.
 bool loadProgram(Session& session, bytecode::Program& program, bool check_machine = true,
-                 Residence residence = Residence::InMemory);
+                 Residence residence = Residence::InMemory,
+                 std::optional<SetupError>* setup_error = nullptr);
 
 struct RunResult {
   std::optional<vm::Alarm> alarm;  // set when the run stopped on an alarm
