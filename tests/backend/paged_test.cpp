@@ -53,9 +53,13 @@ TEST(Paged, ReadsTheSameInstructionsAndLinesInAnyOrder) {
   std::optional<bytecode::Program> file = test::paged(memory);
   ASSERT_TRUE(file.has_value());
   CodeView in_memory(memory), paged(*file);
-  // Every instruction start, forward, as the executor reads.
+  // Every instruction start and its line, forward, as the executor reads.
   std::vector<uint32_t> starts;
+  std::size_t forward_hint = 0;
   for (uint32_t offset = 0; offset < memory.code.size();) {
+    const bytecode::LineEntry* expected = memory.lineFor(offset);
+    ASSERT_NE(expected, nullptr);
+    ASSERT_EQ(paged.lineFor(offset, forward_hint), *expected) << offset;
     bytecode::Instruction a, b;
     uint32_t size_a = 0, size_b = 0;
     ASSERT_EQ(in_memory.decode(offset, 3, a, size_a), bytecode::DecodeStatus::Ok);

@@ -13,11 +13,14 @@ std::span<const uint8_t> CodeView::Window::bytes(uint64_t begin, std::size_t cou
   if (begin >= limit_) return {};
   count = static_cast<std::size_t>(std::min<uint64_t>(count, limit_ - begin));
   if (!holds(begin, count)) {
-    start_ = begin;
+    // A little of what lies before stays in the window: the line lookup looks at the entry
+    // before the one that crossed into a new window once more.
+    constexpr uint64_t kBehind = 4 * kLineEntrySize;
+    start_ = begin >= kBehind ? begin - kBehind : 0;
     const std::size_t want =
-        static_cast<std::size_t>(std::min<uint64_t>(buffer_.size(), limit_ - begin));
-    filled_ = file_->read(base_ + begin, buffer_.data(), want);
-    count = std::min(count, filled_);
+        static_cast<std::size_t>(std::min<uint64_t>(buffer_.size(), limit_ - start_));
+    filled_ = file_->read(base_ + start_, buffer_.data(), want);
+    if (!holds(begin, count)) count = filled_ > begin - start_ ? filled_ - (begin - start_) : 0;
   }
   return std::span<const uint8_t>(buffer_.data() + (begin - start_), count);
 }
