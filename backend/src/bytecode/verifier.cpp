@@ -40,7 +40,7 @@ class Verifier {
     if (auto e = checkMachine()) return e;
     if (auto e = checkInstructions()) return e;
     if (program_.units.empty()) return problem("NCC7112", "no program unit");
-    scanBoundaries();
+    if (auto e = scanBoundaries()) return e;
     if (auto e = checkJumps()) return e;
     if (auto e = checkUnits()) return e;
     if (auto e = checkStackAndFlow()) return e;
@@ -218,7 +218,7 @@ class Verifier {
   // Second pass: instruction starts, compared in order with the sorted jump targets, unit
   // entries and line entries; and the blocks. Records the first problem of each kind (in the
   // order a whole-code check would report it) for run() to report in its turn.
-  void scanBoundaries() {
+  std::optional<Error> scanBoundaries() {
     std::vector<std::pair<uint32_t, std::size_t>> targets;  // (target, jump index)
     for (std::size_t i = 0; i < jumps_.size(); ++i) targets.push_back({jumps_[i].second, i});
     std::vector<std::pair<uint32_t, std::size_t>> entries;  // (entry, unit index)
@@ -272,7 +272,7 @@ class Verifier {
       if (!open) open = Block{offset};
       Instruction in;
       uint32_t size = 0;
-      code_.decode(offset, axis_count_, in, size);  // checked by checkInstructions
+      if (code_.decode(offset, axis_count_, in, size) != DecodeStatus::Ok) return changed(offset);
       const OpcodeInfo& info = *opcodeInfo(static_cast<uint8_t>(in.op));
       Block& b = *open;
       b.last = offset;
@@ -299,21 +299,29 @@ class Verifier {
     }
     // Everything left is at or beyond the end of the code: no instruction starts there.
     reachBoundary(std::numeric_limits<uint64_t>::max());
+    return std::nullopt;
+  }
+
+  // An instruction the first pass decoded does not decode again: a paged program's file was
+  // changed (or could not be read) while it was verified.
+  static Error changed(uint32_t offset) {
+    return problem("NCC7101", absl::StrCat(at(offset), ": the instruction reads differently "
+                                           "than before (was the file changed?)"));
   }
 
   std::optional<Error> checkLine(std::size_t i, const LineEntry& e,
                                  std::optional<uint32_t> previous, bool starts) {
-    const std::string where = absl::StrCat("line table entry ", i);
+    auto where = [&] { return absl::StrCat("line table entry ", i); };
     if (previous && e.offset <= *previous)
-      return problem("NCC7111", absl::StrCat(where, ": offset ",
+      return problem("NCC7111", absl::StrCat(where(), ": offset ",
                                              absl::Hex(e.offset, absl::kZeroPad6),
                                              " does not increase"));
     if (!starts)
-      return problem("NCC7111", absl::StrCat(where, ": offset ",
+      return problem("NCC7111", absl::StrCat(where(), ": offset ",
                                              absl::Hex(e.offset, absl::kZeroPad6),
                                              " is not the start of an instruction"));
     if (e.file >= program_.strings.size())
-      return problem("NCC7111", absl::StrCat(where, ": file string ", e.file,
+      return problem("NCC7111", absl::StrCat(where(), ": file string ", e.file,
                                              " does not exist"));
     return std::nullopt;
   }
@@ -352,7 +360,7 @@ class Verifier {
     for (uint32_t offset = b.start; offset <= b.last;) {
       Instruction in;
       uint32_t size = 0;
-      code_.decode(offset, axis_count_, in, size);
+      if (code_.decode(offset, axis_count_, in, size) != DecodeStatus::Ok) return changed(offset);
       const OpcodeInfo& info = *opcodeInfo(static_cast<uint8_t>(in.op));
       if (d < info.pops)
         return problem("NCC7106", absl::StrCat(at(offset, in), ": needs ", int{info.pops},
