@@ -13,6 +13,7 @@ import os
 import subprocess
 import sys
 import tempfile
+import time
 import unittest
 
 NCC = None
@@ -105,6 +106,21 @@ class RunMemoryTest(unittest.TestCase):
         proc = subprocess.run([NCC, "run", bad], capture_output=True, text=True, timeout=60,
                               env=self.env)
         self.assertEqual(proc.returncode, 1, proc.stderr)
+        self.assertEqual(os.listdir(self.scratch), [])
+
+    def test_scratch_file_is_never_visible_even_on_sigkill(self):
+        # The scratch file is unlinked as soon as it is made: neither during the run nor after
+        # a SIGKILL (which no handler can clean up after) is there anything in $TMPDIR.
+        proc = subprocess.Popen([NCC, "run", self.source[LARGE], "--emit=moves"],
+                                stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL,
+                                env=self.env)
+        try:
+            for _ in range(20):
+                time.sleep(0.05)
+                self.assertEqual(os.listdir(self.scratch), [])
+        finally:
+            proc.kill()
+            proc.wait()
         self.assertEqual(os.listdir(self.scratch), [])
 
     def test_unusable_tmpdir_is_a_precise_error(self):
