@@ -1,6 +1,7 @@
 #include "ncc/driver/run.h"
 
 #include <fstream>
+#include <memory>
 #include <sstream>
 
 #include "absl/strings/match.h"
@@ -10,6 +11,7 @@
 #include "ncc/bytecode/verifier.h"
 #include "ncc/driver/compile.h"
 #include "ncc/vm/executor.h"
+#include "scratch_file.h"
 
 namespace ncc::driver {
 
@@ -32,13 +34,39 @@ std::optional<bytecode::Error> loadBytes(std::string_view bytes, bytecode::Progr
       std::span<const uint8_t>(reinterpret_cast<const uint8_t*>(bytes.data()), bytes.size()), program);
 }
 
+// Compiles the session's input into a scratch file and loads it paged.
+std::optional<bytecode::Error> compilePaged(Session& session, bytecode::Program& program,
+                                            bool& compiled) {
+  ScratchFile scratch = makeScratchFile();
+  if (!scratch.error.empty()) return bytecode::Error{"NCC0004", scratch.error};
+  std::shared_ptr<const bytecode::ProgramFile> file = bytecode::ProgramFile::adopt(scratch.read_fd);
+  compiled = emitBytecode(session, scratch.stream);
+  if (!compiled) return std::nullopt;  // the compile's own diagnostics say why
+  scratch.stream.flush();
+  if (!scratch.stream)
+    return bytecode::Error{"NCC0004", "cannot write the temporary bytecode file"};
+  return bytecode::loadPaged(std::move(file), program);
+}
+
 }  // namespace
 
-bool loadProgram(Session& session, bytecode::Program& program, bool check_machine) {
+bool loadProgram(Session& session, bytecode::Program& program, bool check_machine,
+                 Residence residence, std::optional<SetupError>* setup_error) {
   std::optional<bytecode::Error> error;
+  const bool paged = residence == Residence::Paged;
   if (isBytecodeInput(session)) {
     const std::string* from_stdin = session.stdinContents();
-    error = from_stdin ? loadBytes(*from_stdin, program) : bytecode::loadFile(session.input(), program);
+    if (from_stdin) error = loadBytes(*from_stdin, program);
+    else if (paged) error = bytecode::loadFilePaged(session.input(), program);
+    else error = bytecode::loadFile(session.input(), program);
+  } else if (paged) {
+    bool compiled = false;
+    error = compilePaged(session, program, compiled);
+    if (!compiled && !error) return false;
+    if (error && error->code == "NCC0004" && setup_error != nullptr) {
+      *setup_error = SetupError{error->code, error->message};
+      return false;
+    }
   } else {
     std::stringstream buffer;
     if (!emitBytecode(session, buffer)) return false;
@@ -54,7 +82,9 @@ bool loadProgram(Session& session, bytecode::Program& program, bool check_machin
   }
   if (error) {
     session.diagnostics().error(error->code, SourceLocation{session.mainFile(), 0, 0},
-                                absl::StrCat("invalid bytecode: ", error->message));
+                                error->code == "NCC0004"  // the scratch file
+                                    ? error->message
+                                    : absl::StrCat("invalid bytecode: ", error->message));
     return false;
   }
   return true;

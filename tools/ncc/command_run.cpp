@@ -218,9 +218,17 @@ int runRun(const RunArgs& args) {
   if (std::optional<int> failed = openSession(session, args.input, args.common)) return *failed;
   bytecode::Program program;
   bool loaded = false;
+  std::optional<driver::SetupError> no_scratch;  // NCC0004: $TMPDIR unusable
   {
     CompileProgress progress(session);
-    loaded = driver::loadProgram(session, program);
+    // Paged: the run's memory does not grow with the program (docs/cli.md, "ncc run memory").
+    loaded = driver::loadProgram(session, program, /*check_machine=*/true,
+                                 driver::Residence::Paged, &no_scratch);
+  }
+  if (no_scratch) {
+    printDiagnostics(session);
+    printError(no_scratch->code, no_scratch->message);
+    return kUsage;
   }
   if (!loaded) {
     printDiagnostics(session);

@@ -67,6 +67,7 @@ double numeric(bool vacant, double v) { return vacant ? 0.0 : v; }
 
 Executor::Executor(const bytecode::Program& program, const MachineConfig& machine)
     : program_(program),
+      code_(program),
       axis_count_(program.axisCount()),
       axes_(machine.axes),
       travel_alarms_(travelAlarmCodes(program.header.dialect)),
@@ -85,9 +86,9 @@ Executor::Executor(const bytecode::Program& program, const MachineConfig& machin
   }
 }
 
-SourcePosition Executor::where(uint32_t offset) const {
-  const bytecode::LineEntry* e = program_.lineFor(offset, line_hint_);
-  return e == nullptr ? SourcePosition{} : SourcePosition{e->file, e->line, e->column};
+SourcePosition Executor::where(uint32_t offset) {
+  const std::optional<bytecode::LineEntry> e = code_.lineFor(offset, line_hint_);
+  return e ? SourcePosition{e->file, e->line, e->column} : SourcePosition{};
 }
 
 bool Executor::raise(const char* code, const char* message, uint32_t offset) {
@@ -143,7 +144,7 @@ bool Executor::next(Event& out) {
     const uint32_t at = pc_;
     Instruction in;
     uint32_t size = 0;
-    if (bytecode::decode(program_.code, at, axis_count_, in, size) != bytecode::DecodeStatus::Ok)
+    if (code_.decode(at, axis_count_, in, size) != bytecode::DecodeStatus::Ok)
       return raise("NCC7205", "cannot decode the instruction (unverified code)", at);
     pc_ = at + size;
 

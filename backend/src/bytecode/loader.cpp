@@ -1,11 +1,15 @@
 #include "ncc/bytecode/loader.h"
 
+#include <algorithm>
+#include <array>
 #include <fstream>
+#include <functional>
 #include <iterator>
 
 #include "absl/strings/str_cat.h"
 #include "bytes.h"
 #include "ncc/bytecode/checksum.h"
+#include "ncc/bytecode/code_view.h"
 #include "header_layout.h"
 
 namespace ncc::bytecode {
@@ -105,16 +109,26 @@ std::optional<Error> readUnits(std::span<const uint8_t> s, std::vector<Unit>& ou
   return std::nullopt;
 }
 
-}  // namespace
+// The file's first bytes (at least its header, or the whole file when shorter) and its size.
+struct Head {
+  std::span<const uint8_t> bytes;
+  uint64_t file_size = 0;
+};
 
-std::optional<Error> load(std::span<const uint8_t> bytes, Program& program) {
-  if (bytes.size() < kFixedHeaderSize)
-    return problem("NCC7001", absl::StrCat("file of ", bytes.size(), " bytes is shorter than the ",
+// The checksum the file's contents give, or an error when they cannot be read.
+using ChecksumOf = std::function<std::optional<uint64_t>()>;
+
+// Everything before the sections: magic, version, checksum, header fields, axis table and the
+// section table, whose sections must tile the rest of the file exactly, in order.
+std::optional<Error> readHeader(const Head& head, const ChecksumOf& checksum, Header& header,
+                                SectionTable& sections) {
+  const uint64_t file_size = head.file_size;
+  if (file_size < kFixedHeaderSize)
+    return problem("NCC7001", absl::StrCat("file of ", file_size, " bytes is shorter than the ",
                                            kFixedHeaderSize, "-byte header"));
-  if (!std::equal(std::begin(kMagic), std::end(kMagic), bytes.begin()))
+  if (!std::equal(std::begin(kMagic), std::end(kMagic), head.bytes.begin()))
     return problem("NCC7002", "not an ncc bytecode file (magic is not 'NCCB')");
-  const uint8_t* p = bytes.data();
-  Header header;
+  const uint8_t* p = head.bytes.data();
   header.version_major = bytes::getU16(p + 4);
   header.version_minor = bytes::getU16(p + 6);
   if (header.version_major != kVersionMajor || header.version_minor > kVersionMinor)
@@ -123,12 +137,13 @@ std::optional<Error> load(std::span<const uint8_t> bytes, Program& program) {
                                            kVersionMajor, ".", kVersionMinor, ")"));
   // Before any other field is trusted: a file changed after it was written (a flipped bit,
   // a hand edit) is refused as a whole rather than run with different moves.
-  if (const uint64_t stored = storedChecksum(bytes), actual = fileChecksum(bytes);
-      stored != actual)
+  const std::optional<uint64_t> actual = checksum();
+  if (!actual) return problem("NCC7015", "cannot read the file");
+  if (const uint64_t stored = storedChecksum(head.bytes); stored != *actual)
     return problem("NCC7016", absl::StrCat("checksum mismatch: the header says ",
                                            absl::Hex(stored, absl::kZeroPad16),
                                            ", the contents give ",
-                                           absl::Hex(actual, absl::kZeroPad16),
+                                           absl::Hex(*actual, absl::kZeroPad16),
                                            " (the file was changed or damaged after it "
                                            "was written)"));
   if (p[8] > static_cast<uint8_t>(Dialect::SiemensDin))
@@ -146,13 +161,11 @@ std::optional<Error> load(std::span<const uint8_t> bytes, Program& program) {
   header.config_hash = bytes::getU64(p + 16);
 
   const uint32_t header_size = headerSize(axis_count);
-  if (bytes.size() < header_size)
-    return problem("NCC7001", absl::StrCat("file of ", bytes.size(), " bytes ends inside the ",
+  if (file_size < header_size)
+    return problem("NCC7001", absl::StrCat("file of ", file_size, " bytes ends inside the ",
                                            header_size, "-byte header"));
-  if (std::optional<Error> e = readAxes(bytes, axis_count, header)) return e;
+  if (std::optional<Error> e = readAxes(head.bytes, axis_count, header)) return e;
 
-  // The sections must tile the rest of the file exactly, in order.
-  SectionTable sections;
   uint64_t expected = header_size;
   for (int i = 0; i < kSectionCount; ++i) {
     sections[i].offset = bytes::getU32(p + kSectionTableOffset + 8 * i);
@@ -161,22 +174,62 @@ std::optional<Error> load(std::span<const uint8_t> bytes, Program& program) {
       return problem("NCC7006", absl::StrCat(kSectionNames[i], " section starts at ",
                                              sections[i].offset, ", expected ", expected));
     expected += sections[i].size;
-    if (expected > bytes.size())
+    if (expected > file_size)
       return problem("NCC7006", absl::StrCat(kSectionNames[i], " section (", sections[i].size,
                                              " bytes at ", sections[i].offset,
-                                             ") runs past the end of the file (", bytes.size(),
+                                             ") runs past the end of the file (", file_size,
                                              " bytes)"));
   }
-  if (expected != bytes.size())
-    return problem("NCC7006", absl::StrCat(bytes.size() - expected,
+  if (expected != file_size)
+    return problem("NCC7006", absl::StrCat(file_size - expected,
                                            " bytes after the last section"));
+  return std::nullopt;
+}
+
+const SectionRange& range(const SectionTable& sections, Section s) {
+  return sections[static_cast<int>(s)];
+}
+
+// Reads a whole (small) section of `file`.
+std::optional<std::vector<uint8_t>> readSection(const ProgramFile& file, const SectionRange& r) {
+  std::vector<uint8_t> out(r.size);
+  if (file.read(r.offset, out.data(), out.size()) != out.size()) return std::nullopt;
+  return out;
+}
+
+// The streaming form of fileChecksum(): the file from the end of the fixed header, a window
+// at a time, then the fixed header with the checksum field as zero.
+std::optional<uint64_t> streamChecksum(const ProgramFile& file, uint64_t file_size,
+                                       std::span<const uint8_t> fixed_header) {
+  Fnv1a64 hash;
+  std::vector<uint8_t> buffer(CodeView::kPageSize);
+  for (uint64_t at = kFixedHeaderSize; at < file_size;) {
+    const std::size_t want = static_cast<std::size_t>(std::min<uint64_t>(buffer.size(),
+                                                                          file_size - at));
+    if (file.read(at, buffer.data(), want) != want) return std::nullopt;
+    hash.update(std::span<const uint8_t>(buffer.data(), want));
+    at += want;
+  }
+  std::array<uint8_t, kFixedHeaderSize> zeroed;
+  std::copy_n(fixed_header.begin(), kFixedHeaderSize, zeroed.begin());
+  std::fill_n(zeroed.begin() + kChecksumOffset, 8, uint8_t{0});
+  hash.update(zeroed);
+  return hash.value();
+}
+
+}  // namespace
+
+std::optional<Error> load(std::span<const uint8_t> bytes, Program& program) {
+  Program result;
+  SectionTable sections;
+  if (std::optional<Error> e = readHeader(Head{bytes, bytes.size()},
+                                          [&] { return std::optional(fileChecksum(bytes)); },
+                                          result.header, sections))
+    return e;
   auto section = [&](Section s) {
-    const SectionRange& r = sections[static_cast<int>(s)];
+    const SectionRange& r = range(sections, s);
     return bytes.subspan(r.offset, r.size);
   };
-
-  Program result;
-  result.header = std::move(header);
   std::span<const uint8_t> code = section(Section::Code);
   result.code.assign(code.begin(), code.end());
   if (std::optional<Error> e = readLines(section(Section::Lines), result.lines)) return e;
@@ -184,6 +237,46 @@ std::optional<Error> load(std::span<const uint8_t> bytes, Program& program) {
   if (std::optional<Error> e = readUnits(section(Section::Units), result.units)) return e;
   program = std::move(result);
   return std::nullopt;
+}
+
+std::optional<Error> loadPaged(std::shared_ptr<const ProgramFile> file, Program& program) {
+  const int64_t size = file->size();
+  if (size < 0) return problem("NCC7015", "cannot read the file");
+  const uint64_t file_size = static_cast<uint64_t>(size);
+  std::array<uint8_t, kFixedHeaderSize + kAxisEntrySize * kMaxAxes> head_bytes{};
+  const std::size_t head_size =
+      static_cast<std::size_t>(std::min<uint64_t>(head_bytes.size(), file_size));
+  if (file->read(0, head_bytes.data(), head_size) != head_size)
+    return problem("NCC7015", "cannot read the file");
+  const Head head{std::span<const uint8_t>(head_bytes.data(), head_size), file_size};
+  Program result;
+  SectionTable sections;
+  if (std::optional<Error> e = readHeader(
+          head, [&] { return streamChecksum(*file, file_size, head.bytes); }, result.header,
+          sections))
+    return e;
+  const SectionRange& lines = range(sections, Section::Lines);
+  if (lines.size % kLineEntrySize != 0)
+    return problem("NCC7008", absl::StrCat("line table: size ", lines.size,
+                                           " is not a multiple of ", kLineEntrySize));
+  std::optional<std::vector<uint8_t>> strings = readSection(*file, range(sections, Section::Strings));
+  std::optional<std::vector<uint8_t>> units = readSection(*file, range(sections, Section::Units));
+  if (!strings || !units) return problem("NCC7015", "cannot read the file");
+  if (std::optional<Error> e = readStrings(*strings, result.strings)) return e;
+  if (std::optional<Error> e = readUnits(*units, result.units)) return e;
+  const SectionRange& code = range(sections, Section::Code);
+  result.paged = PagedSections{std::move(file), code.offset, code.size, lines.offset,
+                               lines.size / kLineEntrySize};
+  program = std::move(result);
+  return std::nullopt;
+}
+
+std::optional<Error> loadFilePaged(const std::filesystem::path& path, Program& program) {
+  std::shared_ptr<const ProgramFile> file = ProgramFile::open(path);
+  if (!file) return problem("NCC7015", absl::StrCat("cannot open '", path.string(), "'"));
+  std::optional<Error> e = loadPaged(std::move(file), program);
+  if (e && e->code == "NCC7015") e->message = absl::StrCat("cannot read '", path.string(), "'");
+  return e;
 }
 
 std::optional<Error> loadFile(const std::filesystem::path& path, Program& program) {

@@ -1,10 +1,13 @@
 #include "ncc/bytecode/verifier.h"
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 #include <utility>
 #include <vector>
 
 #include "absl/strings/str_cat.h"
+#include "ncc/bytecode/code_view.h"
 #include "ncc/bytecode/instruction.h"
 
 namespace ncc::bytecode {
@@ -26,15 +29,22 @@ Error problem(std::string code, std::string message) {
 class Verifier {
  public:
   Verifier(const Program& program, const VerifyOptions& options)
-      : program_(program), options_(options), axis_count_(program.axisCount()) {}
+      : program_(program), options_(options), axis_count_(program.axisCount()), code_(program) {}
 
+  // Two passes over the code, so that a paged program is verified in memory proportional to
+  // its jumps and units, not to its length: the first checks each instruction and collects the
+  // jumps; the second checks jump targets, unit entries and line entries against the
+  // instruction starts as they pass by, and summarises the code's basic blocks (cut at jumps,
+  // ends and jump targets), whose stack depths are then checked on the block graph.
   std::optional<Error> run() {
     if (auto e = checkMachine()) return e;
     if (auto e = checkInstructions()) return e;
+    if (program_.units.empty()) return problem("NCC7112", "no program unit");
+    if (auto e = scanBoundaries()) return e;
     if (auto e = checkJumps()) return e;
     if (auto e = checkUnits()) return e;
     if (auto e = checkStackAndFlow()) return e;
-    return checkLines();
+    return line_error_;
   }
 
  private:
@@ -66,28 +76,28 @@ class Verifier {
     return std::nullopt;
   }
 
-  // Linear pass: every instruction decodes and its operands are valid.
+  // First pass: every instruction decodes and its operands are valid.
   std::optional<Error> checkInstructions() {
-    const std::vector<uint8_t>& code = program_.code;
-    if (code.empty()) return problem("NCC7109", "the code section is empty");
-    starts_.assign(code.size(), false);
+    const uint32_t code_size = code_.codeSize();
+    if (code_size == 0) return problem("NCC7109", "the code section is empty");
     uint32_t offset = 0;
-    while (offset < code.size()) {
+    while (offset < code_size) {
       Instruction in;
       uint32_t size = 0;
-      switch (decode(code, offset, axis_count_, in, size)) {
+      switch (code_.decode(offset, axis_count_, in, size)) {
         case DecodeStatus::BadOpcode:
           return problem("NCC7101", absl::StrCat(at(offset), ": unknown opcode 0x",
-                                                 absl::Hex(code[offset], absl::kZeroPad2)));
+                                                 absl::Hex(code_.byteAt(offset),
+                                                           absl::kZeroPad2)));
         case DecodeStatus::Truncated:
           return problem("NCC7101", absl::StrCat(at(offset), ": instruction runs past the end "
                                                  "of the code"));
         case DecodeStatus::Ok:
           break;
       }
-      starts_[offset] = true;
       if (auto e = checkOperands(offset, in)) return e;
-      if (in.op == Opcode::Jump || in.op == Opcode::JumpIfFalse) jumps_.push_back({offset, in.target});
+      if (in.op == Opcode::Jump || in.op == Opcode::JumpIfFalse)
+        jumps_.push_back({offset, in.target});
       offset += size;
     }
     return std::nullopt;
@@ -190,23 +200,144 @@ class Verifier {
     }
   }
 
-  bool isStart(uint32_t offset) const { return offset < starts_.size() && starts_[offset]; }
+  // A run of instructions entered only at its first (a unit entry, a jump target, or the
+  // instruction after a block's end) and left only after its last.
+  struct Block {
+    uint32_t start = 0;
+    uint32_t last = 0;      // offset of its last instruction
+    int need = 0;           // the entry depth it needs: max over its instructions of pops - depth
+    int peak = 0;           // the highest depth it reaches, relative to its entry
+    int delta = 0;          // depth at its end, relative to its entry
+    bool falls_through = true;  // the last instruction continues at `next`
+    bool jumps = false;         // the last instruction may continue at `target`
+    bool ends = false;          // the last instruction ends the program
+    uint32_t next = 0;
+    uint32_t target = 0;
+  };
 
-  std::optional<Error> checkJumps() {
-    for (const auto& [offset, target] : jumps_) {
-      if (!isStart(target))
-        return problem("NCC7105", absl::StrCat(at(offset), ": jump target ",
-                                               absl::Hex(target, absl::kZeroPad6),
-                                               " is not the start of an instruction"));
+  // Second pass: instruction starts, compared in order with the sorted jump targets, unit
+  // entries and line entries; and the blocks. Records the first problem of each kind (in the
+  // order a whole-code check would report it) for run() to report in its turn.
+  std::optional<Error> scanBoundaries() {
+    std::vector<std::pair<uint32_t, std::size_t>> targets;  // (target, jump index)
+    for (std::size_t i = 0; i < jumps_.size(); ++i) targets.push_back({jumps_[i].second, i});
+    std::vector<std::pair<uint32_t, std::size_t>> entries;  // (entry, unit index)
+    for (std::size_t i = 0; i < program_.units.size(); ++i)
+      entries.push_back({program_.units[i].entry, i});
+    std::sort(targets.begin(), targets.end());
+    std::sort(entries.begin(), entries.end());
+    std::size_t next_target = 0, next_entry = 0, next_line = 0;
+    std::optional<uint32_t> previous_line;
+    bad_jump_ = jumps_.size();
+    bad_unit_ = program_.units.size();
+
+    // Passes the items before `boundary` (not instruction starts) and those at it; true when
+    // one is at it (a block leader).
+    auto reachBoundary = [&](uint64_t boundary) {
+      bool leader = false;
+      for (; next_target < targets.size() && targets[next_target].first <= boundary;
+           ++next_target) {
+        if (targets[next_target].first == boundary) leader = true;
+        else bad_jump_ = std::min(bad_jump_, targets[next_target].second);
+      }
+      for (; next_entry < entries.size() && entries[next_entry].first <= boundary; ++next_entry) {
+        if (entries[next_entry].first == boundary) leader = true;
+        else bad_unit_ = std::min(bad_unit_, entries[next_entry].second);
+      }
+      while (!line_error_ && next_line < code_.lineCount()) {
+        const std::optional<LineEntry> e = code_.line(next_line);
+        if (!e) {
+          line_error_ = problem("NCC7111", absl::StrCat("line table entry ", next_line,
+                                                        ": cannot be read"));
+          break;
+        }
+        if (e->offset > boundary) break;
+        line_error_ = checkLine(next_line, *e, previous_line, e->offset == boundary);
+        previous_line = e->offset;
+        ++next_line;
+      }
+      return leader;
+    };
+
+    const uint32_t code_size = code_.codeSize();
+    std::optional<Block> open;
+    uint32_t offset = 0;
+    while (offset < code_size) {
+      const bool leader = reachBoundary(offset);
+      if (open && leader) {
+        open->next = offset;
+        blocks_.push_back(*open);
+        open.reset();
+      }
+      if (!open) open = Block{offset};
+      Instruction in;
+      uint32_t size = 0;
+      if (code_.decode(offset, axis_count_, in, size) != DecodeStatus::Ok) return changed(offset);
+      const OpcodeInfo& info = *opcodeInfo(static_cast<uint8_t>(in.op));
+      Block& b = *open;
+      b.last = offset;
+      b.need = std::max(b.need, info.pops - b.delta);
+      b.delta += info.pushes - info.pops;
+      b.peak = std::max(b.peak, b.delta);
+      offset += size;
+      const bool jump = in.op == Opcode::Jump || in.op == Opcode::JumpIfFalse;
+      const bool ends = in.op == Opcode::End || in.op == Opcode::ProgramEnd ||
+                        in.op == Opcode::ProgramEndRewind;
+      if (jump || ends || !info.falls_through) {
+        b.falls_through = info.falls_through;
+        b.jumps = jump;
+        b.ends = ends;
+        b.target = in.target;
+        b.next = offset;
+        blocks_.push_back(b);
+        open.reset();
+      }
     }
+    if (open) {  // the last instruction falls through past the end of the code
+      open->next = code_size;
+      blocks_.push_back(*open);
+    }
+    // Everything left is at or beyond the end of the code: no instruction starts there.
+    reachBoundary(std::numeric_limits<uint64_t>::max());
     return std::nullopt;
   }
 
+  // An instruction the first pass decoded does not decode again: a paged program's file was
+  // changed (or could not be read) while it was verified.
+  static Error changed(uint32_t offset) {
+    return problem("NCC7101", absl::StrCat(at(offset), ": the instruction reads differently "
+                                           "than before (was the file changed?)"));
+  }
+
+  std::optional<Error> checkLine(std::size_t i, const LineEntry& e,
+                                 std::optional<uint32_t> previous, bool starts) {
+    auto where = [&] { return absl::StrCat("line table entry ", i); };
+    if (previous && e.offset <= *previous)
+      return problem("NCC7111", absl::StrCat(where(), ": offset ",
+                                             absl::Hex(e.offset, absl::kZeroPad6),
+                                             " does not increase"));
+    if (!starts)
+      return problem("NCC7111", absl::StrCat(where(), ": offset ",
+                                             absl::Hex(e.offset, absl::kZeroPad6),
+                                             " is not the start of an instruction"));
+    if (e.file >= program_.strings.size())
+      return problem("NCC7111", absl::StrCat(where(), ": file string ", e.file,
+                                             " does not exist"));
+    return std::nullopt;
+  }
+
+  std::optional<Error> checkJumps() {
+    if (bad_jump_ == jumps_.size()) return std::nullopt;
+    const auto& [offset, target] = jumps_[bad_jump_];
+    return problem("NCC7105", absl::StrCat(at(offset), ": jump target ",
+                                           absl::Hex(target, absl::kZeroPad6),
+                                           " is not the start of an instruction"));
+  }
+
   std::optional<Error> checkUnits() {
-    if (program_.units.empty()) return problem("NCC7112", "no program unit");
     for (size_t i = 0; i < program_.units.size(); ++i) {
       const Unit& unit = program_.units[i];
-      if (!isStart(unit.entry))
+      if (i == bad_unit_)
         return problem("NCC7112", absl::StrCat("unit ", i, ": entry ",
                                                absl::Hex(unit.entry, absl::kZeroPad6),
                                                " is not the start of an instruction"));
@@ -217,43 +348,20 @@ class Verifier {
     return std::nullopt;
   }
 
-  // Abstract interpretation of the stack depth from every unit entry.
-  std::optional<Error> checkStackAndFlow() {
-    const std::vector<uint8_t>& code = program_.code;
-    std::vector<int8_t> depth(code.size(), -1);
-    std::vector<uint32_t> work;
-    bool end_reachable = false;
-    auto reach = [&](uint32_t from, uint32_t to, int d) -> std::optional<Error> {
-      if (to >= code.size())
-        return problem("NCC7109", absl::StrCat(at(from), ": execution runs past the end of "
-                                               "the code (no END)"));
-      if (depth[to] < 0) {
-        depth[to] = static_cast<int8_t>(d);
-        work.push_back(to);
-      } else if (depth[to] != d) {
-        return problem("NCC7108", absl::StrCat(at(to), ": stack depth ", d, " from ", at(from),
-                                               " differs from depth ", depth[to],
-                                               " on another path"));
-      }
-      return std::nullopt;
-    };
-    for (const Unit& unit : program_.units) {
-      if (depth[unit.entry] < 0) {
-        depth[unit.entry] = 0;
-        work.push_back(unit.entry);
-      } else if (depth[unit.entry] != 0) {
-        return problem("NCC7108", absl::StrCat(at(unit.entry), ": unit entry reached with a "
-                                               "non-empty stack"));
-      }
-    }
-    while (!work.empty()) {
-      const uint32_t offset = work.back();
-      work.pop_back();
+  // The block starting at `offset` (a checked instruction start that begins a block).
+  std::size_t blockAt(uint32_t offset) const {
+    auto it = std::lower_bound(blocks_.begin(), blocks_.end(), offset,
+                               [](const Block& b, uint32_t o) { return b.start < o; });
+    return static_cast<std::size_t>(it - blocks_.begin());
+  }
+
+  // The problem a block entered at depth `d` has, found by running its instructions again.
+  std::optional<Error> blockProblem(const Block& b, int d) {
+    for (uint32_t offset = b.start; offset <= b.last;) {
       Instruction in;
       uint32_t size = 0;
-      decode(code, offset, axis_count_, in, size);  // checked by checkInstructions
+      if (code_.decode(offset, axis_count_, in, size) != DecodeStatus::Ok) return changed(offset);
       const OpcodeInfo& info = *opcodeInfo(static_cast<uint8_t>(in.op));
-      int d = depth[offset];
       if (d < info.pops)
         return problem("NCC7106", absl::StrCat(at(offset, in), ": needs ", int{info.pops},
                                                " values, the stack holds ", d));
@@ -261,42 +369,65 @@ class Verifier {
       if (d > kMaxStackDepth)
         return problem("NCC7107", absl::StrCat(at(offset, in), ": stack deeper than ",
                                                kMaxStackDepth));
-      if (in.op == Opcode::End || in.op == Opcode::ProgramEnd ||
-          in.op == Opcode::ProgramEndRewind)
-        end_reachable = true;
-      if (in.op == Opcode::Jump || in.op == Opcode::JumpIfFalse)
-        if (auto e = reach(offset, in.target, d)) return e;
-      if (info.falls_through)
-        if (auto e = reach(offset, offset + size, d)) return e;
+      offset += size;
+    }
+    return std::nullopt;
+  }
+
+  // Abstract interpretation of the stack depth over the blocks, from every unit entry.
+  std::optional<Error> checkStackAndFlow() {
+    const uint32_t code_size = code_.codeSize();
+    std::vector<int> depth(blocks_.size(), -1);  // at each block's entry
+    std::vector<std::size_t> work;
+    bool end_reachable = false;
+    auto reach = [&](uint32_t from, uint32_t to, int d) -> std::optional<Error> {
+      if (to >= code_size)
+        return problem("NCC7109", absl::StrCat(at(from), ": execution runs past the end of "
+                                               "the code (no END)"));
+      const std::size_t i = blockAt(to);
+      if (depth[i] < 0) {
+        depth[i] = d;
+        work.push_back(i);
+      } else if (depth[i] != d) {
+        return problem("NCC7108", absl::StrCat(at(to), ": stack depth ", d, " from ", at(from),
+                                               " differs from depth ", depth[i],
+                                               " on another path"));
+      }
+      return std::nullopt;
+    };
+    for (const Unit& unit : program_.units) {
+      const std::size_t i = blockAt(unit.entry);
+      if (depth[i] < 0) {
+        depth[i] = 0;
+        work.push_back(i);
+      }
+    }
+    while (!work.empty()) {
+      const Block& b = blocks_[work.back()];
+      const int d = depth[work.back()];
+      work.pop_back();
+      if (d < b.need || d + b.peak > kMaxStackDepth) return blockProblem(b, d);
+      const int out = d + b.delta;
+      if (b.ends) end_reachable = true;
+      if (b.jumps)
+        if (auto e = reach(b.last, b.target, out)) return e;
+      if (b.falls_through)
+        if (auto e = reach(b.last, b.next, out)) return e;
     }
     if (!end_reachable)
       return problem("NCC7110", "no END, M02 or M30 is reachable: the program never ends");
     return std::nullopt;
   }
 
-  std::optional<Error> checkLines() {
-    const std::vector<LineEntry>& lines = program_.lines;
-    for (size_t i = 0; i < lines.size(); ++i) {
-      const LineEntry& e = lines[i];
-      const std::string where = absl::StrCat("line table entry ", i);
-      if (i > 0 && e.offset <= lines[i - 1].offset)
-        return problem("NCC7111", absl::StrCat(where, ": offset ", absl::Hex(e.offset, absl::kZeroPad6),
-                                               " does not increase"));
-      if (!isStart(e.offset))
-        return problem("NCC7111", absl::StrCat(where, ": offset ", absl::Hex(e.offset, absl::kZeroPad6),
-                                               " is not the start of an instruction"));
-      if (e.file >= program_.strings.size())
-        return problem("NCC7111", absl::StrCat(where, ": file string ", e.file,
-                                               " does not exist"));
-    }
-    return std::nullopt;
-  }
-
   const Program& program_;
   const VerifyOptions& options_;
   const int axis_count_;
-  std::vector<bool> starts_;
-  std::vector<std::pair<uint32_t, uint32_t>> jumps_;  // (jump offset, target)
+  CodeView code_;
+  std::vector<std::pair<uint32_t, uint32_t>> jumps_;  // (jump offset, target), in code order
+  std::vector<Block> blocks_;                          // in code order
+  std::size_t bad_jump_ = 0;  // first jump whose target is no instruction start (or none)
+  std::size_t bad_unit_ = 0;  // first unit whose entry is no instruction start (or none)
+  std::optional<Error> line_error_;  // first problem of the line table
 };
 
 }  // namespace

@@ -1,12 +1,20 @@
 #pragma once
 // A loaded bytecode file: header, string pool, code, line table and program units. Produced
 // by the loader (loader.h), checked by the verifier (verifier.h), run by the VM.
+//
+// The code and the line table grow with the program (about 50 bytes a block); they are held
+// either in the vectors below or, for a paged program (loadPaged), left in the file and read
+// through a bounded window (code_view.h), so that running a long program takes no more memory
+// than running a short one. Header, strings and units are always in memory (they are small).
 #include <cstddef>
 #include <cstdint>
+#include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "ncc/bytecode/format.h"
+#include "ncc/bytecode/program_file.h"
 #include "ncc/machine/dialect.h"
 #include "ncc/machine/machine_config.h"
 
@@ -43,14 +51,29 @@ struct Unit {
   friend bool operator==(const Unit&, const Unit&) = default;
 };
 
+// Where a paged program's code and line table are in its file.
+struct PagedSections {
+  std::shared_ptr<const ProgramFile> file;
+  uint64_t code_offset = 0;
+  uint32_t code_size = 0;
+  uint64_t lines_offset = 0;
+  uint32_t line_count = 0;  // entries of kLineEntrySize bytes
+};
+
 struct Program {
   Header header;
   std::vector<std::string> strings;  // index 0 is "" (no file)
-  std::vector<uint8_t> code;
-  std::vector<LineEntry> lines;      // sorted by offset
+  std::vector<uint8_t> code;         // empty when paged
+  std::vector<LineEntry> lines;      // sorted by offset; empty when paged
   std::vector<Unit> units;           // units[0] is the main program
+  std::optional<PagedSections> paged;  // set: code and lines are read from the file
 
   int axisCount() const { return static_cast<int>(header.axes.size()); }
+  uint32_t codeSize() const {
+    return paged ? paged->code_size : static_cast<uint32_t>(code.size());
+  }
+  // In-memory programs only (the disassembler's): a paged program's entries are read through
+  // CodeView (code_view.h).
   // The entry covering `offset` (the last one at or before it), or nullptr.
   const LineEntry* lineFor(uint32_t offset) const;
   // The same, starting from entry `hint` (updated to the entry found, where there is one):

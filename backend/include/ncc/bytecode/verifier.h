@@ -7,6 +7,10 @@
 // kMaxStackDepth and has one depth at every join, execution cannot run off the end of the code,
 // an end of program is reachable, the line table is ordered and points at instruction starts
 // and existing strings, unit entries are instruction starts, and the axes match the machine.
+//
+// It reads the code and line table through bytecode::CodeView in a few forward passes, in
+// memory proportional to the program's jumps and units, so a paged program (loader.h,
+// loadPaged) is verified without holding its code (docs/bytecode.md, "Paged loading").
 #include <optional>
 
 #include "ncc/bytecode/error.h"

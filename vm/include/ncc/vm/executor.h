@@ -14,6 +14,7 @@
 #include <utility>
 #include <vector>
 
+#include "ncc/bytecode/code_view.h"
 #include "ncc/bytecode/program.h"
 #include "ncc/machine/machine_config.h"
 #include "ncc/machine/travel.h"
@@ -27,7 +28,8 @@ inline constexpr double kReferenceTolerance = 0.0005;
 
 class Executor {
  public:
-  // `program` must outlive the executor. Starts at machine.start_position.
+  // `program` must outlive the executor. Starts at machine.start_position. A paged program
+  // (bytecode::Program::paged) is read through a bounded window (bytecode::CodeView).
   Executor(const bytecode::Program& program, const MachineConfig& machine);
 
   // Runs to the next event and stores it in `out`. Returns false at the end of the program
@@ -65,12 +67,13 @@ class Executor {
   // An arc whose end point is not on its circle (beyond arc_radius_tolerance): no compiled
   // program holds one, and an edited file could make it a spiral of hours.
   bool raiseArcRadius(double start_radius, double end_radius, uint32_t offset);
-  SourcePosition where(uint32_t offset) const;
+  SourcePosition where(uint32_t offset);
   bool pop(Value& out, uint32_t offset);
   bool push(Value v, uint32_t offset);
 
   const bytecode::Program& program_;
-  mutable std::size_t line_hint_ = 0;  // the line entry where() found last (program order)
+  bytecode::CodeView code_;             // the program's code and line table
+  std::size_t line_hint_ = 0;  // the line entry where() found last (program order)
   const int axis_count_;
   const std::vector<AxisConfig> axes_;   // travel limits (a copy, sized once)
   const TravelAlarmCodes travel_alarms_;  // of the program's dialect
