@@ -67,20 +67,27 @@ std::unique_ptr<Controller> Controller::loadFile(const std::filesystem::path& pa
   return create(std::move(program), machine, error, options);
 }
 
+namespace {
+
+// What create() and createBorrowing() ask before a controller runs `program`: verified code
+// for this machine, and a sane machine. False with `error` set otherwise.
+bool readyToRun(const bytecode::Program& program, const MachineConfig& machine,
+                bytecode::Error& error) {
+  bytecode::VerifyOptions verify_options;
+  verify_options.machine = &machine;
+  std::optional<bytecode::Error> e = bytecode::verify(program, verify_options);
+  if (!e) e = checkMachine(machine);
+  if (e) error = std::move(*e);
+  return !e;
+}
+
+}  // namespace
+
 std::unique_ptr<Controller> Controller::create(bytecode::Program program,
                                                const MachineConfig& machine,
                                                bytecode::Error& error,
                                                const ControllerOptions& options) {
-  bytecode::VerifyOptions verify_options;
-  verify_options.machine = &machine;
-  if (std::optional<bytecode::Error> e = bytecode::verify(program, verify_options)) {
-    error = std::move(*e);
-    return nullptr;
-  }
-  if (std::optional<bytecode::Error> e = checkMachine(machine)) {
-    error = std::move(*e);
-    return nullptr;
-  }
+  if (!readyToRun(program, machine, error)) return nullptr;
   return std::make_unique<Controller>(std::move(program), machine, options);
 }
 
@@ -88,16 +95,7 @@ std::unique_ptr<Controller> Controller::createBorrowing(const bytecode::Program&
                                                         const MachineConfig& machine,
                                                         bytecode::Error& error,
                                                         const ControllerOptions& options) {
-  bytecode::VerifyOptions verify_options;
-  verify_options.machine = &machine;
-  if (std::optional<bytecode::Error> e = bytecode::verify(program, verify_options)) {
-    error = std::move(*e);
-    return nullptr;
-  }
-  if (std::optional<bytecode::Error> e = checkMachine(machine)) {
-    error = std::move(*e);
-    return nullptr;
-  }
+  if (!readyToRun(program, machine, error)) return nullptr;
   // The constructor is private: make_unique cannot reach it.
   return std::unique_ptr<Controller>(new Controller(nullptr, &program, machine, options));
 }
