@@ -73,6 +73,11 @@ std::vector<ParamSpec> buildRegistry() {
                        "Allowed difference of an arc's start and end radius, mm; a larger one is "
                        "an alarm (FANUC No.3410, Mazak F19)")
                       .range(0, kInf));
+  specs.push_back(Spec("default_feed", T::Number, kIso, "0", 0.0,
+                       "The feed, mm/min, of a G94 cutting move when no F has been programmed "
+                       "(Sinumerik SD42110 DEFAULT_FEED); 0: none, such a move is the feed alarm "
+                       "(PS0011, 816, 10860)")
+                      .range(0, 1e6));
   specs.push_back(Spec("base_frames", T::Integer, "siemens-iso-m", "0", 0.0,
                        "Number of base frames (MD $MC_MM_NUM_BASE_FRAMES)")
                       .range(0, 16));
@@ -160,6 +165,12 @@ std::vector<ParamSpec> buildRegistry() {
                       .oneOf({"tool_move", "shift"}));
   specs.push_back(Spec("geometry_wear_offsets", T::Bool, "fanuc-t", "true", true,
                        "Separate geometry and wear offset memories"));
+  specs.push_back(Spec("helical_feed_along_arc", T::Bool, kIso,
+                       "true in fanuc-m (HTG = 0), false in mazak-m and siemens-iso-m",
+                       std::nullopt,
+                       "Helical interpolation: F is the speed along the arc in its plane (true) "
+                       "or along the helix, the linear axes included (false) (FANUC No.1403#5 "
+                       "HTG = 0 / 1; Mazak and Sinumerik: along the helix)"));
   specs.push_back(Spec("increment_system", T::String, "fanuc-t, siemens-iso-m", "\"IS-B\"",
                        std::string("IS-B"),
                        "\"IS-B\" (0.001 mm / 0.0001 in) or \"IS-C\" (0.0001 mm / 0.00001 in)")

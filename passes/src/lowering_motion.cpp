@@ -90,6 +90,13 @@ bool checkFeed(BlockContext& ctx, bool inverse_time_needs_f) {
     }
     return true;
   }
+  if (!ctx.next.feed_programmed && !ctx.words.f && !ctx.next.feed_after_inverse_time &&
+      m.feed_mode == ir::FeedMode::PerMinute && ctx.settings.default_feed > 0) {
+    // Sinumerik: "SD42110 DEFAULT_FEED is used if no feed has been programmed" (ISO notes
+    // §4.2); the move runs at it, and so does every later one until an F.
+    ctx.next.modal.feed = ctx.settings.default_feed;
+    ctx.next.feed_programmed = true;
+  }
   if (!ctx.next.feed_programmed) {
     const char* mode = m.feed_mode == ir::FeedMode::PerRevolution ? "G95" : "G94";
     if (ctx.words.f && ctx.words.f->value > 0)
@@ -267,7 +274,7 @@ bool arc(BlockContext& ctx, const AxisValues& start, const AxisValues& target,
   if (ctx.next.modal.feed_mode == ir::FeedMode::InverseTime) {
     a.feed = ctx.behaviour.inverse_time_arc_per_radius ? ctx.next.modal.feed * r
                                                        : ctx.next.modal.feed * helix_len;
-  } else if (ctx.behaviour.helical_feed_along_arc && lin > 0 && plane_len > 0) {
+  } else if (ctx.settings.helical_feed_along_arc && lin > 0 && plane_len > 0) {
     // FANUC: F is the speed along the arc; the helix is faster by its length / the arc's.
     a.feed = ctx.next.modal.feed * helix_len / plane_len;
   } else {

@@ -19,6 +19,8 @@ LoweringSettings LoweringSettings::resolve(const DialectTable& table,
                      ? ir::RapidType::PerAxis
                      : ir::RapidType::Linear;
   s.arc_tolerance = p.getNumber("arc_radius_tolerance", b.arc_radius_tolerance_default);
+  s.default_feed = p.getNumber("default_feed", 0.0);
+  s.helical_feed_along_arc = p.getBool("helical_feed_along_arc", b.helical_feed_along_arc);
   s.offset_count = static_cast<int>(p.getNumber("offset_count", b.offset_count_default));
   // Two manuals, two keys with opposite senses: Mazak's F92 bit 2 forces seconds, Siemens'
   // MD20734 bit 2 enables revolutions. Either key is honoured in every dialect.

@@ -22,6 +22,8 @@ struct LoweringSettings {
   ValueRules values;
   ir::RapidType rapid_type = ir::RapidType::Linear;
   double arc_tolerance = 0.01;
+  bool helical_feed_along_arc = false; // F along the arc in its plane (FANUC HTG = 0)
+  double default_feed = 0.0;          // mm/min for a G94 cut before any F (SD42110); 0: alarm
   int offset_count = 400;
   bool dwell_revolutions = false;      // G04 in G95 counts revolutions
   bool length_change_moves = true;     // G43 H / G49 without the length axis moves it

@@ -76,6 +76,36 @@ class RulesTest(ScratchDirTest):
 
     # ---- dwell --------------------------------------------------------------------------
 
+    def test_helical_feed_follows_the_htg_parameter(self):
+        # fanuc-m: F along the arc (HTG = 0), so the IR feed is F x helix length / arc length;
+        # helical_feed_along_arc = false (HTG = 1) takes F along the helix as it stands.
+        program = "G90 G17 G00 X10. Y0 Z0\nG03 X-10. Y0 Z-10. R10. F100.\nM30\n"
+        along_arc = self.moves(program, "fanuc-m")[-1]["feed"]
+        arc = 3.141592653589793 * 10.0
+        self.assertAlmostEqual(along_arc, 100.0 * (arc * arc + 100.0) ** 0.5 / arc, places=6)
+        machine = self.write("m.toml", "[machine.params]\nhelical_feed_along_arc = false\n")
+        proc = ncc("run", self.path("p.nc"), "--dialect", "fanuc-m", "--machine", machine, "--emit=moves")
+        self.assertEqual(proc.returncode, 0, proc.stderr)
+        self.assertEqual(json.loads(proc.stdout.splitlines()[-1])["feed"], 100.0)
+
+    def test_default_feed_before_any_f(self):
+        # Sinumerik SD42110 DEFAULT_FEED: the feed of a cutting move before any F.
+        program = "G90 G01 X10. Y0\nG01 X20.\nF100.\nG01 X30.\nM30\n"
+        proc = ncc("run", self.write("p.nc", program), "--dialect", "siemens-iso-m", "--emit=moves")
+        self.assertEqual(proc.returncode, 1, proc.stderr)
+        self.assertIn("error[10860]", proc.stderr)  # without the setting
+        machine = self.write("m.toml", "[machine.params]\ndefault_feed = 500.0\n")
+        proc = ncc("run", self.path("p.nc"), "--dialect", "siemens-iso-m", "--machine", machine,
+                   "--emit=moves")
+        self.assertEqual(proc.returncode, 0, proc.stderr)
+        feeds = [json.loads(line)["feed"] for line in proc.stdout.splitlines()]
+        self.assertEqual(feeds, [500.0, 500.0, 100.0])  # until the first F
+        # A G95 move is not given a per-minute default.
+        g95 = self.write("r.nc", "G90 G95 S1000 M03\nG01 X10.\nM30\n")
+        proc = ncc("run", g95, "--dialect", "siemens-iso-m", "--machine", machine)
+        self.assertEqual(proc.returncode, 1, proc.stderr)
+        self.assertIn("error[10860]", proc.stderr)
+
     def test_mazak_inch_x_before_g04_is_fifty_seconds(self):
         dwells = [m for m in self.moves("G20\nX5. G04\nG04 X5.\nM30\n", "mazak-m")
                   if m["kind"] == "dwell"]

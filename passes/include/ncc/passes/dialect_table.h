@@ -126,6 +126,7 @@ struct DialectBehaviour {
   enum class ArcTurns : uint8_t { None, PitchesP, FullCircleRepeatsL } arc_turns;
   // F of a helical arc is the speed along the arc in its plane (FANUC: the linear axis runs at
   // F x its length / the arc length) rather than along the helix (Mazak §6-7, Siemens §2.1.4).
+  // The default of [machine.params] helical_feed_along_arc (FANUC HTG).
   bool helical_feed_along_arc;
   // Mazak §8-1: with inch input an X written before G04 is read as a coordinate, in least
   // input increments, and then counted in 0.001 s: `X5. G04` = X50000 = 50 s.
