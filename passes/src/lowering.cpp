@@ -141,6 +141,32 @@ void commit(BlockContext& ctx) {
 
 // A block rejected with a diagnostic: the state stays as it was, but what the block would
 // have written is unknown from now on.
+// A plane selected by a parallel axis (`G17 U_ Y_`: the UY plane, Mazak §6-2, Sinumerik ISO
+// §3.1.8 with GEOAX) is not built yet: the arcs that follow would run in the base plane, so the
+// block is refused rather than read wrongly. U, V, W are the parallel axes of X, Y, Z (the
+// manuals' examples). A parallel axis beside its base axis leaves the base plane (Mazak: the
+// base axis has priority) and just moves.
+void rejectParallelAxisPlane(BlockContext& ctx, const MachineConfig& machine) {
+  const auto& plane = ctx.words.group(GGroup::Plane);
+  if (!plane) return;
+  auto word = [&](std::string_view name) -> const std::optional<WordValue>* {
+    const int i = machine.axisIndex(name);
+    return i >= 0 && i < kMaxAxes ? &ctx.words.axes[i] : nullptr;
+  };
+  static constexpr std::pair<std::string_view, std::string_view> kParallel[] = {
+      {"X", "U"}, {"Y", "V"}, {"Z", "W"}};
+  for (const auto& axes : kParallel) {
+    const std::optional<WordValue>* p = word(axes.second);
+    const std::optional<WordValue>* b = word(axes.first);
+    if (!p || !*p || (b && *b)) continue;
+    ctx.fail(Alarm::CodeNotSupported, (*p)->loc,
+             absl::StrCat("a plane selected by the parallel axis ", std::string(axes.second),
+                          " (instead of ", std::string(axes.first),
+                          ") is not supported yet: the arcs would run in the base plane"));
+    return;
+  }
+}
+
 LowerResult reject(BlockContext& ctx) {
   forgetRejected(ctx.core.cs, ctx.block, ctx.table, *ctx.core.machine);
   return LowerResult{};
@@ -165,6 +191,7 @@ LowerResult lowerBlock(LoweringCore& core, const ast::Block& block) {
   ctx.words = std::move(*decoded);
 
   applyModalCodes(ctx, result);
+  rejectParallelAxisPlane(ctx, *core.machine);
   core.decimal_points.block(ctx.words, ctx.settings.values, ctx.next.modal.units, *core.machine);
   Dependence depends = dependsOnUnknown(ctx);
   ctx.silent = depends.words;

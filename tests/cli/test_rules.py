@@ -88,6 +88,21 @@ class RulesTest(ScratchDirTest):
         self.assertEqual(proc.returncode, 0, proc.stderr)
         self.assertEqual(json.loads(proc.stdout.splitlines()[-1])["feed"], 100.0)
 
+    def test_a_plane_of_a_parallel_axis_is_refused_not_misread(self):
+        # Mazak §6-2: `G17 U_ Y_` selects the UY plane; not built yet, so an error at U rather
+        # than arcs in the XY plane. With its base axis beside it, U just moves (base first).
+        machine = self.write("u.toml", '[machine]\naxes = ["X", "Y", "Z", "U"]\n')
+        plane = self.write("u.nc", "G90 G00 X0 Y0 U0\nG17 U10. Y0\nG02 U20. Y0 I5. J0 F100.\nM30\n")
+        proc = ncc("check", plane, "--dialect", "mazak-m", "--machine", machine)
+        self.assertEqual(proc.returncode, 1, proc.stderr)
+        self.assertIn("u.nc:2:5: error[NCC2010]: a plane selected by the parallel axis U (instead of X)",
+                      proc.stderr)
+        both = self.write("b.nc", "G90 G17 G00 X0 Y0 U0\nG02 X10. Y0 U5. I5. J0 F100.\nM30\n")
+        proc = ncc("run", both, "--dialect", "mazak-m", "--machine", machine, "--emit=moves")
+        self.assertEqual(proc.returncode, 0, proc.stderr)
+        arc = json.loads(proc.stdout.splitlines()[-1])
+        self.assertEqual((arc["kind"], arc["to"]["X"], arc["to"]["U"]), ("arc", 10.0, 5.0))
+
     def test_default_feed_before_any_f(self):
         # Sinumerik SD42110 DEFAULT_FEED: the feed of a cutting move before any F.
         program = "G90 G01 X10. Y0\nG01 X20.\nF100.\nG01 X30.\nM30\n"
