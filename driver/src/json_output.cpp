@@ -41,13 +41,6 @@ void writeAxes(std::ostream& out, const bytecode::Program& program, const AxisVa
   out << '}';
 }
 
-// The file's own name (no folders).
-std::string fileName(const bytecode::Program& program, uint32_t index) {
-  return index < program.strings.size()
-             ? std::filesystem::path(program.strings[index]).filename().string()
-             : std::string();
-}
-
 // Length of the well-formed UTF-8 sequence at the start of `s` (RFC 3629: no overlong forms,
 // no surrogates, at most U+10FFFF), or 0.
 size_t utf8Length(std::string_view s) {
@@ -66,6 +59,12 @@ size_t utf8Length(std::string_view s) {
 }
 
 }  // namespace
+
+std::string sourceFileName(const bytecode::Program& program, uint32_t index) {
+  return index < program.strings.size()
+             ? std::filesystem::path(program.strings[index]).filename().string()
+             : std::string();
+}
 
 std::string jsonString(std::string_view text) {
   std::string quoted = "\"";
@@ -96,7 +95,7 @@ std::string jsonString(std::string_view text) {
 }
 
 void writeMoveJson(std::ostream& out, const vm::MotionPrimitive& m, const bytecode::Program& program) {
-  out << "{\"line\": " << m.where.line << ", \"file\": " << jsonString(fileName(program, m.where.file))
+  out << "{\"line\": " << m.where.line << ", \"file\": " << jsonString(sourceFileName(program, m.where.file))
       << ", \"kind\": \"" << kindName(m.kind) << '"';
   if (m.kind == vm::MotionPrimitive::Kind::Dwell) {
     out << ", \"seconds\": " << jsonNumber(m.seconds);
@@ -129,7 +128,7 @@ void writeVariablesJson(std::ostream& out, const std::vector<std::pair<std::stri
 
 void writeAlarmJson(std::ostream& out, const vm::Alarm& alarm, const bytecode::Program& program) {
   out << "{\"kind\": \"alarm\", \"code\": " << jsonString(alarm.code) << ", \"line\": "
-      << alarm.where.line << ", \"file\": " << jsonString(fileName(program, alarm.where.file))
+      << alarm.where.line << ", \"file\": " << jsonString(sourceFileName(program, alarm.where.file))
       << ", \"message\": " << jsonString(alarm.message) << "}\n";
 }
 

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <filesystem>
 
 #include "absl/strings/str_cat.h"
 #include "absl/strings/str_format.h"
@@ -12,33 +11,11 @@ namespace ncc::cli {
 
 namespace {
 
-// The source file of a position, without folders; "" when the program does not name it.
-std::string sourceFileName(const bytecode::Program& program, const vm::SourcePosition& where) {
-  if (where.file >= program.strings.size()) return {};
-  return std::filesystem::path(program.strings[where.file]).filename().string();
-}
-
-// A JSON string literal (file and axis names, alarm codes).
-std::string jsonString(const std::string& text) {
-  std::string out = "\"";
-  for (char c : text) {
-    if (c == '"' || c == '\\') {
-      out += '\\';
-      out += c;
-    } else if (static_cast<unsigned char>(c) < 0x20) {
-      out += absl::StrFormat("\\u%04x", c);
-    } else {
-      out += c;
-    }
-  }
-  return out + '"';
-}
-
 // "FILE:LINE" of the worst contour error's block; "" when it is unknown or there is none.
 std::string contourErrorSource(const SummaryInput& in) {
   const vm::RunStatistics& s = in.sim.statistics;
   if (s.max_contour_error == 0.0 || s.max_contour_error_where.line == 0) return {};
-  const std::string file = sourceFileName(in.program, s.max_contour_error_where);
+  const std::string file = driver::sourceFileName(in.program, s.max_contour_error_where.file);
   return absl::StrCat(file.empty() ? "?" : file, ":", s.max_contour_error_where.line);
 }
 
@@ -56,7 +33,7 @@ std::string extentsText(const vm::AxisExtents& e, const bytecode::Program& progr
 std::string axisObject(const AxisValues& values, const bytecode::Program& program) {
   std::string text = "{";
   for (int i = 0; i < program.axisCount(); ++i)
-    absl::StrAppend(&text, i ? ", " : "", jsonString(program.header.axes[i].name), ": ",
+    absl::StrAppend(&text, i ? ", " : "", driver::jsonString(program.header.axes[i].name), ": ",
                     driver::jsonNumber(values[i]));
   return text + "}";
 }
@@ -66,7 +43,7 @@ std::string extentsObject(const vm::AxisExtents& e, const bytecode::Program& pro
   if (e.empty) return "null";
   std::string text = "{";
   for (int i = 0; i < program.axisCount(); ++i)
-    absl::StrAppend(&text, i ? ", " : "", jsonString(program.header.axes[i].name),
+    absl::StrAppend(&text, i ? ", " : "", driver::jsonString(program.header.axes[i].name),
                     ": {\"min\": ", driver::jsonNumber(e.min[i]),
                     ", \"max\": ", driver::jsonNumber(e.max[i]), "}");
   return text + "}";
@@ -146,12 +123,12 @@ void printSummaryJson(std::ostream& out, const SummaryInput& in) {
   using driver::jsonNumber;
   const ViolationCounts by_kind = violationsByKind(s, program.axisCount());
   const bool has_worst = s.max_contour_error > 0.0;
-  const std::string worst_file = sourceFileName(program, s.max_contour_error_where);
+  const std::string worst_file = driver::sourceFileName(program, s.max_contour_error_where.file);
   const bool has_source = has_worst && s.max_contour_error_where.line != 0;
   out << "{\"status\": " << (in.sim.alarm ? "\"alarm\"" : "\"completed\"")
-      << ", \"alarm\": " << (in.sim.alarm ? jsonString(in.sim.alarm->code) : "null")
+      << ", \"alarm\": " << (in.sim.alarm ? driver::jsonString(in.sim.alarm->code) : "null")
       << ", \"program_time\": " << jsonNumber(s.program_time)
-      << ", \"program_time_hms\": " << jsonString(hoursMinutesSeconds(s.program_time))
+      << ", \"program_time_hms\": " << driver::jsonString(hoursMinutesSeconds(s.program_time))
       << ", \"ticks\": " << s.ticks
       << ", \"tick_seconds\": " << jsonNumber(in.tick_seconds)
       << ", \"feed_length\": " << jsonNumber(s.feed_length)
@@ -164,7 +141,7 @@ void printSummaryJson(std::ostream& out, const SummaryInput& in) {
       << (has_worst ? jsonNumber(static_cast<double>(s.max_contour_error_tick) * in.tick_seconds)
                     : "null")
       << ", \"max_contour_error_file\": "
-      << (has_source && !worst_file.empty() ? jsonString(worst_file) : "null")
+      << (has_source && !worst_file.empty() ? driver::jsonString(worst_file) : "null")
       << ", \"max_contour_error_line\": "
       << (has_source ? std::to_string(s.max_contour_error_where.line) : "null")
       << ", \"limit_violations\": " << s.limit_violations

@@ -24,6 +24,10 @@ void writeMoveJson(std::ostream& out, const vm::MotionPrimitive& motion,
 // {"kind": "alarm", "code": "NCC7207", "line": 3, "file": "part.nc", "message": "..."}
 void writeAlarmJson(std::ostream& out, const vm::Alarm& alarm, const bytecode::Program& program);
 
+// The name of the program's source file `index` (its string pool entry) without folders, as
+// every output shows it; "" when the program does not name it.
+std::string sourceFileName(const bytecode::Program& program, uint32_t index);
+
 // `text` as a JSON string, quotes included: '"', '\\', control characters and DEL escaped,
 // valid UTF-8 kept, every byte that is not part of valid UTF-8 written as \ufffd.
 std::string jsonString(std::string_view text);
