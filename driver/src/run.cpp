@@ -10,7 +10,6 @@
 #include "ncc/bytecode/loader.h"
 #include "ncc/bytecode/verifier.h"
 #include "ncc/driver/compile.h"
-#include "ncc/vm/executor.h"
 #include "scratch_file.h"
 
 namespace ncc::driver {
@@ -88,20 +87,6 @@ bool loadProgram(Session& session, bytecode::Program& program, bool check_machin
     return false;
   }
   return true;
-}
-
-RunResult runProgram(const bytecode::Program& program, const MachineConfig& machine,
-                     const EventHandler& on_event, uint64_t max_steps) {
-  RunResult result;
-  vm::Executor executor(program, machine);
-  executor.setStepLimit(max_steps);
-  vm::Event event;
-  while (executor.next(event)) {
-    if (on_event) on_event(event);
-  }
-  result.alarm = executor.alarm();
-  result.variables = executor.variables();
-  return result;
 }
 
 }  // namespace ncc::driver

@@ -12,6 +12,7 @@
 #include "ncc/bytecode/writer.h"
 #include "ncc/driver/json_output.h"
 #include "ncc/driver/run.h"
+#include "ncc/driver/simulate.h"
 
 namespace ncc::driver {
 namespace {
@@ -33,15 +34,20 @@ TEST(RunProgram, ReferenceCheckMismatchRaisesAnAlarmWithItsLocation) {
   a.op(bytecode::Opcode::End);
   bytecode::Program program = a.finish();
 
-  int motions = 0;
-  RunResult result = runProgram(program, machine, [&](const vm::Event& e) {
-    if (e.kind == vm::Event::Kind::Motion) ++motions;
-  });
+  // Every output mode runs this simulation (one verdict); count the moves it takes.
+  struct CountMoves : vm::EventObserver {
+    void onEvent(const vm::Event& e) override { motions += e.kind == vm::Event::Kind::Motion; }
+    int motions = 0;
+  } moves;
+  SimulationOptions options;
+  options.observer = &moves;
+  SimulationResult result = simulate(program, machine, nullptr, options);
+  ASSERT_TRUE(result.error.empty()) << result.error;
   ASSERT_TRUE(result.alarm);
   EXPECT_EQ(result.alarm->code, "NCC7201");
   EXPECT_EQ(result.alarm->where.line, 2u);
   EXPECT_EQ(result.alarm->where.column, 4u);
-  EXPECT_EQ(motions, 1);  // the rapid before the check ran
+  EXPECT_EQ(moves.motions, 1);  // the rapid before the check ran
 }
 
 TEST(JsonOutput, NumbersAreRoundedTrimmedAndNeverNegativeZero) {

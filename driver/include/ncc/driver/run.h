@@ -1,18 +1,13 @@
 #pragma once
-// Obtain a verified program (compile the source, or load a .ncb file) and execute it in the
-// VM's executor alone, handing every event to the caller. `ncc run` runs every output mode
-// through the whole controller instead (simulate.h): the planner's and the servo's alarms
-// exist only there.
+// Obtain a verified program for `ncc run` and `ncc dis`: compile the source, or load a .ncb
+// file. Running it is simulate.h's: every output mode runs the whole controller, since the
+// planner's and the servo's alarms exist only there (one verdict whatever is emitted).
 #include <cstdint>
-#include <functional>
+#include <filesystem>
 #include <optional>
-#include <string>
-#include <utility>
-#include <vector>
 
 #include "ncc/bytecode/program.h"
 #include "ncc/driver/session.h"
-#include "ncc/vm/events.h"
 
 namespace ncc::driver {
 
@@ -40,19 +35,9 @@ bool loadProgram(Session& session, bytecode::Program& program, bool check_machin
                  Residence residence = Residence::InMemory,
                  std::optional<SetupError>* setup_error = nullptr);
 
-struct RunResult {
-  std::optional<vm::Alarm> alarm;  // set when the run stopped on an alarm
-  std::vector<std::pair<std::string, double>> variables;  // non-vacant, at the end
-};
-
-using EventHandler = std::function<void(const vm::Event&)>;
-
 // A run stops with alarm NCC7204 after this many VM instructions unless told otherwise: a
 // program that loops forever must not hang the command line. 100 million instructions are far
 // more than a 1,000,000-block program executes.
 inline constexpr uint64_t kDefaultMaxSteps = 100'000'000;
-
-RunResult runProgram(const bytecode::Program& program, const MachineConfig& machine,
-                     const EventHandler& on_event, uint64_t max_steps = kDefaultMaxSteps);
 
 }  // namespace ncc::driver
