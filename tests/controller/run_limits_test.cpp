@@ -208,6 +208,9 @@ TEST(RunLimits, AnArcWhoseEndIsOffItsCircleIsRefused) {
   ASSERT_EQ(ctl->status(), TickStatus::Alarm);
   EXPECT_EQ(ctl->alarm()->code, "NCC7211");
   EXPECT_EQ(ctl->alarm()->where.line, 2u);
+  EXPECT_EQ(ctl->alarm()->message,
+            "the arc's end point is not on its circle: start radius 655.36, end radius 10 "
+            "(difference above arc_radius_tolerance 0.01; was the file edited?)");
   EXPECT_EQ(ticks.back().commanded[0], 655.36);
   // Within arc_radius_tolerance (0.01 mm) the arc is a slight spiral, as compiled.
   bytecode::Assembler b = assemblerFor(m);
