@@ -104,6 +104,16 @@ void BytecodeWriter::encode(const ir::Operation& op, const ir::Block& block) {
   // G63 tapping mode: the feed override is fixed at 100 % for the feed moves.
   const uint8_t fixed_override =
       block.modal.path == ir::PathControl::Tapping ? bytecode::kFlagFixedOverride : 0;
+  if (const auto* v = std::get_if<ir::SetVariable>(&op)) {
+    bytecode::Instruction value;
+    value.op = v->vacant ? Opcode::PushVacant : Opcode::Push;
+    value.value = v->value;
+    writer_.emit(value);
+    in.op = Opcode::Store;
+    in.variable = v->number;
+    writer_.emit(in);
+    return;
+  }
   if (const auto* r = std::get_if<ir::Rapid>(&op)) {
     in.op = Opcode::Rapid;
     in.flags = exact | (r->type == ir::RapidType::PerAxis ? bytecode::kFlagPerAxis : 0);

@@ -126,6 +126,9 @@ struct OperationPrinter {
   std::string operator()(const ReferenceCheck& c) const {
     return absl::StrCat("refcheck ref", c.reference, " ", axisList(c.position, axes, c.axes));
   }
+  std::string operator()(const SetVariable& v) const {
+    return absl::StrCat("set #", v.number, " = ", v.vacant ? "vacant" : num(v.value));
+  }
 };
 
 }  // namespace

@@ -40,6 +40,10 @@ class BlockChecker {
     if (f.kind == K::SpindleSpeed && (!std::isfinite(f.value) || f.value < 0.0))
       add(absl::StrCat("spindle speed ", f.value, " is not a finite non-negative value"));
   }
+  void operator()(const SetVariable& v) {
+    if (v.number == 0) add("assignment to #0 (always vacant)");
+    if (!v.vacant && !std::isfinite(v.value)) add(absl::StrCat("variable value ", v.value, " is not finite"));
+  }
   void operator()(const ReferenceCheck& c) {
     axes(c.position, "position");
     const unsigned all = (1u << options_.axis_count) - 1u;

@@ -115,7 +115,16 @@ struct ReferenceCheck {
   int reference = 1;
 };
 
-using Operation = std::variant<Rapid, Linear, Arc, Dwell, MachineFunction, ReferenceCheck>;
+// A macro variable written by the program (`#100 = 5`), in program order among the moves, so
+// that the VM holds every variable as the program left it (`ncc run --emit=vars`).
+struct SetVariable {
+  uint32_t number = 0;
+  double value = 0.0;
+  bool vacant = false;  // `#100 = #0`: the variable becomes vacant again
+};
+
+using Operation =
+    std::variant<Rapid, Linear, Arc, Dwell, MachineFunction, ReferenceCheck, SetVariable>;
 
 struct Block {
   SourceLocation loc;

@@ -1,0 +1,41 @@
+#pragma once
+// Expressions of Macro B: literals, variables (#n, #[expr]), brackets, + - * / MOD, OR XOR
+// AND, EQ NE GT GE LT LE, and the functions (SIN COS TAN ASIN ACOS ATAN SQRT ABS ROUND FIX
+// FUP LN EXP POW ADP BIN BCD), angles in degrees. Vacant follows the manual: 0 in arithmetic,
+// distinct from 0 only in EQ and NE. Nothing here reads the controller: variables come
+// through VariableReader.
+#include <optional>
+
+#include "ncc/eval/failure.h"
+#include "ncc/eval/macro_rules.h"
+#include "ncc/eval/value.h"
+#include "ncc/frontend/ast.h"
+
+namespace ncc::eval {
+
+class VariableReader {
+ public:
+  virtual ~VariableReader() = default;
+  // The value of #number; nullopt after filling `failure` (a number outside every range).
+  virtual std::optional<Value> read(int64_t number, SourceLocation loc, Failure& failure) = 0;
+};
+
+struct ExpressionContext {
+  const MacroRules& rules;
+  VariableReader& variables;
+};
+
+// The value of `expr`; nullopt after filling `failure` (with the location of the offending
+// sub-expression).
+std::optional<Value> evaluate(const ast::Expr& expr, const ExpressionContext& context,
+                              Failure& failure);
+
+// The variable number a value designates (`#[#1+1]`): rounded as the manual states; nullopt
+// after filling `failure` (vacant or out of range).
+std::optional<int64_t> variableNumber(const Value& value, const MacroRules& rules,
+                                      SourceLocation loc, Failure& failure);
+
+// A condition (IF, WHILE): true when the value is not 0 (vacant is false).
+bool isTrue(const Value& value);
+
+}  // namespace ncc::eval

@@ -1,0 +1,70 @@
+#pragma once
+// The data that makes a dialect's macro language: alarm numbers, variable ranges, nesting
+// limits, the argument tables of G65/G66 and how subprogram files are named. The evaluator is
+// written against this table only (no `if (dialect == ...)`); docs/macro.md lists the values.
+#include <array>
+#include <cstdint>
+#include <span>
+#include <string_view>
+
+#include "ncc/eval/failure.h"
+#include "ncc/machine/dialect.h"
+
+namespace ncc::eval {
+
+struct VariableRange {
+  int64_t first = 0;
+  int64_t last = -1;
+  bool contains(int64_t n) const { return n >= first && n <= last; }
+};
+
+// How M98 gives a repeat count.
+enum class RepeatEncoding : uint8_t {
+  LAddress,          // M98 P<program> L<count> (Mazak; FANUC with L)
+  HighDigitsOfP,     // M98 P<count><program 4 digits> (FANUC Pnnnnmmmm, Siemens bit6 = 0)
+};
+
+// Where GOTO n (and M99 P n) looks for N n.
+enum class SequenceSearch : uint8_t {
+  ForwardThenFromStart,  // from the block after the GOTO to the end, then from the start
+  FromStart,             // from the start of the program
+};
+
+struct MacroRules {
+  Dialect dialect;
+  std::span<const std::string_view> alarm_codes;  // indexed by EvalError
+  // Variables.
+  int local_count;                          // #1..#local_count, a fresh set per macro call
+  std::span<const VariableRange> commons;   // common variables (default set)
+  int64_t persistent_first;                 // commons from here on survive a run (--vars)
+  double max_magnitude;                     // |value| beyond this is EvalError::ValueRange
+  int max_bracket_depth;                    // nesting of [ ] in one expression
+  // Loops and calls.
+  int max_do_id;                            // DO 1 .. DO max_do_id
+  int max_do_nesting;
+  int max_call_nesting;                     // M98 + G65 + G66 + code calls together
+  int max_macro_nesting;                    // G65 / G66 / code calls among them
+  SequenceSearch goto_search;
+  SequenceSearch return_search;             // M99 P n
+  RepeatEncoding repeat;
+  int program_number_digits;                // the program part of P (4 with HighDigitsOfP)
+  // #3000 = n: the alarm number shown is n + offset for the first range n lies in.
+  struct UserAlarmRange {
+    int64_t first, last, offset;
+  };
+  std::span<const UserAlarmRange> user_alarms;
+  // G65 argument specification I: for 'A'..'Z', the local variable it sets (0: not an
+  // argument). Specification II (I J K repeated) is derived: #4.. in groups of three.
+  std::array<uint8_t, 26> argument_spec1;
+  // Subprogram files in the program folder, tried in order; `{}` is the program number,
+  // `{:04}` zero-padded to four digits ("O{:04}.nc", "{}.nc", "{:04}.spf").
+  std::span<const std::string_view> program_file_names;
+
+  std::string_view alarm(EvalError e) const { return alarm_codes[static_cast<size_t>(e)]; }
+};
+
+// The rules of a dialect (every dialect has them; those without Macro B use the FANUC values
+// until their issue says otherwise).
+const MacroRules& macroRules(Dialect dialect);
+
+}  // namespace ncc::eval
