@@ -4,27 +4,11 @@
 #include "diagnostic_codes.h"
 #include "iso_block_parser.h"
 #include "lexical.h"
-#include "line_source.h"
+#include "block_cursor.h"
 
 namespace ncc::frontend {
 
 namespace {
-
-// The first ';' at or after `from` that is not inside a ( ) comment, or npos.
-size_t findSemicolon(std::string_view line, size_t from) {
-  bool in_comment = false;
-  for (size_t i = from; i < line.size(); ++i) {
-    const char c = line[i];
-    if (in_comment) {
-      in_comment = c != ')';
-    } else if (c == '(') {
-      in_comment = true;
-    } else if (c == ';') {
-      return i;
-    }
-  }
-  return std::string_view::npos;
-}
 
 bool isBlankText(std::string_view text) {
   for (char c : text)
@@ -44,36 +28,12 @@ bool isG291Only(const ast::Block& b) {
 
 struct BlockReader::Impl {
   Impl(const SourceManager& s, uint32_t f, DiagnosticEngine& d, ReaderOptions o)
-      : file(f), diags(d), options(o), language(o.initial_language), lines(s, f) {}
+      : file(f), diags(d), options(o), language(o.initial_language), cursor(s, f) {}
 
-  // The next block of text: cuts `line` at ';' as the current language wants. Returns false
+  // The next block of text: cuts the line at ';' as the current language wants. Returns false
   // at end of input.
-  bool nextSegment(std::string_view& segment, std::optional<std::string_view>& annotation,
-                   uint32_t& column) {
-    if (!pending) {
-      if (!lines.next(line)) return false;
-      ++line_number;
-      ++stats.lines;
-      pos = 0;
-      pending = true;
-    }
-    const std::string_view text(line);
-    const size_t semi = findSemicolon(text, pos);
-    column = static_cast<uint32_t>(pos + 1);
-    annotation.reset();
-    if (semi == std::string_view::npos) {
-      segment = text.substr(pos);
-      pending = false;
-    } else if (language == Language::Iso && options.semicolon_ends_block) {
-      segment = text.substr(pos, semi - pos);  // the rest of the line is the next block
-      pos = semi + 1;
-      pending = pos < text.size();
-    } else {
-      segment = text.substr(pos, semi - pos);  // ';' starts an annotation to end of line
-      annotation = text.substr(semi + 1);
-      pending = false;
-    }
-    return true;
+  bool nextSegment(BlockCursor::Segment& segment) {
+    return cursor.next(segment, language == Language::Iso && options.semicolon_ends_block);
   }
 
   std::optional<ast::Block> readDin(std::string_view segment, SourceLocation where) {
@@ -92,20 +52,16 @@ struct BlockReader::Impl {
   DiagnosticEngine& diags;
   ReaderOptions options;
   Language language;
-  LineSource lines;
+  BlockCursor cursor;
   IsoBlockParser parser;
   ReaderStats stats;
-
-  std::string line;  // the current physical line
-  uint32_t line_number = 0;
-  size_t pos = 0;        // where the next block of `line` starts
-  bool pending = false;  // `line` has text left to read
+  BlockPosition last;  // of the block last returned
 };
 
 BlockReader::BlockReader(const SourceManager& sources, uint32_t file, DiagnosticEngine& diags,
                          ReaderOptions options)
     : impl_(std::make_unique<Impl>(sources, file, diags, options)) {
-  if (!impl_->lines.ok())
+  if (!impl_->cursor.ok())
     diags.error(codes::kCannotRead, SourceLocation{file, 0, 0},
                 absl::StrCat("cannot read '", sources.displayName(file), "'"));
 }
@@ -114,12 +70,11 @@ BlockReader::~BlockReader() = default;
 
 std::optional<ast::Block> BlockReader::next() {
   Impl& r = *impl_;
-  std::string_view segment;
-  std::optional<std::string_view> annotation;
-  uint32_t column = 1;
-  while (r.nextSegment(segment, annotation, column)) {
-    if (isBlankText(segment) && !annotation) continue;  // blank lines are not blocks
-    const SourceLocation where{r.file, r.line_number, column};
+  BlockCursor::Segment s;
+  while (r.nextSegment(s)) {
+    const std::string_view segment = s.text;
+    if (isBlankText(segment) && !s.annotation) continue;  // blank lines are not blocks
+    const SourceLocation where{r.file, s.at.line, s.at.column};
     std::optional<ast::Block> block;
     bool fast = false;
     if (r.language == Language::Din) {
@@ -132,7 +87,8 @@ std::optional<ast::Block> BlockReader::next() {
       ++r.stats.rejected_blocks;
       continue;
     }
-    if (annotation) block->comments.emplace_back(*annotation);
+    if (s.annotation) block->comments.emplace_back(*s.annotation);
+    r.last = s.at;
     ++r.stats.blocks;
     if (fast) ++r.stats.fast_path_blocks;
     return block;
@@ -142,21 +98,29 @@ std::optional<ast::Block> BlockReader::next() {
 
 std::optional<BlockReader::Text> BlockReader::nextText() {
   Impl& r = *impl_;
-  std::string_view segment;
-  std::optional<std::string_view> annotation;
-  uint32_t column = 1;
-  while (r.nextSegment(segment, annotation, column)) {
+  BlockCursor::Segment s;
+  while (r.nextSegment(s)) {
+    const std::string_view segment = s.text;
     size_t first = 0;
     while (first < segment.size() && isBlank(segment[first])) ++first;
     if (first == segment.size()) continue;
+    r.last = s.at;
     return Text{segment.substr(first),
-                SourceLocation{r.file, r.line_number, column + static_cast<uint32_t>(first)}};
+                SourceLocation{r.file, s.at.line, s.at.column + static_cast<uint32_t>(first)}};
   }
   return std::nullopt;
 }
 
 void BlockReader::setLanguage(Language language) { impl_->language = language; }
 Language BlockReader::language() const { return impl_->language; }
-const ReaderStats& BlockReader::stats() const { return impl_->stats; }
+const ReaderStats& BlockReader::stats() const {
+  impl_->stats.lines = impl_->cursor.linesRead();
+  return impl_->stats;
+}
+
+BlockPosition BlockReader::lastPosition() const { return impl_->last; }
+BlockPosition BlockReader::position() const { return impl_->cursor.position(); }
+void BlockReader::seek(BlockPosition p) { impl_->cursor.seek(p); }
+uint32_t BlockReader::file() const { return impl_->file; }
 
 }  // namespace ncc::frontend

@@ -1,7 +1,7 @@
 #pragma once
 // Reads a program one block at a time. The whole file is never held as a tree: each call to
 // next() parses one line (a block ends at LF, or at ';' in the ISO family) and returns its
-// AST. Syntax errors are reported to the DiagnosticEngine with file, line and column; the
+// AST. Reading may go back or jump ahead with seek() (Macro B GOTO, loops, subprograms). Syntax errors are reported to the DiagnosticEngine with file, line and column; the
 // reader then resumes at the next block, so one run reports several errors.
 //
 // The language of each block is tracked here: a Siemens ISO-mode program switches to DIN at
@@ -15,6 +15,7 @@
 #include <string_view>
 
 #include "ncc/frontend/ast.h"
+#include "ncc/frontend/block_position.h"
 #include "ncc/support/diagnostics.h"
 #include "ncc/support/source_manager.h"
 
@@ -68,6 +69,20 @@ class BlockReader {
   Language language() const;
 
   const ReaderStats& stats() const;
+
+  // Positions, for Macro B control flow. A position names a block of this file; it does not
+  // hold the language (ISO/DIN), which stays as set by setLanguage().
+  // Where the block last returned by next() (or nextText()) starts.
+  BlockPosition lastPosition() const;
+  // Where reading continues: the next block returned by next() starts here or after blank
+  // text (also valid before the first next(); {offset: size, line: last + 1} at the end).
+  BlockPosition position() const;
+  // Continues reading at `p`, a position this reader or a ProgramIndex of the same file and
+  // ReaderOptions returned: the next next() returns the block starting there, with the same
+  // AST and locations as when read straight through.
+  void seek(BlockPosition p);
+  // The SourceManager id of the file read.
+  uint32_t file() const;
 
  private:
   struct Impl;

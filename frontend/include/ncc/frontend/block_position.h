@@ -1,0 +1,24 @@
+#pragma once
+// Where a block starts in its source: what Macro B control flow (GOTO, WHILE loops, subprogram
+// calls and returns) needs to come back to a block already read or to jump ahead.
+#include <cstdint>
+
+namespace ncc::frontend {
+
+struct BlockPosition {
+  uint64_t offset = 0;  // byte offset of the block's physical line (a BOM counts)
+  uint32_t line = 1;    // 1-based line number
+  // 1-based column where the block's text starts within the line: 1, or just after the ';'
+  // that ended the previous block on the same line. Blanks before the first word are part of
+  // the block, so this is not always the column of the block's first word (Block::loc).
+  uint32_t column = 1;
+  friend bool operator==(const BlockPosition&, const BlockPosition&) = default;
+};
+
+// Text order: by offset, then column (the line follows from the offset).
+inline bool operator<(const BlockPosition& a, const BlockPosition& b) {
+  return a.offset != b.offset ? a.offset < b.offset : a.column < b.column;
+}
+inline bool operator<=(const BlockPosition& a, const BlockPosition& b) { return !(b < a); }
+
+}  // namespace ncc::frontend
