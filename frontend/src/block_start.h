@@ -1,0 +1,26 @@
+#pragma once
+// What a block of text starts with, found without parsing it: the program index scans whole
+// files for N labels and O numbers this way, much faster than the parser and without
+// reporting anything. It reads the text as the parsers do (lower-case letters, blanks
+// anywhere between tokens, `( )` comments, a leading '%' or block skip '/', '/1'..'/9').
+#include <cstdint>
+#include <string_view>
+
+namespace ncc::frontend {
+
+struct BlockStart {
+  enum class Kind : uint8_t {
+    Blank,     // nothing a control reads: blanks, comments, a block skip mark alone
+    Percent,   // the '%' tape mark
+    Sequence,  // first word N n
+    Program,   // first word O n or :n
+    Other,     // anything else (including text the parser would reject)
+  };
+  Kind kind = Kind::Blank;
+  int64_t number = 0;  // Sequence, Program
+};
+
+// `text`: one block (a line, or the part between ';' ends of block), without the ';'.
+BlockStart blockStart(std::string_view text);
+
+}  // namespace ncc::frontend

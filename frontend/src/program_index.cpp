@@ -1,0 +1,176 @@
+#include "ncc/frontend/program_index.h"
+
+#include <algorithm>
+
+#include "block_cursor.h"
+#include "block_start.h"
+
+namespace ncc::frontend {
+
+namespace {
+
+// Lookups cached per index, at most: a computed GOTO (`GOTO #1`) over many values must not
+// grow memory without bound. Past it the cache starts again.
+constexpr size_t kMaxCachedLookups = 1 << 16;
+
+size_t mix(size_t h, uint64_t v) { return h ^ (std::hash<uint64_t>{}(v) + 0x9e3779b97f4a7c15ULL + (h << 6) + (h >> 2)); }
+
+// The start of a file: the first block that is not blank, and the program number it carries.
+struct Head {
+  std::optional<BlockPosition> first_content;  // the opening '%' counts (a later '%' closes)
+  std::optional<int64_t> program_number;
+};
+
+Head readHead(BlockCursor& cursor, bool semicolon_ends_block) {
+  Head head;
+  BlockCursor::Segment s;
+  while (cursor.next(s, semicolon_ends_block)) {
+    const BlockStart start = blockStart(s.text);
+    if (start.kind == BlockStart::Kind::Blank) continue;
+    if (start.kind == BlockStart::Kind::Percent) {
+      if (head.first_content) break;  // a second '%' closes an empty record
+      head.first_content = s.at;      // the opening '%'
+      continue;
+    }
+    if (!head.first_content) head.first_content = s.at;
+    if (start.kind == BlockStart::Kind::Program) head.program_number = start.number;
+    break;
+  }
+  return head;
+}
+
+bool semicolonEndsBlock(const ReaderOptions& options) {
+  return options.semicolon_ends_block && options.initial_language == Language::Iso;
+}
+
+}  // namespace
+
+size_t ProgramIndex::KeyHash::operator()(const Key& k) const {
+  size_t h = std::hash<int64_t>{}(k.n);
+  h = mix(h, k.from_offset);
+  h = mix(h, (uint64_t{k.from_column} << 8) | (static_cast<uint64_t>(k.order) << 1) | k.has_range);
+  if (k.has_range) {
+    h = mix(h, k.first.offset);
+    h = mix(h, k.first.column);
+    h = mix(h, k.end.offset);
+    h = mix(h, k.end.column);
+  }
+  return h;
+}
+
+ProgramIndex::ProgramIndex(const SourceManager& sources, uint32_t file, ReaderOptions options)
+    : sources_(sources),
+      file_(file),
+      semicolon_ends_block_(semicolonEndsBlock(options)) {}
+
+std::optional<int64_t> ProgramIndex::firstProgramNumberOf(const std::filesystem::path& path,
+                                                          ReaderOptions options) {
+  BlockCursor cursor(path);
+  return readHead(cursor, semicolonEndsBlock(options)).program_number;
+}
+
+void ProgramIndex::scanHead() {
+  if (head_scanned_) return;
+  head_scanned_ = true;
+  BlockCursor cursor(sources_, file_);
+  ++stats_.scans;
+  const Head head = readHead(cursor, semicolon_ends_block_);
+  first_content_ = head.first_content;
+  first_program_number_ = head.program_number;
+  stats_.lines += cursor.linesRead();
+}
+
+std::optional<BlockPosition> ProgramIndex::scanFor(int64_t n, BlockPosition start,
+                                                   std::optional<BlockPosition> after,
+                                                   std::optional<BlockPosition> through,
+                                                   std::optional<BlockPosition> end) {
+  scanHead();
+  BlockCursor cursor(sources_, file_);
+  ++stats_.scans;
+  cursor.seek(start);
+  std::optional<BlockPosition> found;
+  BlockCursor::Segment s;
+  while (cursor.next(s, semicolon_ends_block_)) {
+    if (end && !(s.at < *end)) break;
+    if (through && *through < s.at) break;
+    const BlockStart b = blockStart(s.text);
+    if (b.kind == BlockStart::Kind::Percent && first_content_ && *first_content_ < s.at)
+      break;  // the end of the record
+    if (b.kind != BlockStart::Kind::Sequence || b.number != n) continue;
+    if (after && s.at <= *after) continue;
+    found = s.at;
+    break;
+  }
+  stats_.lines += cursor.linesRead();
+  return found;
+}
+
+std::optional<BlockPosition> ProgramIndex::findSequence(int64_t n, BlockPosition from,
+                                                        SequenceSearch order,
+                                                        std::optional<BlockRange> within) {
+  const Key key{n,
+                from.offset,
+                from.column,
+                order,
+                within.has_value(),
+                within ? within->first : BlockPosition{},
+                within ? within->second : BlockPosition{}};
+  if (auto it = sequences_.find(key); it != sequences_.end()) return it->second;
+
+  const BlockPosition begin = within ? within->first : BlockPosition{};
+  const std::optional<BlockPosition> end =
+      within ? std::optional<BlockPosition>(within->second) : std::nullopt;
+  std::optional<BlockPosition> found;
+  if (order == SequenceSearch::ForwardThenFromStart) {
+    // After `from` to the end; `from` is a block of the file, so reading can start there.
+    found = scanFor(n, begin < from ? from : begin, from, std::nullopt, end);
+    if (!found) found = scanFor(n, begin, std::nullopt, from, end);  // then up to `from`
+  } else {
+    found = scanFor(n, begin, std::nullopt, std::nullopt, end);
+  }
+  if (sequences_.size() >= kMaxCachedLookups) sequences_.clear();
+  sequences_.emplace(key, found);
+  return found;
+}
+
+void ProgramIndex::scanPrograms() {
+  if (programs_scanned_) return;
+  programs_scanned_ = true;
+  scanHead();
+  BlockCursor cursor(sources_, file_);
+  ++stats_.scans;
+  BlockCursor::Segment s;
+  bool closed = false;
+  while (cursor.next(s, semicolon_ends_block_)) {
+    const BlockStart b = blockStart(s.text);
+    if (b.kind == BlockStart::Kind::Percent && first_content_ && *first_content_ < s.at) {
+      record_end_ = s.at;
+      closed = true;
+      break;
+    }
+    if (b.kind == BlockStart::Kind::Program) programs_.push_back(ProgramBlock{b.number, s.at});
+  }
+  if (!closed) record_end_ = cursor.position();
+  stats_.lines += cursor.linesRead();
+}
+
+std::optional<BlockPosition> ProgramIndex::findProgram(int64_t n) {
+  scanPrograms();
+  for (const ProgramBlock& p : programs_)
+    if (p.number == n) return p.at;
+  return std::nullopt;
+}
+
+BlockPosition ProgramIndex::programEnd(BlockPosition start) {
+  scanPrograms();
+  auto next = std::upper_bound(programs_.begin(), programs_.end(), start,
+                               [](const BlockPosition& s, const ProgramBlock& p) { return s < p.at; });
+  return next != programs_.end() ? next->at : record_end_;
+}
+
+std::optional<int64_t> ProgramIndex::firstProgramNumber() {
+  scanHead();
+  return first_program_number_;
+}
+
+}  // namespace ncc::frontend

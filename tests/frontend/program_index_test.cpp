@@ -1,0 +1,221 @@
+// ProgramIndex: N labels and O numbers found by scanning the text, in the control's search
+// order, within a range, cached; positions that BlockReader::seek() accepts.
+#include <gtest/gtest.h>
+
+#include "ncc/frontend/program_index.h"
+#include "temp_dir.h"
+
+namespace ncc::frontend {
+namespace {
+
+using testing::TempDir;
+
+// Reads the block at `p` and prints it.
+std::string blockAt(const SourceManager& sm, uint32_t file, BlockPosition p,
+                    ReaderOptions options = {}) {
+  DiagnosticEngine diags(&sm);
+  BlockReader reader(sm, file, diags, options);
+  reader.seek(p);
+  auto b = reader.next();
+  return b ? printBlock(*b) : "<none>";
+}
+
+// Positions of every block, as a reader reports them.
+std::vector<BlockPosition> positions(const SourceManager& sm, uint32_t file,
+                                     ReaderOptions options = {}) {
+  DiagnosticEngine diags(&sm);
+  BlockReader reader(sm, file, diags, options);
+  std::vector<BlockPosition> out;
+  while (reader.next()) out.push_back(reader.lastPosition());
+  return out;
+}
+
+const char kLoop[] =
+    "O0100 (LOOP)\n"          // 0
+    "N10 #1=0\n"              // 1
+    "N20 #1=#1+1\n"           // 2
+    "N30 IF [#1 LT 3] GOTO 20\n"  // 3
+    "N20 X1 (second N20)\n"   // 4
+    "n40 goto 10\n"           // 5  lower case
+    "/2 N50 M30\n"            // 6  block skip
+    "( c ) N60 G0;N70 G1\n"   // 7,8  comment first, ';' split
+    "N 80 (blank in the word)\n"  // 9
+    "G1 N90\n"                // 10 not the first word: not a label
+    "N100.\n";                // 11 not an integer
+
+TEST(ProgramIndex, FindsLabelsAsTheReaderReadsThem) {
+  SourceManager sm;
+  const uint32_t f = sm.addBuffer("loop.nc", kLoop);
+  const std::vector<BlockPosition> at = positions(sm, f);
+  ProgramIndex index(sm, f, {});
+  const BlockPosition start{};
+  EXPECT_EQ(index.findSequence(10, start, SequenceSearch::FromStart), at[1]);
+  EXPECT_EQ(index.findSequence(40, start, SequenceSearch::FromStart), at[5]);
+  EXPECT_EQ(index.findSequence(50, start, SequenceSearch::FromStart), at[6]);
+  EXPECT_EQ(index.findSequence(60, start, SequenceSearch::FromStart), at[7]);
+  EXPECT_EQ(index.findSequence(70, start, SequenceSearch::FromStart), at[8]);
+  EXPECT_EQ(blockAt(sm, f, *index.findSequence(70, start, SequenceSearch::FromStart)), "N70 G1");
+  EXPECT_EQ(index.findSequence(80, start, SequenceSearch::FromStart), at[9]);
+  EXPECT_FALSE(index.findSequence(90, start, SequenceSearch::FromStart));
+  EXPECT_FALSE(index.findSequence(100, start, SequenceSearch::FromStart));
+  EXPECT_FALSE(index.findSequence(11, start, SequenceSearch::FromStart));
+}
+
+TEST(ProgramIndex, ForwardThenFromStartAndFromStart) {
+  SourceManager sm;
+  const uint32_t f = sm.addBuffer("loop.nc", kLoop);
+  const std::vector<BlockPosition> at = positions(sm, f);
+  ProgramIndex index(sm, f, {});
+  // From the GOTO block (N30): the N20 after it comes first, then the one before.
+  EXPECT_EQ(index.findSequence(20, at[3], SequenceSearch::ForwardThenFromStart), at[4]);
+  EXPECT_EQ(index.findSequence(20, at[4], SequenceSearch::ForwardThenFromStart), at[2]);
+  EXPECT_EQ(index.findSequence(20, at[1], SequenceSearch::ForwardThenFromStart), at[2]);
+  EXPECT_EQ(index.findSequence(20, at[3], SequenceSearch::FromStart), at[2]);
+  // Backwards: GOTO 10 from n40 wraps to the start.
+  EXPECT_EQ(index.findSequence(10, at[5], SequenceSearch::ForwardThenFromStart), at[1]);
+  // The block itself is the last searched (N30 GOTO 30 loops on itself).
+  EXPECT_EQ(index.findSequence(30, at[3], SequenceSearch::ForwardThenFromStart), at[3]);
+  // From a block in the middle of a line.
+  EXPECT_EQ(index.findSequence(60, at[8], SequenceSearch::ForwardThenFromStart), at[7]);
+  EXPECT_EQ(index.findSequence(70, at[7], SequenceSearch::ForwardThenFromStart), at[8]);
+}
+
+const char kTwoPrograms[] =
+    "%\n"
+    "O1000 (MAIN)\n"    // 1
+    "N10 M98 P2000\n"   // 2
+    "N20 M30\n"         // 3
+    ":2000 (SUB)\n"     // 4
+    "N10 G1 X1\n"       // 5
+    "N20 M99\n"         // 6
+    "o3000\n"           // 7
+    "N20 M99\n"         // 8
+    "%\n"               // 9 closes the record
+    "O4000\n"           // not part of the program
+    "N99\n";
+
+TEST(ProgramIndex, SearchWithinAProgram) {
+  SourceManager sm;
+  const uint32_t f = sm.addBuffer("two.nc", kTwoPrograms);
+  const std::vector<BlockPosition> at = positions(sm, f);
+  ProgramIndex index(sm, f, {});
+  const std::optional<BlockPosition> sub = index.findProgram(2000);
+  ASSERT_TRUE(sub);
+  EXPECT_EQ(*sub, at[4]);
+  const BlockRange sub_range{*sub, index.programEnd(*sub)};
+  EXPECT_EQ(sub_range.second, at[7]);
+  // N10 of the subprogram, not of the main program, even searching from the start.
+  EXPECT_EQ(index.findSequence(10, *sub, SequenceSearch::FromStart, sub_range), at[5]);
+  EXPECT_EQ(index.findSequence(10, at[6], SequenceSearch::ForwardThenFromStart, sub_range), at[5]);
+  // N20 of program 3000 is outside program 2000: from N20 (M99) the search wraps to its own.
+  EXPECT_EQ(index.findSequence(20, at[6], SequenceSearch::ForwardThenFromStart, sub_range), at[6]);
+  EXPECT_FALSE(index.findSequence(30, *sub, SequenceSearch::FromStart, sub_range));
+  // Without a range, N20 after program 2000's N20 is program 3000's.
+  EXPECT_EQ(index.findSequence(20, at[6], SequenceSearch::ForwardThenFromStart), at[8]);
+  // The main program: from the file start to the first O block after it.
+  const BlockPosition main_end = index.programEnd(BlockPosition{});
+  EXPECT_EQ(main_end, at[1]);  // the file starts with '%': O1000 is the next O block
+  const BlockRange main_range{at[1], index.programEnd(at[1])};
+  EXPECT_EQ(main_range.second, at[4]);
+  EXPECT_EQ(index.findSequence(20, at[2], SequenceSearch::ForwardThenFromStart, main_range), at[3]);
+  // From a block before the range: every block of the range comes after it.
+  EXPECT_EQ(index.findSequence(10, at[0], SequenceSearch::ForwardThenFromStart, sub_range), at[5]);
+}
+
+TEST(ProgramIndex, ProgramsAndTheEndOfTheRecord) {
+  SourceManager sm;
+  const uint32_t f = sm.addBuffer("two.nc", kTwoPrograms);
+  const std::vector<BlockPosition> at = positions(sm, f);
+  ProgramIndex index(sm, f, {});
+  EXPECT_EQ(index.findProgram(1000), at[1]);
+  EXPECT_EQ(index.findProgram(2000), at[4]);  // ':2000'
+  EXPECT_EQ(index.findProgram(3000), at[7]);  // 'o3000'
+  EXPECT_FALSE(index.findProgram(4000));      // after the closing '%'
+  EXPECT_FALSE(index.findSequence(99, BlockPosition{}, SequenceSearch::FromStart));
+  EXPECT_EQ(index.programEnd(at[7]), at[9]);  // the last program ends at the closing '%'
+  EXPECT_EQ(blockAt(sm, f, at[9]), "%");
+  EXPECT_EQ(index.firstProgramNumber(), 1000);
+}
+
+TEST(ProgramIndex, ProgramEndIsTheEndOfTheFileWithoutAClosingPercent) {
+  SourceManager sm;
+  const uint32_t f = sm.addBuffer("open.nc", "O1\nN1 M99\n");
+  ProgramIndex index(sm, f, {});
+  const BlockPosition end = index.programEnd(*index.findProgram(1));
+  DiagnosticEngine diags(&sm);
+  BlockReader reader(sm, f, diags);
+  while (reader.next()) {
+  }
+  EXPECT_EQ(end, reader.position());
+  EXPECT_EQ(end, (BlockPosition{10, 3, 1}));
+}
+
+TEST(ProgramIndex, FirstProgramNumber) {
+  SourceManager sm;
+  const auto first = [&](const char* text) {
+    const uint32_t f = sm.addBuffer("f.nc", text);
+    return ProgramIndex(sm, f, {}).firstProgramNumber();
+  };
+  EXPECT_EQ(first("O0012\nG0 X1\n"), 12);
+  EXPECT_EQ(first("\xEF\xBB\xBF%\r\n(header)\r\n\r\n  :34 (SUB)\r\nM99\r\n"), 34);
+  EXPECT_EQ(first("( only comments ) ; o56 ; N1\n"), 56);
+  EXPECT_EQ(first("N1 O78\n"), std::nullopt);  // O is not the first word
+  EXPECT_EQ(first("G0 X1\nO90\n"), std::nullopt);  // the first block is not a program block
+  EXPECT_EQ(first("%\n%\nO91\n"), std::nullopt);   // an empty record: O91 is after its end
+  EXPECT_EQ(first(""), std::nullopt);
+}
+
+TEST(ProgramIndex, SiemensAnnotationIsNotABlockEnd) {
+  SourceManager sm;
+  const uint32_t f = sm.addBuffer("s.nc", "N10 G1 X1 ; N20 X2\nN30 M30\n");
+  ReaderOptions siemens;
+  siemens.semicolon_ends_block = false;
+  ProgramIndex iso(sm, f, siemens);
+  EXPECT_FALSE(iso.findSequence(20, BlockPosition{}, SequenceSearch::FromStart));
+  EXPECT_EQ(iso.findSequence(30, BlockPosition{}, SequenceSearch::FromStart),
+            (BlockPosition{19, 2, 1}));
+  ProgramIndex fanuc(sm, f, {});  // ';' ends the block: N20 starts one
+  EXPECT_EQ(fanuc.findSequence(20, BlockPosition{}, SequenceSearch::FromStart),
+            (BlockPosition{0, 1, 12}));
+  EXPECT_EQ(blockAt(sm, f, BlockPosition{0, 1, 12}), "N20 X2");
+}
+
+TEST(ProgramIndex, RepeatedLookupsScanOnce) {
+  // A loop jumping back 10000 times to N1 from the same block, in a file of 20000 blocks:
+  // the search reads the file once, then answers from its cache.
+  std::string text = "O1\nN1 #1=#1+1\n";
+  for (int i = 0; i < 20000; ++i) text += "N" + std::to_string(i + 2) + " G1 X1\n";
+  text += "N99999 IF [#1 LT 10000] GOTO 1\nM30\n";
+  TempDir dir;
+  SourceManager sm;
+  const uint32_t f = sm.addFile(dir.write("big.nc", text));
+  const std::vector<BlockPosition> at = positions(sm, f);
+  const BlockPosition goto_block = at[at.size() - 2];
+  ProgramIndex index(sm, f, {});
+  const std::optional<BlockPosition> first = index.findSequence(1, goto_block,
+                                                               SequenceSearch::ForwardThenFromStart);
+  ASSERT_EQ(first, at[1]);
+  const ProgramIndex::Stats after_first = index.stats();
+  for (int i = 0; i < 10000; ++i)
+    ASSERT_EQ(index.findSequence(1, goto_block, SequenceSearch::ForwardThenFromStart), first);
+  EXPECT_EQ(index.stats().scans, after_first.scans);
+  EXPECT_EQ(index.stats().lines, after_first.lines);
+  // A label searched forward from just before it reads a few lines, not the file.
+  const uint64_t lines_before = index.stats().lines;
+  EXPECT_EQ(index.findSequence(502, at[500], SequenceSearch::ForwardThenFromStart), at[502]);
+  EXPECT_LE(index.stats().lines - lines_before, 3u);
+  // A plain reader pays nothing: the index is not involved in reading.
+}
+
+TEST(ProgramIndex, UnreadableFileFindsNothing) {
+  SourceManager sm;
+  const uint32_t f = sm.addFile("/nonexistent/ncc/missing.nc");
+  ProgramIndex index(sm, f, {});
+  EXPECT_FALSE(index.findSequence(1, BlockPosition{}, SequenceSearch::FromStart));
+  EXPECT_FALSE(index.findProgram(1));
+  EXPECT_FALSE(index.firstProgramNumber());
+  EXPECT_EQ(index.programEnd(BlockPosition{}), BlockPosition{});
+}
+
+}  // namespace
+}  // namespace ncc::frontend
