@@ -23,12 +23,25 @@ class VariableReader {
 struct ExpressionContext {
   const MacroRules& rules;
   VariableReader& variables;
+  // Brackets already open around the expression and counted against max_bracket_depth: 1
+  // for the condition of IF [..] / WHILE [..] and for #[..] on the left of an assignment
+  // (the parser keeps their contents only).
+  int enclosing_brackets = 0;
+  // ADP[x]: the factor from least input increments to input units (1000 with 0.001 mm).
+  double adp_scale = 1000.0;
 };
 
 // The value of `expr`; nullopt after filling `failure` (with the location of the offending
 // sub-expression).
 std::optional<Value> evaluate(const ast::Expr& expr, const ExpressionContext& context,
                               Failure& failure);
+
+// The first place where `expr` nests brackets deeper than rules.max_bracket_depth (counting
+// [ ], function brackets and #[ ], plus `enclosing` already open); false after filling
+// `failure` (BracketNesting). evaluate() checks this first; it is public so that a
+// compiler can report it without evaluating.
+bool checkBracketDepth(const ast::Expr& expr, const MacroRules& rules, int enclosing,
+                       Failure& failure);
 
 // The variable number a value designates (`#[#1+1]`): rounded as the manual states; nullopt
 // after filling `failure` (vacant or out of range).

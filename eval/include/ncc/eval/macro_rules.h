@@ -4,6 +4,7 @@
 // written against this table only (no `if (dialect == ...)`); docs/macro.md lists the values.
 #include <array>
 #include <cstdint>
+#include <optional>
 #include <span>
 #include <string_view>
 
@@ -24,6 +25,12 @@ enum class RepeatEncoding : uint8_t {
   HighDigitsOfP,     // M98 P<count><program 4 digits> (FANUC Pnnnnmmmm, Siemens bit6 = 0)
 };
 
+// How a value with a fraction becomes a whole number (a variable number, an integer address).
+enum class Rounding : uint8_t {
+  Nearest,     // half away from zero: 2.5 -> 3, -2.5 -> -3
+  TowardZero,  // the fraction is dropped: 2.5 -> 2, -2.5 -> -2
+};
+
 // Where GOTO n (and M99 P n) looks for N n.
 enum class SequenceSearch : uint8_t {
   ForwardThenFromStart,  // from the block after the GOTO to the end, then from the start
@@ -36,9 +43,19 @@ struct MacroRules {
   // Variables.
   int local_count;                          // #1..#local_count, a fresh set per macro call
   std::span<const VariableRange> commons;   // common variables (default set)
+  // Other selectable sets of common variables ([machine.params] common_variables "A".."D"
+  // on Mazak); empty when the dialect has one set.
+  struct CommonSet {
+    std::string_view name;
+    std::span<const VariableRange> ranges;
+  };
+  std::span<const CommonSet> common_sets;
   int64_t persistent_first;                 // commons from here on survive a run (--vars)
   double max_magnitude;                     // |value| beyond this is EvalError::ValueRange
   int max_bracket_depth;                    // nesting of [ ] in one expression
+  Rounding variable_number_rounding;        // #[#1/2] with #1 = 5: #2 or #3
+  // An integer address (M T H D P L N O S) or G given a value with a fraction (M[3.5]).
+  Rounding address_rounding;
   // Loops and calls.
   int max_do_id;                            // DO 1 .. DO max_do_id
   int max_do_nesting;
@@ -61,6 +78,10 @@ struct MacroRules {
   std::span<const std::string_view> program_file_names;
 
   std::string_view alarm(EvalError e) const { return alarm_codes[static_cast<size_t>(e)]; }
+  // The alarm number #3000 = n shows (n + offset of its range); nullopt outside every range.
+  std::optional<int64_t> userAlarmNumber(int64_t n) const;
+  // The common set named `name` ("A".."D"); nullptr if the dialect has no such set.
+  const CommonSet* commonSet(std::string_view name) const;
 };
 
 // The rules of a dialect (every dialect has them; those without Macro B use the FANUC values

@@ -1,0 +1,317 @@
+// Macro B expressions (docs/macro.md, Expressions). The manuals' statements this follows:
+//  - vacant is 0 in arithmetic and in GT LT GE LE, and differs from 0 only in EQ and NE;
+//    `#1=#0` keeps #1 vacant (Mazak §13-9-3 2. A and C);
+//  - OR XOR AND work on each bit of 32-bit integers (Mazak §13-9-5 table);
+//  - functions take degrees; TAN is SIN/COS (§13-9-5 note); ROUND is to the nearest integer,
+//    FIX toward 0, FUP away from 0, for negative numbers too (§13-9-5 rows 17-19);
+//  - LN of a negative number is "calculation impossible" (§13-9-5 row 20: Mazak 860);
+//  - [ ] nest at most five deep, function brackets included (§13-6, §13-9-5 2.).
+#include "ncc/eval/expression.h"
+
+#include <cmath>
+#include <numbers>
+#include <string>
+
+#include "absl/strings/str_cat.h"
+#include "number_format.h"
+
+namespace ncc::eval {
+
+namespace {
+
+constexpr double kDegree = std::numbers::pi / 180.0;
+
+bool fail(Failure& failure, EvalError error, SourceLocation loc, std::string message) {
+  failure.error = error;
+  failure.loc = loc;
+  failure.message = std::move(message);
+  return false;
+}
+
+// Binary floating point cannot hold 0.1: 0.1*3*10 is 3.0000000000000004. The controllers
+// compute in decimal digits, so a value this close to a whole number is that number before
+// FIX / FUP / a variable number take its integer part.
+double snapToInteger(double v) {
+  const double r = std::round(v);
+  return std::fabs(v - r) <= 1e-9 * std::max(1.0, std::fabs(v)) ? r : v;
+}
+
+// sin and cos of degrees, exact at multiples of 90 (COS[90] is 0, not 6e-17).
+double sinDegrees(double deg) {
+  const double r = std::fmod(deg, 360.0);
+  if (r == 0.0) return 0.0;
+  if (std::fabs(r) == 180.0) return 0.0;
+  if (r == 90.0 || r == -270.0) return 1.0;
+  if (r == -90.0 || r == 270.0) return -1.0;
+  return std::sin(r * kDegree);
+}
+double cosDegrees(double deg) { return sinDegrees(deg + 90.0); }
+
+// Integer operands of OR XOR AND: "each bit of 32 bits" (Mazak §13-9-5).
+std::optional<int32_t> bits32(double v) {
+  const double r = std::round(v);
+  if (!(r >= -2147483648.0 && r <= 2147483647.0)) return std::nullopt;
+  return static_cast<int32_t>(static_cast<uint32_t>(static_cast<int64_t>(r)));
+}
+
+class Evaluator {
+ public:
+  Evaluator(const ExpressionContext& context, Failure& failure)
+      : rules_(context.rules), context_(context), failure_(failure) {}
+
+  std::optional<Value> eval(const ast::Expr& e) {
+    switch (e.kind) {
+      case ast::Expr::Kind::Number:
+        return Value::of(e.number);
+      case ast::Expr::Kind::Vacant:
+        return Value::none();
+      case ast::Expr::Kind::Bracket:
+        // A bracket is no operation: [#1] with #1 vacant is vacant (`X[#1]` is dropped).
+        return eval(e.args[0]);
+      case ast::Expr::Kind::Variable:
+        return variable(e);
+      case ast::Expr::Kind::Unary:
+        return unary(e);
+      case ast::Expr::Kind::Binary:
+        return binary(e);
+      case ast::Expr::Kind::Call:
+        return call(e);
+    }
+    fail(failure_, EvalError::Domain, e.loc, "unknown expression");
+    return std::nullopt;
+  }
+
+ private:
+  std::optional<Value> variable(const ast::Expr& e) {
+    auto index = eval(e.args[0]);
+    if (!index) return std::nullopt;
+    auto n = variableNumber(*index, rules_, e.loc, failure_);
+    if (!n) return std::nullopt;
+    return context_.variables.read(*n, e.loc, failure_);
+  }
+
+  // A sign on a vacant value leaves it vacant, as the bracket does: `X-#1` with #1 vacant
+  // is dropped like `X#1` (the manuals show `X-#2` as "#2 with its sign inverted").
+  std::optional<Value> unary(const ast::Expr& e) {
+    auto v = eval(e.args[0]);
+    if (!v || v->vacant) return v;
+    return Value::of(e.op == "-" ? -v->number : v->number);
+  }
+
+  std::optional<Value> result(double v, const ast::Expr& e) {
+    if (!std::isfinite(v) || std::fabs(v) > rules_.max_magnitude) {
+      fail(failure_, EvalError::ValueRange, e.loc,
+           absl::StrCat("the result of ", describe(e), " is beyond the value range (|x| <= ",
+                        formatNumber(rules_.max_magnitude), ")"));
+      return std::nullopt;
+    }
+    return Value::of(v == 0.0 ? 0.0 : v);  // no -0
+  }
+
+  static std::string describe(const ast::Expr& e) {
+    if (e.kind == ast::Expr::Kind::Call) return e.op;
+    return absl::StrCat("'", e.op, "'");
+  }
+
+  std::optional<Value> binary(const ast::Expr& e) {
+    auto lhs = eval(e.args[0]);
+    if (!lhs) return std::nullopt;
+    auto rhs = eval(e.args[1]);
+    if (!rhs) return std::nullopt;
+    const std::string& op = e.op;
+    // EQ and NE tell vacant from 0 (vacant equals only vacant); the other comparisons and
+    // the arithmetic read vacant as 0.
+    if (op == "EQ" || op == "NE") {
+      const bool equal = lhs->vacant || rhs->vacant ? lhs->vacant == rhs->vacant
+                                                    : lhs->number == rhs->number;
+      return Value::of((op == "EQ") == equal ? 1.0 : 0.0);
+    }
+    const double a = lhs->arithmetic();
+    const double b = rhs->arithmetic();
+    if (op == "GT") return Value::of(a > b ? 1.0 : 0.0);
+    if (op == "LT") return Value::of(a < b ? 1.0 : 0.0);
+    if (op == "GE") return Value::of(a >= b ? 1.0 : 0.0);
+    if (op == "LE") return Value::of(a <= b ? 1.0 : 0.0);
+    if (op == "+") return result(a + b, e);
+    if (op == "-") return result(a - b, e);
+    if (op == "*") return result(a * b, e);
+    if (op == "/" || op == "MOD") {
+      if (b == 0.0) {
+        fail(failure_, EvalError::DivisionByZero, e.loc,
+             absl::StrCat(op == "/" ? "division" : "MOD", " by zero"));
+        return std::nullopt;
+      }
+      return result(op == "/" ? a / b : std::fmod(a, b), e);
+    }
+    if (op == "OR" || op == "XOR" || op == "AND") {
+      auto x = bits32(a);
+      auto y = bits32(b);
+      if (!x || !y) {
+        fail(failure_, EvalError::ValueRange, e.loc,
+             absl::StrCat(op, " works on 32-bit integers; ", formatNumber(x ? b : a),
+                          " is outside them"));
+        return std::nullopt;
+      }
+      const int32_t r = op == "OR" ? (*x | *y) : op == "XOR" ? (*x ^ *y) : (*x & *y);
+      return Value::of(static_cast<double>(r));
+    }
+    fail(failure_, EvalError::Domain, e.loc, absl::StrCat("unknown operator '", op, "'"));
+    return std::nullopt;
+  }
+
+  std::optional<Value> domain(const ast::Expr& e, double x, std::string_view why) {
+    fail(failure_, EvalError::Domain, e.loc,
+         absl::StrCat(e.op, "[", formatNumber(x), "]: ", std::string(why)));
+    return std::nullopt;
+  }
+
+  std::optional<Value> call(const ast::Expr& e) {
+    double x[2] = {0.0, 0.0};
+    for (size_t i = 0; i < e.args.size() && i < 2; ++i) {
+      auto v = eval(e.args[i]);
+      if (!v) return std::nullopt;
+      x[i] = v->arithmetic();  // a vacant argument counts as 0
+    }
+    const std::string& f = e.op;
+    const double a = x[0];
+    if (f == "SIN") return result(sinDegrees(a), e);
+    if (f == "COS") return result(cosDegrees(a), e);
+    if (f == "TAN") {
+      // TAN is SIN/COS (Mazak §13-9-5 note): at an odd multiple of 90 degrees it has no value.
+      const double c = cosDegrees(a);
+      if (c == 0.0) return domain(e, a, "the tangent of an odd multiple of 90 degrees");
+      return result(sinDegrees(a) / c, e);
+    }
+    if (f == "ASIN" || f == "ACOS") {
+      if (a < -1.0 || a > 1.0) return domain(e, a, "the argument must be in [-1, 1]");
+      return result((f == "ASIN" ? std::asin(a) : std::acos(a)) / kDegree, e);
+    }
+    if (f == "ATAN") {
+      if (e.args.size() == 1) return result(std::atan(a) / kDegree, e);
+      // ATAN[y]/[x] and ATAN[y,x]: the angle of (x, y) from 0 to 360 degrees.
+      const double y = a, xx = x[1];
+      if (y == 0.0 && xx == 0.0)
+        return domain(e, 0.0, "ATAN[0]/[0] has no angle");
+      double deg = std::atan2(y, xx) / kDegree;
+      if (deg < 0.0) deg += 360.0;
+      return result(deg, e);
+    }
+    if (f == "SQRT") {
+      if (a < 0.0) return domain(e, a, "the square root of a negative number");
+      return result(std::sqrt(a), e);
+    }
+    if (f == "ABS") return result(std::fabs(a), e);
+    // ROUND[-14/3] = -5, FIX[-14/3] = -4, FUP[-14/3] = -5 (Mazak §13-9-5 rows 17-19).
+    if (f == "ROUND") return result(std::round(a), e);
+    if (f == "FIX") return result(std::trunc(snapToInteger(a)), e);
+    if (f == "FUP") {
+      const double s = snapToInteger(a);
+      return result(s >= 0.0 ? std::ceil(s) : std::floor(s), e);
+    }
+    if (f == "LN") {
+      if (a <= 0.0) return domain(e, a, "the logarithm needs a number greater than 0");
+      return result(std::log(a), e);
+    }
+    if (f == "EXP") return result(std::exp(a), e);
+    if (f == "POW") {
+      const double b = x[1];
+      if (a == 0.0 && b < 0.0) return domain(e, a, "0 to a negative power");
+      if (a < 0.0 && b != std::trunc(b))
+        return domain(e, a, "a negative number to a fractional power");
+      return result(std::pow(a, b), e);
+    }
+    if (f == "ADP") return result(a * context_.adp_scale, e);
+    if (f == "BIN" || f == "BCD") return bcd(e, a);
+    fail(failure_, EvalError::Domain, e.loc, absl::StrCat("unknown function '", f, "'"));
+    return std::nullopt;
+  }
+
+  // BIN: the BCD digits in the bits of x, as a number (BIN[100] = 64: 100 = 0x64).
+  // BCD: x written as BCD digits, as a number (BCD[100] = 256 = 0x100). Mazak §13-9-5 16.
+  std::optional<Value> bcd(const ast::Expr& e, double a) {
+    const double r = snapToInteger(a);
+    if (r != std::trunc(r) || r < 0.0)
+      return domain(e, a, "a whole number from 0 is needed");
+    if (e.op == "BIN") {
+      if (r > 4294967295.0) return domain(e, a, "more than 32 bits");
+      uint64_t bits = static_cast<uint64_t>(r);
+      int64_t value = 0, scale = 1;
+      for (; bits != 0; bits >>= 4, scale *= 10) {
+        const uint64_t digit = bits & 0xF;
+        if (digit > 9) return domain(e, a, "a nibble above 9 is not a BCD digit");
+        value += static_cast<int64_t>(digit) * scale;
+      }
+      return Value::of(static_cast<double>(value));
+    }
+    if (r > 99999999.0) return domain(e, a, "more than 8 BCD digits (32 bits)");
+    int64_t n = static_cast<int64_t>(r);
+    uint64_t bits = 0;
+    for (int shift = 0; n != 0; n /= 10, shift += 4) bits |= static_cast<uint64_t>(n % 10) << shift;
+    return Value::of(static_cast<double>(bits));
+  }
+
+  const MacroRules& rules_;
+  const ExpressionContext& context_;
+  Failure& failure_;
+};
+
+// Brackets a node opens: [ ], a function's brackets, #[ ] (a variable whose number is not a
+// plain literal: the parser keeps no node for the brackets of #[..]).
+int opens(const ast::Expr& e) {
+  switch (e.kind) {
+    case ast::Expr::Kind::Bracket:
+    case ast::Expr::Kind::Call:
+      return 1;
+    case ast::Expr::Kind::Variable:
+      return e.args.empty() || e.args[0].isLiteral() ? 0 : 1;
+    default:
+      return 0;
+  }
+}
+
+bool depthWithin(const ast::Expr& e, int depth, const MacroRules& rules, Failure& failure) {
+  depth += opens(e);
+  if (depth > rules.max_bracket_depth)
+    return fail(failure, EvalError::BracketNesting, e.loc,
+                absl::StrCat("brackets nested ", depth, " deep; at most ",
+                             rules.max_bracket_depth, " levels, function brackets included"));
+  for (const ast::Expr& arg : e.args)
+    if (!depthWithin(arg, depth, rules, failure)) return false;
+  return true;
+}
+
+}  // namespace
+
+bool checkBracketDepth(const ast::Expr& expr, const MacroRules& rules, int enclosing,
+                       Failure& failure) {
+  return depthWithin(expr, enclosing, rules, failure);
+}
+
+std::optional<Value> evaluate(const ast::Expr& expr, const ExpressionContext& context,
+                              Failure& failure) {
+  if (!checkBracketDepth(expr, context.rules, context.enclosing_brackets, failure))
+    return std::nullopt;
+  return Evaluator(context, failure).eval(expr);
+}
+
+std::optional<int64_t> variableNumber(const Value& value, const MacroRules& rules,
+                                      SourceLocation loc, Failure& failure) {
+  if (value.vacant) {
+    fail(failure, EvalError::VariableNumber, loc, "the variable number is vacant");
+    return std::nullopt;
+  }
+  const double snapped = snapToInteger(value.number);
+  const double n = rules.variable_number_rounding == Rounding::Nearest ? std::round(snapped)
+                                                                       : std::trunc(snapped);
+  if (n < 0.0 || !(n <= 2147483647.0)) {
+    fail(failure, EvalError::VariableNumber, loc,
+         absl::StrCat("variable number ", formatNumber(value.number),
+                      n < 0.0 ? " is negative" : " is out of range"));
+    return std::nullopt;
+  }
+  return static_cast<int64_t>(n);
+}
+
+bool isTrue(const Value& value) { return !value.vacant && value.number != 0.0; }
+
+}  // namespace ncc::eval

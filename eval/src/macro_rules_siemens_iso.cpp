@@ -1,0 +1,46 @@
+// Sinumerik 840Di ISO mode (siemens-840di-iso-milling-gcode.ja.txt; notes §4.9, §4.11, §6).
+// The manual has no `#` macro language ("the manual does not define variable ranges,
+// null/vacant values, precision, operators, IF/WHILE"): where it is silent the FANUC values
+// apply (macro_rules_fanuc.cpp). What it states: calls, files, repeat counts, M99 P.
+#include "macro_rules_tables.h"
+
+namespace ncc::eval::tables {
+
+namespace {
+
+constexpr VariableRange kCommons[] = {{100, 199}, {500, 999}};
+constexpr MacroRules::UserAlarmRange kUserAlarms[] = {{0, 200, 3000}};
+// §2 / §4.11: "M98 P21 searches 21.mpf; in zero-pad mode P20012 is 0012.mpf"; subprograms
+// are .spf files (conformance: 1234.spf, 0010.spf).
+constexpr std::string_view kFiles[] = {"{:04}.spf", "{}.spf", "{:04}.mpf", "{}.mpf"};
+
+}  // namespace
+
+constinit const MacroRules kSiemensIsoRules{
+    .dialect = Dialect::SiemensIsoM,
+    .alarm_codes = kNccCodes,  // §6: subprogram not found and nesting > 4 have no number
+    .local_count = 33,
+    .commons = kCommons,
+    .common_sets = {},
+    .persistent_first = 500,
+    .max_magnitude = 1e47,
+    .max_bracket_depth = 5,
+    .variable_number_rounding = Rounding::Nearest,
+    .address_rounding = Rounding::Nearest,
+    .max_do_id = 3,
+    .max_do_nesting = 3,
+    .max_call_nesting = 4,   // §4.3: "nesting is limited to 4 levels, more is an error"
+    .max_macro_nesting = 4,  // G65/G66 are among the 4 (no separate limit stated)
+    .goto_search = SequenceSearch::ForwardThenFromStart,
+    // §4.3: M99 P n searches "forward from the call block to the end, then from the start".
+    .return_search = SequenceSearch::ForwardThenFromStart,
+    // §4.3: M98 P<count up to 3 digits><program 4 digits> (EXTERN_FUNCTION_MASK bit6 = 0;
+    // with bit6 = 1 P is the program and L the count: the caller reads that parameter).
+    .repeat = RepeatEncoding::HighDigitsOfP,
+    .program_number_digits = 4,
+    .user_alarms = kUserAlarms,
+    .argument_spec1 = kArgumentSpec1,  // §4.10 type I: G L N O P are not arguments
+    .program_file_names = kFiles,
+};
+
+}  // namespace ncc::eval::tables
