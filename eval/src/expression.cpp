@@ -8,7 +8,9 @@
 //  - [ ] nest at most five deep, function brackets included (§13-6, §13-9-5 2.).
 #include "ncc/eval/expression.h"
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <string>
 
@@ -100,9 +102,12 @@ class Evaluator {
 
   std::optional<Value> result(double v, const ast::Expr& e) {
     if (!std::isfinite(v) || std::fabs(v) > rules_.max_magnitude) {
+      const bool bounded = rules_.max_magnitude < std::numeric_limits<double>::max();
       fail(failure_, EvalError::ValueRange, e.loc,
-           absl::StrCat("the result of ", describe(e), " is beyond the value range (|x| <= ",
-                        formatNumber(rules_.max_magnitude), ")"));
+           bounded ? absl::StrCat("the result of ", describe(e),
+                                  " is beyond the value range (|x| <= ",
+                                  formatNumber(rules_.max_magnitude), ")")
+                   : absl::StrCat("the result of ", describe(e), " overflows"));
       return std::nullopt;
     }
     return Value::of(v == 0.0 ? 0.0 : v);  // no -0

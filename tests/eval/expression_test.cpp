@@ -253,7 +253,10 @@ TEST(Errors, ValueRange) {
   EXPECT_EQ(failure("1000000*POW[10,42]", fanuc()).error, EvalError::ValueRange);
   EXPECT_EQ(number("POW[10,46]", fanuc()), 1e46);
   EXPECT_EQ(failure("EXP[1000]", fanuc()).error, EvalError::ValueRange);
-  EXPECT_EQ(failure("EXP[1000]").error, EvalError::ValueRange);  // Mazak: overflow only
+  const Failure overflow = failure("EXP[1000]");  // Mazak: overflow only
+  EXPECT_EQ(overflow.error, EvalError::ValueRange);
+  EXPECT_NE(overflow.message.find("EXP"), std::string::npos) << overflow.message;
+  EXPECT_EQ(overflow.loc.column, 4u);
   // Mazak states no limit on results (§13-9-5 4. computes with 2345678988888.888).
   EXPECT_NEAR(number("2345678988888.888-2345678901234.567"), 87654.321, 0.001);
   EXPECT_EQ(failure("10000000000 OR 1").error, EvalError::ValueRange);  // beyond 32 bits
