@@ -62,6 +62,11 @@ class Evaluator {
       : rules_(context.rules), context_(context), failure_(failure) {}
 
   std::optional<Value> eval(const ast::Expr& e) {
+    // A tree the parser did not build (a test, a fuzzer) must not be read past its ends.
+    if (e.args.size() < operandCount(e)) {
+      fail(failure_, EvalError::Domain, e.loc, "malformed expression: an operand is missing");
+      return std::nullopt;
+    }
     switch (e.kind) {
       case ast::Expr::Kind::Number:
         return Value::of(e.number);
@@ -84,6 +89,20 @@ class Evaluator {
   }
 
  private:
+  static size_t operandCount(const ast::Expr& e) {
+    switch (e.kind) {
+      case ast::Expr::Kind::Binary:
+        return 2;
+      case ast::Expr::Kind::Bracket:
+      case ast::Expr::Kind::Variable:
+      case ast::Expr::Kind::Unary:
+      case ast::Expr::Kind::Call:
+        return 1;
+      default:
+        return 0;
+    }
+  }
+
   std::optional<Value> variable(const ast::Expr& e) {
     auto index = eval(e.args[0]);
     if (!index) return std::nullopt;

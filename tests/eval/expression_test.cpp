@@ -297,6 +297,20 @@ TEST(Errors, BracketNestingFiveLevelsIncludingFunctions) {
   EXPECT_EQ(fail4.error, EvalError::BracketNesting);
 }
 
+TEST(Errors, MalformedTreeIsRefusedNotRead) {
+  ast::Expr e;
+  e.kind = ast::Expr::Kind::Binary;
+  e.op = "+";
+  e.args.push_back(ast::Expr::literal(1.0, false, {}));
+  MapVariables vars;
+  Failure f;
+  EXPECT_FALSE(evaluate(e, ExpressionContext{mazak(), vars}, f));
+  EXPECT_NE(f.message.find("malformed"), std::string::npos) << f.message;
+  ast::Expr v;
+  v.kind = ast::Expr::Kind::Variable;
+  EXPECT_FALSE(evaluate(v, ExpressionContext{mazak(), vars}, f));
+}
+
 TEST(Errors, BracketDepthIsCheckedBeforeEvaluating) {
   // A division by zero inside too deep brackets reports the brackets (a static error).
   EXPECT_EQ(failure("[[[[[[1/0]]]]]]").error, EvalError::BracketNesting);
