@@ -336,6 +336,25 @@ std::optional<int64_t> variableNumber(const Value& value, const MacroRules& rule
   return static_cast<int64_t>(n);
 }
 
+std::optional<int64_t> assignmentTarget(const ast::Expr& target, const ExpressionContext& context,
+                                        Failure& failure) {
+  if (target.kind != ast::Expr::Kind::Variable || target.args.empty()) {
+    fail(failure, EvalError::VariableNumber, target.loc, "the left side is not a variable");
+    return std::nullopt;
+  }
+  ExpressionContext inner = context;
+  inner.enclosing_brackets += opens(target);
+  auto index = evaluate(target.args[0], inner, failure);
+  if (!index) return std::nullopt;
+  auto n = variableNumber(*index, context.rules, target.loc, failure);
+  if (!n) return std::nullopt;
+  if (*n == 0) {
+    fail(failure, EvalError::VariableReadOnly, target.loc, "#0 is always vacant and cannot be assigned");
+    return std::nullopt;
+  }
+  return n;
+}
+
 bool isTrue(const Value& value) { return !value.vacant && value.number != 0.0; }
 
 }  // namespace ncc::eval

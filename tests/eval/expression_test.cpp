@@ -329,6 +329,30 @@ TEST(VariableNumbers, IndirectExamplesOfTheManual) {
   EXPECT_EQ(evalText("#[SIN[90]*10]", mazak(), vars).value->number, 20.0);
 }
 
+TEST(VariableNumbers, AssignmentTargets) {
+  MapVariables vars;
+  vars.set(10, Value::of(5));
+  auto target = [&](std::string_view text, Failure& f) {
+    const ast::Block block = test::parseBlock(text);
+    return assignmentTarget(block.statements[0].target, ExpressionContext{mazak(), vars}, f);
+  };
+  Failure f;
+  // §13-9-3 example 2: #[#10+1] is #6, #[#10*3] is #15, #[#10/2] is #2.
+  EXPECT_EQ(target("#[#10+1]=1000", f), 6);
+  EXPECT_EQ(target("#[#10*3]=100", f), 15);
+  EXPECT_EQ(target("#[#10/2]=-100", f), 2);
+  EXPECT_EQ(target("#101=1", f), 101);
+  EXPECT_FALSE(target("#0=1", f));
+  EXPECT_EQ(f.error, EvalError::VariableReadOnly);
+  EXPECT_EQ(f.loc.column, 1u);
+  EXPECT_FALSE(target("#[#10-6]=1", f));
+  EXPECT_EQ(f.error, EvalError::VariableNumber);
+  // The brackets of #[..] count: with four more inside they make five, with five six.
+  EXPECT_TRUE(target("#[[[[[#10]]]]]=1", f));
+  EXPECT_FALSE(target("#[[[[[[#10]]]]]]=1", f));
+  EXPECT_EQ(f.error, EvalError::BracketNesting);
+}
+
 TEST(VariableNumbers, FractionsPerDialect) {
   Failure f;
   // Mazak §13-9-3 example 2: #10 = 5, #[#10/2] is #2.
