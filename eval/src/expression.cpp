@@ -349,7 +349,8 @@ std::optional<int64_t> assignmentTarget(const ast::Expr& target, const Expressio
   auto n = variableNumber(*index, context.rules, target.loc, failure);
   if (!n) return std::nullopt;
   if (*n == 0) {
-    fail(failure, EvalError::VariableReadOnly, target.loc, "#0 is always vacant and cannot be assigned");
+    fail(failure, EvalError::VariableReadOnly, target.loc,
+         "#0 is always vacant and cannot be assigned");
     return std::nullopt;
   }
   return n;
