@@ -9,6 +9,7 @@
 //    least significant digit (FANUC common): rules.address_rounding.
 #include "ncc/eval/address_value.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "absl/strings/str_cat.h"

@@ -8,7 +8,9 @@
 //  - [ ] nest at most five deep, function brackets included (§13-6, §13-9-5 2.).
 #include "ncc/eval/expression.h"
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <string>
 
@@ -60,6 +62,11 @@ class Evaluator {
       : rules_(context.rules), context_(context), failure_(failure) {}
 
   std::optional<Value> eval(const ast::Expr& e) {
+    // A tree the parser did not build (a test, a fuzzer) must not be read past its ends.
+    if (e.args.size() < operandCount(e)) {
+      fail(failure_, EvalError::Domain, e.loc, "malformed expression: an operand is missing");
+      return std::nullopt;
+    }
     switch (e.kind) {
       case ast::Expr::Kind::Number:
         return Value::of(e.number);
@@ -82,6 +89,20 @@ class Evaluator {
   }
 
  private:
+  static size_t operandCount(const ast::Expr& e) {
+    switch (e.kind) {
+      case ast::Expr::Kind::Binary:
+        return 2;
+      case ast::Expr::Kind::Bracket:
+      case ast::Expr::Kind::Variable:
+      case ast::Expr::Kind::Unary:
+      case ast::Expr::Kind::Call:
+        return 1;
+      default:
+        return 0;
+    }
+  }
+
   std::optional<Value> variable(const ast::Expr& e) {
     auto index = eval(e.args[0]);
     if (!index) return std::nullopt;
@@ -100,9 +121,12 @@ class Evaluator {
 
   std::optional<Value> result(double v, const ast::Expr& e) {
     if (!std::isfinite(v) || std::fabs(v) > rules_.max_magnitude) {
+      const bool bounded = rules_.max_magnitude < std::numeric_limits<double>::max();
       fail(failure_, EvalError::ValueRange, e.loc,
-           absl::StrCat("the result of ", describe(e), " is beyond the value range (|x| <= ",
-                        formatNumber(rules_.max_magnitude), ")"));
+           bounded ? absl::StrCat("the result of ", describe(e),
+                                  " is beyond the value range (|x| <= ",
+                                  formatNumber(rules_.max_magnitude), ")")
+                   : absl::StrCat("the result of ", describe(e), " overflows"));
       return std::nullopt;
     }
     return Value::of(v == 0.0 ? 0.0 : v);  // no -0
@@ -310,6 +334,26 @@ std::optional<int64_t> variableNumber(const Value& value, const MacroRules& rule
     return std::nullopt;
   }
   return static_cast<int64_t>(n);
+}
+
+std::optional<int64_t> assignmentTarget(const ast::Expr& target, const ExpressionContext& context,
+                                        Failure& failure) {
+  if (target.kind != ast::Expr::Kind::Variable || target.args.empty()) {
+    fail(failure, EvalError::VariableNumber, target.loc, "the left side is not a variable");
+    return std::nullopt;
+  }
+  ExpressionContext inner = context;
+  inner.enclosing_brackets += opens(target);
+  auto index = evaluate(target.args[0], inner, failure);
+  if (!index) return std::nullopt;
+  auto n = variableNumber(*index, context.rules, target.loc, failure);
+  if (!n) return std::nullopt;
+  if (*n == 0) {
+    fail(failure, EvalError::VariableReadOnly, target.loc,
+         "#0 is always vacant and cannot be assigned");
+    return std::nullopt;
+  }
+  return n;
 }
 
 bool isTrue(const Value& value) { return !value.vacant && value.number != 0.0; }

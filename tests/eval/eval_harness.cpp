@@ -61,12 +61,7 @@ std::optional<Failure> runAssignments(std::string_view program, const MacroRules
     for (const ast::Statement& s : block.statements) {
       if (s.kind != ast::Statement::Kind::Assign) continue;
       Failure failure;
-      // #[..] on the left: its brackets count as one level (the parser keeps the contents).
-      const int target_brackets = s.target.args[0].isLiteral() ? 0 : 1;
-      auto index = evaluate(s.target.args[0], ExpressionContext{rules, vars, target_brackets},
-                            failure);
-      if (!index) return failure;
-      auto n = variableNumber(*index, rules, s.target.loc, failure);
+      auto n = assignmentTarget(s.target, ExpressionContext{rules, vars}, failure);
       if (!n) return failure;
       auto value = evaluate(s.value, ExpressionContext{rules, vars}, failure);
       if (!value) return failure;

@@ -253,7 +253,10 @@ TEST(Errors, ValueRange) {
   EXPECT_EQ(failure("1000000*POW[10,42]", fanuc()).error, EvalError::ValueRange);
   EXPECT_EQ(number("POW[10,46]", fanuc()), 1e46);
   EXPECT_EQ(failure("EXP[1000]", fanuc()).error, EvalError::ValueRange);
-  EXPECT_EQ(failure("EXP[1000]").error, EvalError::ValueRange);  // Mazak: overflow only
+  const Failure overflow = failure("EXP[1000]");  // Mazak: overflow only
+  EXPECT_EQ(overflow.error, EvalError::ValueRange);
+  EXPECT_NE(overflow.message.find("EXP"), std::string::npos) << overflow.message;
+  EXPECT_EQ(overflow.loc.column, 4u);
   // Mazak states no limit on results (§13-9-5 4. computes with 2345678988888.888).
   EXPECT_NEAR(number("2345678988888.888-2345678901234.567"), 87654.321, 0.001);
   EXPECT_EQ(failure("10000000000 OR 1").error, EvalError::ValueRange);  // beyond 32 bits
@@ -294,6 +297,20 @@ TEST(Errors, BracketNestingFiveLevelsIncludingFunctions) {
   EXPECT_EQ(fail4.error, EvalError::BracketNesting);
 }
 
+TEST(Errors, MalformedTreeIsRefusedNotRead) {
+  ast::Expr e;
+  e.kind = ast::Expr::Kind::Binary;
+  e.op = "+";
+  e.args.push_back(ast::Expr::literal(1.0, false, {}));
+  MapVariables vars;
+  Failure f;
+  EXPECT_FALSE(evaluate(e, ExpressionContext{mazak(), vars}, f));
+  EXPECT_NE(f.message.find("malformed"), std::string::npos) << f.message;
+  ast::Expr v;
+  v.kind = ast::Expr::Kind::Variable;
+  EXPECT_FALSE(evaluate(v, ExpressionContext{mazak(), vars}, f));
+}
+
 TEST(Errors, BracketDepthIsCheckedBeforeEvaluating) {
   // A division by zero inside too deep brackets reports the brackets (a static error).
   EXPECT_EQ(failure("[[[[[[1/0]]]]]]").error, EvalError::BracketNesting);
@@ -310,6 +327,30 @@ TEST(VariableNumbers, IndirectExamplesOfTheManual) {
   EXPECT_EQ(evalText("#[#[#1]]", mazak(), vars).value->number, 30.0);
   EXPECT_EQ(evalText("#[#1]", mazak(), vars).value->number, 20.0);
   EXPECT_EQ(evalText("#[SIN[90]*10]", mazak(), vars).value->number, 20.0);
+}
+
+TEST(VariableNumbers, AssignmentTargets) {
+  MapVariables vars;
+  vars.set(10, Value::of(5));
+  auto target = [&](std::string_view text, Failure& f) {
+    const ast::Block block = test::parseBlock(text);
+    return assignmentTarget(block.statements[0].target, ExpressionContext{mazak(), vars}, f);
+  };
+  Failure f;
+  // §13-9-3 example 2: #[#10+1] is #6, #[#10*3] is #15, #[#10/2] is #2.
+  EXPECT_EQ(target("#[#10+1]=1000", f), 6);
+  EXPECT_EQ(target("#[#10*3]=100", f), 15);
+  EXPECT_EQ(target("#[#10/2]=-100", f), 2);
+  EXPECT_EQ(target("#101=1", f), 101);
+  EXPECT_FALSE(target("#0=1", f));
+  EXPECT_EQ(f.error, EvalError::VariableReadOnly);
+  EXPECT_EQ(f.loc.column, 1u);
+  EXPECT_FALSE(target("#[#10-6]=1", f));
+  EXPECT_EQ(f.error, EvalError::VariableNumber);
+  // The brackets of #[..] count: with four more inside they make five, with five six.
+  EXPECT_TRUE(target("#[[[[[#10]]]]]=1", f));
+  EXPECT_FALSE(target("#[[[[[[#10]]]]]]=1", f));
+  EXPECT_EQ(f.error, EvalError::BracketNesting);
 }
 
 TEST(VariableNumbers, FractionsPerDialect) {

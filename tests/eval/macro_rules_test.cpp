@@ -109,5 +109,20 @@ TEST(MacroRules, FanucAndSiemensCalls) {
   EXPECT_EQ(s.program_file_names[0], "{:04}.spf");
 }
 
+TEST(MacroRules, ProgramFileCandidates) {
+  using V = std::vector<std::string>;
+  EXPECT_EQ(macroRules(Dialect::MazakM).programFileCandidates(1234),
+            (V{"O1234.nc", "1234.nc"}));
+  EXPECT_EQ(macroRules(Dialect::FanucM).programFileCandidates(12),
+            (V{"O0012.nc", "O12.nc", "0012.nc", "12.nc"}));
+  EXPECT_EQ(macroRules(Dialect::MazakM).programFileCandidates(12345678),
+            (V{"O12345678.nc", "12345678.nc"}));
+  // siemens-iso-m/m98-repeat-count calls 1234.spf; g65-arguments-type1 calls 0010.spf.
+  EXPECT_EQ(macroRules(Dialect::SiemensIsoM).programFileCandidates(10),
+            (V{"0010.spf", "10.spf", "0010.mpf", "10.mpf"}));
+  EXPECT_EQ(macroRules(Dialect::SiemensIsoM).programFileCandidates(1234)[0], "1234.spf");
+  EXPECT_TRUE(macroRules(Dialect::MazakM).programFileCandidates(-1).empty());
+}
+
 }  // namespace
 }  // namespace ncc::eval

@@ -48,6 +48,13 @@ bool checkBracketDepth(const ast::Expr& expr, const MacroRules& rules, int enclo
 std::optional<int64_t> variableNumber(const Value& value, const MacroRules& rules,
                                       SourceLocation loc, Failure& failure);
 
+// The variable an assignment writes (`#5 = ..`, `#[#1+1] = ..`; `target` is the statement's
+// Variable expression): the brackets of #[..] count as one level. nullopt after filling
+// `failure`: VariableNumber as above, VariableReadOnly for #0 ("#0 cannot be on the left",
+// Mazak §13-9-3 2.). Whether a system variable may be written is the caller's to say.
+std::optional<int64_t> assignmentTarget(const ast::Expr& target, const ExpressionContext& context,
+                                        Failure& failure);
+
 // A condition (IF, WHILE): true when the value is not 0 (vacant is false).
 bool isTrue(const Value& value);
 

@@ -6,7 +6,9 @@
 #include <cstdint>
 #include <optional>
 #include <span>
+#include <string>
 #include <string_view>
+#include <vector>
 
 #include "ncc/eval/failure.h"
 #include "ncc/machine/dialect.h"
@@ -80,6 +82,9 @@ struct MacroRules {
   std::string_view alarm(EvalError e) const { return alarm_codes[static_cast<size_t>(e)]; }
   // The alarm number #3000 = n shows (n + offset of its range); nullopt outside every range.
   std::optional<int64_t> userAlarmNumber(int64_t n) const;
+  // The file names program `number` may have, in the order of program_file_names, without
+  // repeats (1234 -> "O1234.nc", "1234.nc"; 12 -> "O0012.nc", "O12.nc", "0012.nc", "12.nc").
+  std::vector<std::string> programFileCandidates(int64_t number) const;
   // The common set named `name` ("A".."D"); nullptr if the dialect has no such set.
   const CommonSet* commonSet(std::string_view name) const;
 };
