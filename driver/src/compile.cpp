@@ -2,14 +2,20 @@
 
 #include <fstream>
 #include <string_view>
+#include <utility>
 #include <system_error>
 
 #include "absl/strings/str_cat.h"
 #include "ncc/backend/bytecode_writer.h"
+#include "ncc/bytecode/format.h"
+#include "ncc/eval/evaluator.h"
+#include "ncc/eval/macro_rules.h"
+#include "ncc/eval/variables.h"
 #include "ncc/frontend/block_reader.h"
 #include "ncc/ir/printer.h"
 #include "ncc/passes/lowering.h"
 #include "ncc/passes/pass_manager.h"
+#include "source_program_store.h"
 
 namespace ncc::driver {
 
@@ -77,53 +83,98 @@ void afterEndOfRecord(frontend::BlockReader& reader, DiagnosticEngine& diags) {
 }
 
 // The text after M02/M30 is never executed (the control stops and rewinds there). It is not
-// parsed, so nothing there is an error; the first thing found (comments aside) draws one
-// warning: a stored subprogram (`O` number: not supported yet, issue 22) or other text. A '%'
-// there closes the record as usual.
+// parsed, so nothing there is an error. Programs stored after the main program (`O` numbers)
+// are read only when called; other text draws one warning. A '%' there closes the record.
 void afterProgramEnd(frontend::BlockReader& reader, DiagnosticEngine& diags) {
   std::optional<frontend::BlockReader::Text> next = nextNonComment(reader);
   if (!next) return;
   if (isEndOfRecord(next->text)) return afterEndOfRecord(reader, diags);
-  if (startsProgram(next->text)) {
-    diags.warning("NCC0021", next->loc,
-                  "a program after the end of the main program (M02/M30) is not executed: "
-                  "subprograms stored in the same file are not supported yet");
-    return;
-  }
+  if (startsProgram(next->text)) return;
   diags.warning("NCC0022", next->loc,
                 "text after the end of the program (M02/M30) is never executed and is ignored");
 }
 
-// Reads blocks and lowers them until the end of the program: M02/M30, or a '%' after the
-// program's first block (the end of the record). What follows is never executed; it is not
-// parsed either, and draws a warning at most.
+// The common variables in force: the dialect's, or the set the machine file names
+// (common_variables, Mazak's A-D).
+std::vector<eval::VariableRange> commonVariables(const eval::MacroRules& rules,
+                                                 const MachineConfig& machine) {
+  std::span<const eval::VariableRange> ranges = rules.commons;
+  if (const eval::MacroRules::CommonSet* set =
+          rules.commonSet(machine.params.getString("common_variables", "")))
+    ranges = set->ranges;
+  return std::vector<eval::VariableRange>(ranges.begin(), ranges.end());
+}
+
+// M98's repeat count: the dialect's, unless the machine takes 8-digit program numbers
+// (Sinumerik MD20734 bit 6: the count is then in L).
+eval::RepeatEncoding repeatEncoding(const eval::MacroRules& rules, const MachineConfig& machine) {
+  return machine.params.getBool("eight_digit_program_numbers", false)
+             ? eval::RepeatEncoding::LAddress
+             : rules.repeat;
+}
+
+// Reads blocks through the evaluator (macro statements, calls) and lowers them until the end
+// of the program: M02/M30, or a '%' after the program's first block (the end of the record).
+// What follows is never executed; it is not parsed either, and draws a warning at most.
 void lowerProgram(Session& session, ir::BlockSink& entry) {
-  frontend::BlockReader reader(session.sources(), session.mainFile(), session.diagnostics(),
-                               readerOptionsFor(session.dialect()));
+  DiagnosticEngine& diags = session.diagnostics();
+  const eval::MacroRules& rules = eval::macroRules(session.dialect());
   passes::LoweringOptions options;
   options.dialect = session.dialect();
   options.machine = &session.machine();
   options.program_dir = session.programDir();
-  passes::Lowering lowering(options, session.diagnostics(), entry);
-  bool seen_content = false;
+  passes::Lowering lowering(options, diags, entry);
+
+  SourceProgramStore store(session.sources(), diags, session.programDir(),
+                           std::vector<std::string>(rules.program_file_names.begin(),
+                                                    rules.program_file_names.end()),
+                           readerOptionsFor(session.dialect()));
+  std::unique_ptr<eval::BlockCursor> main = store.open(session.mainFile());
+  frontend::BlockReader& main_reader = SourceProgramStore::readerOf(*main);
+
+  eval::Variables variables(rules, commonVariables(rules, session.machine()),
+                            &lowering.systemVariables());
+  // Variable writes reach the IR before the block that follows them (the VM holds #0 to
+  // #9999: the system variables above are the controller model's own).
+  std::vector<ir::SetVariable> writes;
+  variables.on_write = [&](int64_t n, const eval::Value& v) {
+    if (n > 0 && n < bytecode::kDefaultVariableCount)
+      writes.push_back({static_cast<uint32_t>(n), v.vacant ? 0.0 : v.number, v.vacant});
+  };
+
+  eval::EvaluatorOptions eval_options;
+  eval_options.rules = &rules;
+  eval_options.repeat = repeatEncoding(rules, session.machine());
+  eval_options.max_back_jumps = session.maxBackJumps();
+  eval_options.skipped = [&](const ast::Block& b) { return lowering.skips(b); };
+  eval_options.is_axis = [&](std::string_view a) {
+    return session.machine().axisIndex(std::string(a)) >= 0;
+  };
+  eval_options.argument_value = [&](const ast::Word& w) { return lowering.argumentValue(w); };
+  eval::Evaluator evaluator(std::move(eval_options), store, std::move(main), variables, diags);
+
   uint64_t unreadable = 0;
-  while (std::optional<ast::Block> block = reader.next()) {
-    if (reader.stats().rejected_blocks != unreadable) {
-      unreadable = reader.stats().rejected_blocks;
+  SourceLocation last_loc;
+  while (std::optional<ast::Block> block = evaluator.next()) {
+    last_loc = block->loc;
+    if (!writes.empty()) lowering.variablesWritten(block->loc, std::exchange(writes, {}));
+    if (evaluator.rejectedBlocks() != unreadable) {
+      unreadable = evaluator.rejectedBlocks();
       lowering.blockUnreadable();
     }
-    if (block->percent && seen_content) {
-      afterEndOfRecord(reader, session.diagnostics());
-      break;
-    }
     if (session.blockObserver()) session.blockObserver()(block->loc);
-    seen_content = seen_content || !block->empty();
     passes::LowerResult result = lowering.lower(*block);
-    if (result.switch_language) reader.setLanguage(*result.switch_language);
+    if (result.switch_language) evaluator.setLanguage(*result.switch_language);
     if (result.program_end) {
-      afterProgramEnd(reader, session.diagnostics());
+      evaluator.programEndCode();
       break;
     }
+  }
+  if (!writes.empty()) lowering.variablesWritten(last_loc, std::exchange(writes, {}));
+  // The text after the main program's end, when the program ended in the main file's reader.
+  if (&evaluator.mainCursor() == evaluator.currentCursor()) {
+    if (evaluator.end() == eval::ProgramEnd::EndOfRecord) afterEndOfRecord(main_reader, diags);
+    if (evaluator.end() == eval::ProgramEnd::ProgramEndCode) afterProgramEnd(main_reader, diags);
   }
   lowering.finish();
 }

@@ -47,6 +47,7 @@ std::optional<SetupError> Session::open(const std::filesystem::path& input,
   input_ = input;
   // --dialect, else the machine file's [machine] dialect, else from the file name.
   const Dialect by_name = from_stdin ? Dialect::FanucM : dialectFromFileName(input.filename().string());
+  max_back_jumps_ = options.max_back_jumps;
   if (options.machine_file) {
     if (std::optional<SetupError> error = unreadable(*options.machine_file)) {
       error->code = "NCC0003";

@@ -345,9 +345,9 @@ std::vector<ParamSpec> buildRegistry() {
   // gets warning NCC0307. Every other key is applied in every dialect.
   static constexpr std::string_view kNotApplied[] = {
       "base_frames", "boring_shift_direction", "c_axis_clamp_m_code", "c_axis_unclamp_dwell",
-      "chamfer_address", "common_variables", "comp3d_normal_length", "corner_move_limit",
+      "chamfer_address", "comp3d_normal_length", "corner_move_limit",
       "cutting_edge_default", "cycle_safety_clearance", "drawing_dimension_input",
-      "eight_digit_program_numbers", "fs15_program_format", "g10_geometry_p_limit",
+      "fs15_program_format", "g10_geometry_p_limit",
       "gcode_system", "geometry_number_from_tool_select", "geometry_offset_method",
       "geometry_wear_offsets", "index_table_1", "indexing_axes", "interference_check",
       "machine_unit", "offset_applied_at", "offset_number_digits", "outer_corner_connection",

@@ -213,8 +213,31 @@ constexpr DialectBehaviour kBehaviour{
     .dwell_x_before_g04_is_coordinate = false,
     .dwell_block_alone = false,
 };
+// FANUC Series 0i-MD/30i-M custom macro system variables (tool offset memory C, up to 200
+// offsets: H wear #2001, H geometry #2201, D wear #2401, D geometry #2601). The project has no
+// FANUC milling manual; these are the documented FANUC numbers (docs/macro.md).
+constexpr SystemVariableRange kSystemVariables[] = {
+    {1000, 1035, SystemVariable::RunTime, 0, "interface input signals"},
+    {1100, 1135, SystemVariable::RunTime, 0, "interface output signals"},
+    {2001, 2200, SystemVariable::LengthWear, 0, "tool length wear offsets"},
+    {2201, 2400, SystemVariable::LengthGeometry, 0, "tool length geometry offsets"},
+    {2401, 2600, SystemVariable::RadiusWear, 0, "tool radius wear offsets"},
+    {2601, 2800, SystemVariable::RadiusGeometry, 0, "tool radius geometry offsets"},
+    {3001, 3002, SystemVariable::RunTime, 0, "timers"},
+    {4001, 4030, SystemVariable::ModalGroup, 0, "modal G codes"},
+    {4101, 4130, SystemVariable::ModalWord, 0, "modal words"},
+    {5001, 5020, SystemVariable::EndPoint, 0, "block end point"},
+    {5021, 5040, SystemVariable::MachinePosition, 0, "machine position"},
+    {5041, 5060, SystemVariable::WorkPosition, 0, "work position"},
+    {5061, 5080, SystemVariable::RunTime, 0, "skip position"},
+    {5081, 5100, SystemVariable::ToolLengthVector, 0, "tool length offset"},
+    {5101, 5120, SystemVariable::RunTime, 0, "servo deviation"},
+    {5201, 5220, SystemVariable::ExternalOffset, 0, "external work offset"},
+    {5221, 5340, SystemVariable::WorkOffset, 20, "G54-G59 work offsets"},
+    {7001, 7960, SystemVariable::ExtendedWorkOffset, 20, "G54.1 P1-P48 work offsets"},
+};
 }  // namespace
 
-const DialectTable kFanucMTable{Dialect::FanucM, kCodes, kAlarms, kBehaviour};
+const DialectTable kFanucMTable{Dialect::FanucM, kCodes, kAlarms, kBehaviour, kSystemVariables};
 
 }  // namespace ncc::passes

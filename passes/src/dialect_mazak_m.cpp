@@ -203,8 +203,29 @@ constexpr DialectBehaviour kBehaviour{
     .dwell_x_before_g04_is_coordinate = true,  // §8-1: inch `X5. G04` = X50000 = 50 s
     .dwell_block_alone = false,             // §8-1: M, S, T, B in a G04 block run with it
 };
+// §13-9-4 (notes §4.8, System variables); F96 bit 0 = 0 (the #2001 ranges, up to 200 offsets).
+constexpr SystemVariableRange kSystemVariables[] = {
+    {1000, 1035, SystemVariable::RunTime, 0, "interface input signals"},
+    {1100, 1135, SystemVariable::RunTime, 0, "interface output signals"},
+    {2001, 2200, SystemVariable::LengthGeometry, 0, "tool length geometry offsets"},
+    {2201, 2400, SystemVariable::LengthWear, 0, "tool length wear offsets"},
+    {2401, 2600, SystemVariable::RadiusGeometry, 0, "tool radius geometry offsets"},
+    {2601, 2800, SystemVariable::RadiusWear, 0, "tool radius wear offsets"},
+    {3001, 3002, SystemVariable::RunTime, 0, "timers"},
+    {4001, 4021, SystemVariable::ModalGroup, 0, "modal G codes"},
+    {4101, 4130, SystemVariable::ModalWord, 0, "modal words"},
+    {5001, 5006, SystemVariable::EndPoint, 0, "block end point"},
+    {5021, 5026, SystemVariable::MachinePosition, 0, "machine position"},
+    {5041, 5046, SystemVariable::WorkPosition, 0, "work position"},
+    {5061, 5066, SystemVariable::RunTime, 0, "skip position"},
+    {5081, 5086, SystemVariable::ToolLengthVector, 0, "tool length offset"},
+    {5101, 5106, SystemVariable::RunTime, 0, "servo deviation"},
+    {5201, 5206, SystemVariable::ExternalOffset, 0, "external work offset"},
+    {5221, 5340, SystemVariable::WorkOffset, 20, "G54-G59 work offsets"},
+    {7001, 7960, SystemVariable::ExtendedWorkOffset, 20, "G54.1 P1-P48 work offsets"},
+};
 }  // namespace
 
-const DialectTable kMazakMTable{Dialect::MazakM, kCodes, kAlarms, kBehaviour};
+const DialectTable kMazakMTable{Dialect::MazakM, kCodes, kAlarms, kBehaviour, kSystemVariables};
 
 }  // namespace ncc::passes

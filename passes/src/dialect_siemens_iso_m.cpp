@@ -178,8 +178,11 @@ constexpr DialectBehaviour kBehaviour{
     .dwell_x_before_g04_is_coordinate = false,
     .dwell_block_alone = true,              // §3.3.1: nothing but G04 in the dwell block
 };
+// Sinumerik ISO mode defines no FANUC system variables (notes §4.11: "the manual does not
+// define ... FANUC system variables"); its programs read the machine through DIN ($ variables).
+constexpr std::span<const SystemVariableRange> kSystemVariables{};
 }  // namespace
 
-const DialectTable kSiemensIsoMTable{Dialect::SiemensIsoM, kCodes, kAlarms, kBehaviour};
+const DialectTable kSiemensIsoMTable{Dialect::SiemensIsoM, kCodes, kAlarms, kBehaviour, kSystemVariables};
 
 }  // namespace ncc::passes

@@ -10,6 +10,7 @@
 #include <optional>
 
 #include "absl/strings/str_cat.h"
+#include "expr_text.h"
 #include "lowering_context.h"
 
 namespace ncc::passes {
@@ -125,6 +126,10 @@ void commit(BlockContext& ctx) {
   }
   ctx.core.cs = ctx.next;
   ir::Block out;
+  for (const TableWrite& w : ctx.table_writes)
+    for (const ir::SetVariable& v :
+         variablesOf(w, ctx.core.cs, tables, ctx.table, ctx.axisCount()))
+      ctx.ops.push_back(v);
   out.loc = ctx.block.loc;
   out.sequence = ctx.block.sequence.value_or(-1);
   out.modal = ctx.next.modal;
@@ -242,12 +247,43 @@ LowerResult Lowering::lower(const ast::Block& block) {
     st.reported_dialect = true;
     return {};
   }
-  if (block.skip_level >= 0) {
-    int level = block.skip_level == 0 ? 1 : block.skip_level;
-    if ((st.settings.block_skip && level <= 1) || st.settings.skip_levels.count(level)) return {};
-  }
+  if (skips(block)) return {};
   if (block.words.empty() && block.statements.empty()) return {};
   return lowerBlock(st, block);
+}
+
+bool Lowering::skips(const ast::Block& block) const {
+  const State& st = *state_;
+  if (!st.table || block.skip_level < 0) return false;
+  const int level = block.skip_level == 0 ? 1 : block.skip_level;
+  return (st.settings.block_skip && level <= 1) || st.settings.skip_levels.count(level) > 0;
+}
+
+eval::SystemVariables& Lowering::systemVariables() { return state_->system_variables; }
+
+void Lowering::variablesWritten(SourceLocation loc, std::vector<ir::SetVariable> writes) {
+  State& st = *state_;
+  if (writes.empty() || !st.table || st.cs.unknown.any()) return;
+  ir::Block out;
+  out.loc = loc;
+  out.modal = st.cs.modal;
+  out.modal.work_offset = st.cs.work_name;
+  out.frame = frameOf(st.cs, st.table->behaviour);
+  out.ops.assign(writes.begin(), writes.end());
+  st.out.accept(std::move(out));
+}
+
+double Lowering::argumentValue(const ast::Word& word) const {
+  const State& st = *state_;
+  double v = 0.0;
+  bool point = false;
+  if (!foldLiteral(word.value, v, point) || point || !st.table || !st.settings.values.standard)
+    return v;
+  static constexpr std::string_view kLengthAddresses = "IJKRQ";
+  const bool length = st.machine->axisIndex(word.address) >= 0 ||
+                      (word.address.size() == 1 &&
+                       kLengthAddresses.find(word.address[0]) != std::string_view::npos);
+  return length ? v * st.settings.values.lengthIncrement(st.cs.modal.units) : v;
 }
 
 void Lowering::blockUnreadable() {

@@ -25,6 +25,7 @@
 #include "controller_state.h"
 #include "decimal_point_audit.h"
 #include "lowering_settings.h"
+#include "system_variables.h"
 #include "ncc/passes/lowering.h"
 
 namespace ncc::passes {
@@ -53,6 +54,7 @@ struct LoweringCore {
   OffsetTables tables;
   DecimalPointAudit decimal_points;  // coordinate words without a point, over the file
   bool reported_dialect = false;
+  ControllerVariables system_variables{*this};  // the system variables: views of cs, tables
 
   LoweringCore(LoweringOptions o, DiagnosticEngine& d, ir::BlockSink& s);
 

@@ -16,6 +16,10 @@ void CommonOptions::addTo(CLI::App& command) {
   command.add_option("--machine", machine_file, "machine file (TOML); default: 3-axis metric mill");
   command.add_option("--program-dir", program_dir,
                      "where called subprograms are looked up (default: the program's folder)");
+  command.add_option("--max-back-jumps", max_back_jumps,
+                     "jumps back (GOTO, END, M99) before a program is stopped as an endless "
+                     "loop (NCC2101; default 1000000)")
+      ->check(CLI::Range(uint64_t{1}, uint64_t{1'000'000'000'000}));
 }
 
 std::optional<std::string> CommonOptions::toSessionOptions(driver::SessionOptions& out) const {
@@ -29,6 +33,7 @@ std::optional<std::string> CommonOptions::toSessionOptions(driver::SessionOption
   }
   if (!machine_file.empty()) out.machine_file = machine_file;
   if (!program_dir.empty()) out.program_dir = program_dir;
+  out.max_back_jumps = max_back_jumps;
   return std::nullopt;
 }
 

@@ -19,6 +19,8 @@ struct SessionOptions {
   std::optional<Dialect> dialect;                   // default: from the file name
   std::optional<std::filesystem::path> machine_file;  // default: the built-in machine
   std::optional<std::filesystem::path> program_dir;   // default: the program's folder
+  // Jumps back (GOTO, END, M99) before a program is stopped as an endless loop (NCC2101).
+  uint64_t max_back_jumps = 1'000'000;
 };
 
 // Why a session could not be opened; maps to exit code 2 (usage / configuration). Codes
@@ -57,6 +59,7 @@ class Session {
   uint32_t mainFile() const { return main_file_; }
   const std::filesystem::path& input() const { return input_; }
   const std::filesystem::path& programDir() const { return program_dir_; }
+  uint64_t maxBackJumps() const { return max_back_jumps_; }
   // The standard input's bytes when the input is "-", else nullptr.
   const std::string* stdinContents() const { return sources_.buffer(main_file_); }
   // Every file on disk the session reads: the program (source or bytecode), the subprograms
@@ -77,6 +80,7 @@ class Session {
   std::filesystem::path input_;
   std::filesystem::path program_dir_;
   std::optional<std::filesystem::path> machine_file_;
+  uint64_t max_back_jumps_ = 1'000'000;
   std::function<void(const SourceLocation&)> block_observer_;
 };
 

@@ -135,11 +135,36 @@ struct DialectBehaviour {
   bool dwell_block_alone;
 };
 
+// What a block of system variables (#1000 and up) holds; the controller model reads and
+// writes them (passes/src/system_variables.cpp).
+enum class SystemVariable : uint8_t {
+  LengthGeometry, LengthWear, RadiusGeometry, RadiusWear,  // register (#n - first + 1)
+  ExternalOffset,      // per axis (#n - first)
+  WorkOffset,          // G54..G59: system (#n - first) / stride + 1, axis (#n - first) % stride
+  ExtendedWorkOffset,  // G54.1 P1..: same layout
+  ModalGroup,          // the G code in force in group (#n - first + 1), as the manual numbers it
+  ModalWord,           // the word in force: #n - first + 1 is the letter's argument number
+  EndPoint,            // the last block's end point, work coordinates, per axis
+  MachinePosition,     // per axis, machine coordinates
+  WorkPosition,        // per axis, work coordinates
+  ToolLengthVector,    // per axis: the tool length offset in force
+  RunTime,             // interface signals, timers, skip position, servo lag: known when run
+};
+
+struct SystemVariableRange {
+  int64_t first;
+  int64_t last;
+  SystemVariable kind;
+  int64_t stride;          // WorkOffset / ExtendedWorkOffset: variables per system
+  std::string_view what;   // for messages: "G54-G59 work offsets"
+};
+
 struct DialectTable {
   Dialect dialect;
   std::span<const GCodeEntry> gcodes;
   std::span<const std::string_view> alarm_codes;  // indexed by Alarm
   DialectBehaviour behaviour;
+  std::span<const SystemVariableRange> system_variables;
 
   const GCodeEntry* findG(int code10) const;
   std::string_view alarm(Alarm a) const { return alarm_codes[static_cast<size_t>(a)]; }

@@ -8,6 +8,7 @@
 #include <memory>
 #include <optional>
 
+#include "ncc/eval/variables.h"
 #include "ncc/frontend/ast.h"
 #include "ncc/frontend/block_reader.h"
 #include "ncc/ir/ir.h"
@@ -42,6 +43,18 @@ class Lowering {
   // determine them again; blocks that depend on them get no diagnostic (docs/semantics.md,
   // Error recovery).
   void blockUnreadable();
+  // The controller model's system variables (#2001, #4001, #5001, #5221, ...): views of the
+  // state lowering keeps, for the evaluator (passes/src/system_variables.cpp).
+  eval::SystemVariables& systemVariables();
+  // Macro variables the evaluator wrote since the last block: recorded in the IR (in program
+  // order among the moves) so that the VM holds them.
+  void variablesWritten(SourceLocation loc, std::vector<ir::SetVariable> writes);
+  // Whether the block-skip switch skips `block` ('/', '/n').
+  bool skips(const ast::Block& block) const;
+  // The value of a macro-call argument word as the program means it, in the input unit: a
+  // length without a decimal point is in least input increments under decimal_point =
+  // "standard" (`X10` = 0.010 mm); other addresses and calculator notation take the number.
+  double argumentValue(const ast::Word& word) const;
   // End of input: finishes the sink. (None of fanuc-m, mazak-m, siemens-iso-m requires
   // M02/M30: Mazak memory operation implies M30, and the Siemens examples end without it.)
   void finish();

@@ -1,0 +1,71 @@
+#include "source_program_store.h"
+
+namespace ncc::driver {
+
+namespace {
+
+class ReaderCursor final : public eval::BlockCursor {
+ public:
+  ReaderCursor(const SourceManager& sources, uint32_t file, DiagnosticEngine& diags,
+               frontend::ReaderOptions options)
+      : reader(sources, file, diags, options) {}
+
+  std::optional<ast::Block> next() override { return reader.next(); }
+  eval::ProgramPoint lastPoint() const override { return {reader.file(), reader.lastPosition()}; }
+  void seek(const eval::ProgramPoint& point) override { reader.seek(point.position); }
+  void setLanguage(frontend::Language language) override { reader.setLanguage(language); }
+  uint64_t rejectedBlocks() const override { return reader.stats().rejected_blocks; }
+  uint32_t file() const override { return reader.file(); }
+
+  frontend::BlockReader reader;
+};
+
+frontend::SequenceSearch toFrontend(eval::SequenceSearch order) {
+  return order == eval::SequenceSearch::FromStart ? frontend::SequenceSearch::FromStart
+                                                  : frontend::SequenceSearch::ForwardThenFromStart;
+}
+
+}  // namespace
+
+SourceProgramStore::SourceProgramStore(SourceManager& sources, DiagnosticEngine& diags,
+                                       std::filesystem::path program_dir,
+                                       std::vector<std::string> name_patterns,
+                                       frontend::ReaderOptions options)
+    : sources_(sources),
+      diags_(diags),
+      options_(options),
+      library_(sources, std::move(program_dir), std::move(name_patterns), options) {}
+
+std::unique_ptr<eval::BlockCursor> SourceProgramStore::open(uint32_t file) {
+  return std::make_unique<ReaderCursor>(sources_, file, diags_, options_);
+}
+
+std::optional<eval::ProgramPoint> SourceProgramStore::findProgram(int64_t number,
+                                                                  uint32_t calling_file) {
+  std::optional<frontend::ProgramLibrary::Found> found = library_.find(number, calling_file);
+  if (!found) return std::nullopt;
+  return eval::ProgramPoint{found->file, found->start};
+}
+
+std::optional<eval::ProgramPoint> SourceProgramStore::findSequence(
+    int64_t n, const eval::ProgramPoint& from, eval::SequenceSearch order,
+    const eval::ProgramPoint& begin, const eval::ProgramPoint& end) {
+  std::optional<frontend::BlockPosition> p = library_.index(from.file).findSequence(
+      n, from.position, toFrontend(order), frontend::BlockRange{begin.position, end.position});
+  if (!p) return std::nullopt;
+  return eval::ProgramPoint{from.file, *p};
+}
+
+eval::ProgramPoint SourceProgramStore::programEnd(const eval::ProgramPoint& start) {
+  return {start.file, library_.index(start.file).programEnd(start.position)};
+}
+
+std::string_view SourceProgramStore::fileName(uint32_t file) const {
+  return sources_.displayName(file);
+}
+
+frontend::BlockReader& SourceProgramStore::readerOf(eval::BlockCursor& cursor) {
+  return static_cast<ReaderCursor&>(cursor).reader;
+}
+
+}  // namespace ncc::driver

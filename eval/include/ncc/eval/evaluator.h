@@ -1,0 +1,78 @@
+#pragma once
+// Evaluation: the stage between the block sources and lowering. It runs the program's macro
+// statements (assignments, IF, GOTO, WHILE) and calls (M98, M99, G65, G66/G67), and hands
+// lowering blocks whose words hold plain values: `X#1` becomes `X12.5`, a word whose variable
+// is vacant is dropped, the call words are gone. Plain blocks (no `#`, no call) pass through
+// untouched. docs/middle.md places it among the stages; docs/macro.md gives the semantics.
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "ncc/eval/macro_rules.h"
+#include "ncc/eval/program_store.h"
+#include "ncc/eval/variables.h"
+#include "ncc/frontend/ast.h"
+#include "ncc/support/diagnostics.h"
+
+namespace ncc::eval {
+
+struct EvaluatorOptions {
+  const MacroRules* rules = nullptr;  // required
+  // Jumps back (GOTO to an earlier block, END, M99 repeats and restarts) before the program
+  // is stopped as an endless loop (NCC2101 at the jump).
+  uint64_t max_back_jumps = 1'000'000;
+  // M98 repeats in the high digits of P (M98 P30021) rather than in L.
+  RepeatEncoding repeat = RepeatEncoding::LAddress;
+  // Whether a block is skipped by the block-skip switch ('/'); a skipped block is not
+  // evaluated either.
+  std::function<bool(const ast::Block&)> skipped;
+  // Whether an address names an axis of the machine (for G66: a block with axis words is a
+  // motion block).
+  std::function<bool(std::string_view address)> is_axis;
+  // The value a G65/G66 argument word passes (`X10` without a point may mean 0.010 mm under
+  // the decimal-point parameter); unset: the value as written.
+  std::function<double(const ast::Word& word)> argument_value;
+};
+
+// Why the program ended.
+enum class ProgramEnd : uint8_t {
+  Running,
+  EndOfFile,       // the main program's file ended
+  EndOfRecord,     // '%' after the main program's first block
+  NextProgram,     // the main program reached the O block of another program
+  ProgramEndCode,  // M02 / M30 (seen by lowering)
+  Alarm,           // an evaluation error or #3000: reported, the run stops
+};
+
+class Evaluator {
+ public:
+  Evaluator(EvaluatorOptions options, ProgramStore& store, std::unique_ptr<BlockCursor> main,
+            Variables& variables, DiagnosticEngine& diags);
+  ~Evaluator();
+  Evaluator(const Evaluator&) = delete;
+  Evaluator& operator=(const Evaluator&) = delete;
+
+  // The next block for lowering, or nullopt when the program has ended (end()).
+  std::optional<ast::Block> next();
+  // Lowering saw M02/M30 in the block last returned: the program ends there.
+  void programEndCode();
+  // G290/G291 in the block last returned: the current file's language for the next blocks.
+  void setLanguage(frontend::Language language);
+  // Unreadable blocks (syntax errors) skipped by the readers so far.
+  uint64_t rejectedBlocks() const;
+
+  ProgramEnd end() const;
+  // The main program's cursor (for the text after its end), and the cursor the last block
+  // came from.
+  BlockCursor& mainCursor();
+  const BlockCursor* currentCursor() const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace ncc::eval

@@ -1,0 +1,466 @@
+// The block loop of evaluation: reads the current program's blocks, keeps to the program's
+// bounds, runs statements and turns word expressions into values. Calls and returns are in
+// calls.cpp.
+#include <cmath>
+#include <utility>
+
+#include "absl/strings/str_cat.h"
+#include "evaluator_impl.h"
+
+namespace ncc::eval {
+
+namespace {
+
+// Addresses whose value is a number of a code or register, not a length: an integral value
+// taken from a variable is written without a decimal point (`M#2` is `M3`, not `M3.`).
+bool integerAddress(const std::string& a) {
+  return a.size() == 1 && std::string_view("GMTHDPLSNOB").find(a[0]) != std::string_view::npos;
+}
+
+// #3000 (alarm with message) and #3006 (stop with message): the same numbers in FANUC, Mazak
+// and Sinumerik ISO mode.
+constexpr int64_t kUserAlarmVariable = 3000;
+constexpr int64_t kUserStopVariable = 3006;
+
+// The message of #3000/#3006: the block's comment (`#3000=25 (TOOL BROKEN)`).
+std::string messageOf(const ast::Block& block) {
+  return block.comments.empty() ? std::string() : block.comments.front();
+}
+
+}  // namespace
+
+bool isLiteral(const ast::Expr& e) {
+  if (e.kind == ast::Expr::Kind::Number) return true;
+  return e.kind == ast::Expr::Kind::Unary && e.args.size() == 1 &&
+         e.args[0].kind == ast::Expr::Kind::Number && (e.op == "-" || e.op == "+");
+}
+
+double literalValue(const ast::Expr& e) {
+  if (e.kind == ast::Expr::Kind::Number) return e.number;
+  return e.op == "-" ? -e.args[0].number : e.args[0].number;
+}
+
+bool before(const ProgramPoint& a, const ProgramPoint& b) {
+  if (a.position.offset != b.position.offset) return a.position.offset < b.position.offset;
+  return a.position.column < b.position.column;
+}
+
+Evaluator::Impl::Impl(EvaluatorOptions o, ProgramStore& s, std::unique_ptr<BlockCursor> main,
+                      Variables& v, DiagnosticEngine& d)
+    : options(std::move(o)), rules(*options.rules), store(s), variables(v), diags(d) {
+  Frame f;
+  f.begin = ProgramPoint{main->file(), {}};
+  f.cursor = std::move(main);
+  f.is_main = true;
+  frames.push_back(std::move(f));
+}
+
+void Evaluator::Impl::fail(const Failure& failure) {
+  std::string code = failure.error == EvalError::UserAlarm ? absl::StrCat(failure.user_code)
+                                                           : std::string(rules.alarm(failure.error));
+  diags.error(code, failure.loc, failure.message);
+  end = ProgramEnd::Alarm;
+}
+
+void Evaluator::Impl::fail(EvalError error, SourceLocation loc, std::string message) {
+  fail(Failure{error, loc, std::move(message), 0});
+}
+
+std::optional<Value> Evaluator::Impl::value(const ast::Expr& e) {
+  Failure failure;
+  ExpressionContext context{rules, variables};
+  std::optional<Value> v = evaluate(e, context, failure);
+  if (!v) fail(failure);
+  return v;
+}
+
+std::optional<int64_t> Evaluator::Impl::integerOf(const ast::Expr& e, SourceLocation loc,
+                                                  const char* what) {
+  std::optional<Value> v = value(e);
+  if (!v) return std::nullopt;
+  if (v->vacant || !(std::abs(v->number) < 1e15) || v->number != std::floor(v->number)) {
+    fail(EvalError::AddressValue, loc,
+         absl::StrCat(what, " must be an integer, not ",
+                      v->vacant ? std::string("vacant") : absl::StrCat(v->number)));
+    return std::nullopt;
+  }
+  return static_cast<int64_t>(v->number);
+}
+
+bool Evaluator::Impl::countBackJump(SourceLocation loc) {
+  if (++back_jumps <= options.max_back_jumps) return true;
+  fail(EvalError::StepLimit, loc,
+       absl::StrCat("the program jumped back ", options.max_back_jumps,
+                    " times here: an endless loop? (the limit is --max-back-jumps)"));
+  return false;
+}
+
+ProgramPoint Evaluator::Impl::programEnd(Frame& frame) {
+  if (!frame.end) frame.end = store.programEnd(frame.begin);
+  return *frame.end;
+}
+
+bool Evaluator::Impl::beyondEnd(Frame& frame, const ProgramPoint& at) {
+  // Only a program that starts with its O block has a next program to run into.
+  if (!frame.header_at_begin || !frame.end) return false;
+  return !before(at, *frame.end);
+}
+
+bool Evaluator::Impl::jumpToSequence(Frame& frame, int64_t n, const ProgramPoint& from,
+                                     SequenceSearch order, SourceLocation loc,
+                                     EvalError missing) {
+  const ProgramPoint end_point = programEnd(frame);
+  std::optional<ProgramPoint> target =
+      store.findSequence(n, from, order, frame.begin, end_point);
+  if (!target) {
+    fail(missing, loc, absl::StrCat("no block starts with N", n, " in this program"));
+    return false;
+  }
+  if (!before(from, *target) && !countBackJump(loc)) return false;
+  frame.cursor->seek(*target);
+  return true;
+}
+
+void Evaluator::Impl::programFinished() {
+  Frame& f = frames.back();
+  if (f.is_main) {
+    if (end == ProgramEnd::Running) end = ProgramEnd::EndOfFile;
+    return;
+  }
+  // A subprogram that ends without M99 returns (the end of its file or the next program).
+  Pending p;
+  p.kind = Pending::Kind::Return;
+  p.loc = f.call_loc;
+  perform(p);
+}
+
+std::optional<ast::Block> Evaluator::Impl::next() {
+  while (end == ProgramEnd::Running) {
+    if (!pending.empty()) {
+      Pending p = std::move(pending.front());
+      pending.pop_front();
+      perform(p);
+      continue;
+    }
+    Frame& f = frames.back();
+    std::optional<ast::Block> block = f.cursor->next();
+    if (!block) {
+      programFinished();
+      continue;
+    }
+    const ProgramPoint at = f.cursor->lastPoint();
+    if (block->program_number) {
+      if (f.header_at_begin && at == f.begin) continue;  // the program's own O block
+      if (f.is_main && !f.seen_content) {
+        // The main program's O block: the program runs to the next O block.
+        f.begin = at;
+        f.header_at_begin = true;
+        continue;
+      }
+      // The next program in the file: this one has ended.
+      if (f.is_main) {
+        end = ProgramEnd::NextProgram;
+        return std::nullopt;
+      }
+      programFinished();
+      continue;
+    }
+    if (beyondEnd(f, at)) {
+      programFinished();
+      continue;
+    }
+    if (block->percent) {
+      if (f.is_main && f.seen_content) {
+        end = ProgramEnd::EndOfRecord;
+        return std::nullopt;
+      }
+      if (!f.is_main) {
+        programFinished();
+        continue;
+      }
+      continue;  // the tape's opening '%'
+    }
+    if (!block->empty()) f.seen_content = true;
+    if (options.skipped && options.skipped(*block)) return block;  // lowering skips it
+    std::optional<ast::Block> out = evaluateBlock(std::move(*block), at);
+    if (end != ProgramEnd::Running) return std::nullopt;
+    if (!out) continue;
+    modalCallAfter(*out, at);
+    return out;
+  }
+  return std::nullopt;
+}
+
+std::optional<ast::Block> Evaluator::Impl::evaluateBlock(ast::Block block,
+                                                         const ProgramPoint& at) {
+  Frame& frame = frames.back();
+  bool plain = block.statements.empty() && modal_calls.empty();
+  for (const ast::Word& w : block.words) {
+    if (!isLiteral(w.value)) {
+      plain = false;
+      break;
+    }
+    // Call words need the evaluator even when written literally.
+    const char a = w.address.size() == 1 ? w.address[0] : 0;
+    if (a == 'M' || a == 'G') {
+      const double v = literalValue(w.value);
+      if ((a == 'M' && (v == 98 || v == 99)) ||
+          (a == 'G' && (v == 65 || v == 66 || v == 66.1 || v == 67))) {
+        plain = false;
+        break;
+      }
+    }
+  }
+  if (plain) return block;
+
+  // Statements read the values from before the block (Mazak §13-6: `#1=200 #2=#1+200` adds to
+  // the old #1); their writes take effect together at the end of the block.
+  struct Write {
+    int64_t number;
+    Value value;
+    SourceLocation loc;
+  };
+  std::vector<Write> writes;
+  enum class Flow : uint8_t { None, Goto, LoopBack, SkipLoop } flow = Flow::None;
+  int64_t goto_target = 0;
+  SourceLocation flow_loc = block.loc;
+  int loop_id = 0;
+
+  auto assign = [&](const ast::Statement& st) -> bool {
+    const ast::Expr& target = st.target;
+    if (target.kind != ast::Expr::Kind::Variable || target.args.empty()) {
+      fail(EvalError::VariableNumber, st.loc, "the left side of an assignment is not a variable");
+      return false;
+    }
+    std::optional<Value> number_value = value(target.args[0]);
+    if (!number_value) return false;
+    Failure failure;
+    std::optional<int64_t> number =
+        variableNumber(*number_value, rules, target.args[0].loc, failure);
+    if (!number) {
+      fail(failure);
+      return false;
+    }
+    std::optional<Value> v = value(st.value);
+    if (!v) return false;
+    writes.push_back({*number, *v, st.loc});
+    return true;
+  };
+
+  for (const ast::Statement& st : block.statements) {
+    using K = ast::Statement::Kind;
+    switch (st.kind) {
+      case K::Assign:
+        if (!assign(st)) return std::nullopt;
+        break;
+      case K::IfThen: {
+        std::optional<Value> c = value(st.value);
+        if (!c) return std::nullopt;
+        if (isTrue(*c) && st.then_assign && !assign(*st.then_assign)) return std::nullopt;
+        break;
+      }
+      case K::IfGoto:
+      case K::Goto: {
+        if (st.kind == K::IfGoto) {
+          std::optional<Value> c = value(st.value);
+          if (!c) return std::nullopt;
+          if (!isTrue(*c)) break;
+        }
+        std::optional<int64_t> n = integerOf(st.target, st.loc, "the GOTO target");
+        if (!n) return std::nullopt;
+        if (*n < 0 || *n > 99999) {
+          fail(EvalError::GotoTarget, st.loc, absl::StrCat("GOTO ", *n, ": no such sequence number"));
+          return std::nullopt;
+        }
+        flow = Flow::Goto;
+        goto_target = *n;
+        flow_loc = st.loc;
+        break;
+      }
+      case K::While: {
+        if (st.loop_id < 1 || st.loop_id > rules.max_do_id) {
+          fail(EvalError::DoNumber, st.loc,
+               absl::StrCat("DO ", st.loop_id, ": loop numbers are 1 to ", rules.max_do_id));
+          return std::nullopt;
+        }
+        std::optional<Value> c = value(st.value);
+        if (!c) return std::nullopt;
+        loop_id = st.loop_id;
+        flow_loc = st.loc;
+        // Coming back to this WHILE (END or a GOTO) re-enters the same loop.
+        for (size_t i = 0; i < frame.loops.size(); ++i)
+          if (frame.loops[i].at == at) {
+            frame.loops.resize(i);
+            break;
+          }
+        if (isTrue(*c)) {
+          if (static_cast<int>(frame.loops.size()) >= rules.max_do_nesting) {
+            fail(EvalError::DoNesting, st.loc,
+                 absl::StrCat("WHILE ... DO nested more than ", rules.max_do_nesting, " deep"));
+            return std::nullopt;
+          }
+          frame.loops.push_back({st.loop_id, at});
+        } else {
+          flow = Flow::SkipLoop;
+        }
+        break;
+      }
+      case K::End: {
+        // A loop left by a jump stays on the stack until an END of an outer loop meets it.
+        size_t i = frame.loops.size();
+        while (i > 0 && frame.loops[i - 1].id != st.loop_id) --i;
+        if (i == 0) {
+          fail(EvalError::EndWithoutDo, st.loc,
+               absl::StrCat("END ", st.loop_id, " without WHILE ... DO ", st.loop_id));
+          return std::nullopt;
+        }
+        frame.loops.resize(i);
+        flow = Flow::LoopBack;
+        flow_loc = st.loc;
+        loop_id = st.loop_id;
+        break;
+      }
+    }
+    if (flow != Flow::None) break;  // a jump ends the block
+  }
+
+  // The words, with the values from before the block's assignments.
+  std::vector<ast::Word> words;
+  words.reserve(block.words.size());
+  for (ast::Word& w : block.words) {
+    if (isLiteral(w.value)) {
+      words.push_back(std::move(w));
+      continue;
+    }
+    std::optional<Value> v = value(w.value);
+    if (!v) return std::nullopt;
+    if (v->vacant) continue;  // an address whose variable is vacant is not there at all
+    if (!std::isfinite(v->number) || std::abs(v->number) > rules.max_magnitude) {
+      fail(EvalError::ValueRange, w.loc,
+           absl::StrCat("address ", w.address, ": ", v->number, " is beyond the value range"));
+      return std::nullopt;
+    }
+    const bool integral = v->number == std::floor(v->number);
+    w.value = ast::Expr::literal(std::abs(v->number), !(integral && integerAddress(w.address)),
+                                 w.value.loc);
+    if (v->number < 0) {
+      ast::Expr neg;
+      neg.kind = ast::Expr::Kind::Unary;
+      neg.op = "-";
+      neg.loc = w.value.loc;
+      neg.args.push_back(std::move(w.value));
+      w.value = std::move(neg);
+    }
+    words.push_back(std::move(w));
+  }
+  block.words = std::move(words);
+
+  for (const Write& w : writes) {
+    if (w.number == kUserAlarmVariable) {
+      if (w.value.vacant) continue;
+      const int64_t n = static_cast<int64_t>(w.value.number);
+      int64_t code = -1;
+      for (const MacroRules::UserAlarmRange& r : rules.user_alarms)
+        if (n >= r.first && n <= r.last) code = n + r.offset;
+      if (code < 0) {
+        fail(EvalError::AddressValue, w.loc,
+             absl::StrCat("#3000 = ", n, ": the alarm number is out of range"));
+        return std::nullopt;
+      }
+      std::string message = messageOf(block);
+      fail(Failure{EvalError::UserAlarm, w.loc,
+                   message.empty() ? absl::StrCat("user alarm #3000 = ", n)
+                                   : absl::StrCat("user alarm #3000 = ", n, ": ", message),
+                   code});
+      return std::nullopt;
+    }
+    if (w.number == kUserStopVariable) {
+      // The control stops with the message; the run goes on as after cycle start.
+      diags.warning(std::string(rules.alarm(EvalError::UserStop)), w.loc,
+                    absl::StrCat("program stop #3006: ",
+                                 messageOf(block).empty() ? "(no message)" : messageOf(block)));
+      continue;
+    }
+    Failure failure;
+    if (!variables.write(w.number, w.value, w.loc, failure)) {
+      fail(failure);
+      return std::nullopt;
+    }
+  }
+
+  switch (flow) {
+    case Flow::None: break;
+    case Flow::Goto:
+      if (!jumpToSequence(frame, goto_target, at, rules.goto_search, flow_loc,
+                          EvalError::GotoTarget))
+        return std::nullopt;
+      break;
+    case Flow::LoopBack: {
+      const Loop& loop = frame.loops.back();
+      if (!countBackJump(flow_loc)) return std::nullopt;
+      frame.cursor->seek(loop.at);
+      break;
+    }
+    case Flow::SkipLoop: {
+      // Past the matching END: read on without running anything, counting inner loops with the
+      // same number.
+      int depth = 0;
+      while (true) {
+        std::optional<ast::Block> b = frame.cursor->next();
+        if (!b || b->program_number) {
+          fail(EvalError::LoopNotClosed, flow_loc,
+               absl::StrCat("WHILE ... DO ", loop_id, " has no END ", loop_id));
+          return std::nullopt;
+        }
+        bool done = false;
+        for (const ast::Statement& st : b->statements) {
+          if (st.kind == ast::Statement::Kind::While && st.loop_id == loop_id) ++depth;
+          if (st.kind == ast::Statement::Kind::End && st.loop_id == loop_id && depth-- == 0)
+            done = true;
+        }
+        if (done) break;
+      }
+      break;
+    }
+  }
+
+  bool consumed = false;
+  if (!callWords(block, at, consumed)) return std::nullopt;
+  if (consumed) return std::nullopt;
+  block.statements.clear();
+  if (block.words.empty() && !block.sequence) return std::nullopt;
+  return block;
+}
+
+// ---- the public class ----
+
+Evaluator::Evaluator(EvaluatorOptions options, ProgramStore& store,
+                     std::unique_ptr<BlockCursor> main, Variables& variables,
+                     DiagnosticEngine& diags)
+    : impl_(std::make_unique<Impl>(std::move(options), store, std::move(main), variables, diags)) {}
+
+Evaluator::~Evaluator() = default;
+
+std::optional<ast::Block> Evaluator::next() { return impl_->next(); }
+
+void Evaluator::programEndCode() {
+  if (impl_->end == ProgramEnd::Running) impl_->end = ProgramEnd::ProgramEndCode;
+}
+
+void Evaluator::setLanguage(frontend::Language language) {
+  impl_->frames.back().cursor->setLanguage(language);
+}
+
+uint64_t Evaluator::rejectedBlocks() const {
+  uint64_t n = impl_->rejected_closed;
+  for (const Frame& f : impl_->frames) n += f.cursor->rejectedBlocks();
+  return n;
+}
+
+ProgramEnd Evaluator::end() const { return impl_->end; }
+
+BlockCursor& Evaluator::mainCursor() { return *impl_->frames.front().cursor; }
+
+const BlockCursor* Evaluator::currentCursor() const { return impl_->frames.back().cursor.get(); }
+
+}  // namespace ncc::eval

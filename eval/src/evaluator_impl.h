@@ -1,0 +1,124 @@
+#pragma once
+// The evaluator's state, shared by its files:
+//   evaluator.cpp  the block loop: program boundaries, statements (assignments, IF, GOTO,
+//                  WHILE/END), word values, the step limit
+//   calls.cpp      M98/M99, G65, G66/G66.1/G67: frames, arguments, repeats, returns
+#include <cstdint>
+#include <deque>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "ncc/eval/evaluator.h"
+#include "ncc/eval/expression.h"
+
+namespace ncc::eval {
+
+// An open WHILE ... DO m: where its WHILE block starts.
+struct Loop {
+  int id = 0;
+  ProgramPoint at;
+};
+
+// One program being run: the main program, or a subprogram / macro called by the frame below.
+struct Frame {
+  std::unique_ptr<BlockCursor> cursor;
+  ProgramPoint begin;            // the program's first block (its O block, or the file start)
+  std::optional<ProgramPoint> end;  // where the next program starts (known once asked)
+  bool header_at_begin = false;  // the block at `begin` is the program's own O block
+  ProgramPoint call_point;       // the caller's call block (M99 P searches from there)
+  SourceLocation call_loc;
+  int64_t program = -1;          // O number (-1: the main program)
+  int64_t repeats_left = 0;      // runs still to come after this one (M98 L, G65 L)
+  bool macro = false;            // a macro call: it opened a level of locals
+  bool is_main = false;
+  bool local_call = false;       // M98 H: a sequence of the caller's program
+  bool seen_content = false;
+  std::vector<Loop> loops;
+};
+
+// A modal macro call in force (G66: after each motion block; G66.1: every block).
+struct ModalCall {
+  int64_t program = 0;
+  Variables::Locals arguments;
+  int64_t repeats = 1;
+  bool every_block = false;
+  size_t depth = 0;  // frames open when it was given: blocks deeper do not call it
+  SourceLocation loc;
+};
+
+// A call or return to perform before the next block is read (the block's other words were
+// lowered first: `X100. M98 P100` moves, then calls).
+struct Pending {
+  enum class Kind : uint8_t { Call, Return, ModalCall } kind = Kind::Call;
+  int64_t program = 0;
+  std::optional<int64_t> sequence;  // M98 H (call) / M99 P (return)
+  int64_t repeats = 1;
+  bool macro = false;
+  Variables::Locals arguments;
+  SourceLocation loc;
+  ProgramPoint at;  // the call or return block
+};
+
+struct Evaluator::Impl {
+  Impl(EvaluatorOptions o, ProgramStore& s, std::unique_ptr<BlockCursor> main, Variables& v,
+       DiagnosticEngine& d);
+
+  EvaluatorOptions options;
+  const MacroRules& rules;
+  ProgramStore& store;
+  Variables& variables;
+  DiagnosticEngine& diags;
+  std::vector<Frame> frames;
+  std::vector<ModalCall> modal_calls;
+  std::deque<Pending> pending;
+  ProgramEnd end = ProgramEnd::Running;
+  uint64_t back_jumps = 0;
+  uint64_t rejected_closed = 0;  // unreadable blocks of cursors already closed
+
+  // ---- evaluator.cpp ----
+  std::optional<ast::Block> next();
+  // Evaluates a block with statements, expressions or call words; nullopt when nothing is
+  // left for lowering (a pure statement block, a G65 call).
+  std::optional<ast::Block> evaluateBlock(ast::Block block, const ProgramPoint& at);
+  // Reports the failure with the dialect's alarm number and stops the program.
+  void fail(const Failure& failure);
+  void fail(EvalError error, SourceLocation loc, std::string message);
+  std::optional<Value> value(const ast::Expr& e);
+  // The integer a word or target designates (GOTO n, P, L, H); nullopt after failing.
+  std::optional<int64_t> integerOf(const ast::Expr& e, SourceLocation loc, const char* what);
+  // Jumps to N n of the current program (GOTO, M99 P in the caller).
+  bool jumpToSequence(Frame& frame, int64_t n, const ProgramPoint& from, SequenceSearch order,
+                      SourceLocation loc, EvalError missing);
+  // Counts a jump back; false (after failing) past the limit.
+  bool countBackJump(SourceLocation loc);
+  ProgramPoint programEnd(Frame& frame);
+  bool beyondEnd(Frame& frame, const ProgramPoint& at);
+  // The current program ended without M99 (end of file, next O block, '%').
+  void programFinished();
+
+  // ---- calls.cpp ----
+  // Call words of an evaluated block (M98, M99, G65, G66, G66.1, G67): removes them and
+  // schedules the call or return; false after failing. `consumed`: the whole block was a
+  // call (G65: every other word is an argument).
+  bool callWords(ast::Block& block, const ProgramPoint& at, bool& consumed);
+  // After a block went to lowering: a G66 call follows a motion block.
+  void modalCallAfter(const ast::Block& block, const ProgramPoint& at);
+  bool perform(const Pending& p);
+  bool call(const Pending& p);
+  bool ret(const Pending& p);
+  // Arguments of G65/G66 (specification I and II) into a fresh set of locals.
+  std::optional<Variables::Locals> arguments(const std::vector<ast::Word>& words,
+                                             bool every_block);
+  void closeFrame();
+};
+
+// True when `e` is a number as written (`10.`, `-5`): no variable, no operator.
+bool isLiteral(const ast::Expr& e);
+// Value of a literal word (isLiteral).
+double literalValue(const ast::Expr& e);
+// Whether `a` starts before `b` in the same file.
+bool before(const ProgramPoint& a, const ProgramPoint& b);
+
+}  // namespace ncc::eval

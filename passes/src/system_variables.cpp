@@ -1,0 +1,269 @@
+#include "system_variables.h"
+
+#include <cmath>
+
+#include "absl/strings/str_cat.h"
+#include "lowering_context.h"
+
+namespace ncc::passes {
+
+namespace {
+
+const SystemVariableRange* findRange(const DialectTable& table, int64_t number) {
+  for (const SystemVariableRange& r : table.system_variables)
+    if (number >= r.first && number <= r.last) return &r;
+  return nullptr;
+}
+
+// Lengths are read and written in the input unit in force (G20: inch).
+double unitScale(const ControllerState& cs) {
+  return cs.modal.units == ir::Units::Inch ? 25.4 : 1.0;
+}
+
+std::map<int, double>* registerTable(OffsetTables& t, SystemVariable kind) {
+  switch (kind) {
+    case SystemVariable::LengthGeometry: return &t.length;
+    case SystemVariable::LengthWear: return &t.length_wear;
+    case SystemVariable::RadiusGeometry: return &t.radius;
+    case SystemVariable::RadiusWear: return &t.radius_wear;
+    default: return nullptr;
+  }
+}
+
+// The work system a WorkOffset / ExtendedWorkOffset variable belongs to, and its axis.
+struct WorkSlot {
+  std::string name;
+  int axis;
+};
+WorkSlot workSlot(const SystemVariableRange& r, int64_t number, const DialectTable& table) {
+  const int64_t system = (number - r.first) / r.stride + 1;
+  const int axis = static_cast<int>((number - r.first) % r.stride);
+  if (r.kind == SystemVariable::WorkOffset) return {gCodeName(530 + 10 * static_cast<int>(system)), axis};
+  return {absl::StrCat(table.behaviour.extended_offset_is_g54_p ? "G54P" : "G54.1P", system), axis};
+}
+
+// The value of the G code in force in a group, as the manual numbers the group (#4001 + n-1).
+std::optional<double> modalCode(const LoweringCore& core, int group_number) {
+  const DialectTable& table = *core.table;
+  const ControllerState& cs = core.cs;
+  const GCodeEntry* any = nullptr;
+  for (const GCodeEntry& e : table.gcodes)
+    if (e.group_number == group_number && e.group != GGroup::OneShot) {
+      any = &e;
+      break;
+    }
+  if (!any) return std::nullopt;
+  auto codeOf = [&](GAction a) -> std::optional<double> {
+    for (const GCodeEntry& e : table.gcodes)
+      if (e.group == any->group && e.action == a) return e.code10 / 10.0;
+    return std::nullopt;
+  };
+  switch (any->group) {
+    case GGroup::Motion: return codeOf(cs.motion);
+    case GGroup::Plane:
+      return codeOf(cs.modal.plane == ir::Plane::XY   ? GAction::PlaneXY
+                    : cs.modal.plane == ir::Plane::ZX ? GAction::PlaneZX
+                                                      : GAction::PlaneYZ);
+    case GGroup::Distance:
+      return codeOf(cs.modal.distance == ir::DistanceMode::Absolute ? GAction::Absolute
+                                                                    : GAction::Incremental);
+    case GGroup::FeedMode:
+      return codeOf(cs.modal.feed_mode == ir::FeedMode::PerMinute       ? GAction::PerMinute
+                    : cs.modal.feed_mode == ir::FeedMode::PerRevolution ? GAction::PerRevolution
+                                                                        : GAction::InverseTime);
+    case GGroup::Units:
+      return codeOf(cs.modal.units == ir::Units::Inch ? GAction::Inch : GAction::Metric);
+    case GGroup::LengthComp:
+      return codeOf(cs.modal.length_offset_sign > 0   ? GAction::LengthPlus
+                    : cs.modal.length_offset_sign < 0 ? GAction::LengthMinus
+                                                      : GAction::LengthCancel);
+    case GGroup::PathControl:
+      return codeOf(cs.modal.path == ir::PathControl::ExactStop        ? GAction::ExactStopMode
+                    : cs.modal.path == ir::PathControl::CornerOverride ? GAction::CornerOverride
+                    : cs.modal.path == ir::PathControl::Tapping        ? GAction::TappingMode
+                                                                       : GAction::ContinuousMode);
+    case GGroup::WorkOffset: {
+      const std::string& w = cs.work_name;  // "G54".."G59", "G54.1P3", "G54P3"
+      if (w.rfind("G54.1", 0) == 0) return 54.1;
+      return std::stod(w.substr(1, 2));
+    }
+    default: {
+      // Groups ncc keeps at their power-on code (cancel codes of functions not built yet).
+      const GCodeEntry* e = table.powerOnDefault(any->group);
+      if (!e) return std::nullopt;
+      return e->code10 / 10.0;
+    }
+  }
+}
+
+// #4101 + n-1: the modal word of argument letter n (B 2, D 7, F 9, H 11, S 19, T 20, P 30).
+std::optional<eval::Value> modalWord(const LoweringCore& core, int n) {
+  const ControllerState& cs = core.cs;
+  switch (n) {
+    case 7: return eval::Value::of(cs.d_selected);
+    case 9:
+      return cs.feed_programmed ? eval::Value::of(cs.modal.feed / unitScale(cs)) : eval::Value::none();
+    case 11: return eval::Value::of(cs.h_selected);
+    case 19: return eval::Value::of(cs.modal.spindle_speed);
+    case 20: return eval::Value::of(cs.modal.tool);
+    case 30: {
+      const std::string& w = cs.work_name;
+      const size_t p = w.find('P');
+      return p == std::string::npos ? eval::Value::none() : eval::Value::of(std::stod(w.substr(p + 1)));
+    }
+    default: return eval::Value::none();  // B, M, N, O: not kept by the model (docs/macro.md)
+  }
+}
+
+}  // namespace
+
+std::optional<eval::Value> ControllerVariables::read(int64_t number, SourceLocation loc,
+                                                     eval::Failure& failure) {
+  const DialectTable& table = *core_.table;
+  const ControllerState& cs = core_.cs;
+  const SystemVariableRange* r = findRange(table, number);
+  auto unknown = [&](std::string message) -> std::optional<eval::Value> {
+    failure = {eval::EvalError::VariableNumber, loc, std::move(message), 0};
+    return std::nullopt;
+  };
+  if (!r)
+    return unknown(absl::StrCat("#", number, " is not a system variable of ",
+                                std::string(dialectName(table.dialect))));
+  const double scale = unitScale(cs);
+  const int axes = core_.machine->axisCount();
+  auto axisOf = [&](int64_t i) { return i < axes ? static_cast<int>(i) : -1; };
+  const ir::Frame frame = frameOf(cs, table.behaviour);
+  switch (r->kind) {
+    case SystemVariable::RunTime:
+      return unknown(absl::StrCat("#", number, " (", std::string(r->what),
+                                  ") is known only when the program runs on the machine: "
+                                  "run-time evaluation is not supported yet"));
+    case SystemVariable::LengthGeometry:
+    case SystemVariable::LengthWear:
+    case SystemVariable::RadiusGeometry:
+    case SystemVariable::RadiusWear: {
+      const std::map<int, double>& t = *registerTable(core_.tables, r->kind);
+      auto it = t.find(static_cast<int>(number - r->first + 1));
+      return eval::Value::of(it == t.end() ? 0.0 : it->second / scale);
+    }
+    case SystemVariable::ExternalOffset: {
+      const int i = axisOf(number - r->first);
+      return i < 0 ? eval::Value::none() : eval::Value::of(cs.external[i] / scale);
+    }
+    case SystemVariable::WorkOffset:
+    case SystemVariable::ExtendedWorkOffset: {
+      WorkSlot slot = workSlot(*r, number, table);
+      if (slot.axis >= axes) return eval::Value::none();
+      return eval::Value::of(core_.tables.workOffset(slot.name)[slot.axis] / scale);
+    }
+    case SystemVariable::ModalGroup: {
+      std::optional<double> code = modalCode(core_, static_cast<int>(number - r->first + 1));
+      return code ? eval::Value::of(*code) : eval::Value::none();
+    }
+    case SystemVariable::ModalWord: return modalWord(core_, static_cast<int>(number - r->first + 1));
+    case SystemVariable::EndPoint:
+    case SystemVariable::WorkPosition: {
+      const int i = axisOf(number - r->first);
+      if (i < 0) return eval::Value::none();
+      return eval::Value::of((cs.position[i] - frame.total()[i]) / scale);
+    }
+    case SystemVariable::MachinePosition: {
+      const int i = axisOf(number - r->first);
+      return i < 0 ? eval::Value::none() : eval::Value::of(cs.position[i] / scale);
+    }
+    case SystemVariable::ToolLengthVector: {
+      const int i = axisOf(number - r->first);
+      return i < 0 ? eval::Value::none() : eval::Value::of(frame.tool_length[i] / scale);
+    }
+  }
+  return eval::Value::none();
+}
+
+bool ControllerVariables::write(int64_t number, const eval::Value& value, SourceLocation loc,
+                                eval::Failure& failure) {
+  const DialectTable& table = *core_.table;
+  ControllerState& cs = core_.cs;
+  const SystemVariableRange* r = findRange(table, number);
+  const double v = value.arithmetic() * unitScale(cs);
+  auto readOnly = [&]() {
+    failure = {eval::EvalError::VariableReadOnly, loc,
+               r ? absl::StrCat("#", number, " (", std::string(r->what), ") cannot be written")
+                 : absl::StrCat("#", number, " is not a system variable of ",
+                                std::string(dialectName(table.dialect))),
+               0};
+    return false;
+  };
+  if (!r) return readOnly();
+  const int axes = core_.machine->axisCount();
+  switch (r->kind) {
+    case SystemVariable::LengthGeometry:
+    case SystemVariable::LengthWear:
+    case SystemVariable::RadiusGeometry:
+    case SystemVariable::RadiusWear:
+      (*registerTable(core_.tables, r->kind))[static_cast<int>(number - r->first + 1)] = v;
+      return true;
+    case SystemVariable::ExternalOffset: {
+      const int64_t i = number - r->first;
+      if (i >= axes) return readOnly();
+      cs.external[i] = v;
+      return true;
+    }
+    case SystemVariable::WorkOffset:
+    case SystemVariable::ExtendedWorkOffset: {
+      WorkSlot slot = workSlot(*r, number, table);
+      if (slot.axis >= axes) return readOnly();
+      AxisValues& stored = core_.tables.work[slot.name];
+      stored[slot.axis] = v;
+      // As G10: the selected system takes the new value at once unless the dialect latches it
+      // until the system is selected again.
+      if (slot.name == cs.work_name && !table.behaviour.work_offset_write_on_reselect)
+        cs.work_value = stored;
+      return true;
+    }
+    default: return readOnly();
+  }
+}
+
+std::vector<ir::SetVariable> variablesOf(const TableWrite& write, const ControllerState& cs,
+                                         const OffsetTables& tables, const DialectTable& table,
+                                         int axis_count) {
+  std::vector<ir::SetVariable> out;
+  const double scale = unitScale(cs);
+  for (const SystemVariableRange& r : table.system_variables) {
+    switch (r.kind) {
+      case SystemVariable::LengthGeometry:
+      case SystemVariable::LengthWear:
+      case SystemVariable::RadiusGeometry:
+      case SystemVariable::RadiusWear: {
+        using T = TableWrite::Target;
+        const T target = r.kind == SystemVariable::LengthGeometry ? T::Length
+                         : r.kind == SystemVariable::LengthWear   ? T::LengthWear
+                         : r.kind == SystemVariable::RadiusGeometry ? T::Radius
+                                                                    : T::RadiusWear;
+        const int64_t n = r.first + write.number - 1;
+        if (write.target != target || n > r.last) break;
+        const std::map<int, double>& t =
+            *registerTable(const_cast<OffsetTables&>(tables), r.kind);  // read only
+        auto it = t.find(write.number);
+        out.push_back({static_cast<uint32_t>(n), it == t.end() ? 0.0 : it->second / scale, false});
+        break;
+      }
+      case SystemVariable::WorkOffset:
+      case SystemVariable::ExtendedWorkOffset: {
+        if (write.target != TableWrite::Target::Work) break;
+        for (int64_t first = r.first; first <= r.last; first += r.stride) {
+          if (workSlot(r, first, table).name != write.work_name) continue;
+          const AxisValues stored = tables.workOffset(write.work_name);
+          for (int i = 0; i < axis_count; ++i)
+            if (write.axes & (1u << i))
+              out.push_back({static_cast<uint32_t>(first + i), stored[i] / scale, false});
+        }
+        break;
+      }
+      default: break;
+    }
+  }
+  return out;
+}
+
+}  // namespace ncc::passes
