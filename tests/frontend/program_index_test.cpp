@@ -1,5 +1,9 @@
 // ProgramIndex: N labels and O numbers found by scanning the text, in the control's search
 // order, within a range, cached; positions that BlockReader::seek() accepts.
+#include <sys/resource.h>
+
+#include <fstream>
+
 #include <gtest/gtest.h>
 
 #include "ncc/frontend/program_index.h"
@@ -215,6 +219,67 @@ TEST(ProgramIndex, UnreadableFileFindsNothing) {
   EXPECT_FALSE(index.findProgram(1));
   EXPECT_FALSE(index.firstProgramNumber());
   EXPECT_EQ(index.programEnd(BlockPosition{}), BlockPosition{});
+}
+
+#if defined(__SANITIZE_ADDRESS__)
+constexpr bool kAddressSanitizer = true;
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+constexpr bool kAddressSanitizer = true;
+#else
+constexpr bool kAddressSanitizer = false;
+#endif
+#else
+constexpr bool kAddressSanitizer = false;
+#endif
+
+long maxRssKb() {
+  rusage usage{};
+  getrusage(RUSAGE_SELF, &usage);
+  return usage.ru_maxrss;
+}
+
+TEST(ProgramIndex, LookupsInAMillionLineFileKeepMemoryFlat) {
+  // A CAM program with an N on every line and a subprogram at the end: nothing of the file
+  // (30+ MB) nor its labels may be held.
+  TempDir dir;
+  const std::filesystem::path path = dir.path() / "large.nc";
+  {
+    std::ofstream out(path, std::ios::binary);
+    out << "%\nO1000 (LARGE)\nG90 G21 G17\n";
+    for (int i = 0; i < 1'000'000; ++i)
+      out << "N" << i << " G1 X" << (i % 1000) << ".5 Y-" << (i % 777) << ". F1500.\n";
+    out << "M30\nO2000\nN5 G0 X0\nM99\n%\n";
+  }
+  ASSERT_GT(std::filesystem::file_size(path), 30u * 1024 * 1024);
+  SourceManager sm;
+  const uint32_t f = sm.addFile(path);
+  const long rss_before = maxRssKb();
+  {
+    ProgramIndex index(sm, f, {});
+    EXPECT_EQ(index.firstProgramNumber(), 1000);
+    const std::optional<BlockPosition> sub = index.findProgram(2000);
+    ASSERT_TRUE(sub);
+    EXPECT_EQ(sub->line, 1'000'005u);
+    EXPECT_FALSE(index.findProgram(3000));
+    const BlockPosition end = index.programEnd(*sub);
+    EXPECT_EQ(end.line, 1'000'008u);  // the closing '%'
+    // N5 of the subprogram, searched within it; and N5 of the main program from its end.
+    EXPECT_EQ(index.findSequence(5, *sub, SequenceSearch::FromStart, BlockRange{*sub, end})->line,
+              1'000'006u);
+    EXPECT_EQ(index.findSequence(5, *sub, SequenceSearch::ForwardThenFromStart, BlockRange{{}, *sub})
+                  ->line,
+              9u);
+    const std::optional<BlockPosition> last = index.findSequence(999'999, BlockPosition{},
+                                                                 SequenceSearch::FromStart);
+    ASSERT_TRUE(last);
+    EXPECT_EQ(blockAt(sm, f, *last), "N999999 G1 X999.5 Y-0. F1500.");
+    EXPECT_FALSE(index.findSequence(2'000'000, BlockPosition{}, SequenceSearch::FromStart));
+  }
+  const long grown_kb = maxRssKb() - rss_before;
+  // AddressSanitizer's quarantine keeps freed memory resident, so RSS says nothing there.
+  if (kAddressSanitizer) GTEST_SKIP() << "RSS bound not checked under AddressSanitizer";
+  EXPECT_LT(grown_kb, 8 * 1024) << "max RSS grew by " << grown_kb << " kB";
 }
 
 }  // namespace
