@@ -40,8 +40,8 @@ std::string unknownPass(const std::string& option, const std::string& name, Pipe
   std::string listed = absl::StrCat("; the passes of ", commandName(pipeline), ": ",
                                     absl::StrJoin(stages, ", "));
   if (const AstStage* stage = findAstStage(name); stage && !stage->built)
-    return absl::StrCat(option, ": pass '", name, "' (", std::string(stage->summary), ") is not built yet",
-                        listed);
+    return absl::StrCat(option, ": pass '", name, "' (", std::string(stage->summary),
+                        ") is not built yet", listed);
   Pipeline other = pipeline == Pipeline::Check ? Pipeline::Compile : Pipeline::Check;
   if (contains(pipelineStages(other), name))
     return absl::StrCat(option, ": pass '", name, "' does not run in ", commandName(pipeline),
@@ -88,8 +88,9 @@ std::optional<std::string> checkPassControl(const PassControl& control, Pipeline
     if (control.stop_after.empty()) continue;
     auto at = [&](std::string_view n) { return std::find(stages.begin(), stages.end(), n); };
     if (at(name) > at(control.stop_after))
-      return absl::StrCat("--print-after: pass '", name, "' does not run: the pipeline stops after '",
-                          control.stop_after, "' (--stop-after)");
+      return absl::StrCat("--print-after: pass '", name,
+                          "' does not run: the pipeline stops after '", control.stop_after,
+                          "' (--stop-after)");
   }
   return std::nullopt;
 }

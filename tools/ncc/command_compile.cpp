@@ -41,12 +41,14 @@ std::optional<int> checkPassOptions(const driver::PassControl& passes, driver::P
 }
 
 int runCompile(const CompileArgs& args) {
-  if ((!args.passes.print_after.empty() || !args.passes.stop_after.empty()) && args.emit != "ir") {
+  // Usage errors first: nothing is read or written before them.
+  const driver::PassControl& passes = args.passes;
+  if ((!passes.print_after.empty() || !passes.stop_after.empty()) && args.emit != "ir") {
     printError("NCC0016", "--print-after and --stop-after write IR: use them with --emit=ir (not --emit=" +
                               args.emit + ")");
     return kUsage;
   }
-  if (std::optional<int> failed = checkPassOptions(args.passes, driver::Pipeline::Compile)) return *failed;
+  if (std::optional<int> failed = checkPassOptions(passes, driver::Pipeline::Compile)) return *failed;
   driver::Session session;
   if (std::optional<int> failed = openSession(session, args.input, args.common)) return *failed;
   std::string out = args.output;
