@@ -5,7 +5,8 @@
 //
 // Hooking a stage in (the Macro B `evaluate`): set its `built` to true, and in the loop that
 // reads blocks call `if (!tap.after("evaluate", block)) continue;` on each block as it leaves
-// the stage, before lowering it; when `tap.lowers()` is false nothing is lowered.
+// the stage, before lowering it; when `tap.lowers()` is false nothing is lowered. After the
+// last block, call `tap.finish()` before the lowering's finish().
 #include <ostream>
 #include <span>
 #include <string_view>
@@ -38,6 +39,8 @@ class AstStageTap {
   bool after(std::string_view stage, const ast::Block& block);
   // False when --stop-after names a stage before lowering: nothing is lowered.
   bool lowers() const { return !findAstStage(control_.stop_after); }
+  // The end of the blocks: a printed stage that saw none still shows its header.
+  void finish();
 
  private:
   const PassControl& control_;

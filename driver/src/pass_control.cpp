@@ -68,6 +68,12 @@ bool AstStageTap::after(std::string_view stage, const ast::Block& block) {
   return false;
 }
 
+void AstStageTap::finish() {
+  if (!printer_) return;
+  for (const AstStage& stage : kAstStages)
+    if (contains(control_.print_after, stage.name)) printer_->finish(stage.name);
+}
+
 std::vector<std::string> pipelineStages(Pipeline pipeline) {
   std::vector<std::string> names;
   for (const AstStage& stage : kAstStages)

@@ -62,8 +62,15 @@ TEST(AstStageTap, PrintsAndStopsAfterAnAstStage) {
   EXPECT_TRUE(tap.lowers());
   EXPECT_TRUE(tap.after("evaluate", *block));   // printed, and lowered next
   EXPECT_TRUE(tap.after("resolve", *block));    // a stage nobody asked about: nothing
+  tap.finish();
   EXPECT_EQ(printed.str(), "; after evaluate\n" + text + "\n");
   EXPECT_EQ(stopped.str(), "");
+
+  std::ostringstream empty;  // a program without blocks
+  passes::PassPrinter empty_printer(empty, {"X", "Y", "Z"});
+  AstStageTap no_blocks(print, &empty_printer, nullptr);
+  no_blocks.finish();
+  EXPECT_EQ(empty.str(), "; after evaluate\n");
 
   PassControl stop;
   stop.stop_after = "evaluate";
