@@ -179,29 +179,41 @@ void lowerProgram(Session& session, ir::BlockSink& entry) {
   lowering.finish();
 }
 
-bool compileWith(Session& session, ir::BlockSink& sink, bool check_travel) {
+// The pipeline of `which` from lowering to `sink`, shaped by `control` (names checked by
+// checkPassControl); `printer` receives what --print-after asks for.
+bool compileWith(Session& session, ir::BlockSink& sink, Pipeline which,
+                 const PassControl& control = {}, passes::PassPrinter* printer = nullptr) {
   passes::PipelineOptions options;
   options.axis_count = session.machine().axisCount();
-  if (check_travel) options.travel_limits = &session.machine();
+  if (which == Pipeline::Check) options.travel_limits = &session.machine();
   options.dialect = session.dialect();
+  options.verify_each = control.verify_each;
+  options.print_after = control.print_after;
+  options.printer = printer;
+  options.stop_after = control.stop_after;
   passes::PassManager pipeline(options, session.diagnostics(), sink);
   lowerProgram(session, pipeline.entry());
   return !session.diagnostics().hasErrors();
 }
+
+// Receives the IR and keeps nothing.
+struct DiscardingSink : ir::BlockSink {
+  void accept(ir::Block) override {}
+  void finish() override {}
+};
 }  // namespace
 
 bool compileToSink(Session& session, ir::BlockSink& sink) {
-  return compileWith(session, sink, /*check_travel=*/false);
+  return compileWith(session, sink, Pipeline::Compile);
 }
 
-bool check(Session& session) {
+bool check(Session& session, const PassControl& control, std::ostream* print_out) {
   // Discards the IR; every pass and the IR verifier still run, so their diagnostics appear,
   // and motion targets are checked against the machine's travel limits.
-  struct DiscardingSink : ir::BlockSink {
-    void accept(ir::Block) override {}
-    void finish() override {}
-  } discard;
-  return compileWith(session, discard, /*check_travel=*/true);
+  DiscardingSink discard;
+  std::optional<passes::PassPrinter> printer;
+  if (print_out) printer.emplace(*print_out, axisNames(session.machine()));
+  return compileWith(session, discard, Pipeline::Check, control, printer ? &*printer : nullptr);
 }
 
 bool emitAst(Session& session, std::ostream& out) {
@@ -211,15 +223,23 @@ bool emitAst(Session& session, std::ostream& out) {
   return !session.diagnostics().hasErrors();
 }
 
-bool emitIr(Session& session, std::ostream& out) {
-  ir::PrintingSink printer(out, axisNames(session.machine()));
-  return compileToSink(session, printer);
+bool emitIr(Session& session, std::ostream& out, const PassControl& control) {
+  if (control.print_after.empty()) {
+    ir::PrintingSink printer(out, axisNames(session.machine()));
+    return compileWith(session, printer, Pipeline::Compile, control);
+  }
+  // The output is what the taps print; the IR leaving the last pass is not written again.
+  passes::PassPrinter printer(out, axisNames(session.machine()));
+  DiscardingSink discard;
+  return compileWith(session, discard, Pipeline::Compile, control, &printer);
 }
 
-bool emitBytecode(Session& session, std::ostream& out) {
+bool emitBytecode(Session& session, std::ostream& out, const PassControl& control) {
   backend::BytecodeWriter writer(out, session.machine(), session.dialect(), session.sources(),
                                  &session.diagnostics());
-  bool ok = compileToSink(session, writer);
+  PassControl verify_only;
+  verify_only.verify_each = control.verify_each;
+  bool ok = compileWith(session, writer, Pipeline::Compile, verify_only);
   return ok && writer.ok() && !session.diagnostics().hasErrors();
 }
 

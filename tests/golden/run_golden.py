@@ -8,11 +8,18 @@ same strings and booleans, numbers within 1e-6). Diagnostics: for NAME.diag, `nc
 with exactly the listed `file:line:col: severity[CODE]` prefixes, in order, each followed by the
 listed message when the .diag line carries one after the prefix.
 Disassembly: NAME.dis is compared line by line with `ncc dis` of the compiled example.
+IR: NAME.after-PASS.ir is compared line by line with `ncc compile NAME --emit=ir
+--print-after=PASS`, NAME.check-after-PASS.ir with `ncc check NAME --print-after=PASS` (a pass
+only `ncc check` runs, e.g. travel-check); both must exit 0. Each file is the command's exact
+output: to write one, run that command (docs/testing.md, "IR golden files").
+Every compile and check here runs with --verify-each (the IR verifier after every pass), and
+an example with moves is also compiled so, so a pass that breaks an IR invariant fails here.
 ncc runs in the example's folder with the file's bare name, so recorded paths are stable.
 Extra command-line arguments for ncc (e.g. --dialect mazak-m) come from NAME.args when present;
 a machine file NAME.toml beside the example is passed as --machine.
 """
 import argparse
+import glob
 import json
 import os
 import re
@@ -61,6 +68,10 @@ def run_ncc(ncc, args, example):
 
 def check_moves(ncc, example, golden, extra):
     with tempfile.TemporaryDirectory() as tmp:
+        proc = run_ncc(ncc, ["compile", example, "--verify-each", "-o", os.path.join(tmp, "p.ncb")] + extra,
+                       example)
+        if proc.returncode != 0:
+            return f"ncc compile --verify-each exited {proc.returncode}:\n{proc.stderr}"
         out = os.path.join(tmp, "moves.jsonl")
         proc = run_ncc(ncc, ["run", example, "--emit=moves", "-o", out] + extra, example)
         if proc.returncode != 0:
@@ -77,7 +88,7 @@ def check_moves(ncc, example, golden, extra):
 
 
 def check_diagnostics(ncc, example, golden, extra):
-    proc = run_ncc(ncc, ["check", example] + extra, example)
+    proc = run_ncc(ncc, ["check", example, "--verify-each"] + extra, example)
     if proc.returncode != 1:
         return f"ncc check exited {proc.returncode}, expected 1 (errors in the program):\n{proc.stderr}"
     actual = []
@@ -101,7 +112,7 @@ def check_diagnostics(ncc, example, golden, extra):
 def check_disassembly(ncc, example, golden, extra):
     with tempfile.TemporaryDirectory() as tmp:
         out = os.path.join(tmp, "program.ncb")
-        proc = run_ncc(ncc, ["compile", example, "-o", out] + extra, example)
+        proc = run_ncc(ncc, ["compile", example, "--verify-each", "-o", out] + extra, example)
         if proc.returncode != 0:
             return f"ncc compile exited {proc.returncode}:\n{proc.stderr}"
         proc = run_ncc(ncc, ["dis", out] + extra, example)
@@ -117,6 +128,31 @@ def check_disassembly(ncc, example, golden, extra):
     return None
 
 
+IR_GOLDEN_RE = re.compile(r"^(?P<command>after|check-after)-(?P<pass>[a-z0-9-]+)\.ir$")
+
+
+def check_ir(ncc, example, golden, m, extra):
+    """NAME.after-PASS.ir / NAME.check-after-PASS.ir (`m`: its match of IR_GOLDEN_RE): the IR
+    printed after PASS, exactly."""
+    if m["command"] == "after":
+        command = ["compile", example, "--emit=ir", "-o", "-"]
+    else:
+        command = ["check", example]
+    command += [f"--print-after={m['pass']}", "--verify-each"]
+    proc = run_ncc(ncc, command + extra, example)
+    label = f"ncc {' '.join(command[:1] + command[2:])}"
+    if proc.returncode != 0:
+        return f"{label} exited {proc.returncode}:\n{proc.stderr}"
+    actual = proc.stdout.splitlines()
+    expected = open(golden).read().splitlines()
+    for i, (e, a) in enumerate(zip(expected, actual)):
+        if e != a:
+            return f"{os.path.basename(golden)} line {i + 1}:\n  expected: {e}\n  actual:   {a}"
+    if len(expected) != len(actual):
+        return f"{os.path.basename(golden)}: expected {len(expected)} lines, got {len(actual)}"
+    return None
+
+
 def main():
     parser = argparse.ArgumentParser()
     parser.add_argument("--ncc", required=True)
@@ -127,15 +163,22 @@ def main():
     moves = os.path.join(opts.golden_dir, name + ".moves.jsonl")
     diag = os.path.join(opts.golden_dir, name + ".diag")
     dis = os.path.join(opts.golden_dir, name + ".dis")
+    irs = []
+    for f in sorted(glob.glob(os.path.join(glob.escape(opts.golden_dir), glob.escape(name) + ".*.ir"))):
+        m = IR_GOLDEN_RE.match(os.path.basename(f)[len(name) + 1:])
+        if m:
+            irs.append((f, m))
     problems = []
+    for ir, m in irs:
+        problems.append(check_ir(opts.ncc, opts.example, ir, m, extra))
     if os.path.exists(dis):
         problems.append(check_disassembly(opts.ncc, opts.example, dis, extra))
     if os.path.exists(moves):
         problems.append(check_moves(opts.ncc, opts.example, moves, extra))
     if os.path.exists(diag):
         problems.append(check_diagnostics(opts.ncc, opts.example, diag, extra))
-    if not any(os.path.exists(f) for f in (moves, diag, dis)):
-        problems.append(f"no golden file for {name} (expected {moves}, {diag} or {dis})")
+    if not irs and not any(os.path.exists(f) for f in (moves, diag, dis)):
+        problems.append(f"no golden file for {name} (expected {moves}, {diag}, {dis} or NAME.after-PASS.ir)")
     problems = [p for p in problems if p]
     if problems:
         print(f"FAIL {name}\n" + "\n".join(problems))

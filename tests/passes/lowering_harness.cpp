@@ -81,6 +81,7 @@ Lowered lower(Dialect dialect, const std::string& program, const std::string& ma
   Collect collect(run);
   PipelineOptions pipeline;
   pipeline.axis_count = machine.axisCount();
+  pipeline.verify_each = true;  // tests verify the IR after every pass
   PassManager passes(pipeline, diags, collect);
   LoweringOptions options;
   options.dialect = dialect;

@@ -1,0 +1,45 @@
+#include "ncc/passes/pass_registry.h"
+
+#include "ncc/passes/coordinate_transform.h"
+#include "ncc/passes/travel_check.h"
+
+namespace ncc::passes {
+
+namespace {
+
+bool always(const PipelineOptions&) { return true; }
+bool inMachineSpace(const PipelineOptions& o) { return o.to_machine_space; }
+bool checksTravel(const PipelineOptions& o) { return o.to_machine_space && o.travel_limits; }
+
+std::unique_ptr<ir::BlockSink> workToMachine(ir::BlockSink& next, const PipelineOptions& o,
+                                             DiagnosticEngine&) {
+  return std::make_unique<WorkToMachinePass>(next, o.axis_count);
+}
+
+std::unique_ptr<ir::BlockSink> travelCheck(ir::BlockSink& next, const PipelineOptions& o,
+                                           DiagnosticEngine& diags) {
+  return std::make_unique<TravelCheckPass>(next, *o.travel_limits, o.dialect, diags);
+}
+
+// The order is the pipeline's (DESIGN.md, Passes): transforms in work space come before
+// work-to-machine, checks on machine coordinates after it.
+constexpr PassInfo kPasses[] = {
+    {"lower", "AST blocks to canonical IR blocks (modal state, units, work-space targets)",
+     always, nullptr, false},
+    {"work-to-machine", "adds each block's frame: work offset, shifts, tool length", inMachineSpace,
+     workToMachine, true},
+    {"travel-check", "motion targets against the travel limits (ncc check only)", checksTravel,
+     travelCheck, true},
+};
+
+}  // namespace
+
+std::span<const PassInfo> passRegistry() { return kPasses; }
+
+const PassInfo* findPass(std::string_view name) {
+  for (const PassInfo& pass : kPasses)
+    if (pass.name == name) return &pass;
+  return nullptr;
+}
+
+}  // namespace ncc::passes
