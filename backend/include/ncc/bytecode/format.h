@@ -43,20 +43,22 @@ inline constexpr uint8_t kMaxReference = 4;              // G27/G28/G30 referenc
 enum class Section : uint8_t { Code, Lines, Strings, Units };
 inline constexpr int kSectionCount = 4;
 
+// The opcode bytes. Their operands, stack effects and listings are in the opcode table
+// (format.cpp, OpcodeInfo below); docs/bytecode.md describes each.
 enum class Opcode : uint8_t {
   End = 0x01,              // end of code; the program finishes here
   // Motion: the target is the full vector of every configured axis, machine coordinates.
-  Rapid = 0x10,            // flags, target[N]
-  Line = 0x11,             // flags, feed, target[N]
-  Arc = 0x12,              // flags, plane, axis1, axis2, turns u32, feed, target[N], c1, c2
-  Dwell = 0x13,            // flags, amount (seconds, or revolutions with kFlagRevolutions)
+  Rapid = 0x10,
+  Line = 0x11,
+  Arc = 0x12,
+  Dwell = 0x13,            // seconds, or revolutions with kFlagRevolutions
   // Machine functions.
-  SpindleSpeed = 0x20,     // S: f64 rev/min
+  SpindleSpeed = 0x20,     // S
   SpindleCW = 0x21,        // M03
   SpindleCCW = 0x22,       // M04
   SpindleStop = 0x23,      // M05
   SpindleOrient = 0x24,    // M19
-  ToolSelect = 0x25,       // T: i64
+  ToolSelect = 0x25,       // T
   ToolChange = 0x26,       // M06
   CoolantOn = 0x27,        // M08
   CoolantOff = 0x28,       // M09
@@ -64,13 +66,13 @@ enum class Opcode : uint8_t {
   OptionalStop = 0x2A,     // M01
   ProgramEnd = 0x2B,       // M02: the program finishes here
   ProgramEndRewind = 0x2C, // M30: the program finishes here
-  MCode = 0x2D,            // any other M: i64, passed through
-  RefCheck = 0x30,         // G27: mask u16, reference u8, position[N]
+  MCode = 0x2D,            // any other M, passed through
+  RefCheck = 0x30,         // G27
   // Values: a stack of doubles where "vacant" (#0, never assigned) is a distinct state.
-  Push = 0x40,             // f64 constant
+  Push = 0x40,
   PushVacant = 0x41,
-  Load = 0x42,             // u32 variable number
-  Store = 0x43,            // u32 variable number (pops)
+  Load = 0x42,
+  Store = 0x43,
   Pop = 0x44,
   Add = 0x50,
   Sub = 0x51,
@@ -83,8 +85,8 @@ enum class Opcode : uint8_t {
   CmpLe = 0x5B,
   CmpGt = 0x5C,
   CmpGe = 0x5D,
-  Jump = 0x60,             // u32 code offset
-  JumpIfFalse = 0x61,      // u32 code offset; pops the condition
+  Jump = 0x60,
+  JumpIfFalse = 0x61,      // pops the condition
 };
 
 // Flag bits of the motion instructions (one flags byte each; unused bits must be zero).
