@@ -20,12 +20,12 @@ constexpr uint8_t kMotionFlags = kFlagExactStop;
 //
 // To add an opcode: give it a byte in `Opcode` (format.h), a row here, a row in the table of
 // docs/bytecode.md and, if it takes an operand no opcode has yet, an `Operand` kind with its
-// size (operandSize below), its field in Instruction and its cases in encode/decode
-// (instruction.cpp), the verifier's check (verifier.cpp, checkOperand) and the disassembler's
-// rendering (disassembler.cpp, renderOperand): each switch over Operand lists every kind, so the
-// compiler names the ones forgotten. Then teach the executor (vm/src/executor.cpp) to run it.
-// A new opcode or operand kind changes the format: raise the version (kVersionMinor for an
-// addition an older VM can refuse by its opcode byte).
+// size (fixedSize below), its field in Instruction and its cases in encode/decode
+// (instruction.cpp), the verifier's check (verifier.cpp, checkOperand), the disassembler's
+// rendering (disassembler.cpp, renderOperand) and the round-trip test's sample: each switch over
+// Operand lists every kind without a default, so -Wswitch (-Wall) names the ones forgotten.
+// Then teach the executor (vm/src/executor.cpp) to run it. Either changes the format: raise
+// the version (the minor for an addition: a loader refuses a minor newer than its own).
 constexpr std::array<OpcodeInfo, 256> makeTable() {
   std::array<OpcodeInfo, 256> t{};
   auto set = [&t](Opcode op, const char* mnemonic, std::initializer_list<Operand> operands,
