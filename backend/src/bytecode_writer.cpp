@@ -1,6 +1,9 @@
 #include "ncc/backend/bytecode_writer.h"
 
+#include <array>
 #include <cmath>
+#include <utility>
+#include <variant>
 #include <filesystem>
 
 #include "absl/strings/str_cat.h"
@@ -60,6 +63,118 @@ bytecode::Opcode machineFunctionOpcode(ir::MachineFunction::Kind kind) {
   return Opcode::MCode;
 }
 
+// The instructions of one IR operation: at most two, or an internal error.
+struct Lowered {
+  std::array<bytecode::Instruction, 2> instructions{};
+  int count = 0;
+  std::optional<std::pair<std::string, std::string>> error;  // code, message
+
+  Lowered() = default;
+  explicit Lowered(const bytecode::Instruction& in) : instructions{in}, count(1) {}
+};
+
+// IR operation -> bytecode, one call operator per IR operation kind and no generic one: a kind
+// added to ir::Operation without its case here does not compile (std::visit finds no match),
+// where a chain of get_if would silently write it as END.
+class Lowering {
+ public:
+  Lowering(const MachineConfig& machine, const ir::Block& block)
+      : machine_(machine),
+        exact_(block.exact_stop ? bytecode::kFlagExactStop : 0),
+        // G63 tapping mode: the feed override is fixed at 100 % for the feed moves.
+        fixed_override_(block.modal.path == ir::PathControl::Tapping
+                            ? bytecode::kFlagFixedOverride
+                            : 0) {}
+
+  Lowered operator()(const ir::Rapid& r) const {
+    bytecode::Instruction in = instruction(Opcode::Rapid);
+    in.flags = exact_ | (r.type == ir::RapidType::PerAxis ? bytecode::kFlagPerAxis : 0);
+    in.axes = r.to;
+    return Lowered(in);
+  }
+
+  Lowered operator()(const ir::Linear& l) const {
+    bytecode::Instruction in = instruction(Opcode::Line);
+    in.flags = exact_ | fixed_override_ | (l.feed_per_rev ? bytecode::kFlagFeedPerRev : 0);
+    in.value = l.feed;
+    in.axes = l.to;
+    return Lowered(in);
+  }
+
+  Lowered operator()(const ir::Arc& a) const {
+    auto [first, second] = planeAxisNames(a.plane);
+    const int axis1 = machine_.axisIndex(first);
+    const int axis2 = machine_.axisIndex(second);
+    if (axis1 < 0 || axis2 < 0) {
+      Lowered failed;
+      failed.error = {"NCC9003", absl::StrCat("internal error: an arc in the ", first, second,
+                                              " plane needs axes ", first, " and ", second,
+                                              " on the machine")};
+      return failed;
+    }
+    bytecode::Instruction in = instruction(Opcode::Arc);
+    in.flags = exact_ | fixed_override_ | (a.feed_per_rev ? bytecode::kFlagFeedPerRev : 0) |
+               (a.clockwise ? bytecode::kFlagClockwise : 0);
+    in.plane = arcPlane(a.plane);
+    in.axis1 = static_cast<uint8_t>(axis1);
+    in.axis2 = static_cast<uint8_t>(axis2);
+    in.turns = a.extra_turns;
+    in.value = a.feed;
+    in.axes = a.to;
+    in.center1 = a.center[axis1];
+    in.center2 = a.center[axis2];
+    return Lowered(in);
+  }
+
+  Lowered operator()(const ir::Dwell& d) const {
+    bytecode::Instruction in = instruction(Opcode::Dwell);
+    in.flags = d.revolutions ? bytecode::kFlagRevolutions : 0;
+    in.value = d.seconds;
+    return Lowered(in);
+  }
+
+  Lowered operator()(const ir::MachineFunction& f) const {
+    bytecode::Instruction in = instruction(machineFunctionOpcode(f.kind));
+    in.code = f.code;
+    in.value = f.value;
+    return Lowered(in);
+  }
+
+  Lowered operator()(const ir::ReferenceCheck& c) const {
+    bytecode::Instruction in = instruction(Opcode::RefCheck);
+    in.mask = c.axes;
+    in.reference = static_cast<uint8_t>(c.reference);
+    in.axes = c.position;
+    return Lowered(in);
+  }
+
+  // `#n = value`: PUSH value (PUSH_VACANT for `#n = #0`), STORE n.
+  Lowered operator()(const ir::SetVariable& v) const {
+    Lowered code;
+    bytecode::Instruction& value = code.instructions[0];
+    value = instruction(v.vacant ? Opcode::PushVacant : Opcode::Push);
+    if (!v.vacant) value.value = v.value;
+    bytecode::Instruction& store = code.instructions[1];
+    store = instruction(Opcode::Store);
+    store.variable = v.number;
+    code.count = 2;
+    return code;
+  }
+
+ private:
+  using Opcode = bytecode::Opcode;
+
+  static bytecode::Instruction instruction(Opcode op) {
+    bytecode::Instruction in;
+    in.op = op;
+    return in;
+  }
+
+  const MachineConfig& machine_;
+  const uint8_t exact_;
+  const uint8_t fixed_override_;
+};
+
 }  // namespace
 
 BytecodeWriter::BytecodeWriter(std::ostream& out, const MachineConfig& machine, Dialect dialect,
@@ -98,71 +213,18 @@ void BytecodeWriter::accept(ir::Block block) {
 }
 
 void BytecodeWriter::encode(const ir::Operation& op, const ir::Block& block) {
-  using bytecode::Opcode;
-  bytecode::Instruction in;
-  const uint8_t exact = block.exact_stop ? bytecode::kFlagExactStop : 0;
-  // G63 tapping mode: the feed override is fixed at 100 % for the feed moves.
-  const uint8_t fixed_override =
-      block.modal.path == ir::PathControl::Tapping ? bytecode::kFlagFixedOverride : 0;
-  if (const auto* v = std::get_if<ir::SetVariable>(&op)) {
-    bytecode::Instruction value;
-    value.op = v->vacant ? Opcode::PushVacant : Opcode::Push;
-    value.value = v->value;
-    writer_.emit(value);
-    in.op = Opcode::Store;
-    in.variable = v->number;
-    writer_.emit(in);
+  const Lowered code = std::visit(Lowering{machine_, block}, op);
+  if (code.error) {
+    error(code.error->first, block.loc, code.error->second);
     return;
   }
-  if (const auto* r = std::get_if<ir::Rapid>(&op)) {
-    in.op = Opcode::Rapid;
-    in.flags = exact | (r->type == ir::RapidType::PerAxis ? bytecode::kFlagPerAxis : 0);
-    in.axes = r->to;
-  } else if (const auto* l = std::get_if<ir::Linear>(&op)) {
-    in.op = Opcode::Line;
-    in.flags = exact | fixed_override | (l->feed_per_rev ? bytecode::kFlagFeedPerRev : 0);
-    in.value = l->feed;
-    in.axes = l->to;
-  } else if (const auto* a = std::get_if<ir::Arc>(&op)) {
-    auto [first, second] = planeAxisNames(a->plane);
-    const int axis1 = machine_.axisIndex(first);
-    const int axis2 = machine_.axisIndex(second);
-    if (axis1 < 0 || axis2 < 0) {
-      error("NCC9003", block.loc,
-            absl::StrCat("internal error: an arc in the ", first, second, " plane needs axes ",
-                         first, " and ", second, " on the machine"));
+  for (int i = 0; i < code.count; ++i) {
+    if (std::optional<std::string> beyond = outOfBounds(code.instructions[i])) {
+      error("NCC7017", block.loc, *beyond);
       return;
     }
-    in.op = Opcode::Arc;
-    in.flags = exact | fixed_override | (a->feed_per_rev ? bytecode::kFlagFeedPerRev : 0) |
-               (a->clockwise ? bytecode::kFlagClockwise : 0);
-    in.plane = arcPlane(a->plane);
-    in.axis1 = static_cast<uint8_t>(axis1);
-    in.axis2 = static_cast<uint8_t>(axis2);
-    in.turns = a->extra_turns;
-    in.value = a->feed;
-    in.axes = a->to;
-    in.center1 = a->center[axis1];
-    in.center2 = a->center[axis2];
-  } else if (const auto* d = std::get_if<ir::Dwell>(&op)) {
-    in.op = Opcode::Dwell;
-    in.flags = d->revolutions ? bytecode::kFlagRevolutions : 0;
-    in.value = d->seconds;
-  } else if (const auto* f = std::get_if<ir::MachineFunction>(&op)) {
-    in.op = machineFunctionOpcode(f->kind);
-    in.code = f->code;
-    in.value = f->value;
-  } else if (const auto* c = std::get_if<ir::ReferenceCheck>(&op)) {
-    in.op = Opcode::RefCheck;
-    in.mask = c->axes;
-    in.reference = static_cast<uint8_t>(c->reference);
-    in.axes = c->position;
   }
-  if (std::optional<std::string> beyond = outOfBounds(in)) {
-    error("NCC7017", block.loc, *beyond);
-    return;
-  }
-  writer_.emit(in);
+  for (int i = 0; i < code.count; ++i) writer_.emit(code.instructions[i]);
 }
 
 std::optional<std::string> BytecodeWriter::outOfBounds(const bytecode::Instruction& in) const {

@@ -9,6 +9,12 @@ namespace ncc::passes {
 
 namespace {
 
+// A visitor made of one lambda per alternative.
+template <class... Cases>
+struct Overloaded : Cases... {
+  using Cases::operator()...;
+};
+
 // The machine's indices of an arc plane's two axes (G17: X Y, G18: Z X, G19: Y Z), as the
 // backend finds them; -1 where the machine lacks one (the backend reports that).
 std::pair<int, int> planeAxes(const MachineConfig& machine, ir::Plane plane) {
@@ -25,25 +31,39 @@ std::pair<int, int> planeAxes(const MachineConfig& machine, ir::Plane plane) {
 void TravelCheckPass::accept(ir::Block block) {
   bool reported = false;  // one diagnostic per block
   for (const ir::Operation& op : block.ops) {
+    // The end point of a move and whether the move leaves the travel; nothing for the
+    // operations that do not move. One case per IR operation kind and no generic one, so an
+    // operation kind added to the IR without its case here does not compile.
     std::optional<TravelViolation> beyond;
     const AxisValues* to = nullptr;
-    if (const auto* r = std::get_if<ir::Rapid>(&op)) {
-      to = &r->to;
-      beyond = travelViolation(machine_.axes, *to);
-    } else if (const auto* l = std::get_if<ir::Linear>(&op)) {
-      to = &l->to;
-      beyond = travelViolation(machine_.axes, *to);
-    } else if (const auto* a = std::get_if<ir::Arc>(&op)) {
-      to = &a->to;
-      const auto [axis1, axis2] = planeAxes(machine_, a->plane);
-      if (axis1 >= 0 && axis2 >= 0) {
-        const ArcMove arc{position_,       a->to,           axis1,        axis2,
-                          a->center[axis1], a->center[axis2], a->clockwise, a->extra_turns};
-        beyond = arcTravelViolation(machine_.axes, arc);
-      } else {
-        beyond = travelViolation(machine_.axes, *to);
-      }
-    }
+    std::visit(Overloaded{
+                   [&](const ir::Rapid& r) {
+                     to = &r.to;
+                     beyond = travelViolation(machine_.axes, *to);
+                   },
+                   [&](const ir::Linear& l) {
+                     to = &l.to;
+                     beyond = travelViolation(machine_.axes, *to);
+                   },
+                   [&](const ir::Arc& a) {
+                     to = &a.to;
+                     const auto [axis1, axis2] = planeAxes(machine_, a.plane);
+                     if (axis1 >= 0 && axis2 >= 0) {
+                       const ArcMove arc{position_,       a.to,
+                                         axis1,           axis2,
+                                         a.center[axis1], a.center[axis2],
+                                         a.clockwise,     a.extra_turns};
+                       beyond = arcTravelViolation(machine_.axes, arc);
+                     } else {
+                       beyond = travelViolation(machine_.axes, *to);
+                     }
+                   },
+                   [](const ir::Dwell&) {},
+                   [](const ir::MachineFunction&) {},
+                   [](const ir::ReferenceCheck&) {},  // checks the position, does not move
+                   [](const ir::SetVariable&) {},
+               },
+               op);
     if (beyond && !reported) {
       diags_.error(std::string(beyond->above ? alarms_.plus : alarms_.minus), block.loc,
                    travelMessage(*beyond, machine_.axes));

@@ -30,6 +30,39 @@ inline bytecode::Program smallProgram() {
   return a.finish();
 }
 
+// A valid program with every opcode of the format and every flag (disassembly golden
+// every_opcode.dis, opcode table tests).
+inline bytecode::Program everyOpcodeProgram() {
+  using bytecode::Opcode;
+  bytecode::Assembler a(xyzHeader());
+  const bytecode::Assembler::Label skip = a.newLabel(), over = a.newLabel();
+  a.at(1, 1).push(1.5).op(Opcode::PushVacant).op(Opcode::Add);
+  for (Opcode op : {Opcode::Sub, Opcode::Mul, Opcode::Div}) a.push(-2.25).op(op);
+  a.op(Opcode::Neg).store(100);
+  a.at(1, 2).load(100).push(0.0).op(Opcode::CmpEq).jump(Opcode::JumpIfFalse, skip);
+  for (Opcode op : {Opcode::CmpNe, Opcode::CmpLt, Opcode::CmpLe, Opcode::CmpGt, Opcode::CmpGe})
+    a.load(100).push(1e-7).op(op).op(Opcode::Pop);
+  a.bind(skip).jump(Opcode::Jump, over);
+  a.bind(over).at(1, 3).toolSelect(12).op(Opcode::ToolChange).spindleSpeed(2500.5);
+  a.op(Opcode::SpindleCW).op(Opcode::SpindleCCW).op(Opcode::SpindleStop);
+  a.op(Opcode::SpindleOrient).op(Opcode::CoolantOn).op(Opcode::CoolantOff).mCode(99999999);
+  a.at(1, 4).rapid({1.0, -2.0, 3.5});
+  a.rapid({0.0, 0.0, 0.0}, bytecode::kFlagPerAxis | bytecode::kFlagExactStop);
+  a.at(1, 5).line({10.0, 0.0, -1.0}, 0.25,
+                  bytecode::kFlagFeedPerRev | bytecode::kFlagExactStop |
+                      bytecode::kFlagFixedOverride);
+  a.at(1, 6).arc({20.0, 0.0, -1.0}, 0, 1, 15.0, 0.0, 300.0, bytecode::kFlagClockwise);
+  a.arc({20.0, 0.0, -3.0}, 2, 0, -2.0, 15.0, 0.5,
+        bytecode::kFlagFeedPerRev | bytecode::kFlagExactStop | bytecode::kFlagFixedOverride,
+        bytecode::ArcPlane::ZX, 3);
+  a.arc({20.0, 0.0, -3.0}, 1, 2, 0.0, -3.0, 100.0, 0, bytecode::ArcPlane::YZ);
+  a.at(1, 7).dwell(2.5).dwell(3.0, bytecode::kFlagRevolutions);
+  a.at(1, 8).refCheck(0b101, 2, {20.0, 0.0, -3.0});
+  a.op(Opcode::ProgramStop).op(Opcode::OptionalStop);
+  a.at(1, 9).op(Opcode::ProgramEnd).op(Opcode::ProgramEndRewind).op(Opcode::End);
+  return a.finish();
+}
+
 inline std::vector<uint8_t> serialise(const bytecode::Program& program) {
   std::ostringstream out;
   bytecode::write(program, out);

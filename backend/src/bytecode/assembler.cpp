@@ -1,8 +1,7 @@
 #include "ncc/bytecode/assembler.h"
 
 #include <array>
-
-#include "bytes.h"
+#include <cassert>
 
 namespace ncc::bytecode {
 
@@ -19,6 +18,7 @@ Assembler& Assembler::at(uint32_t file, uint32_t line, uint32_t column) {
 
 Assembler& Assembler::emit(const Instruction& instruction) {
   std::array<uint8_t, 128> buffer;
+  assert(maxInstructionSize() <= buffer.size());
   const uint32_t size = encode(instruction, program_.axisCount(), buffer.data());
   program_.code.insert(program_.code.end(), buffer.begin(), buffer.begin() + size);
   return *this;
@@ -142,9 +142,12 @@ Assembler& Assembler::jump(Opcode jump_opcode, Label label) {
 
 Program Assembler::finish(std::vector<std::string> strings, uint32_t unit_name) {
   for (const auto& [jump_offset, label] : fixups_) {
+    // The jump again, now with its target, over the one emitted: the same opcode and size.
     const int64_t target = labels_.at(label);
-    uint8_t* p = program_.code.data() + jump_offset + 1;
-    bytes::putU32(p, target < 0 ? 0xFFFFFFFFu : static_cast<uint32_t>(target));
+    Instruction in;
+    in.op = static_cast<Opcode>(program_.code[jump_offset]);
+    in.target = target < 0 ? 0xFFFFFFFFu : static_cast<uint32_t>(target);
+    encode(in, program_.axisCount(), program_.code.data() + jump_offset);
   }
   program_.strings = std::move(strings);
   program_.units = {Unit{0, unit_name}};

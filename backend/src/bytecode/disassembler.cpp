@@ -2,6 +2,7 @@
 
 #include <charconv>
 #include <sstream>
+#include <string_view>
 
 #include "absl/strings/str_cat.h"
 #include "absl/strings/str_format.h"
@@ -48,53 +49,88 @@ std::string axisName(const Program& program, uint8_t axis) {
   return axis < program.axisCount() ? program.header.axes[axis].name : absl::StrCat("axis", axis);
 }
 
-std::string operands(const Program& program, const Instruction& in) {
+// The words of the flags set that the opcode accepts and its listing does not name, in
+// flagTable() order.
+std::string flagWords(std::string_view listing, const Instruction& in) {
+  std::string words;
+  for (const FlagInfo& flag : flagTable()) {
+    const bool named = listing.find(absl::StrCat("{", flag.name, "}")) != std::string_view::npos;
+    if ((in.flags & flag.bit) && (opcodeInfo(in.op).allowed_flags & flag.bit) && !named)
+      absl::StrAppend(&words, words.empty() ? "" : " ", flag.when_set);
+  }
+  return words;
+}
+
+// The text of one operand (a placeholder of the opcode's listing).
+std::string renderOperand(Operand kind, std::string_view listing, const Program& program,
+                          const Instruction& in) {
   const uint16_t all = static_cast<uint16_t>((1u << program.axisCount()) - 1);
-  std::string out;
-  auto flag = [&](uint8_t bit, const char* word) {
-    if (in.flags & bit) absl::StrAppend(&out, " ", word);
-  };
-  switch (in.op) {
-    case Opcode::Rapid:
-      out = axesText(program, in.axes, all);
-      flag(kFlagPerAxis, "per-axis");
-      flag(kFlagExactStop, "exact-stop");
-      break;
-    case Opcode::Line:
-      out = absl::StrCat(axesText(program, in.axes, all), " F", formatNumber(in.value));
-      flag(kFlagFeedPerRev, "per-rev");
-      flag(kFlagExactStop, "exact-stop");
-      flag(kFlagFixedOverride, "fixed-override");
-      break;
-    case Opcode::Arc: {
+  switch (kind) {
+    case Operand::Flags: return flagWords(listing, in);
+    case Operand::Plane: {
       const uint8_t plane = static_cast<uint8_t>(in.plane);
-      out = absl::StrCat(plane < 3 ? kPlaneNames[plane] : "?", " ",
-                         (in.flags & kFlagClockwise) ? "CW" : "CCW", " ",
-                         axesText(program, in.axes, all), " centre ",
-                         axisName(program, in.axis1), formatNumber(in.center1), " ",
-                         axisName(program, in.axis2), formatNumber(in.center2), " F",
-                         formatNumber(in.value));
-      if (in.turns != 0) absl::StrAppend(&out, " turns ", in.turns);
-      flag(kFlagFeedPerRev, "per-rev");
-      flag(kFlagExactStop, "exact-stop");
-      flag(kFlagFixedOverride, "fixed-override");
-      break;
+      return plane < 3 ? kPlaneNames[plane] : "?";
     }
-    case Opcode::Dwell:
-      out = absl::StrCat(formatNumber(in.value), (in.flags & kFlagRevolutions) ? " rev" : " s");
-      break;
-    case Opcode::SpindleSpeed: out = absl::StrCat("S", formatNumber(in.value)); break;
-    case Opcode::ToolSelect: out = absl::StrCat("T", in.code); break;
-    case Opcode::MCode: out = absl::StrCat("M", in.code); break;
-    case Opcode::RefCheck:
-      out = absl::StrCat("ref", in.reference, " ", axesText(program, in.axes, in.mask));
-      break;
-    case Opcode::Push: out = formatNumber(in.value); break;
-    case Opcode::Load:
-    case Opcode::Store: out = absl::StrCat("#", in.variable); break;
-    case Opcode::Jump:
-    case Opcode::JumpIfFalse: out = absl::StrCat(absl::Hex(in.target, absl::kZeroPad6)); break;
-    default: break;
+    case Operand::PlaneAxes:
+      return absl::StrCat(axisName(program, in.axis1), " ", axisName(program, in.axis2));
+    case Operand::Turns: return in.turns == 0 ? "" : absl::StrCat(in.turns);
+    case Operand::Feed:
+    case Operand::Amount:
+    case Operand::Speed:
+    case Operand::Constant: return formatNumber(in.value);
+    case Operand::Target: return axesText(program, in.axes, all);
+    case Operand::Centre:
+      return absl::StrCat(axisName(program, in.axis1), formatNumber(in.center1), " ",
+                          axisName(program, in.axis2), formatNumber(in.center2));
+    case Operand::Mask: return absl::StrCat(absl::Hex(in.mask, absl::kZeroPad4));
+    case Operand::Reference: return absl::StrCat(in.reference);
+    case Operand::Position: return axesText(program, in.axes, in.mask);
+    case Operand::Variable:
+    case Operand::Assigned: return absl::StrCat(in.variable);
+    case Operand::JumpTarget: return absl::StrCat(absl::Hex(in.target, absl::kZeroPad6));
+    case Operand::Code: return absl::StrCat(in.code);
+  }
+  return "?";
+}
+
+// The text of placeholder `name` of the listing: an operand ({flags}: the words of the flags
+// set that the listing does not name) or one flag by name (its word for set or clear).
+std::string render(std::string_view name, std::string_view listing, const Program& program,
+                   const Instruction& in) {
+  for (Operand kind : opcodeInfo(in.op).operands())
+    if (name == operandName(kind)) return renderOperand(kind, listing, program, in);
+  for (const FlagInfo& flag : flagTable())
+    if (name == flag.name) return (in.flags & flag.bit) ? flag.when_set : flag.when_clear;
+  return "";
+}
+
+// The operands as the opcode's listing template says (format.h, OpcodeInfo::listing).
+std::string operands(const Program& program, const Instruction& in) {
+  const std::string_view listing = opcodeInfo(in.op).listing;
+  std::string out;
+  std::string optional;          // the [part] being read
+  bool in_optional = false;
+  bool printed = false;          // a placeholder of that part printed something
+  for (std::size_t i = 0; i < listing.size(); ++i) {
+    std::string& text = in_optional ? optional : out;
+    const char c = listing[i];
+    if (c == '[') {
+      in_optional = true;
+      optional.clear();
+      printed = false;
+    } else if (c == ']') {
+      if (printed) out += optional;
+      in_optional = false;
+    } else if (c == '{') {
+      const std::size_t close = listing.find('}', i);
+      if (close == std::string_view::npos) break;  // the table test rules this out
+      const std::string value = render(listing.substr(i + 1, close - i - 1), listing, program, in);
+      printed = printed || !value.empty();
+      text += value;
+      i = close;
+    } else {
+      text += c;
+    }
   }
   return out;
 }
@@ -136,7 +172,7 @@ void disassemble(const Program& program, std::ostream& out) {
     }
     const std::string args = operands(program, in);
     out << absl::StrFormat("%06x  %-20s %s%s%s\n", offset, location(program, offset),
-                           opcodeInfo(static_cast<uint8_t>(in.op))->mnemonic,
+                           opcodeInfo(in.op).mnemonic,
                            args.empty() ? "" : " ", args);
     offset += size;
   }

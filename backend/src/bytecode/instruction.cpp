@@ -4,6 +4,77 @@
 
 namespace ncc::bytecode {
 
+namespace {
+
+// One operand at `p` (advanced past it) into its field of `out`.
+void readOperand(Operand kind, const uint8_t*& p, int axis_count, Instruction& out) {
+  auto f64 = [&p] {
+    const double v = bytes::getF64(p);
+    p += 8;
+    return v;
+  };
+  switch (kind) {
+    case Operand::Flags: out.flags = *p++; return;
+    case Operand::Plane: out.plane = static_cast<ArcPlane>(*p++); return;
+    case Operand::PlaneAxes:
+      out.axis1 = *p++;
+      out.axis2 = *p++;
+      return;
+    case Operand::Turns: out.turns = bytes::getU32(p), p += 4; return;
+    case Operand::Feed:
+    case Operand::Amount:
+    case Operand::Speed:
+    case Operand::Constant: out.value = f64(); return;
+    case Operand::Target:
+    case Operand::Position:
+      for (int i = 0; i < axis_count; ++i) out.axes[i] = f64();
+      return;
+    case Operand::Centre:
+      out.center1 = f64();
+      out.center2 = f64();
+      return;
+    case Operand::Mask: out.mask = bytes::getU16(p), p += 2; return;
+    case Operand::Reference: out.reference = *p++; return;
+    case Operand::Variable:
+    case Operand::Assigned: out.variable = bytes::getU32(p), p += 4; return;
+    case Operand::JumpTarget: out.target = bytes::getU32(p), p += 4; return;
+    case Operand::Code: out.code = static_cast<int64_t>(bytes::getU64(p)), p += 8; return;
+  }
+}
+
+// The field of `in` an operand of this kind holds, at `p` (advanced past it).
+void writeOperand(Operand kind, const Instruction& in, int axis_count, uint8_t*& p) {
+  switch (kind) {
+    case Operand::Flags: bytes::putU8(p, in.flags); return;
+    case Operand::Plane: bytes::putU8(p, static_cast<uint8_t>(in.plane)); return;
+    case Operand::PlaneAxes:
+      bytes::putU8(p, in.axis1);
+      bytes::putU8(p, in.axis2);
+      return;
+    case Operand::Turns: bytes::putU32(p, in.turns); return;
+    case Operand::Feed:
+    case Operand::Amount:
+    case Operand::Speed:
+    case Operand::Constant: bytes::putF64(p, in.value); return;
+    case Operand::Target:
+    case Operand::Position:
+      for (int i = 0; i < axis_count; ++i) bytes::putF64(p, in.axes[i]);
+      return;
+    case Operand::Centre:
+      bytes::putF64(p, in.center1);
+      bytes::putF64(p, in.center2);
+      return;
+    case Operand::Mask: bytes::putU16(p, in.mask); return;
+    case Operand::Reference: bytes::putU8(p, in.reference); return;
+    case Operand::Variable:
+    case Operand::Assigned: bytes::putU32(p, in.variable); return;
+    case Operand::JumpTarget: bytes::putU32(p, in.target); return;
+    case Operand::Code: bytes::putU64(p, static_cast<uint64_t>(in.code)); return;
+  }
+}
+
+}  // namespace
+
 DecodeStatus decode(std::span<const uint8_t> code, uint32_t offset, int axis_count,
                     Instruction& out, uint32_t& size) {
   size = 0;
@@ -17,58 +88,7 @@ DecodeStatus decode(std::span<const uint8_t> code, uint32_t offset, int axis_cou
   out = Instruction{};
   out.op = op;
   const uint8_t* p = code.data() + offset + 1;
-  auto readAxes = [&](AxisValues& axes) {
-    for (int i = 0; i < axis_count; ++i, p += 8) axes[i] = bytes::getF64(p);
-  };
-  switch (op) {
-    case Opcode::Rapid:
-      out.flags = *p++;
-      readAxes(out.axes);
-      break;
-    case Opcode::Line:
-      out.flags = *p++;
-      out.value = bytes::getF64(p), p += 8;
-      readAxes(out.axes);
-      break;
-    case Opcode::Arc:
-      out.flags = *p++;
-      out.plane = static_cast<ArcPlane>(*p++);
-      out.axis1 = *p++;
-      out.axis2 = *p++;
-      out.turns = bytes::getU32(p), p += 4;
-      out.value = bytes::getF64(p), p += 8;
-      readAxes(out.axes);
-      out.center1 = bytes::getF64(p), p += 8;
-      out.center2 = bytes::getF64(p), p += 8;
-      break;
-    case Opcode::Dwell:
-      out.flags = *p++;
-      out.value = bytes::getF64(p);
-      break;
-    case Opcode::SpindleSpeed:
-    case Opcode::Push:
-      out.value = bytes::getF64(p);
-      break;
-    case Opcode::ToolSelect:
-    case Opcode::MCode:
-      out.code = static_cast<int64_t>(bytes::getU64(p));
-      break;
-    case Opcode::RefCheck:
-      out.mask = bytes::getU16(p), p += 2;
-      out.reference = *p++;
-      readAxes(out.axes);
-      break;
-    case Opcode::Load:
-    case Opcode::Store:
-      out.variable = bytes::getU32(p);
-      break;
-    case Opcode::Jump:
-    case Opcode::JumpIfFalse:
-      out.target = bytes::getU32(p);
-      break;
-    default:
-      break;
-  }
+  for (Operand kind : info->operands()) readOperand(kind, p, axis_count, out);
   size = length;
   return DecodeStatus::Ok;
 }
@@ -76,58 +96,8 @@ DecodeStatus decode(std::span<const uint8_t> code, uint32_t offset, int axis_cou
 uint32_t encode(const Instruction& in, int axis_count, uint8_t* buffer) {
   uint8_t* p = buffer;
   bytes::putU8(p, static_cast<uint8_t>(in.op));
-  auto writeAxes = [&](const AxisValues& axes) {
-    for (int i = 0; i < axis_count; ++i) bytes::putF64(p, axes[i]);
-  };
-  switch (in.op) {
-    case Opcode::Rapid:
-      bytes::putU8(p, in.flags);
-      writeAxes(in.axes);
-      break;
-    case Opcode::Line:
-      bytes::putU8(p, in.flags);
-      bytes::putF64(p, in.value);
-      writeAxes(in.axes);
-      break;
-    case Opcode::Arc:
-      bytes::putU8(p, in.flags);
-      bytes::putU8(p, static_cast<uint8_t>(in.plane));
-      bytes::putU8(p, in.axis1);
-      bytes::putU8(p, in.axis2);
-      bytes::putU32(p, in.turns);
-      bytes::putF64(p, in.value);
-      writeAxes(in.axes);
-      bytes::putF64(p, in.center1);
-      bytes::putF64(p, in.center2);
-      break;
-    case Opcode::Dwell:
-      bytes::putU8(p, in.flags);
-      bytes::putF64(p, in.value);
-      break;
-    case Opcode::SpindleSpeed:
-    case Opcode::Push:
-      bytes::putF64(p, in.value);
-      break;
-    case Opcode::ToolSelect:
-    case Opcode::MCode:
-      bytes::putU64(p, static_cast<uint64_t>(in.code));
-      break;
-    case Opcode::RefCheck:
-      bytes::putU16(p, in.mask);
-      bytes::putU8(p, in.reference);
-      writeAxes(in.axes);
-      break;
-    case Opcode::Load:
-    case Opcode::Store:
-      bytes::putU32(p, in.variable);
-      break;
-    case Opcode::Jump:
-    case Opcode::JumpIfFalse:
-      bytes::putU32(p, in.target);
-      break;
-    default:
-      break;
-  }
+  if (const OpcodeInfo* info = opcodeInfo(static_cast<uint8_t>(in.op)))
+    for (Operand kind : info->operands()) writeOperand(kind, in, axis_count, p);
   return static_cast<uint32_t>(p - buffer);
 }
 

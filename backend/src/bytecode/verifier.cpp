@@ -19,7 +19,7 @@ std::string at(uint32_t offset) {
 }
 
 std::string at(uint32_t offset, const Instruction& in) {
-  return absl::StrCat(at(offset), " (", opcodeInfo(static_cast<uint8_t>(in.op))->mnemonic, ")");
+  return absl::StrCat(at(offset), " (", opcodeInfo(in.op).mnemonic, ")");
 }
 
 Error problem(std::string code, std::string message) {
@@ -96,19 +96,26 @@ class Verifier {
           break;
       }
       if (auto e = checkOperands(offset, in)) return e;
-      if (in.op == Opcode::Jump || in.op == Opcode::JumpIfFalse)
+      if (opcodeInfo(in.op).hasOperand(Operand::JumpTarget))
         jumps_.push_back({offset, in.target});
       offset += size;
     }
     return std::nullopt;
   }
 
+  // The allowed flags, then each operand by its kind, in byte order.
   std::optional<Error> checkOperands(uint32_t offset, const Instruction& in) {
-    const OpcodeInfo& info = *opcodeInfo(static_cast<uint8_t>(in.op));
+    const OpcodeInfo& info = opcodeInfo(in.op);
     if ((in.flags & ~info.allowed_flags) != 0)
       return problem("NCC7102", absl::StrCat(at(offset, in), ": invalid flag bits 0x",
                                              absl::Hex(in.flags & ~info.allowed_flags,
                                                        absl::kZeroPad2)));
+    for (Operand kind : info.operands())
+      if (auto e = checkOperand(kind, offset, in)) return e;
+    return std::nullopt;
+  }
+
+  std::optional<Error> checkOperand(Operand kind, uint32_t offset, const Instruction& in) {
     auto finite = [&](double v, const std::string& what) -> std::optional<Error> {
       if (std::isfinite(v)) return std::nullopt;
       return problem("NCC7104", absl::StrCat(at(offset, in), ": ", what, " is not finite"));
@@ -121,83 +128,84 @@ class Verifier {
                                              " is beyond the bound of +-", kMaxCoordinate,
                                              " mm (or degrees)"));
     };
-    auto finiteAxes = [&]() -> std::optional<Error> {
-      for (int i = 0; i < axis_count_; ++i)
-        if (auto e = coordinate(in.axes[i], absl::StrCat("coordinate of ",
-                                                         program_.header.axes[i].name)))
-          return e;
-      return std::nullopt;
+    auto nonNegative = [&]() -> std::optional<Error> {
+      if (auto e = finite(in.value, "value")) return e;
+      if (in.value >= 0.0) return std::nullopt;
+      return problem("NCC7104", absl::StrCat(at(offset, in), ": negative value ", in.value));
     };
-    auto positiveFeed = [&]() -> std::optional<Error> {
-      if (auto e = finite(in.value, "feed")) return e;
-      if (in.value > 0.0) return std::nullopt;
-      return problem("NCC7104", absl::StrCat(at(offset, in), ": feed ", in.value,
-                                             " is not positive"));
+    auto variable = [&]() -> std::optional<Error> {
+      if (in.variable < program_.header.variable_count) return std::nullopt;
+      return problem("NCC7103", absl::StrCat(at(offset, in), ": variable #", in.variable,
+                                             " beyond the ", program_.header.variable_count,
+                                             " declared"));
     };
-    auto functionCode = [&]() -> std::optional<Error> {
-      if (in.code >= 0 && in.code <= kMaxFunctionCode) return std::nullopt;
-      return problem("NCC7103", absl::StrCat(at(offset, in), ": code ", in.code,
-                                             " out of range 0..", kMaxFunctionCode));
-    };
-    switch (in.op) {
-      case Opcode::Rapid:
-        return finiteAxes();
-      case Opcode::Line:
-        if (auto e = positiveFeed()) return e;
-        return finiteAxes();
-      case Opcode::Arc:
-        if (static_cast<uint8_t>(in.plane) > static_cast<uint8_t>(ArcPlane::YZ))
-          return problem("NCC7103", absl::StrCat(at(offset, in), ": unknown plane ",
-                                                 static_cast<int>(in.plane)));
-        if (in.axis1 >= axis_count_ || in.axis2 >= axis_count_ || in.axis1 == in.axis2)
-          return problem("NCC7103", absl::StrCat(at(offset, in), ": plane axes ", in.axis1, " and ",
-                                                 in.axis2, " are not two distinct axes of ",
-                                                 axis_count_));
-        if (in.turns > kMaxExtraTurns)
-          return problem("NCC7103", absl::StrCat(at(offset, in), ": ", in.turns,
-                                                 " extra turns (at most ", kMaxExtraTurns, ")"));
-        if (auto e = positiveFeed()) return e;
-        if (auto e = coordinate(in.center1, "centre")) return e;
-        if (auto e = coordinate(in.center2, "centre")) return e;
-        return finiteAxes();
-      case Opcode::Dwell:
-      case Opcode::SpindleSpeed:
-        if (auto e = finite(in.value, "value")) return e;
-        if (in.value < 0.0)
-          return problem("NCC7104", absl::StrCat(at(offset, in), ": negative value ", in.value));
-        if (in.op == Opcode::Dwell && in.value > kMaxDwell)
-          return problem("NCC7103",
-                         absl::StrCat(at(offset, in), ": dwell of ", in.value,
-                                      (in.flags & kFlagRevolutions) ? " revolutions" : " s",
-                                      " is beyond the bound of ", kMaxDwell));
+    switch (kind) {
+      case Operand::Flags:  // checked against the opcode's allowed flags above
+      case Operand::JumpTarget:  // an instruction start: checkJumps(), once all are known
         return std::nullopt;
-      case Opcode::ToolSelect:
-      case Opcode::MCode:
-        return functionCode();
-      case Opcode::RefCheck:
-        if (in.mask == 0 || (in.mask >> axis_count_) != 0)
-          return problem("NCC7103", absl::StrCat(at(offset, in), ": axis mask 0x",
-                                                 absl::Hex(in.mask, absl::kZeroPad4),
-                                                 " names no axis or an axis beyond ",
-                                                 axis_count_));
-        if (in.reference < 1 || in.reference > kMaxReference)
-          return problem("NCC7103", absl::StrCat(at(offset, in), ": reference point ",
-                                                 in.reference, " (1 to ", kMaxReference, ")"));
-        return finiteAxes();
-      case Opcode::Push:
+      case Operand::Plane:
+        if (static_cast<uint8_t>(in.plane) <= static_cast<uint8_t>(ArcPlane::YZ))
+          return std::nullopt;
+        return problem("NCC7103", absl::StrCat(at(offset, in), ": unknown plane ",
+                                               static_cast<int>(in.plane)));
+      case Operand::PlaneAxes:
+        if (in.axis1 < axis_count_ && in.axis2 < axis_count_ && in.axis1 != in.axis2)
+          return std::nullopt;
+        return problem("NCC7103", absl::StrCat(at(offset, in), ": plane axes ", in.axis1, " and ",
+                                               in.axis2, " are not two distinct axes of ",
+                                               axis_count_));
+      case Operand::Turns:
+        if (in.turns <= kMaxExtraTurns) return std::nullopt;
+        return problem("NCC7103", absl::StrCat(at(offset, in), ": ", in.turns,
+                                               " extra turns (at most ", kMaxExtraTurns, ")"));
+      case Operand::Feed:
+        if (auto e = finite(in.value, "feed")) return e;
+        if (in.value > 0.0) return std::nullopt;
+        return problem("NCC7104", absl::StrCat(at(offset, in), ": feed ", in.value,
+                                               " is not positive"));
+      case Operand::Amount:
+        if (auto e = nonNegative()) return e;
+        if (in.value <= kMaxDwell) return std::nullopt;
+        return problem("NCC7103",
+                       absl::StrCat(at(offset, in), ": dwell of ", in.value,
+                                    (in.flags & kFlagRevolutions) ? " revolutions" : " s",
+                                    " is beyond the bound of ", kMaxDwell));
+      case Operand::Speed:
+        return nonNegative();
+      case Operand::Constant:
         return finite(in.value, "constant");
-      case Opcode::Load:
-      case Opcode::Store:
-        if (in.variable >= program_.header.variable_count)
-          return problem("NCC7103", absl::StrCat(at(offset, in), ": variable #", in.variable,
-                                                 " beyond the ", program_.header.variable_count,
-                                                 " declared"));
-        if (in.op == Opcode::Store && in.variable == 0)
-          return problem("NCC7103", absl::StrCat(at(offset, in), ": #0 cannot be assigned"));
+      case Operand::Target:
+      case Operand::Position:
+        for (int i = 0; i < axis_count_; ++i)
+          if (auto e = coordinate(in.axes[i], absl::StrCat("coordinate of ",
+                                                           program_.header.axes[i].name)))
+            return e;
         return std::nullopt;
-      default:
-        return std::nullopt;
+      case Operand::Centre:
+        if (auto e = coordinate(in.center1, "centre")) return e;
+        return coordinate(in.center2, "centre");
+      case Operand::Mask:
+        if (in.mask != 0 && (in.mask >> axis_count_) == 0) return std::nullopt;
+        return problem("NCC7103", absl::StrCat(at(offset, in), ": axis mask 0x",
+                                               absl::Hex(in.mask, absl::kZeroPad4),
+                                               " names no axis or an axis beyond ",
+                                               axis_count_));
+      case Operand::Reference:
+        if (in.reference >= 1 && in.reference <= kMaxReference) return std::nullopt;
+        return problem("NCC7103", absl::StrCat(at(offset, in), ": reference point ",
+                                               in.reference, " (1 to ", kMaxReference, ")"));
+      case Operand::Variable:
+        return variable();
+      case Operand::Assigned:
+        if (auto e = variable()) return e;
+        if (in.variable != 0) return std::nullopt;
+        return problem("NCC7103", absl::StrCat(at(offset, in), ": #0 cannot be assigned"));
+      case Operand::Code:
+        if (in.code >= 0 && in.code <= kMaxFunctionCode) return std::nullopt;
+        return problem("NCC7103", absl::StrCat(at(offset, in), ": code ", in.code,
+                                               " out of range 0..", kMaxFunctionCode));
     }
+    return std::nullopt;
   }
 
   // A run of instructions entered only at its first (a unit entry, a jump target, or the
@@ -273,20 +281,17 @@ class Verifier {
       Instruction in;
       uint32_t size = 0;
       if (code_.decode(offset, axis_count_, in, size) != DecodeStatus::Ok) return changed(offset);
-      const OpcodeInfo& info = *opcodeInfo(static_cast<uint8_t>(in.op));
+      const OpcodeInfo& info = opcodeInfo(in.op);
       Block& b = *open;
       b.last = offset;
       b.need = std::max(b.need, info.pops - b.delta);
       b.delta += info.pushes - info.pops;
       b.peak = std::max(b.peak, b.delta);
       offset += size;
-      const bool jump = in.op == Opcode::Jump || in.op == Opcode::JumpIfFalse;
-      const bool ends = in.op == Opcode::End || in.op == Opcode::ProgramEnd ||
-                        in.op == Opcode::ProgramEndRewind;
-      if (jump || ends || !info.falls_through) {
-        b.falls_through = info.falls_through;
-        b.jumps = jump;
-        b.ends = ends;
+      if (info.flow != Flow::Next) {
+        b.falls_through = info.flow == Flow::Branch;
+        b.jumps = info.flow == Flow::Branch || info.flow == Flow::Jump;
+        b.ends = info.flow == Flow::Stop;
         b.target = in.target;
         b.next = offset;
         blocks_.push_back(b);
@@ -361,7 +366,7 @@ class Verifier {
       Instruction in;
       uint32_t size = 0;
       if (code_.decode(offset, axis_count_, in, size) != DecodeStatus::Ok) return changed(offset);
-      const OpcodeInfo& info = *opcodeInfo(static_cast<uint8_t>(in.op));
+      const OpcodeInfo& info = opcodeInfo(in.op);
       if (d < info.pops)
         return problem("NCC7106", absl::StrCat(at(offset, in), ": needs ", int{info.pops},
                                                " values, the stack holds ", d));

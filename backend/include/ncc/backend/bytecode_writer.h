@@ -1,5 +1,5 @@
 #pragma once
-// The backend: machine-space IR blocks -> bytecode v1, streamed. Each block's operations are
+// The backend: machine-space IR blocks -> bytecode (docs/bytecode.md), streamed. Each block's operations are
 // encoded as they arrive, straight into the output stream; the line table is spooled to a
 // temporary file (bytecode/writer.h), so memory does not grow with program length. finish()
 // appends END, the line table, the string pool (the name, without folders, of every source file

@@ -2,7 +2,9 @@
 // Bytecode v2: the constants of the file format (docs/bytecode.md describes every byte).
 // All integers are little-endian with explicit widths; doubles are IEEE-754 binary64 bit
 // patterns, so a file is byte-identical across hosts and compilers.
+#include <array>
 #include <cstdint>
+#include <span>
 #include <string_view>
 
 namespace ncc::bytecode {
@@ -41,20 +43,22 @@ inline constexpr uint8_t kMaxReference = 4;              // G27/G28/G30 referenc
 enum class Section : uint8_t { Code, Lines, Strings, Units };
 inline constexpr int kSectionCount = 4;
 
+// The opcode bytes. Their operands, stack effects and listings are in the opcode table
+// (format.cpp, OpcodeInfo below); docs/bytecode.md describes each.
 enum class Opcode : uint8_t {
   End = 0x01,              // end of code; the program finishes here
   // Motion: the target is the full vector of every configured axis, machine coordinates.
-  Rapid = 0x10,            // flags, target[N]
-  Line = 0x11,             // flags, feed, target[N]
-  Arc = 0x12,              // flags, plane, axis1, axis2, turns u32, feed, target[N], c1, c2
-  Dwell = 0x13,            // flags, amount (seconds, or revolutions with kFlagRevolutions)
+  Rapid = 0x10,
+  Line = 0x11,
+  Arc = 0x12,
+  Dwell = 0x13,            // seconds, or revolutions with kFlagRevolutions
   // Machine functions.
-  SpindleSpeed = 0x20,     // S: f64 rev/min
+  SpindleSpeed = 0x20,     // S
   SpindleCW = 0x21,        // M03
   SpindleCCW = 0x22,       // M04
   SpindleStop = 0x23,      // M05
   SpindleOrient = 0x24,    // M19
-  ToolSelect = 0x25,       // T: i64
+  ToolSelect = 0x25,       // T
   ToolChange = 0x26,       // M06
   CoolantOn = 0x27,        // M08
   CoolantOff = 0x28,       // M09
@@ -62,13 +66,13 @@ enum class Opcode : uint8_t {
   OptionalStop = 0x2A,     // M01
   ProgramEnd = 0x2B,       // M02: the program finishes here
   ProgramEndRewind = 0x2C, // M30: the program finishes here
-  MCode = 0x2D,            // any other M: i64, passed through
-  RefCheck = 0x30,         // G27: mask u16, reference u8, position[N]
+  MCode = 0x2D,            // any other M, passed through
+  RefCheck = 0x30,         // G27
   // Values: a stack of doubles where "vacant" (#0, never assigned) is a distinct state.
-  Push = 0x40,             // f64 constant
+  Push = 0x40,
   PushVacant = 0x41,
-  Load = 0x42,             // u32 variable number
-  Store = 0x43,            // u32 variable number (pops)
+  Load = 0x42,
+  Store = 0x43,
   Pop = 0x44,
   Add = 0x50,
   Sub = 0x51,
@@ -81,8 +85,8 @@ enum class Opcode : uint8_t {
   CmpLe = 0x5B,
   CmpGt = 0x5C,
   CmpGe = 0x5D,
-  Jump = 0x60,             // u32 code offset
-  JumpIfFalse = 0x61,      // u32 code offset; pops the condition
+  Jump = 0x60,
+  JumpIfFalse = 0x61,      // pops the condition
 };
 
 // Flag bits of the motion instructions (one flags byte each; unused bits must be zero).
@@ -95,17 +99,78 @@ inline constexpr uint8_t kFlagFixedOverride = 0x20; // LINE, ARC: feed override 
 
 enum class ArcPlane : uint8_t { XY = 0, ZX = 1, YZ = 2 };  // G17 G18 G19
 
-// Static facts about one opcode.
+// The operand kinds an instruction can have. Each kind has one byte encoding, one field of
+// bytecode::Instruction, one verifier check and one disassembler rendering (docs/bytecode.md,
+// "Operand kinds"); an opcode is described by the kinds of its operands, in byte order.
+enum class Operand : uint8_t {
+  Flags,      // u8: kFlag* bits, only those in OpcodeInfo::allowed_flags       -> flags
+  Plane,      // u8: ArcPlane                                                   -> plane
+  PlaneAxes,  // 2 x u8: axis-table indices of the plane's two axes, distinct   -> axis1, axis2
+  Turns,      // u32: full circles beyond the first, at most kMaxExtraTurns    -> turns
+  Feed,       // f64 > 0: mm/min, or mm/rev with kFlagFeedPerRev                -> value
+  Amount,     // f64 in [0, kMaxDwell]: seconds, or revolutions with kFlagRevolutions -> value
+  Speed,      // f64 >= 0: spindle rev/min                                     -> value
+  Constant,   // f64: a finite value pushed on the stack                       -> value
+  Target,     // N x f64: every configured axis, |v| <= kMaxCoordinate         -> axes
+  Centre,     // 2 x f64: the arc centre on the PlaneAxes, |v| <= kMaxCoordinate -> center1, center2
+  Mask,       // u16: axes selected, at least one, all below N                 -> mask
+  Reference,  // u8: reference point 1..kMaxReference                          -> reference
+  Position,   // N x f64 like Target; listed for the Mask's axes only          -> axes
+  Variable,   // u32: variable number below the header's variable count        -> variable
+  Assigned,   // u32: like Variable, but not #0 (it is always vacant)          -> variable
+  JumpTarget, // u32: code offset of an instruction start                      -> target
+  Code,       // i64 in 0..kMaxFunctionCode: a T or M number                   -> code
+};
+inline constexpr int kMaxOperands = 8;
+
+// Where execution goes after an instruction.
+enum class Flow : uint8_t {
+  Next,    // to the next instruction
+  Branch,  // to the next instruction or to its JumpTarget
+  Jump,    // to its JumpTarget
+  Stop,    // nowhere: the program ends (END, M02, M30)
+};
+
+// Static facts about one opcode: one row of the opcode table (format.cpp), from which
+// encoding, decoding, sizes, the verifier's operand checks, its stack and flow analysis and the
+// disassembler's listing are all derived.
 struct OpcodeInfo {
   const char* mnemonic;        // as printed by the disassembler
+  std::array<Operand, kMaxOperands> operand_kinds;  // the first operand_count are used
+  uint8_t operand_count;
+  // How the disassembler lists the operands: text with {name} placeholders, one per operand
+  // (named as operandName() says) or flag (FlagInfo::name; {flags}: every other flag set), and
+  // [optional parts], dropped when their placeholders all print nothing.
+  const char* listing;
   uint8_t allowed_flags;       // flag bits this opcode accepts
   int8_t pops;                 // value-stack effect
   int8_t pushes;
-  bool falls_through;          // false: END, PROGRAM_END(_REWIND), JUMP
+  Flow flow;
+
+  constexpr std::span<const Operand> operands() const {
+    return {operand_kinds.data(), operand_count};
+  }
+  bool hasOperand(Operand kind) const;
 };
 
 // nullptr if `byte` is not an opcode of this version.
 const OpcodeInfo* opcodeInfo(uint8_t byte);
+const OpcodeInfo& opcodeInfo(Opcode op);  // `op` must be an opcode of this version
+// The name of an operand kind in listing templates and messages ("target", "feed", ...).
+const char* operandName(Operand kind);
+// Encoded length of one operand of this kind.
+uint32_t operandSize(Operand kind, int axis_count);
+
+// One flag bit: its name in listing templates and the words the disassembler prints for it.
+struct FlagInfo {
+  uint8_t bit;
+  const char* name;        // {clockwise} in a listing
+  const char* when_set;    // "CW", "exact-stop"
+  const char* when_clear;  // "CCW", or "" (nothing)
+};
+// Every flag bit, in the order the disassembler lists them under {flags}.
+std::span<const FlagInfo> flagTable();
+
 // Encoded length of an instruction with this opcode (including the opcode byte).
 uint32_t instructionSize(Opcode op, int axis_count);
 // Largest instruction of any kind: ARC with kMaxAxes axes.

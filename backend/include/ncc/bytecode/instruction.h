@@ -1,7 +1,8 @@
 #pragma once
 // One instruction, decoded into plain fields (no allocation), and its byte encoding. The
-// verifier, the disassembler, the executor and the writers all go through these two functions
-// so there is exactly one definition of the operand layout.
+// verifier, the disassembler, the executor and the writers all go through these two functions,
+// which read and write the operands the opcode table (format.h, OpcodeInfo) lists: the one
+// definition of the operand layout.
 #include <cstdint>
 #include <span>
 
