@@ -151,6 +151,8 @@ void lowerProgram(Session& session, ir::BlockSink& entry) {
     return session.machine().axisIndex(std::string(a)) >= 0;
   };
   eval_options.argument_value = [&](const ast::Word& w) { return lowering.argumentValue(w); };
+  eval_options.real_increment = [&] { return lowering.leastIncrement(); };
+  eval_options.address_digits = lowering.addressDigits();
   eval::Evaluator evaluator(std::move(eval_options), store, std::move(main), variables, diags);
 
   uint64_t unreadable = 0;

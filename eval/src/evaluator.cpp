@@ -6,16 +6,11 @@
 
 #include "absl/strings/str_cat.h"
 #include "evaluator_impl.h"
+#include "ncc/eval/address_value.h"
 
 namespace ncc::eval {
 
 namespace {
-
-// Addresses whose value is a number of a code or register, not a length: an integral value
-// taken from a variable is written without a decimal point (`M#2` is `M3`, not `M3.`).
-bool integerAddress(const std::string& a) {
-  return a.size() == 1 && std::string_view("GMTHDPLSNOB").find(a[0]) != std::string_view::npos;
-}
 
 // #3000 (alarm with message) and #3006 (stop with message): the same numbers in FANUC, Mazak
 // and Sinumerik ISO mode.
@@ -66,9 +61,11 @@ void Evaluator::Impl::fail(EvalError error, SourceLocation loc, std::string mess
   fail(Failure{error, loc, std::move(message), 0});
 }
 
-std::optional<Value> Evaluator::Impl::value(const ast::Expr& e) {
+std::optional<Value> Evaluator::Impl::value(const ast::Expr& e, int enclosing_brackets) {
   Failure failure;
   ExpressionContext context{rules, variables};
+  context.enclosing_brackets = enclosing_brackets;
+  context.adp_scale = options.adp_scale;
   std::optional<Value> v = evaluate(e, context, failure);
   if (!v) fail(failure);
   return v;
@@ -227,16 +224,9 @@ std::optional<ast::Block> Evaluator::Impl::evaluateBlock(ast::Block block,
   int loop_id = 0;
 
   auto assign = [&](const ast::Statement& st) -> bool {
-    const ast::Expr& target = st.target;
-    if (target.kind != ast::Expr::Kind::Variable || target.args.empty()) {
-      fail(EvalError::VariableNumber, st.loc, "the left side of an assignment is not a variable");
-      return false;
-    }
-    std::optional<Value> number_value = value(target.args[0]);
-    if (!number_value) return false;
     Failure failure;
-    std::optional<int64_t> number =
-        variableNumber(*number_value, rules, target.args[0].loc, failure);
+    ExpressionContext context{rules, variables};
+    std::optional<int64_t> number = assignmentTarget(st.target, context, failure);
     if (!number) {
       fail(failure);
       return false;
@@ -254,7 +244,7 @@ std::optional<ast::Block> Evaluator::Impl::evaluateBlock(ast::Block block,
         if (!assign(st)) return std::nullopt;
         break;
       case K::IfThen: {
-        std::optional<Value> c = value(st.value);
+        std::optional<Value> c = value(st.value, 1);
         if (!c) return std::nullopt;
         if (isTrue(*c) && st.then_assign && !assign(*st.then_assign)) return std::nullopt;
         break;
@@ -262,7 +252,7 @@ std::optional<ast::Block> Evaluator::Impl::evaluateBlock(ast::Block block,
       case K::IfGoto:
       case K::Goto: {
         if (st.kind == K::IfGoto) {
-          std::optional<Value> c = value(st.value);
+          std::optional<Value> c = value(st.value, 1);
           if (!c) return std::nullopt;
           if (!isTrue(*c)) break;
         }
@@ -283,7 +273,7 @@ std::optional<ast::Block> Evaluator::Impl::evaluateBlock(ast::Block block,
                absl::StrCat("DO ", st.loop_id, ": loop numbers are 1 to ", rules.max_do_id));
           return std::nullopt;
         }
-        std::optional<Value> c = value(st.value);
+        std::optional<Value> c = value(st.value, 1);
         if (!c) return std::nullopt;
         loop_id = st.loop_id;
         flow_loc = st.loc;
@@ -334,16 +324,22 @@ std::optional<ast::Block> Evaluator::Impl::evaluateBlock(ast::Block block,
     }
     std::optional<Value> v = value(w.value);
     if (!v) return std::nullopt;
-    if (v->vacant) continue;  // an address whose variable is vacant is not there at all
-    if (!std::isfinite(v->number) || std::abs(v->number) > rules.max_magnitude) {
-      fail(EvalError::ValueRange, w.loc,
-           absl::StrCat("address ", w.address, ": ", v->number, " is beyond the value range"));
+    const AddressShape shape = addressShape(w.address);
+    AddressLimits limits;
+    limits.digits = options.address_digits;
+    if (shape == AddressShape::Real && options.real_increment)
+      limits.increment = options.real_increment();
+    Failure failure;
+    std::optional<AddressValue> a = addressValue(*v, shape, rules, limits, w.loc, failure);
+    if (!a) {
+      fail(failure);
       return std::nullopt;
     }
-    const bool integral = v->number == std::floor(v->number);
-    w.value = ast::Expr::literal(std::abs(v->number), !(integral && integerAddress(w.address)),
-                                 w.value.loc);
-    if (v->number < 0) {
+    if (a->dropped) continue;  // an address whose variable is vacant is not there at all
+    // A computed value is a number in the input unit, as if written with its decimal point;
+    // an integer address takes it as the integer it is.
+    w.value = ast::Expr::literal(std::abs(a->value), shape == AddressShape::Real, w.value.loc);
+    if (a->value < 0) {
       ast::Expr neg;
       neg.kind = ast::Expr::Kind::Unary;
       neg.op = "-";
@@ -359,10 +355,8 @@ std::optional<ast::Block> Evaluator::Impl::evaluateBlock(ast::Block block,
     if (w.number == kUserAlarmVariable) {
       if (w.value.vacant) continue;
       const int64_t n = static_cast<int64_t>(w.value.number);
-      int64_t code = -1;
-      for (const MacroRules::UserAlarmRange& r : rules.user_alarms)
-        if (n >= r.first && n <= r.last) code = n + r.offset;
-      if (code < 0) {
+      std::optional<int64_t> code = rules.userAlarmNumber(n);
+      if (!code) {
         fail(EvalError::AddressValue, w.loc,
              absl::StrCat("#3000 = ", n, ": the alarm number is out of range"));
         return std::nullopt;
@@ -371,7 +365,7 @@ std::optional<ast::Block> Evaluator::Impl::evaluateBlock(ast::Block block,
       fail(Failure{EvalError::UserAlarm, w.loc,
                    message.empty() ? absl::StrCat("user alarm #3000 = ", n)
                                    : absl::StrCat("user alarm #3000 = ", n, ": ", message),
-                   code});
+                   *code});
       return std::nullopt;
     }
     if (w.number == kUserStopVariable) {

@@ -85,7 +85,9 @@ struct Evaluator::Impl {
   // Reports the failure with the dialect's alarm number and stops the program.
   void fail(const Failure& failure);
   void fail(EvalError error, SourceLocation loc, std::string message);
-  std::optional<Value> value(const ast::Expr& e);
+  // `enclosing_brackets`: 1 for the bracketed condition of IF / WHILE (the parser keeps its
+  // contents only).
+  std::optional<Value> value(const ast::Expr& e, int enclosing_brackets = 0);
   // The integer a word or target designates (GOTO n, P, L, H); nullopt after failing.
   std::optional<int64_t> integerOf(const ast::Expr& e, SourceLocation loc, const char* what);
   // Jumps to N n of the current program (GOTO, M99 P in the caller).

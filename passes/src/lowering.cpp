@@ -286,6 +286,13 @@ double Lowering::argumentValue(const ast::Word& word) const {
   return length ? v * st.settings.values.lengthIncrement(st.cs.modal.units) : v;
 }
 
+double Lowering::leastIncrement() const {
+  const State& st = *state_;
+  return st.settings.values.lengthIncrement(st.cs.modal.units);
+}
+
+int Lowering::addressDigits() const { return state_->settings.values.digits; }
+
 void Lowering::blockUnreadable() {
   if (state_->table) forgetEverything(state_->cs);
 }

@@ -22,7 +22,7 @@ struct CommonOptions {
   std::string dialect;
   std::string machine_file;
   std::string program_dir;
-  uint64_t max_back_jumps = 1'000'000;
+  uint64_t max_back_jumps = 10'000;
   void addTo(CLI::App& command);
   // Converts to session options; an unknown dialect name is a usage error (message returned).
   std::optional<std::string> toSessionOptions(driver::SessionOptions& out) const;

@@ -18,7 +18,7 @@ void CommonOptions::addTo(CLI::App& command) {
                      "where called subprograms are looked up (default: the program's folder)");
   command.add_option("--max-back-jumps", max_back_jumps,
                      "jumps back (GOTO, END, M99) before a program is stopped as an endless "
-                     "loop (NCC2101; default 1000000)")
+                     "loop (NCC2419; default 10000)")
       ->check(CLI::Range(uint64_t{1}, uint64_t{1'000'000'000'000}));
 }
 

@@ -19,8 +19,8 @@ struct SessionOptions {
   std::optional<Dialect> dialect;                   // default: from the file name
   std::optional<std::filesystem::path> machine_file;  // default: the built-in machine
   std::optional<std::filesystem::path> program_dir;   // default: the program's folder
-  // Jumps back (GOTO, END, M99) before a program is stopped as an endless loop (NCC2101).
-  uint64_t max_back_jumps = 1'000'000;
+  // Jumps back (GOTO, END, M99) before a program is stopped as an endless loop (NCC2419).
+  uint64_t max_back_jumps = 10'000;
 };
 
 // Why a session could not be opened; maps to exit code 2 (usage / configuration). Codes
@@ -80,7 +80,7 @@ class Session {
   std::filesystem::path input_;
   std::filesystem::path program_dir_;
   std::optional<std::filesystem::path> machine_file_;
-  uint64_t max_back_jumps_ = 1'000'000;
+  uint64_t max_back_jumps_ = 10'000;
   std::function<void(const SourceLocation&)> block_observer_;
 };
 

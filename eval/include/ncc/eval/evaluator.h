@@ -22,8 +22,8 @@ namespace ncc::eval {
 struct EvaluatorOptions {
   const MacroRules* rules = nullptr;  // required
   // Jumps back (GOTO to an earlier block, END, M99 repeats and restarts) before the program
-  // is stopped as an endless loop (NCC2101 at the jump).
-  uint64_t max_back_jumps = 1'000'000;
+  // is stopped as an endless loop (NCC2419 at the jump).
+  uint64_t max_back_jumps = 10'000;
   // M98 repeats in the high digits of P (M98 P30021) rather than in L.
   RepeatEncoding repeat = RepeatEncoding::LAddress;
   // Whether a block is skipped by the block-skip switch ('/'); a skipped block is not
@@ -35,6 +35,13 @@ struct EvaluatorOptions {
   // The value a G65/G66 argument word passes (`X10` without a point may mean 0.010 mm under
   // the decimal-point parameter); unset: the value as written.
   std::function<double(const ast::Word& word)> argument_value;
+  // A value computed for an address: lengths are rounded to the least input increment in force
+  // (in the input unit; unset: not rounded) and every address holds at most `address_digits`
+  // digits.
+  std::function<double()> real_increment;
+  int address_digits = 8;
+  // ADP[x]: least input increments per input unit (1000 with 0.001 mm).
+  double adp_scale = 1000.0;
 };
 
 // Why the program ended.

@@ -55,6 +55,10 @@ class Lowering {
   // length without a decimal point is in least input increments under decimal_point =
   // "standard" (`X10` = 0.010 mm); other addresses and calculator notation take the number.
   double argumentValue(const ast::Word& word) const;
+  // The least input increment of a length in the unit in force (0.001 mm, 0.0001 inch), and
+  // the digits an address holds (format_digits).
+  double leastIncrement() const;
+  int addressDigits() const;
   // End of input: finishes the sink. (None of fanuc-m, mazak-m, siemens-iso-m requires
   // M02/M30: Mazak memory operation implies M30, and the Siemens examples end without it.)
   void finish();
