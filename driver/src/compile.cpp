@@ -15,6 +15,7 @@
 #include "ncc/ir/printer.h"
 #include "ncc/passes/lowering.h"
 #include "ncc/passes/pass_manager.h"
+#include "ast_stages.h"
 #include "source_program_store.h"
 
 namespace ncc::driver {
@@ -116,7 +117,7 @@ eval::RepeatEncoding repeatEncoding(const eval::MacroRules& rules, const Machine
 // Reads blocks through the evaluator (macro statements, calls) and lowers them until the end
 // of the program: M02/M30, or a '%' after the program's first block (the end of the record).
 // What follows is never executed; it is not parsed either, and draws a warning at most.
-void lowerProgram(Session& session, ir::BlockSink& entry) {
+void lowerProgram(Session& session, ir::BlockSink& entry, AstStageTap& tap) {
   DiagnosticEngine& diags = session.diagnostics();
   const eval::MacroRules& rules = eval::macroRules(session.dialect());
   passes::LoweringOptions options;
@@ -134,12 +135,18 @@ void lowerProgram(Session& session, ir::BlockSink& entry) {
 
   eval::Variables variables(rules, commonVariables(rules, session.machine()),
                             &lowering.systemVariables());
-  // Variable writes reach the IR before the block that follows them (the VM holds #0 to
-  // #9999: the system variables above are the controller model's own).
+  // Variable writes reach the IR, one block per statement block, before the block that
+  // follows them (the VM holds #1 to #9999: the system variables above are the model's own).
   std::vector<ir::SetVariable> writes;
-  variables.on_write = [&](int64_t n, const eval::Value& v) {
-    if (n > 0 && n < bytecode::kDefaultVariableCount)
-      writes.push_back({static_cast<uint32_t>(n), v.vacant ? 0.0 : v.number, v.vacant});
+  SourceLocation writes_loc;
+  auto flushWrites = [&] {
+    if (!writes.empty()) lowering.variablesWritten(writes_loc, std::exchange(writes, {}));
+  };
+  variables.on_write = [&](int64_t n, const eval::Value& v, SourceLocation loc) {
+    if (n <= 0 || n >= bytecode::kDefaultVariableCount) return;
+    if (loc.line != writes_loc.line || loc.file != writes_loc.file) flushWrites();
+    writes_loc = loc;
+    writes.push_back({static_cast<uint32_t>(n), v.vacant ? 0.0 : v.number, v.vacant});
   };
 
   eval::EvaluatorOptions eval_options;
@@ -156,15 +163,16 @@ void lowerProgram(Session& session, ir::BlockSink& entry) {
   eval::Evaluator evaluator(std::move(eval_options), store, std::move(main), variables, diags);
 
   uint64_t unreadable = 0;
-  SourceLocation last_loc;
   while (std::optional<ast::Block> block = evaluator.next()) {
-    last_loc = block->loc;
-    if (!writes.empty()) lowering.variablesWritten(block->loc, std::exchange(writes, {}));
+    flushWrites();
     if (evaluator.rejectedBlocks() != unreadable) {
       unreadable = evaluator.rejectedBlocks();
       lowering.blockUnreadable();
     }
     if (session.blockObserver()) session.blockObserver()(block->loc);
+    // Lowered even when the pipeline stops after evaluation: the evaluator reads the state
+    // lowering keeps (positions, modal codes, offsets); the IR then goes nowhere.
+    tap.after("evaluate", *block);
     passes::LowerResult result = lowering.lower(*block);
     if (result.switch_language) evaluator.setLanguage(*result.switch_language);
     if (result.program_end) {
@@ -172,7 +180,8 @@ void lowerProgram(Session& session, ir::BlockSink& entry) {
       break;
     }
   }
-  if (!writes.empty()) lowering.variablesWritten(last_loc, std::exchange(writes, {}));
+  flushWrites();
+  tap.finish();
   // The text after the main program's end, when the program ended in the main file's reader.
   if (&evaluator.mainCursor() == evaluator.currentCursor()) {
     if (evaluator.end() == eval::ProgramEnd::EndOfRecord) afterEndOfRecord(main_reader, diags);
@@ -181,10 +190,28 @@ void lowerProgram(Session& session, ir::BlockSink& entry) {
   lowering.finish();
 }
 
+// Receives the IR and keeps nothing.
+struct DiscardingSink : ir::BlockSink {
+  void accept(ir::Block) override {}
+  void finish() override {}
+};
+
 // The pipeline of `which` from lowering to `sink`, shaped by `control` (names checked by
 // checkPassControl); `printer` receives what --print-after asks for.
 bool compileWith(Session& session, ir::BlockSink& sink, Pipeline which,
-                 const PassControl& control = {}, passes::PassPrinter* printer = nullptr) {
+                 const PassControl& control = {}, passes::PassPrinter* printer = nullptr,
+                 std::ostream* stop_out = nullptr) {
+  AstStageTap tap(control, printer, stop_out);
+  DiscardingSink discard;
+  if (!tap.lowers()) {
+    // Stopped after evaluation: lowering runs for the state it keeps, its IR is dropped.
+    passes::PipelineOptions options;
+    options.axis_count = session.machine().axisCount();
+    options.dialect = session.dialect();
+    passes::PassManager pipeline(options, session.diagnostics(), discard);
+    lowerProgram(session, pipeline.entry(), tap);
+    return !session.diagnostics().hasErrors();
+  }
   passes::PipelineOptions options;
   options.axis_count = session.machine().axisCount();
   if (which == Pipeline::Check) options.travel_limits = &session.machine();
@@ -194,15 +221,9 @@ bool compileWith(Session& session, ir::BlockSink& sink, Pipeline which,
   options.printer = printer;
   options.stop_after = control.stop_after;
   passes::PassManager pipeline(options, session.diagnostics(), sink);
-  lowerProgram(session, pipeline.entry());
+  lowerProgram(session, pipeline.entry(), tap);
   return !session.diagnostics().hasErrors();
 }
-
-// Receives the IR and keeps nothing.
-struct DiscardingSink : ir::BlockSink {
-  void accept(ir::Block) override {}
-  void finish() override {}
-};
 }  // namespace
 
 bool compileToSink(Session& session, ir::BlockSink& sink) {
@@ -228,12 +249,12 @@ bool emitAst(Session& session, std::ostream& out) {
 bool emitIr(Session& session, std::ostream& out, const PassControl& control) {
   if (control.print_after.empty()) {
     ir::PrintingSink printer(out, axisNames(session.machine()));
-    return compileWith(session, printer, Pipeline::Compile, control);
+    return compileWith(session, printer, Pipeline::Compile, control, nullptr, &out);
   }
   // The output is what the taps print; the IR leaving the last pass is not written again.
   passes::PassPrinter printer(out, axisNames(session.machine()));
   DiscardingSink discard;
-  return compileWith(session, discard, Pipeline::Compile, control, &printer);
+  return compileWith(session, discard, Pipeline::Compile, control, &printer, &out);
 }
 
 bool emitBytecode(Session& session, std::ostream& out, const PassControl& control) {

@@ -14,7 +14,7 @@ namespace ncc::driver {
 namespace {
 
 constexpr AstStage kAstStages[] = {
-    {"evaluate", "Macro B evaluation: variables, expressions, control flow", /*built=*/false},
+    {"evaluate", "Macro B evaluation: variables, expressions, control flow, calls", /*built=*/true},
 };
 
 const char* commandName(Pipeline pipeline) {

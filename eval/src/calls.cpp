@@ -336,6 +336,7 @@ bool Evaluator::Impl::ret(const Pending& p) {
     return true;
   }
   if (f.repeats_left > 0) {
+    if (!countBackJump(p.loc)) return false;  // nested repeats multiply: bounded as loops
     --f.repeats_left;
     f.loops.clear();
     f.cursor->seek(f.begin);

@@ -45,17 +45,17 @@ bool Variables::write(int64_t number, const Value& value, SourceLocation loc, Fa
   }
   if (number > 0 && number <= rules_.local_count) {
     locals_.back()[number] = value;
-    if (level() == 0 && on_write) on_write(number, value);
+    if (level() == 0 && on_write) on_write(number, value, loc);
     return true;
   }
   if (isCommon(number)) {
     common_values_[number] = value;
-    if (on_write) on_write(number, value);
+    if (on_write) on_write(number, value, loc);
     return true;
   }
   if (number >= kFirstSystemVariable && system_) {
     if (!system_->write(number, value, loc, failure)) return false;
-    if (on_write) on_write(number, value);
+    if (on_write) on_write(number, value, loc);
     return true;
   }
   failure = {EvalError::VariableNumber, loc,
@@ -82,7 +82,7 @@ std::map<int64_t, double> Variables::persistent() const {
 bool Variables::setPersistent(int64_t number, double value) {
   if (!isPersistent(number)) return false;
   common_values_[number] = Value::of(value);
-  if (on_write) on_write(number, Value::of(value));
+  if (on_write) on_write(number, Value::of(value), SourceLocation{});
   return true;
 }
 

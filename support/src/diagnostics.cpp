@@ -21,6 +21,16 @@ const char* severityName(Severity s) {
 
 void DiagnosticEngine::report(Severity severity, std::string code, SourceLocation where,
                               std::string message) {
+  if (severity == Severity::Error && error_count_ >= error_limit_) {
+    ++error_count_;  // counted, not stored (nor remembered)
+    return;
+  }
+  // A block run again (a loop, a repeated subprogram) reports its fault once.
+  if (!reported_
+           .insert(absl::StrCat(static_cast<int>(severity), "|", code, "|", where.file, ":",
+                                where.line, ":", where.column, "|", message))
+           .second)
+    return;
   if (severity == Severity::Error) {
     ++error_count_;
     if (error_count_ > error_limit_) return;

@@ -139,8 +139,22 @@ class PassesTest(ScratchDirTest):
         # Nothing written: neither the output nor a temporary file beside it.
         self.assertEqual([f for f in os.listdir(self.dir) if not f.endswith((".nc", ".toml"))], [])
 
+    def test_evaluate_prints_the_blocks_with_their_values(self):
+        prog = self.write("w.nc", "#1=2\nWHILE[#1GT0]DO1\nG91 G01 X#1 F100.\n#1=#1-1\nEND1\nM30\n")
+        proc = ncc("compile", prog, "--emit=ir", "--print-after=evaluate")
+        self.assertEqual(proc.returncode, 0, proc.stderr)
+        # The loop runs twice: the statements are gone, X holds #1's value each time.
+        self.assertEqual(proc.stdout, "; after evaluate\nG91 G1 X2. F100.\nG91 G1 X1. F100.\nM30\n")
+        stop = ncc("compile", prog, "--emit=ir", "--stop-after=evaluate")
+        self.assertEqual((stop.returncode, stop.stdout), (0, "G91 G1 X2. F100.\nG91 G1 X1. F100.\nM30\n"),
+                         stop.stderr)
+        both = ncc("compile", prog, "--emit=ir", "--print-after=evaluate,lower")
+        self.assertEqual(headers(both.stdout)[:3], ["; after lower", "; after evaluate", "; after lower"],
+                         both.stdout)
+        self.assertIn("  set #1 = 2.000", both.stdout)
+
     def test_unknown_pass_lists_the_valid_names(self):
-        listed = "; the passes of ncc compile: lower, work-to-machine"
+        listed = "; the passes of ncc compile: evaluate, lower, work-to-machine"
         self.assert_usage_error(["--emit=ir", "--print-after=bogus"], "NCC0015",
                                 "--print-after: no pass is named 'bogus'" + listed)
         self.assert_usage_error(["--emit=ir", "--print-after=lower,Lower"], "NCC0015",
@@ -149,11 +163,8 @@ class PassesTest(ScratchDirTest):
                                 "--stop-after: no pass is named 'codegen'" + listed)
         self.assert_usage_error(["--emit=ir", "--print-after=travel-check"], "NCC0015",
                                 "--print-after: pass 'travel-check' does not run in ncc compile (only in ncc check)" + listed)
-        self.assert_usage_error(["--emit=ir", "--print-after=evaluate"], "NCC0015",
-                                "--print-after: pass 'evaluate' (Macro B evaluation: variables, expressions, "
-                                "control flow) is not built yet" + listed)
         self.assert_usage_error(["--print-after=bogus"], "NCC0015",
-                                "--print-after: no pass is named 'bogus'; the passes of ncc check: lower, "
+                                "--print-after: no pass is named 'bogus'; the passes of ncc check: evaluate, lower, "
                                 "work-to-machine, travel-check", command="check")
 
     def test_a_print_after_the_stop_is_refused(self):

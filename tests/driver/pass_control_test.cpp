@@ -11,9 +11,10 @@ namespace ncc::driver {
 namespace {
 
 TEST(PipelineStages, EachCommandsPassesInOrder) {
-  EXPECT_EQ(pipelineStages(Pipeline::Compile), (std::vector<std::string>{"lower", "work-to-machine"}));
+  EXPECT_EQ(pipelineStages(Pipeline::Compile),
+            (std::vector<std::string>{"evaluate", "lower", "work-to-machine"}));
   EXPECT_EQ(pipelineStages(Pipeline::Check),
-            (std::vector<std::string>{"lower", "work-to-machine", "travel-check"}));
+            (std::vector<std::string>{"evaluate", "lower", "work-to-machine", "travel-check"}));
 }
 
 TEST(CheckPassControl, AcceptsThePipelinesNamesOnly) {
@@ -26,7 +27,7 @@ TEST(CheckPassControl, AcceptsThePipelinesNamesOnly) {
   EXPECT_EQ(checkPassControl(travel, Pipeline::Check), std::nullopt);
   EXPECT_EQ(checkPassControl(travel, Pipeline::Compile),
             "--stop-after: pass 'travel-check' does not run in ncc compile (only in ncc check); "
-            "the passes of ncc compile: lower, work-to-machine");
+            "the passes of ncc compile: evaluate, lower, work-to-machine");
   PassControl late;
   late.stop_after = "lower";
   late.print_after = {"lower", "travel-check"};
@@ -35,16 +36,20 @@ TEST(CheckPassControl, AcceptsThePipelinesNamesOnly) {
             "(--stop-after)");
 }
 
-TEST(AstStages, EvaluateIsNamedButNotBuiltYet) {
+TEST(AstStages, EvaluateComesBeforeLowering) {
   const AstStage* evaluate = findAstStage("evaluate");
   ASSERT_NE(evaluate, nullptr);
-  EXPECT_FALSE(evaluate->built);
+  EXPECT_TRUE(evaluate->built);
   PassControl control;
-  control.print_after = {"evaluate"};
-  std::optional<std::string> why = checkPassControl(control, Pipeline::Compile);
+  control.print_after = {"evaluate", "lower"};
+  control.stop_after = "lower";
+  EXPECT_EQ(checkPassControl(control, Pipeline::Compile), std::nullopt);
+  PassControl late;
+  late.stop_after = "evaluate";
+  late.print_after = {"lower"};
+  std::optional<std::string> why = checkPassControl(late, Pipeline::Compile);
   ASSERT_TRUE(why);
-  EXPECT_NE(why->find("pass 'evaluate' (Macro B evaluation"), std::string::npos) << *why;
-  EXPECT_NE(why->find(") is not built yet;"), std::string::npos) << *why;
+  EXPECT_NE(why->find("the pipeline stops after 'evaluate'"), std::string::npos) << *why;
 }
 
 // What the driver's block loop sees through the hook, for a stage before lowering.

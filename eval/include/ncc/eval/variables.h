@@ -47,7 +47,7 @@ class Variables final : public VariableReader {
 
   // Every write of a variable the program keeps (commons, the main level's locals, system
   // variables the model stores), in program order: the IR records them for the VM.
-  std::function<void(int64_t number, const Value& value)> on_write;
+  std::function<void(int64_t number, const Value& value, SourceLocation loc)> on_write;
 
   // Commons from rules.persistent_first on (the variables file of --vars).
   std::map<int64_t, double> persistent() const;

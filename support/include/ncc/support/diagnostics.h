@@ -6,6 +6,7 @@
 #include <ostream>
 #include <string>
 #include <string_view>
+#include <unordered_set>
 #include <vector>
 
 #include "ncc/support/source_location.h"
@@ -29,6 +30,7 @@ class DiagnosticEngine {
  public:
   explicit DiagnosticEngine(const SourceManager* sources = nullptr) : sources_(sources) {}
 
+  // The same diagnostic (severity, code, location, message) twice is reported once.
   void report(Severity severity, std::string code, SourceLocation where, std::string message);
   void error(std::string code, SourceLocation where, std::string message) {
     report(Severity::Error, std::move(code), where, std::move(message));
@@ -40,6 +42,7 @@ class DiagnosticEngine {
   // Forgets every diagnostic (a new phase, e.g. the run after a compile, reports afresh).
   void clear() {
     diagnostics_.clear();
+    reported_.clear();
     error_count_ = 0;
   }
 
@@ -66,6 +69,7 @@ class DiagnosticEngine {
 
   const SourceManager* sources_;
   std::vector<Diagnostic> diagnostics_;
+  std::unordered_set<std::string> reported_;  // each diagnostic once (report())
   size_t error_count_ = 0;
   size_t error_limit_ = 200;
 };
