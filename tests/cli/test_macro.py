@@ -1,0 +1,193 @@
+#!/usr/bin/env python3
+"""End-to-end tests of Macro B and subprograms (issue 22) through the ncc CLI: variables and
+their values at the end of a run, control flow, calls found in the file and in the program
+folder, and bad input: each fault is the controller's alarm (or an NCC code where the manual
+gives none) at the offending block, exit 1, and no output file.
+
+Run by ctest as: test_macro.py NCC_BINARY
+"""
+import json
+import os
+import re
+import subprocess
+import sys
+import unittest
+
+from cli_harness import ScratchDirTest
+
+NCC = None
+DIAGNOSTIC = re.compile(r"^(?P<file>.+):(?P<line>\d+):(?P<col>\d+): (?P<severity>error|warning)\[(?P<code>[^\]]+)\]: (?P<message>.*)$")
+
+
+def ncc(*args, cwd=None):
+    return subprocess.run([NCC, *args], capture_output=True, text=True, errors="replace",
+                          timeout=120, cwd=cwd)
+
+
+def errors(stderr):
+    found = [m.groupdict() for m in map(DIAGNOSTIC.match, stderr.splitlines()) if m]
+    return [(d["line"], d["col"], d["code"]) for d in found if d["severity"] == "error"]
+
+
+class MacroTest(ScratchDirTest):
+    def run_vars(self, name, text, *extra):
+        prog = self.write(name, text)
+        out = self.path("vars.json")
+        proc = ncc("run", prog, "--emit=vars", "-o", out, *extra)
+        self.assertEqual(proc.returncode, 0, proc.stderr)
+        with open(out) as f:
+            return json.load(f)
+
+    def moves(self, prog, *extra, cwd=None):
+        proc = ncc("run", prog, "--emit=moves", *extra, cwd=cwd)
+        self.assertEqual(proc.returncode, 0, proc.stderr)
+        return [json.loads(line) for line in proc.stdout.splitlines()]
+
+    def assert_alarm(self, name, text, line, code, *extra, col=None, dialect="mazak-m"):
+        """The program is refused with `code` at `line` (and `col`), and -o writes nothing."""
+        prog = self.write(name, text)
+        out = self.path(name + ".ncb")
+        proc = ncc("compile", prog, "--dialect", dialect, "-o", out, *extra)
+        self.assertEqual(proc.returncode, 1, proc.stderr)
+        found = errors(proc.stderr)
+        self.assertTrue(found, proc.stderr)
+        self.assertEqual((found[0][0], found[0][2]), (str(line), code), proc.stderr)
+        if col is not None:
+            self.assertEqual(found[0][1], str(col), proc.stderr)
+        self.assertFalse(os.path.exists(out))
+        return proc.stderr
+
+    # ---- values ------------------------------------------------------------------------------
+
+    def test_vars_hold_the_values_the_program_left(self):
+        got = self.run_vars("v.nc", "#100=3\n#101=#100*2+1\n#102=SQRT[16]\n#500=#0\n"
+                                    "#103=ATAN[1]/[1]\n#104=[#101 GT #100]\nM30\n",
+                            "--dialect", "fanuc-m")
+        self.assertEqual(got, {"#100": 3.0, "#101": 7.0, "#102": 4.0, "#103": 45.0, "#104": 1.0})
+
+    def test_a_vacant_variable_drops_its_address(self):
+        # §13-9-3: G0 X#1 Y1000. with #1 vacant is G0 Y1000.
+        prog = self.write("d.nc", "G90 G00 X5. Y0\nG00 X#1 Y10.\nM30\n")
+        got = self.moves(prog, "--dialect", "mazak-m")
+        self.assertEqual([m["to"]["X"] for m in got if m["kind"] == "rapid"], [5.0, 5.0])
+        self.assertEqual([m["to"]["Y"] for m in got if m["kind"] == "rapid"], [0.0, 10.0])
+
+    def test_variable_values_are_lengths_with_a_point(self):
+        # Under decimal_point = "standard", X10 is 0.010 mm but X#1 with #1 = 10 is 10 mm.
+        prog = self.write("p.nc", "#1=10\nG90 G00 X#1\nG00 X10\nM30\n")
+        got = self.moves(prog, "--dialect", "fanuc-m")
+        self.assertEqual([m["to"]["X"] for m in got], [10.0, 0.01])
+
+    # ---- control flow ------------------------------------------------------------------------
+
+    def test_while_loop_moves_and_counts(self):
+        prog = self.write("w.nc", "#1=0\nG91\nWHILE[#1LT3]DO1\nG01 X1. F100.\n#1=#1+1\nEND1\n"
+                                  "#100=#1\nM30\n")
+        got = self.moves(prog, "--dialect", "fanuc-m")
+        self.assertEqual([m["to"]["X"] for m in got if m["kind"] == "line"], [1.0, 2.0, 3.0])
+
+    def test_nested_loops_with_the_same_number_after_each_other(self):
+        got = self.run_vars("n.nc", "#100=0\n#1=0\nWHILE[#1LT2]DO1\n#2=0\nWHILE[#2LT3]DO2\n"
+                                    "#100=#100+1\n#2=#2+1\nEND2\n#1=#1+1\nEND1\n"
+                                    "WHILE[#1GT0]DO1\n#1=#1-1\nEND1\nM30\n", "--dialect", "mazak-m")
+        self.assertEqual(got["#100"], 6.0)
+
+    def test_a_loop_skipped_when_false_at_once(self):
+        got = self.run_vars("s.nc", "#100=1\nWHILE[#100GT5]DO1\n#100=99\nEND1\n#101=2\nM30\n",
+                            "--dialect", "mazak-m")
+        self.assertEqual(got, {"#100": 1.0, "#101": 2.0})
+
+    def test_an_endless_loop_stops_at_the_limit_at_its_jump(self):
+        self.assert_alarm("e.nc", "N1 #100=1\nGOTO1\nM30\n", 2, "NCC2419", "--max-back-jumps", "50")
+
+    # ---- calls -------------------------------------------------------------------------------
+
+    def test_m98_finds_the_program_in_the_folder_by_name_and_by_its_o_number(self):
+        self.write("O1234.nc", "O1234\nG91 G01 X1. F100.\nM99\n")
+        self.write("other.nc", "%\nO5678\nG91 G01 Y1. F100.\nM99\n%\n")
+        prog = self.write("main.nc", "G90 G00 X0 Y0\nM98 P1234 L2\nM98 P5678\nG90 G00 X0 Y0\nM30\n")
+        got = self.moves(prog, "--dialect", "mazak-m")
+        self.assertEqual([(m["to"]["X"], m["to"]["Y"]) for m in got if m["kind"] == "line"],
+                         [(1.0, 0.0), (2.0, 0.0), (2.0, 1.0)])
+
+    def test_fanuc_repeat_count_in_the_high_digits_of_p(self):
+        self.write("O0021.nc", "O0021\n#100=#100+1\nM99\n")
+        got = self.run_vars("m.nc", "#100=0\nM98 P30021\nM30\n", "--dialect", "fanuc-m")
+        self.assertEqual(got["#100"], 3.0)
+
+    def test_g65_arguments_are_locals_of_their_own_level(self):
+        got = self.run_vars("g.nc", "#1=5\nG65 P9000 A1. B2. I3. J4. I5.\n#100=#1\nM30\n"
+                                    "O9000\n#101=#1+#2\n#102=#4\n#103=#7\n#104=#5\n#1=99\nM99\n",
+                            "--dialect", "fanuc-m")
+        # Specification II: the second I is #7; the caller's #1 is untouched by the macro's.
+        self.assertEqual(got, {"#1": 5.0, "#100": 5.0, "#101": 3.0, "#102": 3.0, "#103": 5.0,
+                               "#104": 4.0})
+
+    def test_m99_p_returns_to_a_sequence_number_of_the_caller(self):
+        got = self.run_vars("r.nc", "#100=0\nM98 P10\n#100=1\nN50 #101=2\nM30\nO10\nM99 P50\n",
+                            "--dialect", "mazak-m")
+        self.assertEqual(got, {"#100": 0.0, "#101": 2.0})
+
+    def test_m98_h_calls_a_sequence_of_the_same_program(self):
+        got = self.run_vars("h.nc", "#100=0\nM98 H20\nM98 H20\nGOTO 99\nN20 #100=#100+1\nM99\n"
+                                    "N99 M30\n", "--dialect", "mazak-m")
+        self.assertEqual(got["#100"], 2.0)
+
+    def test_g66_1_calls_the_macro_for_every_block(self):
+        got = self.run_vars("c.nc", "#100=0\nG66.1 P9100\nX1.\nY2.\nG67\nM30\n"
+                                    "O9100\n#100=#100+1\n#[100+#100]=#24+#25\nM99\n",
+                            "--dialect", "mazak-m")
+        self.assertEqual(got, {"#100": 2.0, "#101": 1.0, "#102": 2.0})
+
+    def test_words_before_m98_run_first(self):
+        # Mazak §13-4: `X100. M98 P100` moves, then calls.
+        prog = self.write("o.nc", "G90 G00 X5. M98 P7\nM30\nO7\nG00 Y3.\nM99\n")
+        got = self.moves(prog, "--dialect", "mazak-m")
+        self.assertEqual([(m["to"]["X"], m["to"]["Y"]) for m in got], [(5.0, 0.0), (5.0, 3.0)])
+
+    def test_system_variables_read_the_controller_model(self):
+        machine = self.write("m.toml", "[machine]\naxes = [\"X\", \"Y\", \"Z\"]\n"
+                                       "[machine.work]\nG55 = [10.0, 20.0, 30.0]\n"
+                                       "[machine.offsets]\nH3 = 7.5\n")
+        got = self.run_vars("s.nc", "G90 G55 G00 X1. Y2.\n#100=#5001\n#101=#5242\n#102=#2003\n"
+                                    "#103=#4012\n#2003=8.5\nG43 H3 Z0\n#104=#5023\n#105=#5003\nM30\n",
+                            "--dialect", "mazak-m", "--machine", machine)
+        self.assertEqual(got["#100"], 1.0)    # end point X, work coordinates
+        self.assertEqual(got["#101"], 20.0)   # G55 Y (#5241 + 20 k + axis)
+        self.assertEqual(got["#102"], 7.5)    # H3 length geometry
+        self.assertEqual(got["#103"], 55.0)   # Mazak group 12: G55
+        self.assertEqual(got["#104"], 38.5)   # machine Z = G55 30 + H3 8.5 (the value just written)
+        self.assertEqual(got["#105"], 0.0)
+        self.assertEqual(got["#2003"], 8.5)
+
+    # ---- bad input ---------------------------------------------------------------------------
+
+    def test_each_fault_is_the_controllers_alarm_at_its_block(self):
+        self.assert_alarm("vn.nc", "#1=1\n#[0-5]=1\nM30\n", 2, "NCC2400")   # negative number
+        self.assert_alarm("vs.nc", "#1=#20000\nM30\n", 1, "NCC2400", dialect="fanuc-m")
+        self.assert_alarm("dz.nc", "#1=0\n#2=5/#1\nM30\n", 2, "860")
+        self.assert_alarm("ln.nc", "#1=LN[-5]\nM30\n", 1, "860")
+        self.assert_alarm("ed.nc", "#1=1\nEND1\nM30\n", 2, "NCC2407")
+        self.assert_alarm("dn.nc", "WHILE[1]DO1\nWHILE[1]DO2\nWHILE[1]DO3\nWHILE[1]DO1\nM30\n", 4,
+                          "NCC2408", dialect="fanuc-m")
+        self.assert_alarm("gt.nc", "#1=1\nGOTO 77\nM30\n", 2, "843")
+        self.assert_alarm("sp.nc", "M98 P4321\nM30\n", 1, "844", col=1)
+        self.assert_alarm("cn.nc", "M98 P10\nM30\nO10\nM98 P10\nM99\n", 4, "842")
+        self.assert_alarm("ua.nc", "#3000=25 (TOOL BROKEN)\nM30\n", 1, "3025")
+        self.assert_alarm("ub.nc", "#3000=5\nM30\n", 1, "984")
+        self.assert_alarm("g67.nc", "G67\nM30\n", 1, "857")
+        self.assert_alarm("w0.nc", "#0=1\nM30\n", 1, "NCC2401")
+        self.assert_alarm("lp.nc", "WHILE[0]DO1\n#1=1\nM30\n", 1, "NCC2410")
+
+    def test_the_user_alarm_message_is_shown(self):
+        stderr = self.assert_alarm("ua.nc", "#3000=25 (TOOL BROKEN)\nM30\n", 1, "3025")
+        self.assertIn("TOOL BROKEN", stderr)
+
+    def test_a_run_time_variable_is_refused_clearly(self):
+        stderr = self.assert_alarm("rt.nc", "#100=#3001\nM30\n", 1, "NCC2400")
+        self.assertIn("known only when the program runs", stderr)
+
+
+if __name__ == "__main__":
+    NCC = sys.argv.pop(1)
+    unittest.main(verbosity=2)
