@@ -11,6 +11,7 @@
 #include "ncc/eval/evaluator.h"
 #include "ncc/eval/macro_rules.h"
 #include "ncc/eval/variables.h"
+#include "ncc/driver/variables_file.h"
 #include "ncc/frontend/block_reader.h"
 #include "ncc/ir/printer.h"
 #include "ncc/passes/lowering.h"
@@ -95,15 +96,22 @@ void afterProgramEnd(frontend::BlockReader& reader, DiagnosticEngine& diags) {
                 "text after the end of the program (M02/M30) is never executed and is ignored");
 }
 
-// The common variables in force: the dialect's, or the set the machine file names
-// (common_variables, Mazak's A-D).
-std::vector<eval::VariableRange> commonVariables(const eval::MacroRules& rules,
-                                                 const MachineConfig& machine) {
-  std::span<const eval::VariableRange> ranges = rules.commons;
-  if (const eval::MacroRules::CommonSet* set =
-          rules.commonSet(machine.params.getString("common_variables", "")))
-    ranges = set->ranges;
-  return std::vector<eval::VariableRange>(ranges.begin(), ranges.end());
+// --vars FILE: the values kept from the last run; false after reporting (NCC0017).
+bool loadSavedVariables(Session& session, eval::Variables& variables) {
+  if (!session.variablesFile()) return true;
+  std::optional<std::map<int64_t, SavedVariable>> saved =
+      readVariablesFile(*session.variablesFile(), session.sources(), session.diagnostics());
+  if (!saved) return false;
+  bool ok = true;
+  for (const auto& [n, v] : *saved) {
+    if (variables.setPersistent(n, v.value)) continue;
+    session.diagnostics().error(
+        "NCC0017", v.where,
+        absl::StrCat("#", n, " is not a variable the controller keeps across runs (its "
+                     "persistent common variables)"));
+    ok = false;
+  }
+  return ok;
 }
 
 // M98's repeat count: the dialect's, unless the machine takes 8-digit program numbers
@@ -135,6 +143,10 @@ void lowerProgram(Session& session, ir::BlockSink& entry, AstStageTap& tap) {
 
   eval::Variables variables(rules, commonVariables(rules, session.machine()),
                             &lowering.systemVariables());
+  if (!loadSavedVariables(session, variables)) {
+    lowering.finish();
+    return;
+  }
   // Variable writes reach the IR, one block per statement block, before the block that
   // follows them (the VM holds #1 to #9999: the system variables above are the model's own).
   std::vector<ir::SetVariable> writes;

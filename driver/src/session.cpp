@@ -48,6 +48,7 @@ std::optional<SetupError> Session::open(const std::filesystem::path& input,
   // --dialect, else the machine file's [machine] dialect, else from the file name.
   const Dialect by_name = from_stdin ? Dialect::FanucM : dialectFromFileName(input.filename().string());
   max_back_jumps_ = options.max_back_jumps;
+  variables_file_ = options.variables_file;
   if (options.machine_file) {
     if (std::optional<SetupError> error = unreadable(*options.machine_file)) {
       error->code = "NCC0003";
@@ -87,11 +88,14 @@ std::optional<SetupError> Session::open(const std::filesystem::path& input,
 std::vector<InputFile> Session::inputFiles() const {
   std::vector<InputFile> files;
   if (machine_file_) files.push_back({*machine_file_, "the machine file"});
+  if (variables_file_) files.push_back({*variables_file_, "the variables file"});
   for (uint32_t id = 1; id <= sources_.fileCount(); ++id) {
     if (sources_.buffer(id)) continue;  // stdin
     const std::filesystem::path& path = sources_.path(id);
     if (id == main_file_) files.push_back({path, "the program"});
-    else if (!machine_file_ || path != *machine_file_) files.push_back({path, "the subprogram"});
+    else if ((!machine_file_ || path != *machine_file_) &&
+             (!variables_file_ || path != *variables_file_))
+      files.push_back({path, "the subprogram"});
   }
   return files;
 }

@@ -160,6 +160,43 @@ class MacroTest(ScratchDirTest):
         self.assertEqual(got["#105"], 0.0)
         self.assertEqual(got["#2003"], 8.5)
 
+    # ---- variables file ----------------------------------------------------------------------
+
+    def test_vars_file_keeps_the_persistent_commons_between_runs(self):
+        prog = self.write("c.nc", "#500=#500+1\n#100=#500\nM30\n")
+        saved = self.path("v.toml")
+        for expected in (1.0, 2.0):
+            got = self.run_vars("c.nc", "#500=#500+1\n#100=#500\nM30\n", "--vars", saved)
+            self.assertEqual(got["#500"], expected)
+            with open(saved) as f:
+                text = f.read()
+            self.assertIn(f'"#500" = {expected}', text)
+            self.assertNotIn("#100", text)  # not kept through power-off on FANUC
+
+    def test_vars_file_is_not_written_after_an_alarm(self):
+        saved = self.write("v.toml", '"#500" = 4.0\n')
+        prog = self.write("a.nc", "#500=9\nG95 G01 X1. F1.\nM30\n")  # no spindle: alarm
+        proc = ncc("run", prog, "--vars", saved)
+        self.assertEqual(proc.returncode, 3, proc.stderr)
+        with open(saved) as f:
+            self.assertEqual(f.read(), '"#500" = 4.0\n')
+
+    def test_bad_vars_files(self):
+        prog = self.write("p.nc", "#1=#500\nM30\n")
+        for text, line, col in (('"#100" = 1.0\n', 1, 1), ('"#500" = "x"\n', 1, 10),
+                                ('"#500 = 1\n', 1, 1), ('x = 1.0\n', 1, 1)):
+            saved = self.write("bad.toml", text)
+            proc = ncc("compile", prog, "--vars", saved, "-o", self.path("p.ncb"))
+            self.assertEqual(proc.returncode, 1, proc.stderr)
+            found = errors(proc.stderr)
+            self.assertEqual(found[0][2], "NCC0017", proc.stderr)
+            self.assertEqual(found[0][0], str(line), proc.stderr)
+            self.assertFalse(os.path.exists(self.path("p.ncb")))
+        ncb = self.write("q.ncb", b"")
+        proc = ncc("run", ncb, "--vars", self.path("v.toml"))
+        self.assertEqual(proc.returncode, 2, proc.stderr)
+        self.assertIn("NCC0018", proc.stderr)
+
     # ---- bad input ---------------------------------------------------------------------------
 
     def test_each_fault_is_the_controllers_alarm_at_its_block(self):

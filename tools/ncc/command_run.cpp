@@ -14,6 +14,7 @@
 #include "absl/strings/str_split.h"
 #include "absl/strings/str_format.h"
 #include "cli.h"
+#include "ncc/driver/variables_file.h"
 #include "pending_output.h"
 #include "progress.h"
 #include "run_summary.h"
@@ -144,6 +145,17 @@ class RunObserver : public vm::EventObserver {
   vm::SourcePosition last_;
 };
 
+// --vars FILE: the persistent common variables the run left, written back whole or not at all.
+bool saveVariables(driver::Session& session, const driver::SimulationResult& sim) {
+  std::vector<driver::InputFile> inputs;
+  for (const driver::InputFile& f : session.inputFiles())
+    if (f.path != *session.variablesFile()) inputs.push_back(f);
+  PendingOutput out;
+  if (!out.open(session.variablesFile()->string(), inputs)) return false;
+  driver::writeVariablesFile(out.stream(), driver::persistentVariables(session, sim.variables));
+  return out.commit();
+}
+
 // Every output mode runs the program through the whole controller (executor, planner,
 // interpolator, servo model): the same checks, so the same alarm and exit code whatever is
 // emitted. What an alarm leaves (docs/cli.md, "Output files"): the summary says it in its
@@ -210,12 +222,18 @@ int runController(driver::Session& session, const bytecode::Program& program, co
     printDiagnostics(session);
   }
   if (!written) return kUsage;
+  if (!sim.alarm && session.variablesFile() && !saveVariables(session, sim)) return kUsage;
   return sim.alarm ? kRuntimeAlarm : kOk;
 }
 
 int runRun(const RunArgs& args) {
   driver::Session session;
   if (std::optional<int> failed = openSession(session, args.input, args.common)) return *failed;
+  if (session.variablesFile() && driver::isBytecodeInput(session)) {
+    printError("NCC0018", "--vars needs a source program: a bytecode file's variables were fixed "
+                          "when it was compiled");
+    return kUsage;
+  }
   bytecode::Program program;
   bool loaded = false;
   std::optional<driver::SetupError> no_scratch;  // NCC0004: $TMPDIR unusable

@@ -20,6 +20,9 @@ void CommonOptions::addTo(CLI::App& command) {
                      "jumps back (GOTO, END, M99) before a program is stopped as an endless "
                      "loop (NCC2419; default 10000)")
       ->check(CLI::Range(uint64_t{1}, uint64_t{1'000'000'000'000}));
+  command.add_option("--vars", vars_file,
+                     "variables file: the persistent common variables (#500.. on FANUC) loaded "
+                     "before compiling; ncc run writes them back after a run without alarm");
 }
 
 std::optional<std::string> CommonOptions::toSessionOptions(driver::SessionOptions& out) const {
@@ -34,6 +37,7 @@ std::optional<std::string> CommonOptions::toSessionOptions(driver::SessionOption
   if (!machine_file.empty()) out.machine_file = machine_file;
   if (!program_dir.empty()) out.program_dir = program_dir;
   out.max_back_jumps = max_back_jumps;
+  if (!vars_file.empty()) out.variables_file = vars_file;
   return std::nullopt;
 }
 

@@ -21,6 +21,8 @@ struct SessionOptions {
   std::optional<std::filesystem::path> program_dir;   // default: the program's folder
   // Jumps back (GOTO, END, M99) before a program is stopped as an endless loop (NCC2419).
   uint64_t max_back_jumps = 10'000;
+  // --vars FILE: persistent common variables loaded before compiling (variables_file.h).
+  std::optional<std::filesystem::path> variables_file;
 };
 
 // Why a session could not be opened; maps to exit code 2 (usage / configuration). Codes
@@ -60,6 +62,7 @@ class Session {
   const std::filesystem::path& input() const { return input_; }
   const std::filesystem::path& programDir() const { return program_dir_; }
   uint64_t maxBackJumps() const { return max_back_jumps_; }
+  const std::optional<std::filesystem::path>& variablesFile() const { return variables_file_; }
   // The standard input's bytes when the input is "-", else nullptr.
   const std::string* stdinContents() const { return sources_.buffer(main_file_); }
   // Every file on disk the session reads: the program (source or bytecode), the subprograms
@@ -81,6 +84,7 @@ class Session {
   std::filesystem::path program_dir_;
   std::optional<std::filesystem::path> machine_file_;
   uint64_t max_back_jumps_ = 10'000;
+  std::optional<std::filesystem::path> variables_file_;
   std::function<void(const SourceLocation&)> block_observer_;
 };
 
