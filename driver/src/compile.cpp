@@ -1,5 +1,7 @@
 #include "ncc/driver/compile.h"
 
+#include <cctype>
+#include <charconv>
 #include <fstream>
 #include <string_view>
 #include <utility>
@@ -114,6 +116,33 @@ bool loadSavedVariables(Session& session, eval::Variables& variables) {
   return ok;
 }
 
+// The machine file's code macros: g_code_macros and m_code_macros, "G100"/"M6" -> program.
+// A key is the code as written (`M06` is M6); a key that is no code of its kind is an error.
+std::map<std::string, std::string> codeMacros(const MachineConfig& machine,
+                                              DiagnosticEngine& diags) {
+  std::map<std::string, std::string> out;
+  for (const auto& [param, letter] : {std::pair{"g_code_macros", 'G'}, std::pair{"m_code_macros", 'M'}})
+    if (const ParamStringTable* t = machine.params.getStringTable(param))
+      for (const auto& [code, program] : t->by_key) {
+        int64_t n = -1;
+        const bool letter_ok =
+            !code.empty() && std::toupper(static_cast<unsigned char>(code[0])) == letter;
+        const char* digits = code.data() + (code.empty() ? 0 : 1);
+        auto [end, ec] = std::from_chars(digits, code.data() + code.size(), n);
+        if (!letter_ok || ec != std::errc() || end != code.data() + code.size() || n < 0 ||
+            program.empty()) {
+          diags.error("NCC0308", SourceLocation{},
+                      absl::StrCat("[machine.params] ", param, ": '", code, "' = '", program,
+                                   "' is not a ", std::string(1, letter),
+                                   " code calling a program (e.g. ", std::string(1, letter),
+                                   letter == 'M' ? "6" : "100", " = \"9020\")"));
+          continue;
+        }
+        out[absl::StrCat(std::string(1, letter), n)] = program;
+      }
+  return out;
+}
+
 // M98's repeat count: the dialect's, unless the machine takes 8-digit program numbers
 // (Sinumerik MD20734 bit 6: the count is then in L).
 eval::RepeatEncoding repeatEncoding(const eval::MacroRules& rules, const MachineConfig& machine) {
@@ -172,6 +201,7 @@ void lowerProgram(Session& session, ir::BlockSink& entry, AstStageTap& tap) {
   eval_options.argument_value = [&](const ast::Word& w) { return lowering.argumentValue(w); };
   eval_options.real_increment = [&] { return lowering.leastIncrement(); };
   eval_options.address_digits = lowering.addressDigits();
+  eval_options.code_macros = codeMacros(session.machine(), diags);
   eval::Evaluator evaluator(std::move(eval_options), store, std::move(main), variables, diags);
 
   uint64_t unreadable = 0;

@@ -1,5 +1,7 @@
 #include "source_program_store.h"
 
+#include <algorithm>
+
 namespace ncc::driver {
 
 namespace {
@@ -34,7 +36,26 @@ SourceProgramStore::SourceProgramStore(SourceManager& sources, DiagnosticEngine&
     : sources_(sources),
       diags_(diags),
       options_(options),
-      library_(sources, std::move(program_dir), std::move(name_patterns), options) {}
+      library_(sources, program_dir, name_patterns, options),
+      folder_(std::move(program_dir)) {
+  for (const std::string& pattern : name_patterns) {
+    const std::string ext = std::filesystem::path(pattern).extension().string();
+    if (!ext.empty() && std::find(extensions_.begin(), extensions_.end(), ext) == extensions_.end())
+      extensions_.push_back(ext);
+  }
+}
+
+std::optional<eval::ProgramPoint> SourceProgramStore::findProgramNamed(std::string_view name) {
+  if (folder_.empty() || name.empty() || name.find('/') != std::string_view::npos) return std::nullopt;
+  std::vector<std::filesystem::path> candidates{folder_ / std::string(name)};
+  for (const std::string& ext : extensions_) candidates.push_back(folder_ / (std::string(name) + ext));
+  for (const std::filesystem::path& path : candidates) {
+    std::error_code ec;
+    if (!std::filesystem::is_regular_file(path, ec)) continue;
+    return eval::ProgramPoint{sources_.addFile(path), {}};
+  }
+  return std::nullopt;
+}
 
 std::unique_ptr<eval::BlockCursor> SourceProgramStore::open(uint32_t file) {
   return std::make_unique<ReaderCursor>(sources_, file, diags_, options_);

@@ -23,6 +23,7 @@ class SourceProgramStore final : public eval::ProgramStore {
 
   std::unique_ptr<eval::BlockCursor> open(uint32_t file) override;
   std::optional<eval::ProgramPoint> findProgram(int64_t number, uint32_t calling_file) override;
+  std::optional<eval::ProgramPoint> findProgramNamed(std::string_view name) override;
   std::optional<eval::ProgramPoint> findSequence(int64_t n, const eval::ProgramPoint& from,
                                                  eval::SequenceSearch order,
                                                  const eval::ProgramPoint& begin,
@@ -38,6 +39,8 @@ class SourceProgramStore final : public eval::ProgramStore {
   DiagnosticEngine& diags_;
   frontend::ReaderOptions options_;
   frontend::ProgramLibrary library_;
+  std::filesystem::path folder_;
+  std::vector<std::string> extensions_;  // of the name patterns: ".nc", ".spf", ...
 };
 
 }  // namespace ncc::driver

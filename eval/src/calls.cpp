@@ -1,6 +1,7 @@
 // Calls and returns: M98 (subprogram), M99 (return, repeat, restart), G65 (macro call),
 // G66/G66.1 (modal macro calls) and G67. A call opens a frame on the stack of programs; a
 // macro call also opens a level of locals holding its arguments.
+#include <charconv>
 #include <cmath>
 #include <utility>
 
@@ -50,7 +51,59 @@ std::optional<ast::Word> take(std::vector<ast::Word>& words, char address) {
   return std::nullopt;
 }
 
+Pending macroCall(int64_t program, int64_t repeats, Variables::Locals arguments,
+                  SourceLocation loc, const ProgramPoint& at) {
+  Pending p;
+  p.kind = Pending::Kind::Call;
+  p.program = program;
+  p.repeats = repeats;
+  p.macro = true;
+  p.arguments = std::move(arguments);
+  p.loc = loc;
+  p.at = at;
+  return p;
+}
+
+// "M6", "G100": the code a word is, as the machine file names code macros.
+std::string codeName(const ast::Word& w) {
+  if (w.address.size() != 1 || !isLiteral(w.value)) return {};
+  const double v = literalValue(w.value);
+  if (v < 0 || v != std::floor(v) || v > 99999999) return {};
+  return absl::StrCat(w.address, static_cast<int64_t>(v));
+}
+
 }  // namespace
+
+bool Evaluator::Impl::codeMacro(ast::Block& block, const ProgramPoint& at, bool& consumed) {
+  for (size_t i = 0; i < block.words.size(); ++i) {
+    const ast::Word& w = block.words[i];
+    if (w.address != "M" && w.address != "G") continue;
+    const std::string code = codeName(w);
+    auto it = options.code_macros.find(code);
+    if (it == options.code_macros.end()) continue;
+    // Inside its own macro the code is the plain code (Mazak §13-9-2, Sinumerik §3.6.4).
+    bool inside = false;
+    for (const Frame& f : frames) inside = inside || f.code == code;
+    if (inside) continue;
+    const SourceLocation loc = w.loc;
+    block.words.erase(block.words.begin() + static_cast<std::ptrdiff_t>(i));
+    std::optional<Variables::Locals> args = arguments(block.words, false);
+    if (!args) return false;
+    Pending p = macroCall(0, 1, std::move(*args), loc, at);
+    int64_t number = 0;
+    const std::string& target = it->second;
+    auto [end, ec] = std::from_chars(target.data(), target.data() + target.size(), number);
+    if (ec == std::errc() && end == target.data() + target.size())
+      p.program = number;
+    else
+      p.name = target;
+    p.code = code;
+    pending.push_back(std::move(p));
+    consumed = true;
+    return true;
+  }
+  return true;
+}
 
 std::optional<Variables::Locals> Evaluator::Impl::arguments(const std::vector<ast::Word>& words,
                                                             bool every_block) {
@@ -99,13 +152,16 @@ bool Evaluator::Impl::callWords(ast::Block& block, const ProgramPoint& at, bool&
       const ModalCall& mc = modal_calls.back();
       std::optional<Variables::Locals> args = arguments(block.words, /*every_block=*/true);
       if (!args) return false;
-      pending.push_back({Pending::Kind::Call, mc.program, std::nullopt, mc.repeats, true,
-                         std::move(*args), block.loc, at});
+      pending.push_back(macroCall(mc.program, mc.repeats, std::move(*args), block.loc, at));
       consumed = true;
       return true;
     }
   }
 
+  if (!options.code_macros.empty()) {
+    if (!codeMacro(block, at, consumed)) return false;
+    if (consumed) return true;
+  }
   CallCode code = CallCode::None;
   SourceLocation code_loc;
   for (size_t i = 0; i < block.words.size(); ++i) {
@@ -156,8 +212,7 @@ bool Evaluator::Impl::callWords(ast::Block& block, const ProgramPoint& at, bool&
       if (!args) return false;
       consumed = true;
       if (code == CallCode::G65) {
-        pending.push_back({Pending::Kind::Call, *program, std::nullopt, repeats, true,
-                           std::move(*args), code_loc, at});
+        pending.push_back(macroCall(*program, repeats, std::move(*args), code_loc, at));
       } else {
         modal_calls.push_back(
             {*program, std::move(*args), repeats, code == CallCode::G661, frames.size(), code_loc});
@@ -235,8 +290,9 @@ void Evaluator::Impl::modalCallAfter(const ast::Block& block, const ProgramPoint
   bool moves = false;
   for (const ast::Word& w : block.words) moves = moves || options.is_axis(w.address);
   if (!moves) return;
-  pending.push_back(
-      {Pending::Kind::ModalCall, mc.program, std::nullopt, mc.repeats, true, mc.arguments, mc.loc, at});
+  Pending p = macroCall(mc.program, mc.repeats, mc.arguments, mc.loc, at);
+  p.kind = Pending::Kind::ModalCall;
+  pending.push_back(std::move(p));
 }
 
 bool Evaluator::Impl::perform(const Pending& p) {
@@ -279,10 +335,15 @@ bool Evaluator::Impl::call(const Pending& p) {
     f.local_call = true;
     f.program = caller.program;
   } else {
-    std::optional<ProgramPoint> found = store.findProgram(p.program, caller.cursor->file());
+    std::optional<ProgramPoint> found = p.name.empty()
+                                            ? store.findProgram(p.program, caller.cursor->file())
+                                            : store.findProgramNamed(p.name);
     if (!found) {
       fail(EvalError::ProgramNotFound, p.loc,
-           absl::StrCat("program O", p.program, " not found (in this file or the program folder)"));
+           p.name.empty()
+               ? absl::StrCat("program O", p.program, " not found (in this file or the program folder)")
+               : absl::StrCat("program '", p.name, "' (", p.code,
+                              " in the machine file's code macros) not found in the program folder"));
       return false;
     }
     f.cursor = store.open(found->file);
@@ -310,6 +371,7 @@ bool Evaluator::Impl::call(const Pending& p) {
   f.call_loc = p.loc;
   f.repeats_left = p.repeats - 1;
   f.macro = p.macro;
+  f.code = p.code;
   if (p.macro) variables.pushLocals(p.arguments);
   frames.push_back(std::move(f));
   return true;

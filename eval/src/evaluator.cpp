@@ -202,7 +202,9 @@ std::optional<ast::Block> Evaluator::Impl::evaluateBlock(ast::Block block,
     if (a == 'M' || a == 'G') {
       const double v = literalValue(w.value);
       if ((a == 'M' && (v == 98 || v == 99)) ||
-          (a == 'G' && (v == 65 || v == 66 || v == 66.1 || v == 67))) {
+          (a == 'G' && (v == 65 || v == 66 || v == 66.1 || v == 67)) ||
+          (!options.code_macros.empty() &&
+           options.code_macros.count(absl::StrCat(w.address, static_cast<int64_t>(v))))) {
         plain = false;
         break;
       }

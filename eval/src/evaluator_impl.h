@@ -34,6 +34,7 @@ struct Frame {
   bool macro = false;            // a macro call: it opened a level of locals
   bool is_main = false;
   bool local_call = false;       // M98 H: a sequence of the caller's program
+  std::string code;              // a code macro's code ("M6"): it acts as the plain code inside
   bool seen_content = false;
   std::vector<Loop> loops;
 };
@@ -53,6 +54,8 @@ struct ModalCall {
 struct Pending {
   enum class Kind : uint8_t { Call, Return, ModalCall } kind = Kind::Call;
   int64_t program = 0;
+  std::string name;                 // a program called by name (code macros)
+  std::string code;                 // the code that called it (code macros)
   std::optional<int64_t> sequence;  // M98 H (call) / M99 P (return)
   int64_t repeats = 1;
   bool macro = false;
@@ -105,6 +108,8 @@ struct Evaluator::Impl {
   // schedules the call or return; false after failing. `consumed`: the whole block was a
   // call (G65: every other word is an argument).
   bool callWords(ast::Block& block, const ProgramPoint& at, bool& consumed);
+  // A G or M code the machine file makes a macro call (code_macros): consumes the block.
+  bool codeMacro(ast::Block& block, const ProgramPoint& at, bool& consumed);
   // After a block went to lowering: a G66 call follows a motion block.
   void modalCallAfter(const ast::Block& block, const ProgramPoint& at);
   bool perform(const Pending& p);

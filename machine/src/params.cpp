@@ -171,6 +171,11 @@ std::vector<ParamSpec> buildRegistry() {
                        "Helical interpolation: F is the speed along the arc in its plane (true) "
                        "or along the helix, the linear axes included (false) (FANUC No.1403#5 "
                        "HTG = 0 / 1; Mazak and Sinumerik: along the helix)"));
+  specs.push_back(Spec("g_code_macros", T::StringTable, kIso, "{} (none)",
+                       ParamStringTable{},
+                       "G codes that call a macro program with the block's words as G65 "
+                       "arguments, by O number or name, e.g. { G100 = \"9010\" } (FANUC/Mazak "
+                       "G-code macro call parameters)"));
   specs.push_back(Spec("increment_system", T::String, "fanuc-t, siemens-iso-m", "\"IS-B\"",
                        std::string("IS-B"),
                        "\"IS-B\" (0.001 mm / 0.0001 in) or \"IS-C\" (0.0001 mm / 0.00001 in)")
@@ -190,10 +195,12 @@ std::vector<ParamSpec> buildRegistry() {
                        "H/D offset values are not affected"));
   specs.push_back(Spec("interference_check", T::Bool, "fanuc-t", "true", true,
                        "Cutter/nose compensation interference check on (FANUC No.5008#3 = 0)"));
-  specs.push_back(Spec("m_code_macros", T::StringTable, "siemens-iso-m", "{} (none)",
+  specs.push_back(Spec("m_code_macros", T::StringTable, kIso, "{} (none)",
                        ParamStringTable{},
-                       "M codes that call a subprogram, e.g. { M6 = \"M6_MAKRO\" } "
-                       "($MN_EXTERN_M_NO_MAC_CYCLE, $MN_EXTERN_M_NO_MAC_CYCLE_NAME)"));
+                       "M codes that call a macro program with the block's words as G65 "
+                       "arguments, by O number or name, e.g. { M6 = \"M6_MAKRO\" } or "
+                       "{ M60 = \"9020\" } (Sinumerik $MN_EXTERN_M_NO_MAC_CYCLE(_NAME), FANUC/Mazak "
+                       "M-code macro call parameters)"));
   specs.push_back(Spec("machine_unit", T::String, "siemens-iso-m", "\"mm\"", std::string("mm"),
                        "The machine's own unit, \"mm\" or \"inch\"")
                       .oneOf({"mm", "inch"}));

@@ -140,11 +140,6 @@ void machineFunctions(BlockContext& ctx, LowerResult& result) {
       ctx.fail(Alarm::ValueOutOfRange, w.loc, "an M code cannot be negative");
       return;
     }
-    if (ctx.settings.macro_m_codes.count(static_cast<int>(*n))) {
-      ctx.fail(Alarm::CodeNotSupported, w.loc,
-               absl::StrCat("M", *n, " calls a macro (m_code_macros), which is not supported yet"));
-      return;
-    }
     ir::MachineFunction f{K::OtherM, *n, 0.0};
     bool pre = false;
     switch (*n) {

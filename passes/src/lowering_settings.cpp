@@ -45,12 +45,6 @@ LoweringSettings LoweringSettings::resolve(const DialectTable& table,
       }
     }
   }
-  if (const ParamStringTable* t = p.getStringTable("m_code_macros")) {
-    for (const auto& [key, name] : t->by_key) {
-      if (key.size() > 1 && (key[0] == 'M' || key[0] == 'm'))
-        s.macro_m_codes.insert(std::atoi(key.c_str() + 1));
-    }
-  }
   s.block_skip = p.getBool("block_skip", false);
   if (const auto* levels = p.getNumberList("block_skip_levels"))
     for (double l : *levels) s.skip_levels.insert(static_cast<int>(std::lround(l)));

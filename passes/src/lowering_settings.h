@@ -31,7 +31,6 @@ struct LoweringSettings {
   bool f1_digit = false;
   std::vector<double> f1_feeds;        // F1..F9, mm/min
   std::array<AxisValues, 4> reference{};  // reference points 1..4, machine coordinates
-  std::set<int> macro_m_codes;         // Siemens m_code_macros
   bool block_skip = false;             // Mazak's single block-skip switch
   std::set<int> skip_levels;           // block_skip_levels
   // Power-on state (reset_unit, reset_motion_mode, reset_plane), resolved from the strings.

@@ -160,6 +160,23 @@ class MacroTest(ScratchDirTest):
         self.assertEqual(got["#105"], 0.0)
         self.assertEqual(got["#2003"], 8.5)
 
+    def test_code_macros_of_the_machine_file(self):
+        machine = self.write("m.toml", '[machine]\naxes = ["X", "Y", "Z"]\n[machine.params]\n'
+                                       'm_code_macros = { M6 = "TOOLCHG", M60 = "9020" }\n'
+                                       'g_code_macros = { G100 = "9010" }\n')
+        # By name: TOOLCHG.nc in the folder; inside it M6 is the plain tool change.
+        self.write("TOOLCHG.nc", "#100=#100+1\n#101=#20\nM6\nM99\n")
+        got = self.run_vars("c.nc", "#100=0\nM6 T5\nM60 A2.\nG100 X3. Y4.\nM30\n"
+                                    "O9020\n#102=#1\nM99\nO9010\n#103=#24*#25\nM99\n",
+                            "--dialect", "fanuc-m", "--machine", machine)
+        self.assertEqual((got["#100"], got["#101"], got["#102"], got["#103"]), (1.0, 5.0, 2.0, 12.0))
+        bad = self.write("b.toml", '[machine.params]\nm_code_macros = { X6 = "9020" }\n')
+        proc = ncc("compile", self.path("c.nc"), "--dialect", "fanuc-m", "--machine", bad,
+                   "-o", self.path("c.ncb"))
+        self.assertEqual(proc.returncode, 1, proc.stderr)
+        self.assertIn("error[NCC0308]", proc.stderr)
+        self.assertFalse(os.path.exists(self.path("c.ncb")))
+
     # ---- variables file ----------------------------------------------------------------------
 
     def test_vars_file_keeps_the_persistent_commons_between_runs(self):

@@ -6,6 +6,7 @@
 // untouched. docs/middle.md places it among the stages; docs/macro.md gives the semantics.
 #include <cstdint>
 #include <functional>
+#include <map>
 #include <memory>
 #include <optional>
 #include <string>
@@ -40,6 +41,11 @@ struct EvaluatorOptions {
   // digits.
   std::function<double()> real_increment;
   int address_digits = 8;
+  // G and M codes that call a macro (the machine file's g_code_macros / m_code_macros): the
+  // code as written ("M6", "G100") -> the program, an O number ("9020") or a name
+  // ("M6_MAKRO"). The block's other words are the arguments, as with G65; inside the macro a
+  // code calls nothing and acts as the plain code.
+  std::map<std::string, std::string> code_macros;
   // ADP[x]: least input increments per input unit (1000 with 0.001 mm).
   double adp_scale = 1000.0;
 };

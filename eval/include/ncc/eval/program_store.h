@@ -46,6 +46,9 @@ class ProgramStore {
   // Program O number: in the calling file first, then the program folder. The point is the
   // program's O block (or the start of a file found by name).
   virtual std::optional<ProgramPoint> findProgram(int64_t number, uint32_t calling_file) = 0;
+  // A program called by name (a code macro of the machine file: M6 -> "M6_MAKRO"): a file of
+  // the program folder with that name, as given or with the extension of a program file.
+  virtual std::optional<ProgramPoint> findProgramNamed(std::string_view name) = 0;
   // The block starting with N n in search order from `from`, within [begin, end) of its file.
   virtual std::optional<ProgramPoint> findSequence(int64_t n, const ProgramPoint& from,
                                                    SequenceSearch order,
