@@ -254,6 +254,14 @@ bool Evaluator::Impl::callWords(ast::Block& block, const ProgramPoint& at, bool&
         if (!n) return false;
         call.repeats = *n;
       }
+      // Mazak figure rotation (§13-7: M98 P H I J K L turns each repeat about I J) is a
+      // coordinate rotation, not built yet: refused rather than run unrotated.
+      for (const char a : {'I', 'J', 'K'})
+        if (std::optional<ast::Word> w = take(block.words, a)) {
+          fail(EvalError::NotSupported, w->loc,
+               "M98 with I J K (figure rotation) is not supported yet");
+          return false;
+        }
       if (call.repeats < 0) {
         fail(EvalError::AddressValue, l ? l->loc : code_loc, "a negative repeat count");
         return false;

@@ -29,6 +29,7 @@ enum class EvalError : uint8_t {
   ModalCallCancel,       // G67 without G66
   ArgumentBeforeCall,    // an argument written before G65 / G66 (Siemens)
   StepLimit,             // a loop that does not end: the configured step limit was reached
+  NotSupported,          // a word of a call ncc does not build yet (Mazak M98 I J K figure rotation)
   kCount,
 };
 
