@@ -52,7 +52,7 @@ std::optional<eval::ProgramPoint> SourceProgramStore::findProgramNamed(std::stri
   for (const std::filesystem::path& path : candidates) {
     std::error_code ec;
     if (!std::filesystem::is_regular_file(path, ec)) continue;
-    return eval::ProgramPoint{sources_.addFile(path), {}};
+    return eval::ProgramPoint{sources_.addFile(path.lexically_normal()), {}};
   }
   return std::nullopt;
 }

@@ -106,7 +106,7 @@ std::optional<ProgramLibrary::Found> ProgramLibrary::findByName(int64_t number) 
       }
       if (path.empty()) continue;
     }
-    const uint32_t file = sources_.addFile(path);
+    const uint32_t file = sources_.addFile(path.lexically_normal());
     const std::optional<BlockPosition> o_block = index(file).findProgram(number);
     return Found{file, o_block.value_or(BlockPosition{})};
   }
@@ -127,7 +127,7 @@ std::optional<ProgramLibrary::Found> ProgramLibrary::findByFirstProgram(int64_t 
   }
   for (const auto& [file, first] : *first_numbers_) {  // std::map: sorted by name
     if (first != number) continue;
-    const uint32_t id = sources_.addFile(folder_ / file);
+    const uint32_t id = sources_.addFile((folder_ / file).lexically_normal());
     const std::optional<BlockPosition> o_block = index(id).findProgram(number);
     if (o_block) return Found{id, *o_block};
   }
