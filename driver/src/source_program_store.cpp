@@ -1,25 +1,63 @@
 #include "source_program_store.h"
 
 #include <algorithm>
+#include <unordered_map>
 
 namespace ncc::driver {
 
 namespace {
 
+// A file's blocks through a BlockReader. Once the cursor has gone back (a loop, a repeat), the
+// blocks it reads are kept, parsed, by where they start, so a loop body is parsed once rather
+// than on every turn; a cursor that only reads forward keeps nothing. The cache is bounded:
+// past kMaxCached blocks it starts again.
 class ReaderCursor final : public eval::BlockCursor {
  public:
   ReaderCursor(const SourceManager& sources, uint32_t file, DiagnosticEngine& diags,
                frontend::ReaderOptions options)
       : reader(sources, file, diags, options) {}
 
-  std::optional<ast::Block> next() override { return reader.next(); }
-  eval::ProgramPoint lastPoint() const override { return {reader.file(), reader.lastPosition()}; }
-  void seek(const eval::ProgramPoint& point) override { reader.seek(point.position); }
+  std::optional<ast::Block> next() override {
+    if (!replaying_) return reader.next();
+    const frontend::BlockPosition from = reader.position();
+    const uint64_t key = from.offset * 4096u + from.column;
+    if (auto it = cache_.find(key); it != cache_.end() && it->second.from == from) {
+      last_ = it->second.at;
+      reader.seek(it->second.after);
+      return it->second.block;
+    }
+    std::optional<ast::Block> block = reader.next();
+    last_.reset();
+    if (!block) return block;
+    if (cache_.size() >= kMaxCached) cache_.clear();
+    cache_[key] = Cached{from, reader.lastPosition(), reader.position(), *block};
+    return block;
+  }
+  eval::ProgramPoint lastPoint() const override {
+    return {reader.file(), last_ ? *last_ : reader.lastPosition()};
+  }
+  void seek(const eval::ProgramPoint& point) override {
+    replaying_ = true;
+    last_.reset();
+    reader.seek(point.position);
+  }
   void setLanguage(frontend::Language language) override { reader.setLanguage(language); }
   uint64_t rejectedBlocks() const override { return reader.stats().rejected_blocks; }
   uint32_t file() const override { return reader.file(); }
 
   frontend::BlockReader reader;
+
+ private:
+  static constexpr size_t kMaxCached = 4096;
+  struct Cached {
+    frontend::BlockPosition from;   // where reading stood (blank text may precede the block)
+    frontend::BlockPosition at;     // where the block starts
+    frontend::BlockPosition after;  // where reading goes on
+    ast::Block block;
+  };
+  bool replaying_ = false;
+  std::optional<frontend::BlockPosition> last_;  // lastPoint() of a block from the cache
+  std::unordered_map<uint64_t, Cached> cache_;
 };
 
 frontend::SequenceSearch toFrontend(eval::SequenceSearch order) {

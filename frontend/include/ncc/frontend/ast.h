@@ -66,6 +66,19 @@ struct Statement {
   int loop_id = 0;  // DO m / END m
   std::unique_ptr<Statement> then_assign;  // IfThen
   SourceLocation loc;
+
+  // Copies are deep (the evaluator keeps parsed loop bodies).
+  Statement() = default;
+  Statement(const Statement& o)
+      : kind(o.kind), target(o.target), value(o.value), loop_id(o.loop_id),
+        then_assign(o.then_assign ? std::make_unique<Statement>(*o.then_assign) : nullptr),
+        loc(o.loc) {}
+  Statement(Statement&&) noexcept = default;
+  Statement& operator=(const Statement& o) {
+    if (this != &o) *this = Statement(o);
+    return *this;
+  }
+  Statement& operator=(Statement&&) noexcept = default;
 };
 
 struct Block {
