@@ -1,0 +1,195 @@
+// The evaluator over a program store that is not a source file: blocks parsed up front and held
+// in memory, as a run-time user of the library (the VM) would hand them over. Checks the
+// blocks it gives lowering, its control flow and calls, and its failures' alarm numbers.
+#include <map>
+#include <memory>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "eval_harness.h"
+#include "gtest/gtest.h"
+#include "ncc/eval/evaluator.h"
+#include "ncc/eval/macro_rules.h"
+#include "ncc/eval/variables.h"
+#include "ncc/frontend/block_reader.h"
+
+namespace ncc::eval {
+namespace {
+
+// One "file" per program text; a block's position is its index (offset) and line.
+class MemoryStore final : public ProgramStore {
+ public:
+  uint32_t add(std::string_view text) {
+    std::vector<ast::Block> blocks;
+    std::istringstream in{std::string(text)};
+    std::string line;
+    const uint32_t file = static_cast<uint32_t>(files_.size()) + 1;
+    for (uint32_t n = 1; std::getline(in, line); ++n) {
+      DiagnosticEngine diags;
+      std::optional<ast::Block> b = frontend::parseIsoBlock(line, file, n, diags);
+      EXPECT_TRUE(b) << line;
+      blocks.push_back(std::move(*b));
+    }
+    files_.push_back(std::move(blocks));
+    return file;
+  }
+
+  class Cursor final : public BlockCursor {
+   public:
+    Cursor(const std::vector<ast::Block>& blocks, uint32_t file) : blocks_(blocks), file_(file) {}
+    std::optional<ast::Block> next() override {
+      if (i_ >= blocks_.size()) return std::nullopt;
+      last_ = i_;
+      return blocks_[i_++];
+    }
+    ProgramPoint lastPoint() const override { return point(file_, last_); }
+    void seek(const ProgramPoint& p) override { i_ = p.position.offset; }
+    void setLanguage(frontend::Language) override {}
+    uint64_t rejectedBlocks() const override { return 0; }
+    uint32_t file() const override { return file_; }
+
+   private:
+    const std::vector<ast::Block>& blocks_;
+    uint32_t file_;
+    size_t i_ = 0, last_ = 0;
+  };
+
+  std::unique_ptr<BlockCursor> open(uint32_t file) override {
+    return std::make_unique<Cursor>(files_[file - 1], file);
+  }
+  std::optional<ProgramPoint> findProgram(int64_t number, uint32_t) override {
+    for (uint32_t f = 1; f <= files_.size(); ++f)
+      for (size_t i = 0; i < files_[f - 1].size(); ++i)
+        if (files_[f - 1][i].program_number == number) return point(f, i);
+    return std::nullopt;
+  }
+  std::optional<ProgramPoint> findProgramNamed(std::string_view) override { return std::nullopt; }
+  std::optional<ProgramPoint> findSequence(int64_t n, const ProgramPoint& from, SequenceSearch order,
+                                           const ProgramPoint& begin,
+                                           const ProgramPoint& end) override {
+    const std::vector<ast::Block>& b = files_[from.file - 1];
+    const size_t first = begin.position.offset, last = end.position.offset;
+    std::vector<size_t> order_of;
+    if (order == SequenceSearch::ForwardThenFromStart) {
+      for (size_t i = from.position.offset + 1; i < last; ++i) order_of.push_back(i);
+      for (size_t i = first; i <= from.position.offset; ++i) order_of.push_back(i);
+    } else {
+      for (size_t i = first; i < last; ++i) order_of.push_back(i);
+    }
+    for (size_t i : order_of)
+      if (i < b.size() && b[i].sequence == n) return point(from.file, i);
+    return std::nullopt;
+  }
+  ProgramPoint programEnd(const ProgramPoint& start) override {
+    const std::vector<ast::Block>& b = files_[start.file - 1];
+    for (size_t i = start.position.offset + 1; i < b.size(); ++i)
+      if (b[i].program_number) return point(start.file, i);
+    return point(start.file, b.size());
+  }
+  std::string_view fileName(uint32_t) const override { return "memory"; }
+
+ private:
+  static ProgramPoint point(uint32_t file, size_t i) {
+    return ProgramPoint{file, frontend::BlockPosition{i, static_cast<uint32_t>(i + 1), 1}};
+  }
+  std::vector<std::vector<ast::Block>> files_;
+};
+
+struct EvalRun {
+  std::vector<std::string> blocks;  // printed as lowering gets them
+  std::map<int64_t, double> writes; // last value written per kept variable
+  std::vector<Diagnostic> diagnostics;
+  ProgramEnd end = ProgramEnd::Running;
+};
+
+EvalRun run(std::string_view program, Dialect dialect = Dialect::FanucM, uint64_t max_back_jumps = 10000) {
+  const MacroRules& rules = macroRules(dialect);
+  MemoryStore store;
+  const uint32_t main = store.add(program);
+  Variables variables(rules, {rules.commons.begin(), rules.commons.end()}, nullptr);
+  EvalRun out;
+  variables.on_write = [&](int64_t n, const Value& v, SourceLocation) {
+    out.writes[n] = v.arithmetic();
+  };
+  DiagnosticEngine diags;
+  EvaluatorOptions options;
+  options.rules = &rules;
+  options.repeat = rules.repeat;
+  options.max_back_jumps = max_back_jumps;
+  options.is_axis = [](std::string_view a) { return a == "X" || a == "Y" || a == "Z"; };
+  Evaluator evaluator(options, store, store.open(main), variables, diags);
+  while (std::optional<ast::Block> b = evaluator.next()) {
+    out.blocks.push_back(frontend::printBlock(*b));
+    for (const ast::Word& w : b->words)
+      if (w.address == "M" && (w.value.number == 30 || w.value.number == 2)) evaluator.programEndCode();
+  }
+  out.diagnostics = diags.diagnostics();
+  out.end = evaluator.end();
+  return out;
+}
+
+TEST(Evaluator, PlainBlocksPassThroughAndExpressionsBecomeNumbers) {
+  EvalRun r = run("G90 G00 X1. Y2.\n#1=2.5\n#2=#0\nG01 X[#1*2] Y#2 Z-#1 F100.\nM30\n");
+  EXPECT_EQ(r.blocks, (std::vector<std::string>{"G90 G0 X1. Y2.", "G1 X5. Z-2.5 F100.", "M30"}));
+  EXPECT_EQ(r.end, ProgramEnd::ProgramEndCode);
+  EXPECT_TRUE(r.diagnostics.empty());
+}
+
+TEST(Evaluator, LoopsAndJumps) {
+  EvalRun r = run("#100=0\n#1=0\nN5 IF [#1 GE 3] GOTO 9\n#1=#1+1\n#100=#100+#1\nGOTO 5\n"
+              "N9 WHILE [#1 GT 0] DO1\nX#1\n#1=#1-1\nEND1\nM30\n");
+  EXPECT_EQ(r.writes[100], 6.0);
+  // A statement block keeps its sequence number for lowering (which has nothing to do there).
+  EXPECT_EQ(r.blocks, (std::vector<std::string>{"N5", "N5", "N5", "N5", "N9", "X3.", "N9", "X2.",
+                                                "N9", "X1.", "N9", "M30"}));
+}
+
+TEST(Evaluator, EndlessLoopStopsAtItsJump) {
+  EvalRun r = run("N1 #100=1\nGOTO 1\nM30\n", Dialect::FanucM, 50);
+  ASSERT_EQ(r.diagnostics.size(), 1u);
+  EXPECT_EQ(r.diagnostics[0].code, "NCC2419");
+  EXPECT_EQ(r.diagnostics[0].location.line, 2u);
+  EXPECT_EQ(r.end, ProgramEnd::Alarm);
+}
+
+TEST(Evaluator, CallsReturnsAndRepeats) {
+  EvalRun r = run("#100=0\nM98 P10 L3\nG65 P20 A4. B5.\n#101=#1\nM30\nO10\n#100=#100+1\nM99\n"
+              "O20\n#102=#1*#2\n#1=7\nM99\n", Dialect::MazakM);
+  EXPECT_EQ(r.writes[100], 3.0);
+  EXPECT_EQ(r.writes[102], 20.0);
+  EXPECT_EQ(r.writes[101], 0.0);  // the main program's #1 is still vacant: G65 had its own
+  EXPECT_TRUE(r.diagnostics.empty());
+}
+
+TEST(Evaluator, ModalCallAfterEachMotionBlock) {
+  EvalRun r = run("#100=0\nG66 P30 A1.\nX1.\nM05\nY2.\nG67\nX3.\nM30\nO30\n#100=#100+#1\nM99\n",
+              Dialect::MazakM);
+  EXPECT_EQ(r.writes[100], 2.0);  // after X1. and Y2., not after M05 nor after G67
+  EXPECT_EQ(r.blocks, (std::vector<std::string>{"X1.", "M5", "Y2.", "X3.", "M30"}));
+}
+
+TEST(Evaluator, FailuresCarryTheDialectsAlarmNumbers) {
+  struct Case {
+    const char* program;
+    const char* code;
+    uint32_t line;
+  } cases[] = {
+      {"#1=1\nGOTO 7\nM30\n", "843", 2},
+      {"M98 P1234\nM30\n", "844", 1},
+      {"G67\nM30\n", "857", 1},
+      {"#1=LN[0]\nM30\n", "860", 1},
+      {"#3000=30 (STOP)\nM30\n", "3030", 1},
+      {"END 1\nM30\n", "NCC2407", 1},
+  };
+  for (const Case& c : cases) {
+    EvalRun r = run(c.program, Dialect::MazakM);
+    ASSERT_FALSE(r.diagnostics.empty()) << c.program;
+    EXPECT_EQ(r.diagnostics[0].code, c.code) << c.program;
+    EXPECT_EQ(r.diagnostics[0].location.line, c.line) << c.program;
+    EXPECT_EQ(r.end, ProgramEnd::Alarm) << c.program;
+  }
+}
+
+}  // namespace
+}  // namespace ncc::eval
