@@ -39,9 +39,9 @@ std::optional<std::string> setProbeFromOption(ProbeConfig& probe,
   return std::nullopt;
 }
 
-std::optional<double> probeStop(const ProbeConfig& probe, const AxisValues& from,
-                                const AxisValues& to, int axis_count) {
-  std::optional<double> first;
+std::optional<ProbeHit> probeStop(const ProbeConfig& probe, const AxisValues& from,
+                                  const AxisValues& to, int axis_count) {
+  std::optional<ProbeHit> first;
   for (int i = 0; i < axis_count && i < kMaxAxes; ++i) {
     if ((probe.axes & (1u << i)) == 0) continue;
     const double d = to[i] - from[i];
@@ -51,9 +51,20 @@ std::optional<double> probeStop(const ProbeConfig& probe, const AxisValues& from
     const double s = (probe.trigger[i] - from[i]) / d;
     if (s > 1.0) continue;  // the end point stays on the start side
     const double at = s <= 0.0 ? 0.0 : s;
-    if (!first || at < *first) first = at;
+    if (!first || at < first->fraction) first = ProbeHit{at, i};
   }
   return first;
+}
+
+AxisValues probeStopPoint(const ProbeConfig& probe, const ProbeHit& hit, const AxisValues& from,
+                          const AxisValues& to, int axis_count) {
+  if (hit.fraction <= 0.0) return from;  // on at the start: no motion
+  AxisValues at = from;
+  for (int i = 0; i < axis_count && i < kMaxAxes; ++i)
+    at[i] = from[i] + (to[i] - from[i]) * hit.fraction;
+  // Exactly on the plane that stopped it, not a rounding error away.
+  if (hit.axis >= 0 && hit.axis < kMaxAxes) at[hit.axis] = probe.trigger[hit.axis];
+  return at;
 }
 
 }  // namespace ncc

@@ -119,9 +119,13 @@ TEST(Probe, OptionTextAndStopFraction) {
   EXPECT_TRUE(setProbeFromOption(probe, axes, "Z=2e6"));
   EXPECT_EQ(probe.trigger[2], -42.5);  // a refused text changes nothing
   // Upwards through Z-42.5 from below: the plane is met on the way up as well.
-  EXPECT_DOUBLE_EQ(*probeStop(probe, {0, 0, -50}, {0, 0, 0}, 3), 7.5 / 50.0);
+  const std::optional<ProbeHit> up = probeStop(probe, {0, 0, -50}, {0, 0, 0}, 3);
+  ASSERT_TRUE(up);
+  EXPECT_DOUBLE_EQ(up->fraction, 7.5 / 50.0);
+  EXPECT_EQ(up->axis, 2);
+  EXPECT_EQ(probeStopPoint(probe, *up, {0, 0, -50}, {0, 0, 0}, 3), (AxisValues{0, 0, -42.5}));
   EXPECT_FALSE(probeStop(probe, {0, 0, 0}, {10, 0, 0}, 3));  // Z does not move
-  EXPECT_EQ(*probeStop(probe, {0, 0, -42.5}, {0, 0, -50}, 3), 0.0);  // on the plane at the start
+  EXPECT_EQ(probeStop(probe, {0, 0, -42.5}, {0, 0, -50}, 3)->fraction, 0.0);  // on the plane
 }
 
 }  // namespace

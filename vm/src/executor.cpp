@@ -128,15 +128,8 @@ bool Executor::skip(const Instruction& in, MotionPrimitive& m, uint32_t offset) 
   // The stop point: the first point of the path where the signal is on (probe.h), else the
   // end point (the manuals' notes do not say what happens without a signal; FANUC and Mazak
   // complete the move and the skip position is its end point).
-  if (const std::optional<double> s = probeStop(probe_, m.from, m.to, axis_count_)) {
-    for (int i = 0; i < axis_count_; ++i) {
-      if ((probe_.axes & (1u << i)) && m.to[i] != m.from[i] &&
-          (probe_.trigger[i] - m.from[i]) / (m.to[i] - m.from[i]) == *s)
-        m.to[i] = probe_.trigger[i];  // exactly on the plane that stopped it
-      else
-        m.to[i] = m.from[i] + (m.to[i] - m.from[i]) * *s;
-    }
-  }
+  if (const std::optional<ProbeHit> hit = probeStop(probe_, m.from, m.to, axis_count_))
+    m.to = probeStopPoint(probe_, *hit, m.from, m.to, axis_count_);
   // The machine stops there: no blending through the skip point, override 100 %.
   m.exact_stop = true;
   if (in.variable == 0) return true;

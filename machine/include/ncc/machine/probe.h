@@ -33,9 +33,17 @@ std::optional<std::string> setProbeFromOption(ProbeConfig& probe,
                                               const std::vector<AxisConfig>& axes,
                                               std::string_view text);
 
-// Where a straight move from `from` to `to` stops on the probe: the fraction of the move,
-// 0 (signal on at the start) to 1, or nullopt when no signal comes on.
-std::optional<double> probeStop(const ProbeConfig& probe, const AxisValues& from,
-                                const AxisValues& to, int axis_count);
+// Where a straight move stops on the probe: the fraction of the move, 0 (a signal on at the
+// start) to 1, and the axis whose plane stopped it.
+struct ProbeHit {
+  double fraction = 0.0;
+  int axis = -1;
+};
+// The first signal on the straight move from `from` to `to`, or nullopt when none comes on.
+std::optional<ProbeHit> probeStop(const ProbeConfig& probe, const AxisValues& from,
+                                  const AxisValues& to, int axis_count);
+// The point where the move stops: on the hit axis exactly its trigger plane.
+AxisValues probeStopPoint(const ProbeConfig& probe, const ProbeHit& hit, const AxisValues& from,
+                          const AxisValues& to, int axis_count);
 
 }  // namespace ncc
