@@ -9,6 +9,7 @@
 //   lowering_coordinates.cpp       G54.. selection, G52, G53, G92, G92.1, G10 L2/L20
 //   lowering_tool_offsets.cpp      H with G43/G44/G49, D, G10 L10-L13
 //   lowering_reference.cpp         G27, G28, G30
+//   lowering_skip.cpp              G31 skip, and the blocks after it that need where it stopped
 //   lowering_machine_functions.cpp G04 dwell, S, T, M
 //   lowering_recovery.cpp          after a rejected block: what is unknown, which later
 //                                  blocks depend on it (skipped without a diagnostic)
