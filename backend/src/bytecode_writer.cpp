@@ -84,7 +84,8 @@ class Lowering {
         // G63 tapping mode: the feed override is fixed at 100 % for the feed moves.
         fixed_override_(block.modal.path == ir::PathControl::Tapping
                             ? bytecode::kFlagFixedOverride
-                            : 0) {}
+                            : 0),
+        origin_(block.frame.total()) {}
 
   Lowered operator()(const ir::Rapid& r) const {
     bytecode::Instruction in = instruction(Opcode::Rapid);
@@ -124,6 +125,27 @@ class Lowering {
     in.center1 = a.center[axis1];
     in.center2 = a.center[axis2];
     return Lowered(in);
+  }
+
+  // G31: always an exact stop (the look-ahead must not blend through where the signal stops
+  // the move) at 100 % override (Mazak §4.10; FANUC SKF = 0). The block's frame rides along
+  // so that the VM can store the skip position in work coordinates.
+  Lowered operator()(const ir::Skip& s) const {
+    bytecode::Instruction in = instruction(Opcode::Skip);
+    in.flags = bytecode::kFlagExactStop | bytecode::kFlagFixedOverride |
+               (s.feed_per_rev ? bytecode::kFlagFeedPerRev : 0) |
+               (s.inch_variables ? bytecode::kFlagInch : 0);
+    in.value = s.feed;
+    in.variable = s.first_variable;
+    in.axes = s.to;
+    in.origin = origin_;
+    Lowered code(in);
+    const uint64_t last = uint64_t{s.first_variable} + machine_.axisCount() - 1;
+    if (s.first_variable != 0 && last >= bytecode::kDefaultVariableCount)
+      code.error = {"NCC9001", absl::StrCat("internal error: skip position variables #",
+                                            s.first_variable, " to #", last,
+                                            " beyond the program's variables")};
+    return code;
   }
 
   Lowered operator()(const ir::Dwell& d) const {
@@ -173,6 +195,7 @@ class Lowering {
   const MachineConfig& machine_;
   const uint8_t exact_;
   const uint8_t fixed_override_;
+  const AxisValues origin_;  // the block's frame: machine coordinates of the work zero
 };
 
 }  // namespace
@@ -235,13 +258,20 @@ std::optional<std::string> BytecodeWriter::outOfBounds(const bytecode::Instructi
       " is beyond +-", number(bytecode::kMaxCoordinate),
       " mm (or degrees), the largest coordinate a bytecode program may hold");
   const bool has_axes = in.op == Opcode::Rapid || in.op == Opcode::Line ||
-                        in.op == Opcode::Arc || in.op == Opcode::RefCheck;
+                        in.op == Opcode::Arc || in.op == Opcode::RefCheck ||
+                        in.op == Opcode::Skip;
   if (has_axes) {
     for (int i = 0; i < machine_.axisCount(); ++i) {
       if (beyond(in.axes[i]))
         return absl::StrCat("the ", machine_.axes[i].name, " position ", number(in.axes[i]),
                             " (machine coordinates, after offsets)", coordinate_bound);
     }
+  }
+  if (in.op == Opcode::Skip) {
+    for (int i = 0; i < machine_.axisCount(); ++i)
+      if (beyond(in.origin[i]))
+        return absl::StrCat("the ", machine_.axes[i].name, " work origin ", number(in.origin[i]),
+                            " (machine coordinates)", coordinate_bound);
   }
   if (in.op == Opcode::Arc) {
     if (beyond(in.center1) || beyond(in.center2))

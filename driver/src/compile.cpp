@@ -131,7 +131,7 @@ std::map<std::string, std::string> codeMacros(const MachineConfig& machine,
         auto [end, ec] = std::from_chars(digits, code.data() + code.size(), n);
         if (!letter_ok || ec != std::errc() || end != code.data() + code.size() || n < 0 ||
             program.empty()) {
-          diags.error("NCC0308", SourceLocation{},
+          diags.error("NCC0309", SourceLocation{},
                       absl::StrCat("[machine.params] ", param, ": '", code, "' = '", program,
                                    "' is not a ", std::string(1, letter),
                                    " code calling a program (e.g. ", std::string(1, letter),

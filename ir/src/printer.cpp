@@ -119,6 +119,13 @@ struct OperationPrinter {
     if (a.feed_per_rev) absl::StrAppend(&out, " per-rev");
     return out;
   }
+  std::string operator()(const Skip& s) const {
+    std::string out = absl::StrCat("skip ", spaceName(s.space), " ", axisList(s.to, axes), " F",
+                                   num(s.feed), s.feed_per_rev ? " per-rev" : "");
+    if (s.first_variable != 0)
+      absl::StrAppend(&out, " position #", s.first_variable, s.inch_variables ? " inch" : "");
+    return out;
+  }
   std::string operator()(const Dwell& d) const {
     return absl::StrCat("dwell ", num(d.seconds), d.revolutions ? " rev" : " s");
   }

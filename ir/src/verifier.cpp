@@ -29,6 +29,11 @@ class BlockChecker {
     axes(a.center, "centre");
     feed(a.feed);
   }
+  void operator()(const Skip& s) {
+    space(s.space);
+    axes(s.to, "target");
+    feed(s.feed);
+  }
   void operator()(const Dwell& d) {
     if (!std::isfinite(d.seconds) || d.seconds < 0.0)
       add(absl::StrCat("dwell ", d.seconds, " is not a finite non-negative amount"));

@@ -130,7 +130,7 @@ class MachineFileReader {
     static constexpr std::string_view kKeys[] = {"axes",   "diameter_axes", "offsets",  "work",
                                                  "params", "axis",          "ipo_cycle",
                                                  "chord_tolerance", "corner_tolerance",
-                                                 "lookahead_segments", "dialect"};
+                                                 "lookahead_segments", "dialect", "probe"};
     for (const auto& [key, node] : t)
       if (std::find(std::begin(kKeys), std::end(kKeys), key.str()) == std::end(kKeys))
         ctx_.unknownKey(key, "[machine]");
@@ -152,6 +152,8 @@ class MachineFileReader {
     if (const toml::node* n = t.get("axis"))
       if (const toml::table* a = ctx_.table(*n, "machine.axis")) readAxisLimits(*a);
     if (const toml::node* n = t.get("dialect")) readDialect(*n);
+    if (const toml::node* n = t.get("probe"))
+      if (const toml::table* p = ctx_.table(*n, "machine.probe")) readProbe(*p);
     readBounded(t, "ipo_cycle", bounds::kMinIpoCycle, bounds::kMaxIpoCycle, "s",
                 m_.ipo_cycle_seconds);
     readBounded(t, "chord_tolerance", bounds::kMinChordTolerance, bounds::kMaxChordTolerance,
@@ -477,6 +479,25 @@ class MachineFileReader {
       return std::nullopt;
     }
     return out;
+  }
+
+  // [machine.probe]: `Z = -42.5`, the trigger plane of the simulated skip signal per axis,
+  // machine coordinates (probe.h).
+  void readProbe(const toml::table& t) {
+    for (const auto& [key_ptr, value_ptr] : inFileOrder(t)) {
+      const toml::key& key = *key_ptr;
+      const int i = requireAxis(m_.axes, key.str(), ctx_.at(key), "machine.probe", ctx_);
+      const std::optional<double> v = ctx_.number(*value_ptr, key.str());
+      if (i < 0 || !v) continue;
+      if (!(std::abs(*v) <= bounds::kMaxPosition)) {
+        ctx_.error(kBadValue, ctx_.at(*value_ptr),
+                   cat("the probe trigger of ", m_.axes[i].name, " is ", *v,
+                       ": positions must be within +-", bounds::kMaxPosition));
+        continue;
+      }
+      m_.probe.axes |= static_cast<AxisMask>(1u << i);
+      m_.probe.trigger[i] = *v;
+    }
   }
 
   // Limits and servo parameters (servo_keys.cpp) of each axis.

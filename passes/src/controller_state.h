@@ -49,6 +49,10 @@ struct ControllerState {
   bool feed_after_inverse_time = false;  // G94/G95 after G93 without a new F yet
   int last_g10_l2_p = 1;               // Mazak: G10 L2 without P reuses the last P
   UnknownState unknown;                // nothing after power-on; see UnknownState
+  // Axes whose commanded position is where a G31 stopped: known when the program runs, not
+  // here (`position` holds G31's end point for them). An absolute word makes one known again
+  // (lowering_skip.cpp).
+  AxisMask skip_axes = 0;
 };
 
 struct OffsetTables {

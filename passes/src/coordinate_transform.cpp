@@ -16,7 +16,8 @@ void WorkToMachinePass::accept(ir::Block block) {
     std::visit(
         [&](auto& o) {
           using T = std::decay_t<decltype(o)>;
-          if constexpr (std::is_same_v<T, ir::Rapid> || std::is_same_v<T, ir::Linear>) {
+          if constexpr (std::is_same_v<T, ir::Rapid> || std::is_same_v<T, ir::Linear> ||
+                        std::is_same_v<T, ir::Skip>) {
             if (o.space == ir::Space::Work) shift(o.to);
             o.space = ir::Space::Machine;
           } else if constexpr (std::is_same_v<T, ir::Arc>) {

@@ -21,7 +21,7 @@ constexpr GCodeEntry kCodes[] = {
     {280, G::OneShot, 0, false, A::ReferenceReturn, 0, "reference position return"},
     {290, G::OneShot, 0, false, A::NotSupported, 0, "return from reference position"},
     {300, G::OneShot, 0, false, A::ReferenceReturnN, 0, "2nd/3rd/4th reference position return"},
-    {310, G::OneShot, 0, false, A::NotSupported, 0, "skip function"},
+    {310, G::OneShot, 0, false, A::Skip, 0, "skip function"},
     {370, G::OneShot, 0, false, A::NotSupported, 0, "automatic tool length measurement"},
     {390, G::OneShot, 0, false, A::NotSupported, 0, "corner circular interpolation"},
     {450, G::OneShot, 0, false, A::NotSupported, 0, "tool position offset"},
@@ -179,6 +179,7 @@ constexpr std::string_view kAlarms[] = {
     "NCC2081",  // G53Incremental
     "PS0003",   // TooManyDigits: too many digits
     "NCC2045",  // LengthCompInArc (not raised)
+    "NCC2090",  // DependsOnSkip
 };
 static_assert(std::size(kAlarms) == static_cast<size_t>(Alarm::kCount));
 
@@ -212,6 +213,7 @@ constexpr DialectBehaviour kBehaviour{
     .helical_feed_along_arc = true,         // HTG (No.1403#5) = 0: F along the arc (notes §4.3)
     .dwell_x_before_g04_is_coordinate = false,
     .dwell_block_alone = false,
+    .skip_feed_is_modal = true,             // G31 takes F like G01
 };
 // FANUC Series 0i-MD/30i-M custom macro system variables (tool offset memory C, up to 200
 // offsets: H wear #2001, H geometry #2201, D wear #2401, D geometry #2601). The project has no
@@ -229,7 +231,7 @@ constexpr SystemVariableRange kSystemVariables[] = {
     {5001, 5020, SystemVariable::EndPoint, 0, "block end point"},
     {5021, 5040, SystemVariable::MachinePosition, 0, "machine position"},
     {5041, 5060, SystemVariable::WorkPosition, 0, "work position"},
-    {5061, 5080, SystemVariable::RunTime, 0, "skip position"},
+    {5061, 5080, SystemVariable::SkipPosition, 0, "skip position"},
     {5081, 5100, SystemVariable::ToolLengthVector, 0, "tool length offset"},
     {5101, 5120, SystemVariable::RunTime, 0, "servo deviation"},
     {5201, 5220, SystemVariable::ExternalOffset, 0, "external work offset"},

@@ -17,10 +17,10 @@ constexpr GCodeEntry kCodes[] = {
     {280, G::OneShot, 0, false, A::ReferenceReturn, 0, "reference point return"},
     {290, G::OneShot, 0, false, A::NotSupported, 0, "start point return"},
     {300, G::OneShot, 0, false, A::ReferenceReturnN, 0, "2nd/3rd/4th reference point return"},
-    {310, G::OneShot, 0, false, A::NotSupported, 0, "skip function"},
-    {311, G::OneShot, 0, false, A::NotSupported, 0, "multi-step skip"},
-    {312, G::OneShot, 0, false, A::NotSupported, 0, "multi-step skip"},
-    {313, G::OneShot, 0, false, A::NotSupported, 0, "multi-step skip"},
+    {310, G::OneShot, 0, false, A::Skip, 0, "skip function"},
+    {311, G::OneShot, 0, false, A::Skip, 0, "multi-step skip"},
+    {312, G::OneShot, 0, false, A::Skip, 0, "multi-step skip"},
+    {313, G::OneShot, 0, false, A::Skip, 0, "multi-step skip"},
     {370, G::OneShot, 0, false, A::NotSupported, 0, "automatic tool length measurement"},
     {380, G::OneShot, 0, false, A::NotSupported, 0, "tool radius compensation vector selection"},
     {390, G::OneShot, 0, false, A::NotSupported, 0, "tool radius compensation corner arc"},
@@ -169,6 +169,7 @@ constexpr std::string_view kAlarms[] = {
     "NCC2081",  // G53Incremental (not raised: G53 is incremental in G91)
     "809",      // TooManyDigits: number of more than 8 digits
     "NCC2045",  // LengthCompInArc (not raised)
+    "NCC2090",  // DependsOnSkip
 };
 static_assert(std::size(kAlarms) == static_cast<size_t>(Alarm::kCount));
 
@@ -202,6 +203,7 @@ constexpr DialectBehaviour kBehaviour{
     .helical_feed_along_arc = false,        // §6-7: F is the tangential speed of the tool
     .dwell_x_before_g04_is_coordinate = true,  // §8-1: inch `X5. G04` = X50000 = 50 s
     .dwell_block_alone = false,             // §8-1: M, S, T, B in a G04 block run with it
+    .skip_feed_is_modal = false,            // §4.10: K41 = 0, the modal F is not changed
 };
 // §13-9-4 (notes §4.8, System variables); F96 bit 0 = 0 (the #2001 ranges, up to 200 offsets).
 constexpr SystemVariableRange kSystemVariables[] = {
@@ -217,7 +219,7 @@ constexpr SystemVariableRange kSystemVariables[] = {
     {5001, 5006, SystemVariable::EndPoint, 0, "block end point"},
     {5021, 5026, SystemVariable::MachinePosition, 0, "machine position"},
     {5041, 5046, SystemVariable::WorkPosition, 0, "work position"},
-    {5061, 5066, SystemVariable::RunTime, 0, "skip position"},
+    {5061, 5066, SystemVariable::SkipPosition, 0, "skip position"},
     {5081, 5086, SystemVariable::ToolLengthVector, 0, "tool length offset"},
     {5101, 5106, SystemVariable::RunTime, 0, "servo deviation"},
     {5201, 5206, SystemVariable::ExternalOffset, 0, "external work offset"},

@@ -88,7 +88,7 @@ constexpr GCodeEntry kCodes[] = {
     {100, G::OneShot, 18, false, A::DataSet, 0, "data setting"},
     {280, G::OneShot, 18, false, A::ReferenceReturn, 0, "reference point return"},
     {300, G::OneShot, 18, false, A::ReferenceReturnN, 0, "2nd/3rd/4th reference point return"},
-    {310, G::OneShot, 18, false, A::NotSupported, 0, "skip function"},
+    {310, G::OneShot, 18, false, A::Skip, 0, "skip function"},
     {520, G::OneShot, 18, false, A::LocalShift, 0, "local coordinate system"},
     {530, G::OneShot, 18, false, A::MachineCoordinates, 0, "machine coordinate system"},
     {650, G::OneShot, 18, false, A::NotSupported, 0, "macro call"},
@@ -144,6 +144,7 @@ constexpr std::string_view kAlarms[] = {
     "NCC2081",  // G53Incremental
     "NCC2033",  // TooManyDigits (no number in the notes)
     "NCC2045",  // LengthCompInArc
+    "NCC2090",  // DependsOnSkip
 };
 static_assert(std::size(kAlarms) == static_cast<size_t>(Alarm::kCount));
 
@@ -177,6 +178,7 @@ constexpr DialectBehaviour kBehaviour{
     .helical_feed_along_arc = false,        // §2.1.4: F is the tangential speed in 3-D space
     .dwell_x_before_g04_is_coordinate = false,
     .dwell_block_alone = true,              // §3.3.1: nothing but G04 in the dwell block
+    .skip_feed_is_modal = true,             // G31 X Y Z F: F as for G01
 };
 // Sinumerik ISO mode defines no FANUC system variables (notes §4.11: "the manual does not
 // define ... FANUC system variables"); its programs read the machine through DIN ($ variables).

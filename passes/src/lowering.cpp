@@ -79,6 +79,7 @@ void oneShot(BlockContext& ctx) {
     case GAction::MachineCoordinates: return machineCoordinateMove(ctx, g);
     case GAction::SetShift: return setShift(ctx);
     case GAction::ResetShift: return resetShift(ctx, g);
+    case GAction::Skip: return skipMove(ctx, g);
     default: return;
   }
 }
@@ -217,6 +218,7 @@ LowerResult lowerBlock(LoweringCore& core, const ast::Block& block) {
   else
     lowerMotion(ctx);
   machineFunctions(ctx, result);
+  checkSkipDependence(ctx);
   checkUnused(ctx);
   if (ctx.silent) return settleSilent(ctx, result);
   if (ctx.failed) return reject(ctx);

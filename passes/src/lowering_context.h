@@ -9,6 +9,7 @@
 //   lowering_coordinates.cpp       G54.. selection, G52, G53, G92, G92.1, G10 L2/L20
 //   lowering_tool_offsets.cpp      H with G43/G44/G49, D, G10 L10-L13
 //   lowering_reference.cpp         G27, G28, G30
+//   lowering_skip.cpp              G31 skip, and the blocks after it that need where it stopped
 //   lowering_machine_functions.cpp G04 dwell, S, T, M
 //   lowering_recovery.cpp          after a rejected block: what is unknown, which later
 //                                  blocks depend on it (skipped without a diagnostic)
@@ -90,6 +91,8 @@ struct BlockContext {
   bool length_delta_deferred = false;
   // Words some code of the block has read; the rest are reported as having no meaning.
   bool used_ijk = false, used_r = false, used_p = false, used_l = false;
+  // The axes a G31 in this block moves: where they stop is known only at run time.
+  AxisMask skip_moved = 0;
   bool failed = false;
   // The block depends on unknown state (lowering_recovery.cpp): it is lowered for its effects
   // on the state only, and its errors are not reported (they would be consequences).
@@ -135,6 +138,17 @@ struct BlockContext {
 void applyFeed(BlockContext& ctx);
 // The move of a block without a one-shot code, in the group 01 mode in force.
 void lowerMotion(BlockContext& ctx);
+// A cutting move's feed: reports FeedMissing when none is in force (G93: when the block has
+// none); `inverse_time_needs_f`: G93 needs an F in the block itself.
+bool checkFeed(BlockContext& ctx, bool inverse_time_needs_f);
+
+// ---- lowering_skip.cpp ----
+// G31: the skip move; the axes it moves are known only at run time afterwards.
+void skipMove(BlockContext& ctx, const GWord& g);
+// A block that needs the position where an earlier G31 stopped (an incremental word on such
+// an axis, G92 naming it, a move that leaves it where it is) is DependsOnSkip; an absolute
+// word makes the axis known again.
+void checkSkipDependence(BlockContext& ctx);
 
 // ---- lowering_coordinates.cpp ----
 // G54-G59, G54.1 P / G54 P: selects the work system named by the group's code.

@@ -78,8 +78,6 @@ void applyFeed(BlockContext& ctx) {
   ctx.next.feed_after_inverse_time = false;
 }
 
-namespace {
-
 bool checkFeed(BlockContext& ctx, bool inverse_time_needs_f) {
   const ir::Modal& m = ctx.next.modal;
   if (m.feed_mode == ir::FeedMode::InverseTime) {
@@ -114,6 +112,8 @@ bool checkFeed(BlockContext& ctx, bool inverse_time_needs_f) {
   }
   return true;
 }
+
+namespace {
 
 // Feed of a cutting op in the IR unit: inverse time (1/min) becomes mm/min over `length`.
 double opFeed(const BlockContext& ctx, double length) {

@@ -133,7 +133,18 @@ std::optional<eval::Value> ControllerVariables::read(int64_t number, SourceLocat
   const int axes = core_.machine->axisCount();
   auto axisOf = [&](int64_t i) { return i < axes ? static_cast<int>(i) : -1; };
   const ir::Frame frame = frameOf(cs, table.behaviour);
+  // Where a G31 stopped is known only when the program runs (lowering_skip.cpp).
+  auto afterSkip = [&](int axis) -> std::optional<eval::Value> {
+    return unknown(absl::StrCat("#", number, " (", std::string(r->what), " of ",
+                                core_.machine->axes[axis].name,
+                                ") depends on where G31 stopped, known only when the program "
+                                "runs: run-time evaluation (--defer) is not built yet"));
+  };
   switch (r->kind) {
+    case SystemVariable::SkipPosition:
+      return unknown(absl::StrCat("#", number, " (", std::string(r->what),
+                                  ") is where G31 stopped, known only when the program runs: "
+                                  "run-time evaluation (--defer) is not built yet"));
     case SystemVariable::RunTime:
       return unknown(absl::StrCat("#", number, " (", std::string(r->what),
                                   ") is known only when the program runs on the machine: "
@@ -165,10 +176,12 @@ std::optional<eval::Value> ControllerVariables::read(int64_t number, SourceLocat
     case SystemVariable::WorkPosition: {
       const int i = axisOf(number - r->first);
       if (i < 0) return eval::Value::none();
+      if (cs.skip_axes & (1u << i)) return afterSkip(i);
       return eval::Value::of((cs.position[i] - frame.total()[i]) / scale);
     }
     case SystemVariable::MachinePosition: {
       const int i = axisOf(number - r->first);
+      if (i >= 0 && (cs.skip_axes & (1u << i))) return afterSkip(i);
       return i < 0 ? eval::Value::none() : eval::Value::of(cs.position[i] / scale);
     }
     case SystemVariable::ToolLengthVector: {

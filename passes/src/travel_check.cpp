@@ -58,6 +58,11 @@ void TravelCheckPass::accept(ir::Block block) {
                        beyond = travelViolation(machine_.axes, *to);
                      }
                    },
+                   [&](const ir::Skip& s) {
+                     // Where it stops is known at run time; its end point is commanded.
+                     to = &s.to;
+                     beyond = travelViolation(machine_.axes, *to);
+                   },
                    [](const ir::Dwell&) {},
                    [](const ir::MachineFunction&) {},
                    [](const ir::ReferenceCheck&) {},  // checks the position, does not move

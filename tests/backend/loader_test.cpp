@@ -50,7 +50,7 @@ TEST(Loader, HeaderBytesAreTheDocumentedLayout) {
   EXPECT_EQ(std::string(b.begin(), b.begin() + 4), "NCCB");
   EXPECT_EQ(b[4], 2);  // major, little-endian
   EXPECT_EQ(b[5], 0);
-  EXPECT_EQ(b[6], 0);  // minor
+  EXPECT_EQ(b[6], 1);  // minor (2.1: SKIP)
   EXPECT_EQ(b[9], 3);  // axis count
   EXPECT_EQ(b[24], 64 + 3 * 16);  // code section offset = header size
   EXPECT_EQ(bytecode::storedChecksum(b), bytecode::fileChecksum(b));
@@ -84,6 +84,18 @@ TEST(Loader, RejectsBadMagic) {
   EXPECT_EQ(loadError(b).substr(0, 7), "NCC7002");
 }
 
+// 2.1 only added SKIP: a 2.0 file (the same bytes, minor 0) still loads; a newer minor is
+// refused, since it may hold opcodes this loader does not know.
+TEST(Loader, ReadsOlderMinorRefusesNewer) {
+  std::vector<uint8_t> b = test::serialise(test::smallProgram());
+  b[6] = 0;
+  bytecode::sealChecksum(b);
+  EXPECT_EQ(loadError(b), "ok");
+  b[6] = 2;
+  bytecode::sealChecksum(b);
+  EXPECT_EQ(loadError(b).substr(0, 7), "NCC7003");
+}
+
 TEST(Loader, RejectsOtherMajorVersion) {
   std::vector<uint8_t> b = test::serialise(test::smallProgram());
   b[4] = 1;  // a 1.x file: no checksum, refused by version
@@ -101,7 +113,10 @@ TEST(Loader, RejectsEveryChangedByte) {
       std::vector<uint8_t> flipped = b;
       flipped[i] ^= static_cast<uint8_t>(1u << bit);
       const std::string code = loadError(flipped).substr(0, 7);
-      const char* expected = i < 4 ? "NCC7002" : i < 8 ? "NCC7003" : "NCC7016";
+      // Clearing bit 0 of the minor makes a 2.0 header, a version this loader reads: the
+      // checksum refuses it.
+      const bool older_minor = i == 6 && bit == 0;
+      const char* expected = i < 4 ? "NCC7002" : i < 8 && !older_minor ? "NCC7003" : "NCC7016";
       ASSERT_EQ(code, expected) << "byte " << i << " bit " << bit;
     }
   }

@@ -1,6 +1,6 @@
 // The opcode table (format.h, OpcodeInfo) that encoding, decoding, sizes, the verifier and the
 // disassembler derive from: every opcode round-trips through it, its sizes are the documented
-// ones (the byte format of version 2.0), its listings name only what the opcode has, and the
+// ones (the byte format of version 2.1), its listings name only what the opcode has, and the
 // listing of every opcode is the one the disassembler printed before the table.
 #include <array>
 #include <cstring>
@@ -64,6 +64,10 @@ bytecode::Instruction sample(Opcode op, int axis_count) {
       case Operand::Assigned: in.variable = 0x00ABCDEFu; break;
       case Operand::JumpTarget: in.target = 0x00FEDCBAu; break;
       case Operand::Code: in.code = -0x0102030405060708LL; break;
+      case Operand::Results: in.variable = 0x00ABCDEFu; break;
+      case Operand::Origin:
+        for (int i = 0; i < axis_count; ++i) in.origin[i] = -0.375 * (i + 1) + 9.0;
+        break;
     }
   }
   return in;
@@ -86,6 +90,7 @@ void expectSameFields(const bytecode::Instruction& a, const bytecode::Instructio
   for (int i = 0; i < axis_count; ++i) EXPECT_EQ(a.axes[i], b.axes[i]) << mnemonic << " " << i;
   EXPECT_EQ(a.center1, b.center1) << mnemonic;
   EXPECT_EQ(a.center2, b.center2) << mnemonic;
+  for (int i = 0; i < axis_count; ++i) EXPECT_EQ(a.origin[i], b.origin[i]) << mnemonic << " " << i;
 }
 
 TEST(OpcodeTable, EveryOpcodeRoundTripsAndItsSizeIsTheBytesWritten) {
@@ -119,7 +124,7 @@ TEST(OpcodeTable, EveryOpcodeRoundTripsAndItsSizeIsTheBytesWritten) {
   }
 }
 
-// The sizes of docs/bytecode.md ("Sizes with N axes"): the byte format of version 2.0, which
+// The sizes of docs/bytecode.md ("Sizes with N axes"): the byte format of version 2.1, which
 // every compiled program and the VM's pinned traces depend on.
 TEST(OpcodeTable, SizesAreTheDocumentedOnes) {
   auto size = [](Opcode op, uint32_t n) { return bytecode::instructionSize(op, n); };
@@ -128,6 +133,7 @@ TEST(OpcodeTable, SizesAreTheDocumentedOnes) {
     EXPECT_EQ(size(Opcode::Line, n), 10 + 8 * n);
     EXPECT_EQ(size(Opcode::Arc, n), 33 + 8 * n);
     EXPECT_EQ(size(Opcode::RefCheck, n), 4 + 8 * n);
+    EXPECT_EQ(size(Opcode::Skip, n), 14 + 16 * n);  // since 2.1
     EXPECT_EQ(size(Opcode::Dwell, n), 10u);
     for (Opcode op : {Opcode::SpindleSpeed, Opcode::ToolSelect, Opcode::MCode, Opcode::Push})
       EXPECT_EQ(size(op, n), 9u);
@@ -137,8 +143,8 @@ TEST(OpcodeTable, SizesAreTheDocumentedOnes) {
   int one_byte = 0;
   for (Opcode op : everyOpcode()) one_byte += bytecode::opcodeInfo(op).operands().empty();
   EXPECT_EQ(one_byte, 25);  // END, 12 machine functions, PUSH_VACANT, POP, 5 arithmetic, 6 CMP
-  EXPECT_EQ(everyOpcode().size(), 38u);
-  EXPECT_EQ(bytecode::maxInstructionSize(), 33u + 8u * kMaxAxes);
+  EXPECT_EQ(everyOpcode().size(), 39u);
+  EXPECT_EQ(bytecode::maxInstructionSize(), 14u + 16u * kMaxAxes);  // SKIP with 9 axes
 }
 
 // ARC and REFCHECK byte by byte, as docs/bytecode.md lays them out.

@@ -59,6 +59,10 @@ inline bytecode::Program everyOpcodeProgram() {
   a.at(1, 7).dwell(2.5).dwell(3.0, bytecode::kFlagRevolutions);
   a.at(1, 8).refCheck(0b101, 2, {20.0, 0.0, -3.0});
   a.op(Opcode::ProgramStop).op(Opcode::OptionalStop);
+  a.at(1, 10).skip({20.0, 0.0, -50.0}, 100.0, 5061, {10.0, 0.0, -5.0});
+  a.skip({20.0, 0.0, -60.0}, 0.5, 0, {0.0, 0.0, 0.0},
+         bytecode::kFlagExactStop | bytecode::kFlagFeedPerRev | bytecode::kFlagFixedOverride |
+             bytecode::kFlagInch);
   a.at(1, 9).op(Opcode::ProgramEnd).op(Opcode::ProgramEndRewind).op(Opcode::End);
   return a.finish();
 }

@@ -174,7 +174,7 @@ class MacroTest(ScratchDirTest):
         proc = ncc("compile", self.path("c.nc"), "--dialect", "fanuc-m", "--machine", bad,
                    "-o", self.path("c.ncb"))
         self.assertEqual(proc.returncode, 1, proc.stderr)
-        self.assertIn("error[NCC0308]", proc.stderr)
+        self.assertIn("error[NCC0309]", proc.stderr)
         self.assertFalse(os.path.exists(self.path("c.ncb")))
 
     # ---- variables file ----------------------------------------------------------------------

@@ -171,6 +171,28 @@ TEST(MachineFile, RotaryAxesParamOverridesTheNameRule) {
   EXPECT_EQ(r.machine->axes[2].kind, AxisKind::Rotary);
 }
 
+TEST(MachineFile, ProbeTriggersAreReadAndNotHashed) {
+  Result r = parse("[machine]\naxes = [\"X\", \"Y\", \"Z\"]\n[machine.probe]\nZ = -42.5\nX = 120\n");
+  ASSERT_TRUE(r.machine);
+  EXPECT_EQ(r.machine->probe.axes, 0b101);
+  EXPECT_EQ(r.machine->probe.trigger[0], 120.0);
+  EXPECT_EQ(r.machine->probe.trigger[2], -42.5);
+  // A run-time property: a program compiled without the probe runs with it.
+  EXPECT_EQ(r.machine->configHash(), defaultMachine().configHash());
+  EXPECT_EQ(defaultMachine().probe.axes, 0);
+}
+
+TEST(MachineFile, BadProbeTriggers) {
+  Result r = parse("[machine.probe]\nW = 1\nZ = \"a\"\nX = 2e7\n");
+  ASSERT_EQ(r.errors.size(), 3u);
+  EXPECT_EQ(r.errors[0], "machine.toml:2:1: error[NCC0304]: unknown axis 'W' in 'machine.probe' "
+                         "(the machine's axes are X, Y, Z)");
+  EXPECT_EQ(r.errors[1],
+            "machine.toml:3:5: error[NCC0303]: wrong type for 'Z': expected a number, found a string");
+  EXPECT_EQ(r.errors[2], "machine.toml:4:5: error[NCC0306]: the probe trigger of X is 2e+07: "
+                         "positions must be within +-1e+06");
+}
+
 TEST(MachineFile, UnknownKeyInMachine) {
   EXPECT_EQ(onlyError("[machine]\naxes = [\"X\", \"Y\", \"Z\"]\n\nfoo = 1\n"),
             "machine.toml:4:1: error[NCC0302]: unknown key 'foo' in [machine]");

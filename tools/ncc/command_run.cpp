@@ -41,6 +41,7 @@ struct RunArgs {
   std::vector<std::string> feed_override_at;  // "SECONDS=PERCENT", as given
   std::vector<std::string> rapid_override_at;  // "SECONDS=PERCENT", as given
   std::vector<std::string> feed_hold_at;      // "SECONDS=DURATION", as given
+  std::vector<std::string> probe;             // "AXIS=VALUE", as given
 };
 
 // A plain decimal number (digits, '.', an exponent, a leading '-'): no hex, no whitespace,
@@ -161,7 +162,8 @@ bool saveVariables(driver::Session& session, const driver::SimulationResult& sim
 // emitted. What an alarm leaves (docs/cli.md, "Output files"): the summary says it in its
 // status line; a trace keeps the ticks up to the alarm; the moves keep those taken before
 // it and end with an alarm record; vars writes nothing (there is no end state).
-int runController(driver::Session& session, const bytecode::Program& program, const RunArgs& args) {
+int runController(driver::Session& session, const MachineConfig& machine,
+                  const bytecode::Program& program, const RunArgs& args) {
   driver::SimulationOptions options;
   options.max_steps = args.max_steps;
   options.max_seconds = args.max_time;
@@ -179,7 +181,7 @@ int runController(driver::Session& session, const bytecode::Program& program, co
   if (args.emit == "trace") {
     driver::TraceHeader header;
     for (const bytecode::AxisInfo& axis : program.header.axes) header.axes.push_back(axis.name);
-    header.tick_seconds = session.machine().ipo_cycle_seconds;
+    header.tick_seconds = machine.ipo_cycle_seconds;
     header.tick_every = args.trace_every;
     bool binary = !output.toStdout() && !absl::EndsWithIgnoreCase(args.output, ".csv");
     trace = binary ? driver::makeBinaryTraceWriter(output.stream(), header)
@@ -194,7 +196,7 @@ int runController(driver::Session& session, const bytecode::Program& program, co
   RunObserver observer(program, args.emit == "moves" ? &output.stream() : nullptr, progress);
   options.observer = &observer;
   if (progress.enabled()) options.progress = [&](const vm::TickOutput& t) { progress.tick(t.time); };
-  driver::SimulationResult sim = driver::simulate(program, session.machine(), trace.get(), options);
+  driver::SimulationResult sim = driver::simulate(program, machine, trace.get(), options);
   progress.clear();
   if (!sim.error.empty()) {
     // "CODE: message" from the controller's load.
@@ -203,7 +205,6 @@ int runController(driver::Session& session, const bytecode::Program& program, co
     else printError(sim.error.substr(0, colon), sim.error.substr(colon + 2));
     return kProgramError;
   }
-  const MachineConfig& machine = session.machine();
   const bool json = args.emit == "summary-json";
   const bool summary_only = args.emit == "summary" || json;
   auto summary = [&](std::ostream& out) {
@@ -234,6 +235,15 @@ int runRun(const RunArgs& args) {
                           "when it was compiled");
     return kUsage;
   }
+  // --probe AXIS=VALUE: the simulated skip signal, over the machine file's [machine.probe].
+  // A run-time property (not hashed): the VM applies it, the compile does not see it.
+  MachineConfig machine = session.machine();
+  for (const std::string& text : args.probe) {
+    if (std::optional<std::string> error = setProbeFromOption(machine.probe, machine.axes, text)) {
+      printError("NCC0308", absl::StrCat("--probe: ", *error));
+      return kUsage;
+    }
+  }
   bytecode::Program program;
   bool loaded = false;
   std::optional<driver::SetupError> no_scratch;  // NCC0004: $TMPDIR unusable
@@ -254,7 +264,7 @@ int runRun(const RunArgs& args) {
   }
   printDiagnostics(session);  // warnings of the compile
   session.diagnostics().clear();
-  return runController(session, program, args);
+  return runController(session, machine, program, args);
 }
 
 int runDis(const std::string& input, const CommonOptions& common) {
@@ -320,6 +330,9 @@ void addRunCommand(CLI::App& app, int& exit_code) {
                   "SECONDS=DURATION: the operator holds the feed at that time of the simulated "
                   "run and releases it DURATION seconds later (repeatable): the path brakes to "
                   "rest on the programmed path, stands, and goes on");
+  cmd->add_option("--probe", args->probe,
+                  "AXIS=VALUE: the simulated skip signal of G31 comes on where AXIS reaches VALUE "
+                  "(machine coordinates) moving towards it (repeatable; over [machine.probe])");
   args->common.addTo(*cmd);
   cmd->callback([args, &exit_code] { exit_code = runRun(*args); });
 }

@@ -71,7 +71,8 @@ Executor::Executor(const bytecode::Program& program, const MachineConfig& machin
       axis_count_(program.axisCount()),
       axes_(machine.axes),
       travel_alarms_(travelAlarmCodes(program.header.dialect)),
-      arc_radius_tolerance_(machine.params.getNumber("arc_radius_tolerance", 0.01)) {
+      arc_radius_tolerance_(machine.params.getNumber("arc_radius_tolerance", 0.01)),
+      probe_(machine.probe) {
   position_ = machine.start_position;
   const uint32_t count = program.header.variable_count <= bytecode::kMaxVariableCount
                              ? program.header.variable_count
@@ -123,6 +124,25 @@ bool Executor::raiseArcRadius(double start_radius, double end_radius, uint32_t o
   return false;
 }
 
+bool Executor::skip(const Instruction& in, MotionPrimitive& m, uint32_t offset) {
+  // The stop point: the first point of the path where the signal is on (probe.h), else the
+  // end point (the manuals' notes do not say what happens without a signal; FANUC and Mazak
+  // complete the move and the skip position is its end point).
+  if (const std::optional<ProbeHit> hit = probeStop(probe_, m.from, m.to, axis_count_))
+    m.to = probeStopPoint(probe_, *hit, m.from, m.to, axis_count_);
+  // The machine stops there: no blending through the skip point, override 100 %.
+  m.exact_stop = true;
+  if (in.variable == 0) return true;
+  if (uint64_t{in.variable} + static_cast<uint64_t>(axis_count_) > variables_.size())
+    return raise("NCC7205", "skip result variables out of range (unverified code)", offset);
+  for (int i = 0; i < axis_count_; ++i) {
+    double work = m.to[i] - in.origin[i];
+    if ((in.flags & bytecode::kFlagInch) && axes_[i].kind == AxisKind::Linear) work /= 25.4;
+    variables_[in.variable + i] = Value{work, false};
+  }
+  return true;
+}
+
 bool Executor::pop(Value& out, uint32_t offset) {
   if (stack_size_ == 0) return raise("NCC7205", "value stack underflow (unverified code)", offset);
   out = stack_[--stack_size_];
@@ -156,6 +176,7 @@ bool Executor::next(Event& out) {
       case Opcode::Rapid:
       case Opcode::Line:
       case Opcode::Arc:
+      case Opcode::Skip:
       case Opcode::Dwell: {
         MotionPrimitive& m = out.motion;
         m = MotionPrimitive{};
@@ -179,6 +200,9 @@ bool Executor::next(Event& out) {
             m.per_axis = (in.flags & bytecode::kFlagPerAxis) != 0;
           } else if (in.op == Opcode::Line) {
             m.kind = MotionPrimitive::Kind::Line;
+          } else if (in.op == Opcode::Skip) {
+            m.kind = MotionPrimitive::Kind::Line;
+            if (!skip(in, m, at)) return false;
           } else {
             if (in.axis1 >= axis_count_ || in.axis2 >= axis_count_ ||
                 static_cast<uint8_t>(in.plane) > 2)

@@ -47,6 +47,18 @@ Assembler& Assembler::line(const AxisValues& to, double feed, uint8_t flags) {
   return emit(in);
 }
 
+Assembler& Assembler::skip(const AxisValues& to, double feed, uint32_t first_variable,
+                           const AxisValues& origin, uint8_t flags) {
+  Instruction in;
+  in.op = Opcode::Skip;
+  in.flags = flags;
+  in.value = feed;
+  in.variable = first_variable;
+  in.axes = to;
+  in.origin = origin;
+  return emit(in);
+}
+
 Assembler& Assembler::arc(const AxisValues& to, uint8_t axis1, uint8_t axis2, double center1,
                           double center2, double feed, uint8_t flags, ArcPlane plane,
                           uint32_t turns) {

@@ -89,6 +89,8 @@ std::string renderOperand(Operand kind, std::string_view listing, const Program&
     case Operand::Assigned: return absl::StrCat(in.variable);
     case Operand::JumpTarget: return absl::StrCat(absl::Hex(in.target, absl::kZeroPad6));
     case Operand::Code: return absl::StrCat(in.code);
+    case Operand::Results: return in.variable == 0 ? "" : absl::StrCat(in.variable);
+    case Operand::Origin: return axesText(program, in.origin, all);
   }
   return "?";
 }

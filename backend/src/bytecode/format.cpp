@@ -44,6 +44,11 @@ constexpr std::array<OpcodeInfo, 256> makeTable() {
   set(Opcode::Arc, "ARC", {Flags, Plane, PlaneAxes, Turns, Feed, Target, Centre},
       "{plane} {clockwise} {target} centre {centre} F{feed}[ turns {turns}][ {flags}]",
       kMotionFlags | kFlagFeedPerRev | kFlagClockwise | kFlagFixedOverride);
+  // G31: the skip position (stop point - origin, in inches with kFlagInch) goes to the
+  // Results variables.
+  set(Opcode::Skip, "SKIP", {Flags, Feed, Results, Target, Origin},
+      "{target} F{feed} origin {origin}[ #{results}][ {flags}]",
+      kMotionFlags | kFlagFeedPerRev | kFlagFixedOverride | kFlagInch);
   set(Opcode::Dwell, "DWELL", {Flags, Amount}, "{amount} {revolutions}", kFlagRevolutions);
   set(Opcode::SpindleSpeed, "SPINDLE_SPEED", {Speed}, "S{speed}");
   set(Opcode::SpindleCW, "SPINDLE_CW", {}, "");
@@ -85,13 +90,14 @@ constexpr std::array<OpcodeInfo, 256> kTable = makeTable();
 
 // Flag bits in listing order; the two with a word for "clear" print where their listing names
 // them, the others under {flags} when set.
-constexpr std::array<FlagInfo, 6> kFlags = {{
+constexpr std::array<FlagInfo, 7> kFlags = {{
     {kFlagFeedPerRev, "feed-per-rev", "per-rev", ""},
     {kFlagPerAxis, "per-axis", "per-axis", ""},
     {kFlagExactStop, "exact-stop", "exact-stop", ""},
     {kFlagFixedOverride, "fixed-override", "fixed-override", ""},
     {kFlagClockwise, "clockwise", "CW", "CCW"},
     {kFlagRevolutions, "revolutions", "rev", "s"},
+    {kFlagInch, "inch", "inch", ""},
 }};
 
 constexpr uint32_t kAxisVector = 0xFFFFFFFFu;  // size marker: 8 bytes per configured axis
@@ -106,6 +112,7 @@ constexpr uint32_t fixedSize(Operand kind) {
     case Turns:
     case Variable:
     case Assigned:
+    case Results:
     case JumpTarget: return 4;
     case Feed:
     case Amount:
@@ -114,7 +121,8 @@ constexpr uint32_t fixedSize(Operand kind) {
     case Code: return 8;
     case Centre: return 16;
     case Target:
-    case Position: return kAxisVector;
+    case Position:
+    case Origin: return kAxisVector;
   }
   return 0;
 }
@@ -181,6 +189,8 @@ const char* operandName(Operand kind) {
     case Assigned: return "variable";
     case JumpTarget: return "jump";
     case Code: return "code";
+    case Results: return "results";
+    case Origin: return "origin";
   }
   return "?";
 }

@@ -36,7 +36,11 @@ void readOperand(Operand kind, const uint8_t*& p, int axis_count, Instruction& o
     case Operand::Mask: out.mask = bytes::getU16(p), p += 2; return;
     case Operand::Reference: out.reference = *p++; return;
     case Operand::Variable:
-    case Operand::Assigned: out.variable = bytes::getU32(p), p += 4; return;
+    case Operand::Assigned:
+    case Operand::Results: out.variable = bytes::getU32(p), p += 4; return;
+    case Operand::Origin:
+      for (int i = 0; i < axis_count; ++i) out.origin[i] = f64();
+      return;
     case Operand::JumpTarget: out.target = bytes::getU32(p), p += 4; return;
     case Operand::Code: out.code = static_cast<int64_t>(bytes::getU64(p)), p += 8; return;
   }
@@ -67,7 +71,11 @@ void writeOperand(Operand kind, const Instruction& in, int axis_count, uint8_t*&
     case Operand::Mask: bytes::putU16(p, in.mask); return;
     case Operand::Reference: bytes::putU8(p, in.reference); return;
     case Operand::Variable:
-    case Operand::Assigned: bytes::putU32(p, in.variable); return;
+    case Operand::Assigned:
+    case Operand::Results: bytes::putU32(p, in.variable); return;
+    case Operand::Origin:
+      for (int i = 0; i < axis_count; ++i) bytes::putF64(p, in.origin[i]);
+      return;
     case Operand::JumpTarget: bytes::putU32(p, in.target); return;
     case Operand::Code: bytes::putU64(p, static_cast<uint64_t>(in.code)); return;
   }

@@ -181,6 +181,20 @@ class Verifier {
                                                            program_.header.axes[i].name)))
             return e;
         return std::nullopt;
+      case Operand::Origin:
+        for (int i = 0; i < axis_count_; ++i)
+          if (auto e = coordinate(in.origin[i], absl::StrCat("origin of ",
+                                                             program_.header.axes[i].name)))
+            return e;
+        return std::nullopt;
+      case Operand::Results: {
+        // 0 (none), or N variables from #variable, all below the count (never #0).
+        const uint64_t last = uint64_t{in.variable} + static_cast<uint64_t>(axis_count_) - 1;
+        if (in.variable == 0 || last < program_.header.variable_count) return std::nullopt;
+        return problem("NCC7103", absl::StrCat(at(offset, in), ": result variables #",
+                                               in.variable, " to #", last, " beyond the ",
+                                               program_.header.variable_count, " declared"));
+      }
       case Operand::Centre:
         if (auto e = coordinate(in.center1, "centre")) return e;
         return coordinate(in.center2, "centre");

@@ -24,6 +24,9 @@ class Assembler {
   Assembler& op(Opcode opcode);  // an instruction without operands
   Assembler& rapid(const AxisValues& to, uint8_t flags = 0);
   Assembler& line(const AxisValues& to, double feed, uint8_t flags = 0);
+  // SKIP (G31): the skip position, minus `origin`, goes to #first_variable.. (0: nowhere).
+  Assembler& skip(const AxisValues& to, double feed, uint32_t first_variable,
+                  const AxisValues& origin, uint8_t flags = kFlagExactStop);
   Assembler& arc(const AxisValues& to, uint8_t axis1, uint8_t axis2, double center1,
                  double center2, double feed, uint8_t flags, ArcPlane plane = ArcPlane::XY,
                  uint32_t turns = 0);

@@ -11,8 +11,9 @@ namespace ncc::bytecode {
 
 inline constexpr char kMagic[4] = {'N', 'C', 'C', 'B'};
 // 2.0 added the file checksum (checksum.h) and the value bounds below; 1.x files are refused.
+// 2.1 added SKIP (G31); 2.0 files load unchanged.
 inline constexpr uint16_t kVersionMajor = 2;
-inline constexpr uint16_t kVersionMinor = 0;
+inline constexpr uint16_t kVersionMinor = 1;
 
 // Fixed part of the header; the axis table (kAxisEntrySize bytes per axis) follows it and the
 // code section starts right after the axis table.
@@ -52,6 +53,7 @@ enum class Opcode : uint8_t {
   Line = 0x11,
   Arc = 0x12,
   Dwell = 0x13,            // seconds, or revolutions with kFlagRevolutions
+  Skip = 0x14,             // G31: a LINE that ends where the skip signal comes on (since 2.1)
   // Machine functions.
   SpindleSpeed = 0x20,     // S
   SpindleCW = 0x21,        // M03
@@ -95,7 +97,8 @@ inline constexpr uint8_t kFlagExactStop = 0x02;   // RAPID, LINE, ARC: stop at t
 inline constexpr uint8_t kFlagPerAxis = 0x04;     // RAPID: axes move independently (non-linear G00)
 inline constexpr uint8_t kFlagClockwise = 0x08;   // ARC: G02
 inline constexpr uint8_t kFlagRevolutions = 0x10; // DWELL: amount in spindle revolutions
-inline constexpr uint8_t kFlagFixedOverride = 0x20; // LINE, ARC: feed override fixed at 100 % (G63)
+inline constexpr uint8_t kFlagFixedOverride = 0x20; // LINE, ARC, SKIP: feed override fixed at 100 % (G63, G31)
+inline constexpr uint8_t kFlagInch = 0x40;        // SKIP: the skip position variables hold inches (G20)
 
 enum class ArcPlane : uint8_t { XY = 0, ZX = 1, YZ = 2 };  // G17 G18 G19
 
@@ -120,6 +123,8 @@ enum class Operand : uint8_t {
   Assigned,   // u32: like Variable, but not #0 (it is always vacant)          -> variable
   JumpTarget, // u32: code offset of an instruction start                      -> target
   Code,       // i64 in 0..kMaxFunctionCode: a T or M number                   -> code
+  Results,    // u32: 0, or the first of N variables (one per axis) below the count -> variable
+  Origin,     // N x f64 like Target: machine coordinates of the work zero     -> origin
 };
 inline constexpr int kMaxOperands = 8;
 

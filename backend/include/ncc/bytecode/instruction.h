@@ -20,13 +20,14 @@ struct Instruction {
   uint32_t turns = 0;         // ARC: full circles beyond the first
   uint16_t mask = 0;          // REFCHECK: axes checked
   uint8_t reference = 1;      // REFCHECK: reference point number
-  uint32_t variable = 0;      // LOAD, STORE
+  uint32_t variable = 0;      // LOAD, STORE; SKIP: first result variable (0: none)
   uint32_t target = 0;        // JUMP, JUMP_IF_FALSE: code offset
   int64_t code = 0;           // TOOL_SELECT T, M_CODE M
   double value = 0.0;         // LINE/ARC feed, DWELL amount, SPINDLE_SPEED, PUSH constant
   AxisValues axes{};          // RAPID/LINE/ARC target, REFCHECK position (axis_count used)
   double center1 = 0.0;       // ARC centre on axis1 and axis2
   double center2 = 0.0;
+  AxisValues origin{};        // SKIP: machine coordinates of the work zero
 };
 
 enum class DecodeStatus : uint8_t { Ok, Truncated, BadOpcode };

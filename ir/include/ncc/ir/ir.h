@@ -80,6 +80,19 @@ struct Arc {
   bool feed_per_rev = false;
 };
 
+// G31 skip: a linear move at `feed` towards `to` that ends where the skip signal comes on
+// (the simulated probe, [machine.probe]), or at `to` when it never does. The VM stores the
+// point it stopped at, in work coordinates, in the skip-position variables; the compiler
+// does not know it (docs/semantics.md, Skip).
+struct Skip {
+  AxisValues to{};
+  Space space = Space::Work;
+  double feed = 0.0;            // mm/min, or mm/rev when feed_per_rev
+  bool feed_per_rev = false;
+  uint32_t first_variable = 0;  // axis i's skip position goes to #(first_variable + i); 0: none
+  bool inch_variables = false;  // G20: the variables hold inches (linear axes)
+};
+
 struct Dwell {
   double seconds = 0.0;
   bool revolutions = false;  // true: `seconds` holds spindle revolutions (G95 dwell parameter)
@@ -124,7 +137,7 @@ struct SetVariable {
 };
 
 using Operation =
-    std::variant<Rapid, Linear, Arc, Dwell, MachineFunction, ReferenceCheck, SetVariable>;
+    std::variant<Rapid, Linear, Arc, Skip, Dwell, MachineFunction, ReferenceCheck, SetVariable>;
 
 struct Block {
   SourceLocation loc;

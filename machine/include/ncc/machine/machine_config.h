@@ -13,6 +13,7 @@
 #include "ncc/machine/axes.h"
 #include "ncc/machine/dialect.h"
 #include "ncc/machine/params.h"
+#include "ncc/machine/probe.h"
 #include "ncc/machine/servo_config.h"
 
 namespace ncc {
@@ -80,6 +81,9 @@ struct MachineConfig {
   int lookahead_segments = 1024;
   static constexpr int kMinLookaheadSegments = 16, kMaxLookaheadSegments = 16384;
   ParameterSet params;                   // [machine.params]
+  // [machine.probe] (or `ncc run --probe`): where the simulated skip signal of G31 comes on.
+  // Run-time only: not hashed.
+  ProbeConfig probe;
   // [machine] dialect: the language of the machine's programs, when the file names it
   // (`--dialect` overrides it). Not hashed: the bytecode header carries the dialect.
   std::optional<Dialect> dialect;

@@ -34,6 +34,7 @@ enum class GAction : uint8_t {
   MachineCoordinates,                           // G53
   SetShift,                                     // G92
   ResetShift,                                   // G92.1
+  Skip,                                         // G31 (Mazak G31.1-G31.3 too): skip move
   CancelNoEffect,  // the cancel/off code of a function ncc never switches on (G40, G80, G50..)
   LanguageDin, LanguageIso,                     // G290 G291
   NotSupported,    // a real code of the controller that ncc does not implement yet
@@ -86,6 +87,7 @@ enum class Alarm : uint8_t {
   G53Incremental,           // G53 in G91 where the controller ignores it (warning)
   TooManyDigits,            // a number longer than its address's format (format_digits)
   LengthCompInArc,          // G43/G44/G49 (or a new H) while G02/G03 is in force
+  DependsOnSkip,            // a block that needs the position where G31 stopped (run time)
   kCount,
 };
 
@@ -133,6 +135,9 @@ struct DialectBehaviour {
   bool dwell_x_before_g04_is_coordinate;
   // Siemens §3.3.1: "the dwell block contains no command other than G04" (X or P).
   bool dwell_block_alone;
+  // G31's F: true, the F of the block (or the modal F) as for G01, and it stays modal; false
+  // (Mazak §4.10): "F missing -> K41 (K41 = 0 -> error); the modal F is not changed".
+  bool skip_feed_is_modal;
 };
 
 // What a block of system variables (#1000 and up) holds; the controller model reads and
@@ -148,7 +153,8 @@ enum class SystemVariable : uint8_t {
   MachinePosition,     // per axis, machine coordinates
   WorkPosition,        // per axis, work coordinates
   ToolLengthVector,    // per axis: the tool length offset in force
-  RunTime,             // interface signals, timers, skip position, servo lag: known when run
+  SkipPosition,        // per axis, work coordinates: where the last G31 stopped (the VM writes it)
+  RunTime,             // interface signals, timers, servo lag: known when run
 };
 
 struct SystemVariableRange {

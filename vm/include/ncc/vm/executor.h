@@ -32,7 +32,10 @@ class Executor {
   // (bytecode::Program::paged) is read through a bounded window (bytecode::CodeView).
   Executor(const bytecode::Program& program, const MachineConfig& machine);
 
-  // Runs to the next event and stores it in `out`. Returns false at the end of the program
+  // Runs to the next event and stores it in `out`. A SKIP (G31) is a LINE that ends where the
+  // machine's probe (MachineConfig::probe) turns the skip signal on, with an exact stop; the
+  // point it stopped at, minus the instruction's origin, goes to its result variables
+  // (#5061..), and the next move starts there. Returns false at the end of the program
   // (END, or the call after M02/M30 was returned) or on an alarm (see alarm()). A move that
   // would leave an axis' travel range (its end point, or any point of an arc) is not emitted:
   // the dialect's stored-stroke-limit alarm instead (travelAlarmCodes(): FANUC OT0500/OT0501,
@@ -68,6 +71,8 @@ class Executor {
   // program holds one, and an edited file could make it a spiral of hours.
   bool raiseArcRadius(double start_radius, double end_radius, uint32_t offset);
   SourcePosition where(uint32_t offset);
+  // SKIP: where the move stops on the probe, and the skip position into its result variables.
+  bool skip(const bytecode::Instruction& in, MotionPrimitive& m, uint32_t offset);
   bool pop(Value& out, uint32_t offset);
   bool push(Value v, uint32_t offset);
 
@@ -78,6 +83,7 @@ class Executor {
   const std::vector<AxisConfig> axes_;   // travel limits (a copy, sized once)
   const TravelAlarmCodes travel_alarms_;  // of the program's dialect
   const double arc_radius_tolerance_;     // [machine.params] arc_radius_tolerance, as compiled
+  const ProbeConfig probe_;               // the simulated skip signal (SKIP, G31)
   AxisValues position_{};
   std::vector<Value> variables_;  // sized once: header.variable_count
   std::array<Value, bytecode::kMaxStackDepth> stack_{};
