@@ -14,6 +14,9 @@ template <class... Cases>
 struct Overloaded : Cases... {
   using Cases::operator()...;
 };
+// Clang before 17 does not deduce aggregate template arguments (the fuzz build uses clang).
+template <class... Cases>
+Overloaded(Cases...) -> Overloaded<Cases...>;
 
 // The machine's indices of an arc plane's two axes (G17: X Y, G18: Z X, G19: Y Z), as the
 // backend finds them; -1 where the machine lacks one (the backend reports that).
