@@ -11,7 +11,7 @@
 #include "ncc/eval/macro_rules.h"
 #include "ncc/frontend/ast.h"
 #include "ncc/frontend/block_position.h"
-#include "ncc/frontend/block_reader.h"
+#include "ncc/frontend/language.h"
 
 namespace ncc::eval {
 

@@ -15,13 +15,12 @@
 #include <string_view>
 
 #include "ncc/frontend/ast.h"
+#include "ncc/frontend/language.h"
 #include "ncc/frontend/block_position.h"
 #include "ncc/support/diagnostics.h"
 #include "ncc/support/source_manager.h"
 
 namespace ncc::frontend {
-
-enum class Language : uint8_t { Iso, Din };
 
 // Which parser reads ISO blocks. Auto tries the hand-written fast path for plain word blocks
 // and falls back to the ANTLR parser for anything else; AntlrOnly skips the fast path (the

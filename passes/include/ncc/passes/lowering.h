@@ -10,7 +10,7 @@
 
 #include "ncc/eval/variables.h"
 #include "ncc/frontend/ast.h"
-#include "ncc/frontend/block_reader.h"
+#include "ncc/frontend/language.h"
 #include "ncc/ir/ir.h"
 #include "ncc/machine/dialect.h"
 #include "ncc/machine/machine_config.h"
