@@ -119,10 +119,6 @@ eval::ProgramPoint SourceProgramStore::programEnd(const eval::ProgramPoint& star
   return {start.file, library_.index(start.file).programEnd(start.position)};
 }
 
-std::string_view SourceProgramStore::fileName(uint32_t file) const {
-  return sources_.displayName(file);
-}
-
 frontend::BlockReader& SourceProgramStore::readerOf(eval::BlockCursor& cursor) {
   return static_cast<ReaderCursor&>(cursor).reader;
 }

@@ -29,7 +29,6 @@ class SourceProgramStore final : public eval::ProgramStore {
                                                  const eval::ProgramPoint& begin,
                                                  const eval::ProgramPoint& end) override;
   eval::ProgramPoint programEnd(const eval::ProgramPoint& start) override;
-  std::string_view fileName(uint32_t file) const override;
 
   // The reader under a cursor this store opened (for the text after the program's end).
   static frontend::BlockReader& readerOf(eval::BlockCursor& cursor);

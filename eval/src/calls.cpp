@@ -74,6 +74,12 @@ std::string codeName(const ast::Word& w) {
 
 }  // namespace
 
+bool Evaluator::Impl::isCallWord(const ast::Word& w) const {
+  if (callCode(w) != CallCode::None) return true;
+  if (options.code_macros.empty() || (w.address != "M" && w.address != "G")) return false;
+  return options.code_macros.count(codeName(w)) > 0;
+}
+
 bool Evaluator::Impl::codeMacro(ast::Block& block, const ProgramPoint& at, bool& consumed) {
   for (size_t i = 0; i < block.words.size(); ++i) {
     const ast::Word& w = block.words[i];
@@ -248,6 +254,7 @@ bool Evaluator::Impl::callWords(ast::Block& block, const ProgramPoint& at, bool&
         std::optional<int64_t> n = integerWord(h, "H (the sequence number)");
         if (!n) return false;
         call.sequence = *n;
+        call.local = !p;
       }
       if (l) {
         std::optional<int64_t> n = integerWord(l, "L (the repeat count)");
@@ -298,9 +305,7 @@ void Evaluator::Impl::modalCallAfter(const ast::Block& block, const ProgramPoint
   bool moves = false;
   for (const ast::Word& w : block.words) moves = moves || options.is_axis(w.address);
   if (!moves) return;
-  Pending p = macroCall(mc.program, mc.repeats, mc.arguments, mc.loc, at);
-  p.kind = Pending::Kind::ModalCall;
-  pending.push_back(std::move(p));
+  pending.push_back(macroCall(mc.program, mc.repeats, mc.arguments, mc.loc, at));
 }
 
 bool Evaluator::Impl::perform(const Pending& p) {
@@ -326,7 +331,7 @@ bool Evaluator::Impl::call(const Pending& p) {
   }
   Frame& caller = frames.back();
   Frame f;
-  if (p.sequence && p.program == 0) {
+  if (p.local) {
     // M98 H: a sequence of the calling program, run until its M99.
     const ProgramPoint end_point = programEnd(caller);
     std::optional<ProgramPoint> target = store.findSequence(
@@ -340,8 +345,6 @@ bool Evaluator::Impl::call(const Pending& p) {
     f.cursor = store.open(caller.cursor->file());
     f.begin = *target;
     f.end = end_point;
-    f.local_call = true;
-    f.program = caller.program;
   } else {
     std::optional<ProgramPoint> found = p.name.empty()
                                             ? store.findProgram(p.program, caller.cursor->file())
@@ -357,7 +360,6 @@ bool Evaluator::Impl::call(const Pending& p) {
     f.cursor = store.open(found->file);
     f.begin = *found;
     f.header_at_begin = true;
-    f.program = p.program;
     if (p.sequence) {
       // M98 P H: the program's sequence H.
       const ProgramPoint end_point = programEnd(f);
@@ -371,7 +373,6 @@ bool Evaluator::Impl::call(const Pending& p) {
       }
       f.begin = *target;
       f.header_at_begin = false;
-      f.local_call = true;
     }
   }
   f.cursor->seek(f.begin);

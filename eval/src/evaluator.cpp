@@ -193,21 +193,9 @@ std::optional<ast::Block> Evaluator::Impl::evaluateBlock(ast::Block block,
   Frame& frame = frames.back();
   bool plain = block.statements.empty() && modal_calls.empty();
   for (const ast::Word& w : block.words) {
-    if (!isLiteral(w.value)) {
+    if (!isLiteral(w.value) || isCallWord(w)) {
       plain = false;
       break;
-    }
-    // Call words need the evaluator even when written literally.
-    const char a = w.address.size() == 1 ? w.address[0] : 0;
-    if (a == 'M' || a == 'G') {
-      const double v = literalValue(w.value);
-      if ((a == 'M' && (v == 98 || v == 99)) ||
-          (a == 'G' && (v == 65 || v == 66 || v == 66.1 || v == 67)) ||
-          (!options.code_macros.empty() &&
-           options.code_macros.count(absl::StrCat(w.address, static_cast<int64_t>(v))))) {
-        plain = false;
-        break;
-      }
     }
   }
   if (plain) return block;

@@ -29,11 +29,9 @@ struct Frame {
   bool header_at_begin = false;  // the block at `begin` is the program's own O block
   ProgramPoint call_point;       // the caller's call block (M99 P searches from there)
   SourceLocation call_loc;
-  int64_t program = -1;          // O number (-1: the main program)
   int64_t repeats_left = 0;      // runs still to come after this one (M98 L, G65 L)
   bool macro = false;            // a macro call: it opened a level of locals
   bool is_main = false;
-  bool local_call = false;       // M98 H: a sequence of the caller's program
   std::string code;              // a code macro's code ("M6"): it acts as the plain code inside
   bool seen_content = false;
   std::vector<Loop> loops;
@@ -52,8 +50,9 @@ struct ModalCall {
 // A call or return to perform before the next block is read (the block's other words were
 // lowered first: `X100. M98 P100` moves, then calls).
 struct Pending {
-  enum class Kind : uint8_t { Call, Return, ModalCall } kind = Kind::Call;
+  enum class Kind : uint8_t { Call, Return } kind = Kind::Call;
   int64_t program = 0;
+  bool local = false;               // M98 H without P: a sequence of the caller's program
   std::string name;                 // a program called by name (code macros)
   std::string code;                 // the code that called it (code macros)
   std::optional<int64_t> sequence;  // M98 H (call) / M99 P (return)
@@ -104,6 +103,9 @@ struct Evaluator::Impl {
   void programFinished();
 
   // ---- calls.cpp ----
+  // Whether a literal word is a call word (M98, M99, G65, G66, G66.1, G67) or a code macro:
+  // such a block needs evaluation even when every word is a number.
+  bool isCallWord(const ast::Word& w) const;
   // Call words of an evaluated block (M98, M99, G65, G66, G66.1, G67): removes them and
   // schedules the call or return; false after failing. `consumed`: the whole block was a
   // call (G65: every other word is an argument).

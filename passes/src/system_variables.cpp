@@ -20,13 +20,16 @@ double unitScale(const ControllerState& cs) {
   return cs.modal.units == ir::Units::Inch ? 25.4 : 1.0;
 }
 
-std::map<int, double>* registerTable(OffsetTables& t, SystemVariable kind) {
+// The register table of a kind (const or not, as `t` is); nullptr for other kinds.
+template <class Tables>
+auto* registerTable(Tables& t, SystemVariable kind) {
+  using Table = decltype(&t.length);
   switch (kind) {
     case SystemVariable::LengthGeometry: return &t.length;
     case SystemVariable::LengthWear: return &t.length_wear;
     case SystemVariable::RadiusGeometry: return &t.radius;
     case SystemVariable::RadiusWear: return &t.radius_wear;
-    default: return nullptr;
+    default: return Table{nullptr};
   }
 }
 
@@ -255,8 +258,7 @@ std::vector<ir::SetVariable> variablesOf(const TableWrite& write, const Controll
                                                                     : T::RadiusWear;
         const int64_t n = r.first + write.number - 1;
         if (write.target != target || n > r.last) break;
-        const std::map<int, double>& t =
-            *registerTable(const_cast<OffsetTables&>(tables), r.kind);  // read only
+        const std::map<int, double>& t = *registerTable(tables, r.kind);
         auto it = t.find(write.number);
         out.push_back({static_cast<uint32_t>(n), it == t.end() ? 0.0 : it->second / scale, false});
         break;

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "eval_harness.h"
+#include "memory_store.h"
 #include "gtest/gtest.h"
 #include "ncc/eval/evaluator.h"
 #include "ncc/eval/macro_rules.h"
@@ -17,84 +18,21 @@
 namespace ncc::eval {
 namespace {
 
-// One "file" per program text; a block's position is its index (offset) and line.
-class MemoryStore final : public ProgramStore {
- public:
-  uint32_t add(std::string_view text) {
-    std::vector<ast::Block> blocks;
-    std::istringstream in{std::string(text)};
-    std::string line;
-    const uint32_t file = static_cast<uint32_t>(files_.size()) + 1;
-    for (uint32_t n = 1; std::getline(in, line); ++n) {
-      DiagnosticEngine diags;
-      std::optional<ast::Block> b = frontend::parseIsoBlock(line, file, n, diags);
-      EXPECT_TRUE(b) << line;
-      blocks.push_back(std::move(*b));
-    }
-    files_.push_back(std::move(blocks));
-    return file;
-  }
+using test::MemoryStore;
 
-  class Cursor final : public BlockCursor {
-   public:
-    Cursor(const std::vector<ast::Block>& blocks, uint32_t file) : blocks_(blocks), file_(file) {}
-    std::optional<ast::Block> next() override {
-      if (i_ >= blocks_.size()) return std::nullopt;
-      last_ = i_;
-      return blocks_[i_++];
-    }
-    ProgramPoint lastPoint() const override { return point(file_, last_); }
-    void seek(const ProgramPoint& p) override { i_ = p.position.offset; }
-    void setLanguage(frontend::Language) override {}
-    uint64_t rejectedBlocks() const override { return 0; }
-    uint32_t file() const override { return file_; }
-
-   private:
-    const std::vector<ast::Block>& blocks_;
-    uint32_t file_;
-    size_t i_ = 0, last_ = 0;
-  };
-
-  std::unique_ptr<BlockCursor> open(uint32_t file) override {
-    return std::make_unique<Cursor>(files_[file - 1], file);
+// The blocks of a program text, one a line (each must parse), for `store`'s next file.
+std::vector<ast::Block> parse(MemoryStore& store, std::string_view text) {
+  std::vector<ast::Block> blocks;
+  std::istringstream in{std::string(text)};
+  std::string line;
+  for (uint32_t n = 1; std::getline(in, line); ++n) {
+    DiagnosticEngine diags;
+    std::optional<ast::Block> b = frontend::parseIsoBlock(line, store.nextFile(), n, diags);
+    EXPECT_TRUE(b) << line;
+    if (b) blocks.push_back(std::move(*b));
   }
-  std::optional<ProgramPoint> findProgram(int64_t number, uint32_t) override {
-    for (uint32_t f = 1; f <= files_.size(); ++f)
-      for (size_t i = 0; i < files_[f - 1].size(); ++i)
-        if (files_[f - 1][i].program_number == number) return point(f, i);
-    return std::nullopt;
-  }
-  std::optional<ProgramPoint> findProgramNamed(std::string_view) override { return std::nullopt; }
-  std::optional<ProgramPoint> findSequence(int64_t n, const ProgramPoint& from, SequenceSearch order,
-                                           const ProgramPoint& begin,
-                                           const ProgramPoint& end) override {
-    const std::vector<ast::Block>& b = files_[from.file - 1];
-    const size_t first = begin.position.offset, last = end.position.offset;
-    std::vector<size_t> order_of;
-    if (order == SequenceSearch::ForwardThenFromStart) {
-      for (size_t i = from.position.offset + 1; i < last; ++i) order_of.push_back(i);
-      for (size_t i = first; i <= from.position.offset; ++i) order_of.push_back(i);
-    } else {
-      for (size_t i = first; i < last; ++i) order_of.push_back(i);
-    }
-    for (size_t i : order_of)
-      if (i < b.size() && b[i].sequence == n) return point(from.file, i);
-    return std::nullopt;
-  }
-  ProgramPoint programEnd(const ProgramPoint& start) override {
-    const std::vector<ast::Block>& b = files_[start.file - 1];
-    for (size_t i = start.position.offset + 1; i < b.size(); ++i)
-      if (b[i].program_number) return point(start.file, i);
-    return point(start.file, b.size());
-  }
-  std::string_view fileName(uint32_t) const override { return "memory"; }
-
- private:
-  static ProgramPoint point(uint32_t file, size_t i) {
-    return ProgramPoint{file, frontend::BlockPosition{i, static_cast<uint32_t>(i + 1), 1}};
-  }
-  std::vector<std::vector<ast::Block>> files_;
-};
+  return blocks;
+}
 
 struct EvalRun {
   std::vector<std::string> blocks;  // printed as lowering gets them
@@ -106,7 +44,7 @@ struct EvalRun {
 EvalRun run(std::string_view program, Dialect dialect = Dialect::FanucM, uint64_t max_back_jumps = 10000) {
   const MacroRules& rules = macroRules(dialect);
   MemoryStore store;
-  const uint32_t main = store.add(program);
+  const uint32_t main = store.add(parse(store, program));
   Variables variables(rules, {rules.commons.begin(), rules.commons.end()}, nullptr);
   EvalRun out;
   variables.on_write = [&](int64_t n, const Value& v, SourceLocation) {

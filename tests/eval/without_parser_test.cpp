@@ -2,11 +2,11 @@
 // link it (ncc_eval and ncc_passes depend on ncc_ast only): what a run-time user such as the VM
 // needs to prepare blocks. The build itself is half the test: a dependency of either library on
 // the parser fails to link here.
-#include <memory>
 #include <variant>
 #include <vector>
 
 #include "gtest/gtest.h"
+#include "memory_store.h"
 #include "ncc/eval/evaluator.h"
 #include "ncc/eval/variables.h"
 #include "ncc/passes/lowering.h"
@@ -24,42 +24,6 @@ ast::Expr variable(double n) {
 }
 
 ast::Word word(const char* address, ast::Expr value) { return ast::Word{address, std::move(value), {}}; }
-
-// One program of blocks held in memory.
-class Blocks final : public eval::ProgramStore {
- public:
-  explicit Blocks(std::vector<ast::Block> blocks) : blocks_(std::move(blocks)) {}
-  class Cursor final : public eval::BlockCursor {
-   public:
-    explicit Cursor(const std::vector<ast::Block>& b) : b_(b) {}
-    std::optional<ast::Block> next() override {
-      if (i_ >= b_.size()) return std::nullopt;
-      last_ = i_;
-      return b_[i_++];
-    }
-    eval::ProgramPoint lastPoint() const override { return {1, {last_, static_cast<uint32_t>(last_ + 1), 1}}; }
-    void seek(const eval::ProgramPoint& p) override { i_ = p.position.offset; }
-    void setLanguage(frontend::Language) override {}
-    uint64_t rejectedBlocks() const override { return 0; }
-    uint32_t file() const override { return 1; }
-
-   private:
-    const std::vector<ast::Block>& b_;
-    size_t i_ = 0, last_ = 0;
-  };
-  std::unique_ptr<eval::BlockCursor> open(uint32_t) override { return std::make_unique<Cursor>(blocks_); }
-  std::optional<eval::ProgramPoint> findProgram(int64_t, uint32_t) override { return std::nullopt; }
-  std::optional<eval::ProgramPoint> findProgramNamed(std::string_view) override { return std::nullopt; }
-  std::optional<eval::ProgramPoint> findSequence(int64_t, const eval::ProgramPoint&, eval::SequenceSearch,
-                                                 const eval::ProgramPoint&, const eval::ProgramPoint&) override {
-    return std::nullopt;
-  }
-  eval::ProgramPoint programEnd(const eval::ProgramPoint&) override { return {1, {blocks_.size(), 0, 1}}; }
-  std::string_view fileName(uint32_t) const override { return "memory"; }
-
- private:
-  std::vector<ast::Block> blocks_;
-};
 
 struct Collect : ir::BlockSink {
   void accept(ir::Block b) override { blocks.push_back(std::move(b)); }
@@ -93,10 +57,11 @@ TEST(WithoutParser, EvaluationFeedsLowering) {
   variables.on_write = [&](int64_t n, const eval::Value& v, SourceLocation) {
     writes.push_back({static_cast<uint32_t>(n), v.number, v.vacant});
   };
-  Blocks store(std::move(program));
+  eval::test::MemoryStore store;
+  const uint32_t file = store.add(std::move(program));
   eval::EvaluatorOptions eo;
   eo.rules = &rules;
-  eval::Evaluator evaluator(eo, store, store.open(1), variables, diags);
+  eval::Evaluator evaluator(eo, store, store.open(file), variables, diags);
   while (std::optional<ast::Block> b = evaluator.next()) {
     if (!writes.empty()) lowering.variablesWritten(b->loc, std::exchange(writes, {}));
     if (lowering.lower(*b).program_end) evaluator.programEndCode();

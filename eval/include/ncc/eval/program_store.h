@@ -57,8 +57,6 @@ class ProgramStore {
   // The end of the program that starts at `start`: the next block with an O number, or the
   // end of the file.
   virtual ProgramPoint programEnd(const ProgramPoint& start) = 0;
-  // For messages: the file's name as diagnostics print it.
-  virtual std::string_view fileName(uint32_t file) const = 0;
 };
 
 }  // namespace ncc::eval
