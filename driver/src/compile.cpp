@@ -106,7 +106,7 @@ bool loadSavedVariables(Session& session, eval::Variables& variables) {
   if (!saved) return false;
   bool ok = true;
   for (const auto& [n, v] : *saved) {
-    if (variables.setPersistent(n, v.value)) continue;
+    if (variables.setPersistent(n, v.value, v.where)) continue;
     session.diagnostics().error(
         "NCC0017", v.where,
         absl::StrCat("#", n, " is not a variable the controller keeps across runs (its "
@@ -116,29 +116,18 @@ bool loadSavedVariables(Session& session, eval::Variables& variables) {
   return ok;
 }
 
-// The machine file's code macros: g_code_macros and m_code_macros, "G100"/"M6" -> program.
-// A key is the code as written (`M06` is M6); a key that is no code of its kind is an error.
-std::map<std::string, std::string> codeMacros(const MachineConfig& machine,
-                                              DiagnosticEngine& diags) {
+// The machine file's code macros (g_code_macros, m_code_macros): the code as the evaluator
+// names it ("M6", "G100"; the machine file reader checked the keys: `M06` is M6) -> program.
+std::map<std::string, std::string> codeMacros(const MachineConfig& machine) {
   std::map<std::string, std::string> out;
-  for (const auto& [param, letter] : {std::pair{"g_code_macros", 'G'}, std::pair{"m_code_macros", 'M'}})
+  for (const char* param : {"g_code_macros", "m_code_macros"})
     if (const ParamStringTable* t = machine.params.getStringTable(param))
       for (const auto& [code, program] : t->by_key) {
-        int64_t n = -1;
-        const bool letter_ok =
-            !code.empty() && std::toupper(static_cast<unsigned char>(code[0])) == letter;
-        const char* digits = code.data() + (code.empty() ? 0 : 1);
-        auto [end, ec] = std::from_chars(digits, code.data() + code.size(), n);
-        if (!letter_ok || ec != std::errc() || end != code.data() + code.size() || n < 0 ||
-            program.empty()) {
-          diags.error("NCC0309", SourceLocation{},
-                      absl::StrCat("[machine.params] ", param, ": '", code, "' = '", program,
-                                   "' is not a ", std::string(1, letter),
-                                   " code calling a program (e.g. ", std::string(1, letter),
-                                   letter == 'M' ? "6" : "100", " = \"9020\")"));
-          continue;
-        }
-        out[absl::StrCat(std::string(1, letter), n)] = program;
+        int64_t n = 0;
+        std::from_chars(code.data() + 1, code.data() + code.size(), n);
+        out[absl::StrCat(std::string(1, static_cast<char>(std::toupper(
+                                            static_cast<unsigned char>(code[0])))),
+                         n)] = program;
       }
   return out;
 }
@@ -172,10 +161,6 @@ void lowerProgram(Session& session, ir::BlockSink& entry, AstStageTap& tap) {
 
   eval::Variables variables(rules, commonVariables(rules, session.machine()),
                             &lowering.systemVariables());
-  if (!loadSavedVariables(session, variables)) {
-    lowering.finish();
-    return;
-  }
   // Variable writes reach the IR, one block per statement block, before the block that
   // follows them (the VM holds #1 to #9999: the system variables above are the model's own).
   std::vector<ir::SetVariable> writes;
@@ -189,6 +174,12 @@ void lowerProgram(Session& session, ir::BlockSink& entry, AstStageTap& tap) {
     writes_loc = loc;
     writes.push_back({static_cast<uint32_t>(n), v.vacant ? 0.0 : v.number, v.vacant});
   };
+  // After on_write: the loaded values reach the VM too, so a run ends with every kept
+  // variable, written by the program or not (and --vars saves them all back).
+  if (!loadSavedVariables(session, variables)) {
+    lowering.finish();
+    return;
+  }
 
   eval::EvaluatorOptions eval_options;
   eval_options.rules = &rules;
@@ -201,7 +192,7 @@ void lowerProgram(Session& session, ir::BlockSink& entry, AstStageTap& tap) {
   eval_options.argument_value = [&](const ast::Word& w) { return lowering.argumentValue(w); };
   eval_options.real_increment = [&] { return lowering.leastIncrement(); };
   eval_options.address_digits = lowering.addressDigits();
-  eval_options.code_macros = codeMacros(session.machine(), diags);
+  eval_options.code_macros = codeMacros(session.machine());
   eval::Evaluator evaluator(std::move(eval_options), store, std::move(main), variables, diags);
 
   uint64_t unreadable = 0;
@@ -244,25 +235,21 @@ bool compileWith(Session& session, ir::BlockSink& sink, Pipeline which,
                  const PassControl& control = {}, passes::PassPrinter* printer = nullptr,
                  std::ostream* stop_out = nullptr) {
   AstStageTap tap(control, printer, stop_out);
+  // Stopped after evaluation (--stop-after=evaluate): lowering still runs for the state the
+  // evaluator reads, and its IR goes nowhere.
+  const bool lowers = tap.lowers();
   DiscardingSink discard;
-  if (!tap.lowers()) {
-    // Stopped after evaluation: lowering runs for the state it keeps, its IR is dropped.
-    passes::PipelineOptions options;
-    options.axis_count = session.machine().axisCount();
-    options.dialect = session.dialect();
-    passes::PassManager pipeline(options, session.diagnostics(), discard);
-    lowerProgram(session, pipeline.entry(), tap);
-    return !session.diagnostics().hasErrors();
-  }
   passes::PipelineOptions options;
   options.axis_count = session.machine().axisCount();
-  if (which == Pipeline::Check) options.travel_limits = &session.machine();
   options.dialect = session.dialect();
-  options.verify_each = control.verify_each;
-  options.print_after = control.print_after;
-  options.printer = printer;
-  options.stop_after = control.stop_after;
-  passes::PassManager pipeline(options, session.diagnostics(), sink);
+  if (lowers) {
+    if (which == Pipeline::Check) options.travel_limits = &session.machine();
+    options.verify_each = control.verify_each;
+    options.print_after = control.print_after;
+    options.printer = printer;
+    options.stop_after = control.stop_after;
+  }
+  passes::PassManager pipeline(options, session.diagnostics(), lowers ? sink : discard);
   lowerProgram(session, pipeline.entry(), tap);
   return !session.diagnostics().hasErrors();
 }

@@ -79,10 +79,10 @@ std::map<int64_t, double> Variables::persistent() const {
   return out;
 }
 
-bool Variables::setPersistent(int64_t number, double value) {
+bool Variables::setPersistent(int64_t number, double value, SourceLocation loc) {
   if (!isPersistent(number)) return false;
   common_values_[number] = Value::of(value);
-  if (on_write) on_write(number, Value::of(value), SourceLocation{});
+  if (on_write) on_write(number, Value::of(value), loc);
   return true;
 }
 

@@ -173,6 +173,28 @@ class ParamReader {
     return ParamValue(std::move(out));
   }
 
+  // A key of a code table (`M6 = "M6_MAKRO"`): the spec's letter and a whole number, to a
+  // program that is named.
+  bool codeKey(const toml::key& key, const std::string& program, const toml::node& value) {
+    const std::string_view k = key.str();
+    const char letter = spec_.key_code_letter;
+    const bool digits = k.size() > 1 && k.size() <= 9 &&
+                        k.find_first_not_of("0123456789", 1) == std::string_view::npos;
+    if (k.empty() || (k[0] != letter && k[0] != letter + ('a' - 'A')) || !digits) {
+      ctx_.error(kBadValue, ctx_.at(key),
+                 cat("'", k, "' in '", what_, "' is not a ", std::string(1, letter),
+                     " code (", std::string(1, letter), " and a whole number, e.g. ",
+                     std::string(1, letter), letter == 'M' ? "6" : "100", ")"));
+      return false;
+    }
+    if (program.empty()) {
+      ctx_.error(kBadValue, ctx_.at(value),
+                 cat("'", what_, "' ", k, ": the program to call is empty"));
+      return false;
+    }
+    return true;
+  }
+
   std::optional<ParamValue> stringTable(const toml::node& node) {
     const toml::table* t = table(node);
     if (!t) return std::nullopt;
@@ -188,6 +210,7 @@ class ParamReader {
         continue;
       }
       if (axes_both_sides && requireAxis(axes_, *s, ctx_.at(value), what_, ctx_) < 0) ok = false;
+      if (spec_.key_code_letter && !codeKey(key, *s, value)) ok = false;
       out.by_key[std::string(key.str())] = std::move(*s);
     }
     if (!ok) return std::nullopt;

@@ -52,6 +52,10 @@ struct Spec {
     s.max_value = hi;
     return std::move(*this);
   }
+  Spec&& codeKeys(char letter) && {
+    s.key_code_letter = letter;
+    return std::move(*this);
+  }
   Spec&& integers() && {
     s.integral = true;
     return std::move(*this);
@@ -175,7 +179,8 @@ std::vector<ParamSpec> buildRegistry() {
                        ParamStringTable{},
                        "G codes that call a macro program with the block's words as G65 "
                        "arguments, by O number or name, e.g. { G100 = \"9010\" } (FANUC/Mazak "
-                       "G-code macro call parameters)"));
+                       "G-code macro call parameters)")
+                      .codeKeys('G'));
   specs.push_back(Spec("increment_system", T::String, "fanuc-t, siemens-iso-m", "\"IS-B\"",
                        std::string("IS-B"),
                        "\"IS-B\" (0.001 mm / 0.0001 in) or \"IS-C\" (0.0001 mm / 0.00001 in)")
@@ -200,7 +205,8 @@ std::vector<ParamSpec> buildRegistry() {
                        "M codes that call a macro program with the block's words as G65 "
                        "arguments, by O number or name, e.g. { M6 = \"M6_MAKRO\" } or "
                        "{ M60 = \"9020\" } (Sinumerik $MN_EXTERN_M_NO_MAC_CYCLE(_NAME), FANUC/Mazak "
-                       "M-code macro call parameters)"));
+                       "M-code macro call parameters)")
+                      .codeKeys('M'));
   specs.push_back(Spec("machine_unit", T::String, "siemens-iso-m", "\"mm\"", std::string("mm"),
                        "The machine's own unit, \"mm\" or \"inch\"")
                       .oneOf({"mm", "inch"}));

@@ -26,7 +26,7 @@ def ncc(*args, cwd=None):
 
 def errors(stderr):
     found = [m.groupdict() for m in map(DIAGNOSTIC.match, stderr.splitlines()) if m]
-    return [(d["line"], d["col"], d["code"]) for d in found if d["severity"] == "error"]
+    return [(d["line"], d["col"], d["code"], d["message"]) for d in found if d["severity"] == "error"]
 
 
 class MacroTest(ScratchDirTest):
@@ -43,8 +43,10 @@ class MacroTest(ScratchDirTest):
         self.assertEqual(proc.returncode, 0, proc.stderr)
         return [json.loads(line) for line in proc.stdout.splitlines()]
 
-    def assert_alarm(self, name, text, line, code, *extra, col=None, dialect="mazak-m"):
-        """The program is refused with `code` at `line` (and `col`), and -o writes nothing."""
+    def assert_alarm(self, name, text, line, code, *extra, col=None, dialect="mazak-m",
+                     message=None):
+        """The program is refused with `code` at `line` (and `col`, with `message`), and -o
+        writes nothing."""
         prog = self.write(name, text)
         out = self.path(name + ".ncb")
         proc = ncc("compile", prog, "--dialect", dialect, "-o", out, *extra)
@@ -54,6 +56,8 @@ class MacroTest(ScratchDirTest):
         self.assertEqual((found[0][0], found[0][2]), (str(line), code), proc.stderr)
         if col is not None:
             self.assertEqual(found[0][1], str(col), proc.stderr)
+        if message is not None:
+            self.assertEqual(found[0][3], message, proc.stderr)
         self.assertFalse(os.path.exists(out))
         return proc.stderr
 
@@ -98,7 +102,9 @@ class MacroTest(ScratchDirTest):
         self.assertEqual(got, {"#100": 1.0, "#101": 2.0})
 
     def test_an_endless_loop_stops_at_the_limit_at_its_jump(self):
-        self.assert_alarm("e.nc", "N1 #100=1\nGOTO1\nM30\n", 2, "NCC2419", "--max-back-jumps", "50")
+        self.assert_alarm("e.nc", "N1 #100=1\nGOTO1\nM30\n", 2, "NCC2419", "--max-back-jumps", "50",
+                          message="the program jumped back 50 times here: an endless loop? "
+                                  "(the limit is --max-back-jumps)")
 
     # ---- calls -------------------------------------------------------------------------------
 
@@ -170,11 +176,20 @@ class MacroTest(ScratchDirTest):
                                     "O9020\n#102=#1\nM99\nO9010\n#103=#24*#25\nM99\n",
                             "--dialect", "fanuc-m", "--machine", machine)
         self.assertEqual((got["#100"], got["#101"], got["#102"], got["#103"]), (1.0, 5.0, 2.0, 12.0))
-        bad = self.write("b.toml", '[machine.params]\nm_code_macros = { X6 = "9020" }\n')
+        # Keys are checked where the machine file is read: each at its line and column.
+        bad = self.write("b.toml", '[machine.params]\nm_code_macros = { X6 = "9020", M7 = "" }\n'
+                                   'g_code_macros = { G10A = "9010" }\n')
         proc = ncc("compile", self.path("c.nc"), "--dialect", "fanuc-m", "--machine", bad,
                    "-o", self.path("c.ncb"))
-        self.assertEqual(proc.returncode, 1, proc.stderr)
-        self.assertIn("error[NCC0309]", proc.stderr)
+        self.assertEqual(proc.returncode, 2, proc.stderr)  # an invalid machine file
+        found = [m.groupdict() for m in map(DIAGNOSTIC.match, proc.stderr.splitlines()) if m]
+        self.assertEqual([(d["line"], d["col"], d["code"]) for d in found],
+                         [("2", "19", "NCC0306"), ("2", "37", "NCC0306"), ("3", "19", "NCC0306")],
+                         proc.stderr)
+        self.assertEqual(found[0]["message"],
+                         "'X6' in 'm_code_macros' is not a M code (M and a whole number, e.g. M6)")
+        self.assertEqual(found[1]["message"], "'m_code_macros' M7: the program to call is empty")
+        self.assertIn("'G10A' in 'g_code_macros' is not a G code", found[2]["message"])
         self.assertFalse(os.path.exists(self.path("c.ncb")))
 
     # ---- variables file ----------------------------------------------------------------------
@@ -190,6 +205,15 @@ class MacroTest(ScratchDirTest):
             self.assertIn(f'"#500" = {expected}', text)
             self.assertNotIn("#100", text)  # not kept through power-off on FANUC
 
+    def test_vars_file_keeps_the_variables_the_program_does_not_write(self):
+        saved = self.write("v.toml", '"#500" = 4.0\n"#501" = 7.5\n')
+        got = self.run_vars("i.nc", "#500=#500+1\nM30\n", "--vars", saved)
+        self.assertEqual(got, {"#500": 5.0, "#501": 7.5})
+        with open(saved) as f:
+            text = f.read()
+        self.assertIn('"#500" = 5.0', text)
+        self.assertIn('"#501" = 7.5', text)
+
     def test_vars_file_is_not_written_after_an_alarm(self):
         saved = self.write("v.toml", '"#500" = 4.0\n')
         prog = self.write("a.nc", "#500=9\nG95 G01 X1. F1.\nM30\n")  # no spindle: alarm
@@ -200,38 +224,67 @@ class MacroTest(ScratchDirTest):
 
     def test_bad_vars_files(self):
         prog = self.write("p.nc", "#1=#500\nM30\n")
-        for text, line, col in (('"#100" = 1.0\n', 1, 1), ('"#500" = "x"\n', 1, 10),
-                                ('"#500 = 1\n', 1, 1), ('x = 1.0\n', 1, 1)):
+        cases = (('"#100" = 1.0\n', 1, 1, "#100 is not a variable the controller keeps across runs "
+                                         "(its persistent common variables)"),
+                 ('"#500" = "x"\n', 1, 10, "#500: the value must be a finite number"),
+                 ('"#500 = 1\n', 1, 10, None),  # toml++'s own message
+                 ('x = 1.0\n', 1, 1, "'x' is not a variable: keys are \"#n\""))
+        for text, line, col, message in cases:
             saved = self.write("bad.toml", text)
             proc = ncc("compile", prog, "--vars", saved, "-o", self.path("p.ncb"))
             self.assertEqual(proc.returncode, 1, proc.stderr)
             found = errors(proc.stderr)
             self.assertEqual(found[0][2], "NCC0017", proc.stderr)
             self.assertEqual(found[0][0], str(line), proc.stderr)
+            self.assertEqual(found[0][1], str(col), proc.stderr)
+            if message:
+                self.assertEqual(found[0][3], message, proc.stderr)
             self.assertFalse(os.path.exists(self.path("p.ncb")))
         ncb = self.write("q.ncb", b"")
         proc = ncc("run", ncb, "--vars", self.path("v.toml"))
         self.assertEqual(proc.returncode, 2, proc.stderr)
-        self.assertIn("NCC0018", proc.stderr)
+        self.assertIn("ncc: error[NCC0018]: --vars needs a source program: a bytecode file's "
+                      "variables were fixed when it was compiled", proc.stderr)
 
     # ---- bad input ---------------------------------------------------------------------------
 
     def test_each_fault_is_the_controllers_alarm_at_its_block(self):
-        self.assert_alarm("vn.nc", "#1=1\n#[0-5]=1\nM30\n", 2, "NCC2400")   # negative number
-        self.assert_alarm("vs.nc", "#1=#20000\nM30\n", 1, "NCC2400", dialect="fanuc-m")
-        self.assert_alarm("dz.nc", "#1=0\n#2=5/#1\nM30\n", 2, "860")
-        self.assert_alarm("ln.nc", "#1=LN[-5]\nM30\n", 1, "860")
-        self.assert_alarm("ed.nc", "#1=1\nEND1\nM30\n", 2, "NCC2407")
-        self.assert_alarm("dn.nc", "WHILE[1]DO1\nWHILE[1]DO2\nWHILE[1]DO3\nWHILE[1]DO1\nM30\n", 4,
-                          "NCC2408", dialect="fanuc-m")
-        self.assert_alarm("gt.nc", "#1=1\nGOTO 77\nM30\n", 2, "843")
-        self.assert_alarm("sp.nc", "M98 P4321\nM30\n", 1, "844", col=1)
-        self.assert_alarm("cn.nc", "M98 P10\nM30\nO10\nM98 P10\nM99\n", 4, "842")
-        self.assert_alarm("ua.nc", "#3000=25 (TOOL BROKEN)\nM30\n", 1, "3025")
-        self.assert_alarm("ub.nc", "#3000=5\nM30\n", 1, "984")
-        self.assert_alarm("g67.nc", "G67\nM30\n", 1, "857")
-        self.assert_alarm("w0.nc", "#0=1\nM30\n", 1, "NCC2401")
-        self.assert_alarm("lp.nc", "WHILE[0]DO1\n#1=1\nM30\n", 1, "NCC2410")
+        cases = [  # name, program, line, column, code, message, dialect
+            ("vn", "#1=1\n#[0-5]=1\nM30\n", 2, 1, "NCC2400", "variable number -5 is negative", "mazak-m"),
+            ("vs", "#1=#20000\nM30\n", 1, 4, "NCC2400", "#20000 is not a system variable of fanuc-m", "fanuc-m"),
+            ("dz", "#1=0\n#2=5/#1\nM30\n", 2, 5, "860", "division by zero", "mazak-m"),
+            ("ln", "#1=LN[-5]\nM30\n", 1, 4, "860", "LN[-5]: the logarithm needs a number greater than 0", "mazak-m"),
+            ("ed", "#1=1\nEND1\nM30\n", 2, 1, "NCC2407", "END 1 without WHILE ... DO 1", "mazak-m"),
+            ("dn", "WHILE[1]DO1\nWHILE[1]DO2\nWHILE[1]DO3\nWHILE[1]DO1\nM30\n", 4, 1, "NCC2408",
+             "WHILE ... DO nested more than 3 deep", "fanuc-m"),
+            ("di", "WHILE[1]DO200\nM30\n", 1, 1, "NCC2409", "DO 200: loop numbers are 1 to 127", "mazak-m"),
+            ("lp", "WHILE[0]DO1\n#1=1\nM30\n", 1, 1, "NCC2410", "WHILE ... DO 1 has no END 1", "mazak-m"),
+            ("gt", "#1=1\nGOTO 77\nM30\n", 2, 1, "843", "no block starts with N77 in this program", "mazak-m"),
+            ("sp", "M98 P4321\nM30\n", 1, 1, "844", "program O4321 not found (in this file or the program folder)",
+             "mazak-m"),
+            ("cn", "M98 P10\nM30\nO10\nM98 P10\nM99\n", 4, 1, "842", "calls nested more than 8 deep", "mazak-m"),
+            ("mn", "G65 P9 A1.\nM30\nO9\nG65 P9\nM99\n", 4, 1, "NCC2414", "macro calls nested more than 4 deep",
+             "mazak-m"),
+            ("ua", "#3000=25 (TOOL BROKEN)\nM30\n", 1, 1, "3025", "user alarm #3000 = 25: TOOL BROKEN", "mazak-m"),
+            ("ub", "#3000=5\nM30\n", 1, 1, "984", "user alarm #3000 = 5", "mazak-m"),
+            ("g67", "G67\nM30\n", 1, 1, "857", "G67 without a modal macro call (G66) in force", "mazak-m"),
+            ("w0", "#0=1\nM30\n", 1, 1, "NCC2401", "#0 is always vacant and cannot be assigned", "mazak-m"),
+            ("pi", "#1=1.5\nGOTO#1\nM30\n", 2, 1, "809", "the GOTO target must be an integer, not 1.5",
+             "mazak-m"),
+            ("fr", "M98 P10 I1.\nM30\n", 1, 9, "NCC2010", "M98 with I J K (figure rotation) is not supported yet",
+             "mazak-m"),
+        ]
+        for name, text, line, col, code, message, dialect in cases:
+            with self.subTest(name):
+                self.assert_alarm(name + ".nc", text, line, code, col=col, dialect=dialect, message=message)
+
+    def test_user_stop_is_a_warning_with_its_message(self):
+        prog = self.write("st.nc", "#3006=1 (CHECK PART)\nG00 X1.\nM30\n")
+        proc = ncc("run", prog, "--dialect", "mazak-m", "--emit=moves")
+        self.assertEqual(proc.returncode, 0, proc.stderr)
+        found = [m.groupdict() for m in map(DIAGNOSTIC.match, proc.stderr.splitlines()) if m]
+        self.assertEqual([(d["severity"], d["line"], d["code"], d["message"]) for d in found],
+                         [("warning", "1", "NCC2416", "program stop #3006: CHECK PART")])
 
     def test_the_user_alarm_message_is_shown(self):
         stderr = self.assert_alarm("ua.nc", "#3000=25 (TOOL BROKEN)\nM30\n", 1, "3025")

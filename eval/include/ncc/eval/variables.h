@@ -52,8 +52,9 @@ class Variables final : public VariableReader {
   // Commons from rules.persistent_first on (the variables file of --vars).
   std::map<int64_t, double> persistent() const;
   bool isPersistent(int64_t number) const;
-  // Loads saved values of persistent commons; false for a number that is not one.
-  bool setPersistent(int64_t number, double value);
+  // Loads a saved value of a persistent common (`loc`: where it was saved); false for a
+  // number that is not one. Reported to on_write like any write, so the run ends with it.
+  bool setPersistent(int64_t number, double value, SourceLocation loc);
 
   bool isCommon(int64_t number) const;
 

@@ -69,6 +69,9 @@ struct ParamSpec {
   // the selected dialect gets warning NCC0307 naming it (paramApplies).
   std::string_view applied_in = "all";
   std::vector<std::string_view> choices = {};  // String: the accepted values
+  // StringTable: each key is a code of this letter (`M6`, `m06`: the letter, then a whole
+  // number) and each value is not empty; 0 = any key.
+  char key_code_letter = 0;
   double min_value = -1e300;       // Number/Integer (and list elements, table values)
   double max_value = 1e300;
   size_t max_items = 0;            // lists: at most this many entries (0 = unbounded)
