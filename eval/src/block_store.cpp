@@ -1,0 +1,658 @@
+#include "ncc/eval/block_store.h"
+
+#include <algorithm>
+#include <bit>
+#include <limits>
+#include <set>
+#include <unordered_map>
+
+#include "absl/strings/str_cat.h"
+
+namespace ncc::eval {
+
+namespace {
+
+constexpr uint8_t kMagic[4] = {'N', 'C', 'B', 'S'};
+constexpr uint16_t kVersion = 1;
+
+// ---- Writing ------------------------------------------------------------------------------
+
+class Writer {
+ public:
+  void u8(uint8_t v) { out.push_back(v); }
+  void varint(uint64_t v) {
+    while (v >= 0x80) {
+      out.push_back(static_cast<uint8_t>(v | 0x80));
+      v >>= 7;
+    }
+    out.push_back(static_cast<uint8_t>(v));
+  }
+  void svarint(int64_t v) {
+    varint((static_cast<uint64_t>(v) << 1) ^ static_cast<uint64_t>(v >> 63));
+  }
+  void fixed64(uint64_t v) {
+    for (int i = 0; i < 8; ++i) out.push_back(static_cast<uint8_t>(v >> (8 * i)));
+  }
+  void str(std::string_view s) {
+    varint(s.size());
+    out.insert(out.end(), s.begin(), s.end());
+  }
+  std::vector<uint8_t> out;
+};
+
+// Where source locations are coded relative to: the line a block starts on.
+struct LineBase {
+  uint32_t file = 0;
+  uint32_t line = 0;
+};
+
+// Expression header bits.
+constexpr uint8_t kExprKindMask = 0x07;
+constexpr uint8_t kExprPoint = 0x08;
+constexpr uint8_t kExprNumber = 0x10;   // number is not +0.0
+constexpr uint8_t kExprInteger = 0x20;  // ... and is written as a varint
+constexpr uint8_t kExprOp = 0x40;
+constexpr uint8_t kExprArgs = 0x80;
+
+// Statement header bits.
+constexpr uint8_t kStatementKindMask = 0x07;
+constexpr uint8_t kStatementThen = 0x08;
+
+// Block header bits.
+constexpr uint8_t kBlockSequence = 0x01;
+constexpr uint8_t kBlockProgram = 0x02;
+constexpr uint8_t kBlockPercent = 0x04;
+constexpr uint8_t kBlockSkip = 0x08;
+constexpr int kBlockStartShift = 4;  // two bits: StoredBlock::Start
+
+// A double that an int64 holds exactly, bit for bit (not -0.0).
+bool asInteger(double v, int64_t& i) {
+  if (!(v >= -9.0e15 && v <= 9.0e15)) return false;  // NaN fails too
+  i = static_cast<int64_t>(v);
+  return std::bit_cast<uint64_t>(static_cast<double>(i)) == std::bit_cast<uint64_t>(v);
+}
+
+void writeLoc(Writer& w, const SourceLocation& loc, const LineBase& base) {
+  if (loc.file == base.file && loc.line == base.line) {
+    w.varint((uint64_t{loc.column} << 1) | 1);
+    return;
+  }
+  w.varint(uint64_t{loc.column} << 1);
+  w.varint(loc.file);
+  w.varint(loc.line);
+}
+
+void writeExpr(Writer& w, const ast::Expr& e, const LineBase& base) {
+  uint8_t header = static_cast<uint8_t>(e.kind) & kExprKindMask;
+  int64_t integer = 0;
+  const uint64_t bits = std::bit_cast<uint64_t>(e.number);
+  const bool integral = asInteger(e.number, integer);
+  if (e.has_point) header |= kExprPoint;
+  if (bits != 0) header |= kExprNumber;
+  if (bits != 0 && integral) header |= kExprInteger;
+  if (!e.op.empty()) header |= kExprOp;
+  if (!e.args.empty()) header |= kExprArgs;
+  w.u8(header);
+  if (bits != 0) {
+    if (integral)
+      w.svarint(integer);
+    else
+      w.fixed64(bits);
+  }
+  w.u8(e.digits);
+  if (!e.op.empty()) w.str(e.op);
+  if (!e.args.empty()) {
+    w.varint(e.args.size());
+    for (const ast::Expr& a : e.args) writeExpr(w, a, base);
+  }
+  writeLoc(w, e.loc, base);
+}
+
+void writeStatement(Writer& w, const ast::Statement& s, const LineBase& base) {
+  uint8_t header = static_cast<uint8_t>(s.kind) & kStatementKindMask;
+  if (s.then_assign) header |= kStatementThen;
+  w.u8(header);
+  writeExpr(w, s.target, base);
+  writeExpr(w, s.value, base);
+  w.svarint(s.loop_id);
+  writeLoc(w, s.loc, base);
+  if (s.then_assign) writeStatement(w, *s.then_assign, base);
+}
+
+void writeBlock(Writer& w, const StoredBlock& stored, uint32_t file) {
+  const ast::Block& b = stored.block;
+  const LineBase base{file, stored.position.line};
+  uint8_t header = static_cast<uint8_t>(static_cast<uint8_t>(stored.start) << kBlockStartShift);
+  if (b.sequence) header |= kBlockSequence;
+  if (b.program_number) header |= kBlockProgram;
+  if (b.percent) header |= kBlockPercent;
+  if (b.skip_level != -1) header |= kBlockSkip;
+  w.u8(header);
+  writeLoc(w, b.loc, base);
+  if (b.skip_level != -1) w.svarint(b.skip_level);
+  if (b.sequence) w.svarint(*b.sequence);
+  if (b.program_number) w.svarint(*b.program_number);
+  w.varint(b.words.size());
+  for (const ast::Word& word : b.words) {
+    w.str(word.address);
+    writeExpr(w, word.value, base);
+    writeLoc(w, word.loc, base);
+  }
+  w.varint(b.statements.size());
+  for (const ast::Statement& s : b.statements) writeStatement(w, s, base);
+  w.varint(b.comments.size());
+  for (const std::string& c : b.comments) w.str(c);
+}
+
+void writePosition(Writer& w, const frontend::BlockPosition& p) {
+  w.varint(p.offset);
+  w.varint(p.line);
+  w.varint(p.column);
+}
+
+void writePoint(Writer& w, const ProgramPoint& p) {
+  w.varint(p.file);
+  writePosition(w, p.position);
+}
+
+// ---- Reading ------------------------------------------------------------------------------
+
+class Reader {
+ public:
+  Reader(std::span<const uint8_t> bytes, std::string& error) : bytes_(bytes), error_(error) {}
+
+  bool fail(const std::string& what) {
+    if (error_.empty()) error_ = absl::StrCat("block store: ", what, " (at byte ", pos_, ")");
+    return false;
+  }
+  size_t remaining() const { return bytes_.size() - pos_; }
+  bool atEnd() const { return pos_ == bytes_.size(); }
+
+  bool u8(uint8_t& v) {
+    if (pos_ >= bytes_.size()) return fail("truncated");
+    v = bytes_[pos_++];
+    return true;
+  }
+  bool varint(uint64_t& v) {
+    v = 0;
+    for (int shift = 0; shift < 64; shift += 7) {
+      uint8_t b = 0;
+      if (!u8(b)) return false;
+      if (shift == 63 && b > 1) return fail("varint out of range");
+      v |= uint64_t{b & 0x7fu} << shift;
+      if (!(b & 0x80)) return true;
+    }
+    return fail("varint too long");
+  }
+  bool svarint(int64_t& v) {
+    uint64_t u = 0;
+    if (!varint(u)) return false;
+    v = static_cast<int64_t>((u >> 1) ^ (~(u & 1) + 1));
+    return true;
+  }
+  bool u32(uint32_t& v, const char* what) {
+    uint64_t u = 0;
+    if (!varint(u)) return false;
+    if (u > std::numeric_limits<uint32_t>::max()) return fail(absl::StrCat(what, " out of range"));
+    v = static_cast<uint32_t>(u);
+    return true;
+  }
+  bool int32(int& v, const char* what) {
+    int64_t s = 0;
+    if (!svarint(s)) return false;
+    if (s < std::numeric_limits<int>::min() || s > std::numeric_limits<int>::max())
+      return fail(absl::StrCat(what, " out of range"));
+    v = static_cast<int>(s);
+    return true;
+  }
+  bool fixed64(uint64_t& v) {
+    if (remaining() < 8) return fail("truncated");
+    v = 0;
+    for (int i = 0; i < 8; ++i) v |= uint64_t{bytes_[pos_ + static_cast<size_t>(i)]} << (8 * i);
+    pos_ += 8;
+    return true;
+  }
+  // A count of items that take at least `min_size` bytes each: never more than the rest allows.
+  bool count(uint64_t& n, size_t min_size = 1) {
+    if (!varint(n)) return false;
+    if (n > remaining() / min_size) return fail("count beyond the remaining bytes");
+    return true;
+  }
+  bool str(std::string& s) {
+    uint64_t n = 0;
+    if (!count(n)) return false;
+    s.assign(reinterpret_cast<const char*>(bytes_.data() + pos_), n);
+    pos_ += n;
+    return true;
+  }
+  bool raw(const uint8_t* expected, size_t n) {
+    if (remaining() < n || !std::equal(expected, expected + n, bytes_.data() + pos_)) return false;
+    pos_ += n;
+    return true;
+  }
+
+ private:
+  std::span<const uint8_t> bytes_;
+  size_t pos_ = 0;
+  std::string& error_;
+};
+
+bool readLoc(Reader& r, SourceLocation& loc, const LineBase& base) {
+  uint64_t head = 0;
+  if (!r.varint(head)) return false;
+  if ((head >> 1) > std::numeric_limits<uint32_t>::max()) return r.fail("column out of range");
+  loc.column = static_cast<uint32_t>(head >> 1);
+  if (head & 1) {
+    loc.file = base.file;
+    loc.line = base.line;
+    return true;
+  }
+  return r.u32(loc.file, "file id") && r.u32(loc.line, "line");
+}
+
+bool readExpr(Reader& r, ast::Expr& e, const LineBase& base, int depth) {
+  if (depth > kMaxStoredNesting) return r.fail("expressions nested too deep");
+  uint8_t header = 0;
+  if (!r.u8(header)) return false;
+  const uint8_t kind = header & kExprKindMask;
+  if (kind > static_cast<uint8_t>(ast::Expr::Kind::Vacant)) return r.fail("unknown expression kind");
+  e.kind = static_cast<ast::Expr::Kind>(kind);
+  e.has_point = (header & kExprPoint) != 0;
+  e.number = 0.0;
+  if (header & kExprNumber) {
+    if (header & kExprInteger) {
+      int64_t i = 0;
+      if (!r.svarint(i)) return false;
+      e.number = static_cast<double>(i);
+    } else {
+      uint64_t bits = 0;
+      if (!r.fixed64(bits)) return false;
+      e.number = std::bit_cast<double>(bits);
+    }
+  } else if (header & kExprInteger) {
+    return r.fail("bad expression header");
+  }
+  if (!r.u8(e.digits)) return false;
+  if ((header & kExprOp) && !r.str(e.op)) return false;
+  if (header & kExprArgs) {
+    uint64_t n = 0;
+    if (!r.count(n, 3)) return false;  // an expression takes 3 bytes at least
+    e.args.resize(n);
+    for (ast::Expr& a : e.args)
+      if (!readExpr(r, a, base, depth + 1)) return false;
+  }
+  return readLoc(r, e.loc, base);
+}
+
+bool readStatement(Reader& r, ast::Statement& s, const LineBase& base, int depth) {
+  if (depth > kMaxStoredNesting) return r.fail("statements nested too deep");
+  uint8_t header = 0;
+  if (!r.u8(header)) return false;
+  const uint8_t kind = header & kStatementKindMask;
+  if (kind > static_cast<uint8_t>(ast::Statement::Kind::End) || (header & ~0x0f))
+    return r.fail("unknown statement kind");
+  s.kind = static_cast<ast::Statement::Kind>(kind);
+  if (!readExpr(r, s.target, base, depth + 1) || !readExpr(r, s.value, base, depth + 1) ||
+      !r.int32(s.loop_id, "loop id") || !readLoc(r, s.loc, base))
+    return false;
+  if (header & kStatementThen) {
+    s.then_assign = std::make_unique<ast::Statement>();
+    return readStatement(r, *s.then_assign, base, depth + 1);
+  }
+  return true;
+}
+
+bool readBlock(Reader& r, StoredBlock& stored, uint32_t file) {
+  ast::Block& b = stored.block;
+  const LineBase base{file, stored.position.line};
+  uint8_t header = 0;
+  if (!r.u8(header)) return false;
+  const uint8_t start = header >> kBlockStartShift;
+  if (start > static_cast<uint8_t>(StoredBlock::Start::Program)) return r.fail("unknown block start");
+  stored.start = static_cast<StoredBlock::Start>(start);
+  if (!readLoc(r, b.loc, base)) return false;
+  b.skip_level = -1;
+  if ((header & kBlockSkip) && !r.int32(b.skip_level, "skip level")) return false;
+  if (header & kBlockSequence) {
+    int64_t n = 0;
+    if (!r.svarint(n)) return false;
+    b.sequence = n;
+  }
+  if (header & kBlockProgram) {
+    int64_t n = 0;
+    if (!r.svarint(n)) return false;
+    b.program_number = n;
+  }
+  b.percent = (header & kBlockPercent) != 0;
+  if ((stored.start == StoredBlock::Start::Sequence && !b.sequence) ||
+      (stored.start == StoredBlock::Start::Program && !b.program_number))
+    return r.fail("block start without its number");
+  uint64_t n = 0;
+  if (!r.count(n, 5)) return false;  // address, value (3), location
+  b.words.resize(n);
+  for (ast::Word& w : b.words)
+    if (!r.str(w.address) || !readExpr(r, w.value, base, 1) || !readLoc(r, w.loc, base))
+      return false;
+  if (!r.count(n, 9)) return false;  // header, two expressions, loop id, location
+  b.statements.resize(n);
+  for (ast::Statement& s : b.statements)
+    if (!readStatement(r, s, base, 1)) return false;
+  if (!r.count(n)) return false;
+  b.comments.resize(n);
+  for (std::string& c : b.comments)
+    if (!r.str(c)) return false;
+  return true;
+}
+
+bool readPosition(Reader& r, frontend::BlockPosition& p) {
+  return r.varint(p.offset) && r.u32(p.line, "line") && r.u32(p.column, "column");
+}
+
+bool readPoint(Reader& r, ProgramPoint& p) {
+  return r.u32(p.file, "file id") && readPosition(r, p.position);
+}
+
+bool readFile(Reader& r, StoredFile& f) {
+  uint8_t language = 0;
+  if (!r.u32(f.id, "file id") || !r.str(f.name) || !r.u8(language)) return false;
+  if (language > static_cast<uint8_t>(frontend::Language::Din)) return r.fail("unknown language");
+  f.language = static_cast<frontend::Language>(language);
+  uint64_t n = 0;
+  if (!r.count(n, 7)) return false;  // position (3), header, location, three counts
+  f.blocks.resize(n);
+  frontend::BlockPosition previous{0, 0, 0};
+  for (size_t i = 0; i < f.blocks.size(); ++i) {
+    StoredBlock& b = f.blocks[i];
+    // Positions: offset and line as differences from the previous block's (wrapping), the
+    // column as it is. Order is checked below, so a difference cannot lie.
+    int64_t offset_delta = 0, line_delta = 0;
+    if (!r.svarint(offset_delta) || !r.svarint(line_delta) || !r.u32(b.position.column, "column"))
+      return false;
+    b.position.offset = previous.offset + static_cast<uint64_t>(offset_delta);
+    const int64_t line = int64_t{previous.line} + line_delta;
+    if (line < 0 || line > std::numeric_limits<uint32_t>::max()) return r.fail("line out of range");
+    b.position.line = static_cast<uint32_t>(line);
+    if (i > 0 && !(previous < b.position)) return r.fail("block positions out of order");
+    previous = b.position;
+    if (!readBlock(r, b, f.id)) return false;
+  }
+  if (!readPosition(r, f.record_end)) return false;
+  if (!f.blocks.empty() && f.record_end < f.blocks.back().position)
+    return r.fail("a block after the end of the record");
+  return true;
+}
+
+}  // namespace
+
+// ---- Nesting ------------------------------------------------------------------------------
+
+namespace {
+int exprNesting(const ast::Expr& e) {
+  int deepest = 0;
+  for (const ast::Expr& a : e.args) deepest = std::max(deepest, exprNesting(a));
+  return deepest + 1;
+}
+int statementNesting(const ast::Statement& s) {
+  int deepest = std::max(exprNesting(s.target), exprNesting(s.value));
+  if (s.then_assign) deepest = std::max(deepest, statementNesting(*s.then_assign));
+  return deepest + 1;
+}
+}  // namespace
+
+int blockNesting(const ast::Block& block) {
+  int deepest = 0;
+  for (const ast::Word& w : block.words) deepest = std::max(deepest, exprNesting(w.value));
+  for (const ast::Statement& s : block.statements) deepest = std::max(deepest, statementNesting(s));
+  return deepest;
+}
+
+// ---- Encoding -----------------------------------------------------------------------------
+
+std::vector<uint8_t> encodeBlockStore(const BlockStore& store) {
+  Writer w;
+  for (uint8_t c : kMagic) w.u8(c);
+  w.u8(static_cast<uint8_t>(kVersion & 0xff));
+  w.u8(static_cast<uint8_t>(kVersion >> 8));
+  w.varint(store.main_file);
+  w.varint(store.ahead_blocks);
+  w.varint(store.max_back_jumps);
+  w.varint(store.saved_variables.size());
+  for (const auto& [n, v] : store.saved_variables) {
+    w.svarint(n);
+    w.fixed64(std::bit_cast<uint64_t>(v));
+  }
+  w.varint(store.files.size());
+  for (const StoredFile& f : store.files) {
+    w.varint(f.id);
+    w.str(f.name);
+    w.u8(static_cast<uint8_t>(f.language));
+    w.varint(f.blocks.size());
+    frontend::BlockPosition previous{0, 0, 0};
+    for (const StoredBlock& b : f.blocks) {
+      w.svarint(static_cast<int64_t>(b.position.offset - previous.offset));
+      w.svarint(int64_t{b.position.line} - int64_t{previous.line});
+      w.varint(b.position.column);
+      previous = b.position;
+      writeBlock(w, b, f.id);
+    }
+    writePosition(w, f.record_end);
+  }
+  w.varint(store.folder_programs.size());
+  for (const auto& [n, point] : store.folder_programs) {
+    w.svarint(n);
+    writePoint(w, point);
+  }
+  w.varint(store.named_programs.size());
+  for (const auto& [name, point] : store.named_programs) {
+    w.str(name);
+    writePoint(w, point);
+  }
+  return std::move(w.out);
+}
+
+std::optional<BlockStore> decodeBlockStore(std::span<const uint8_t> bytes, std::string& error) {
+  error.clear();
+  Reader r(bytes, error);
+  if (!r.raw(kMagic, sizeof kMagic)) {
+    r.fail("not a block store (no NCBS mark)");
+    return std::nullopt;
+  }
+  uint8_t lo = 0, hi = 0;
+  if (!r.u8(lo) || !r.u8(hi)) return std::nullopt;
+  if (const uint16_t version = static_cast<uint16_t>(lo | hi << 8); version != kVersion) {
+    r.fail(absl::StrCat("version ", version, " (this build reads version ", kVersion, ")"));
+    return std::nullopt;
+  }
+  BlockStore store;
+  uint64_t n = 0;
+  if (!r.u32(store.main_file, "file id") || !r.varint(store.ahead_blocks) ||
+      !r.varint(store.max_back_jumps) || !r.count(n, 9))
+    return std::nullopt;
+  for (uint64_t i = 0; i < n; ++i) {
+    int64_t key = 0;
+    uint64_t bits = 0;
+    if (!r.svarint(key) || !r.fixed64(bits)) return std::nullopt;
+    if (!store.saved_variables.emplace(key, std::bit_cast<double>(bits)).second) {
+      r.fail("a variable saved twice");
+      return std::nullopt;
+    }
+  }
+  if (!r.count(n, 4)) return std::nullopt;  // id, name, language, block count
+  store.files.resize(n);
+  std::set<uint32_t> ids;
+  for (StoredFile& f : store.files) {
+    if (!readFile(r, f)) return std::nullopt;
+    if (!ids.insert(f.id).second) {
+      r.fail("a file stored twice");
+      return std::nullopt;
+    }
+  }
+  const auto known = [&](const ProgramPoint& p) {
+    return ids.count(p.file) ? true : r.fail("a program point in a file not stored");
+  };
+  if (!store.files.empty() && !ids.count(store.main_file)) {
+    r.fail("the main file is not stored");
+    return std::nullopt;
+  }
+  if (!r.count(n, 5)) return std::nullopt;
+  for (uint64_t i = 0; i < n; ++i) {
+    int64_t number = 0;
+    ProgramPoint point;
+    if (!r.svarint(number) || !readPoint(r, point) || !known(point)) return std::nullopt;
+    if (!store.folder_programs.emplace(number, point).second) {
+      r.fail("a folder program stored twice");
+      return std::nullopt;
+    }
+  }
+  if (!r.count(n, 5)) return std::nullopt;
+  for (uint64_t i = 0; i < n; ++i) {
+    std::string name;
+    ProgramPoint point;
+    if (!r.str(name) || !readPoint(r, point) || !known(point)) return std::nullopt;
+    if (!store.named_programs.emplace(std::move(name), point).second) {
+      r.fail("a named program stored twice");
+      return std::nullopt;
+    }
+  }
+  if (!r.atEnd()) {
+    r.fail("bytes after the end of the store");
+    return std::nullopt;
+  }
+  return store;
+}
+
+// ---- The program store ---------------------------------------------------------------------
+
+struct StoredProgramStore::FileIndex {
+  const StoredFile* file = nullptr;
+  std::vector<size_t> programs;  // blocks that start with O n, in file order
+  // Blocks that start with N n, by n, in file order: made on the first GOTO into the file.
+  bool sequences_made = false;
+  std::unordered_map<int64_t, std::vector<size_t>> sequences;
+
+  const frontend::BlockPosition& at(size_t i) const { return file->blocks[i].position; }
+};
+
+class StoredProgramStore::Cursor final : public BlockCursor {
+ public:
+  Cursor(StoredProgramStore& owner, const StoredFile* file, uint32_t id)
+      : owner_(owner), file_(file), id_(id) {}
+
+  std::optional<ast::Block> next() override {
+    if (refused_ || !file_ || i_ >= file_->blocks.size()) return std::nullopt;
+    last_ = file_->blocks[i_].position;
+    return file_->blocks[i_++].block;
+  }
+  ProgramPoint lastPoint() const override { return {id_, last_}; }
+  void seek(const ProgramPoint& point) override {
+    if (!file_) return;
+    auto it = std::lower_bound(
+        file_->blocks.begin(), file_->blocks.end(), point.position,
+        [](const StoredBlock& b, const frontend::BlockPosition& p) { return b.position < p; });
+    i_ = static_cast<size_t>(it - file_->blocks.begin());
+  }
+  void setLanguage(frontend::Language language) override {
+    const frontend::Language stored = file_ ? file_->language : frontend::Language::Iso;
+    if (language == stored) return;
+    refused_ = true;
+    if (!owner_.refusal_) owner_.refusal_ = LanguageRefusal{lastPoint(), language, stored};
+  }
+  uint64_t rejectedBlocks() const override { return 0; }  // every stored block was parsed
+  uint32_t file() const override { return id_; }
+
+ private:
+  StoredProgramStore& owner_;
+  const StoredFile* file_;
+  uint32_t id_;
+  size_t i_ = 0;
+  frontend::BlockPosition last_;  // {0, 1, 1} before the first block, as a BlockReader's
+  bool refused_ = false;
+};
+
+StoredProgramStore::StoredProgramStore(const BlockStore& store) : store_(store) {
+  for (const StoredFile& f : store.files) {
+    auto index = std::make_unique<FileIndex>();
+    index->file = &f;
+    for (size_t i = 0; i < f.blocks.size(); ++i)
+      if (f.blocks[i].start == StoredBlock::Start::Program) index->programs.push_back(i);
+    files_.emplace(f.id, std::move(index));
+  }
+}
+
+StoredProgramStore::~StoredProgramStore() = default;
+
+StoredProgramStore::FileIndex* StoredProgramStore::fileIndex(uint32_t file) {
+  auto it = files_.find(file);
+  return it == files_.end() ? nullptr : it->second.get();
+}
+
+std::unique_ptr<BlockCursor> StoredProgramStore::open(uint32_t file) {
+  const FileIndex* index = fileIndex(file);
+  return std::make_unique<Cursor>(*this, index ? index->file : nullptr, file);
+}
+
+std::optional<ProgramPoint> StoredProgramStore::findProgram(int64_t number, uint32_t calling_file) {
+  if (number < 0) return std::nullopt;
+  if (const FileIndex* index = fileIndex(calling_file))
+    for (size_t i : index->programs)
+      if (index->file->blocks[i].block.program_number == number)
+        return ProgramPoint{calling_file, index->at(i)};
+  auto it = store_.folder_programs.find(number);
+  if (it == store_.folder_programs.end()) return std::nullopt;
+  return it->second;
+}
+
+std::optional<ProgramPoint> StoredProgramStore::findProgramNamed(std::string_view name) {
+  auto it = store_.named_programs.find(std::string(name));
+  if (it == store_.named_programs.end()) return std::nullopt;
+  return it->second;
+}
+
+std::optional<ProgramPoint> StoredProgramStore::findSequence(int64_t n, const ProgramPoint& from,
+                                                             SequenceSearch order,
+                                                             const ProgramPoint& begin,
+                                                             const ProgramPoint& end) {
+  FileIndex* index = fileIndex(from.file);
+  if (!index) return std::nullopt;
+  if (!index->sequences_made) {
+    index->sequences_made = true;
+    const std::vector<StoredBlock>& blocks = index->file->blocks;
+    for (size_t i = 0; i < blocks.size(); ++i)
+      if (blocks[i].start == StoredBlock::Start::Sequence)
+        index->sequences[*blocks[i].block.sequence].push_back(i);
+  }
+  auto it = index->sequences.find(n);
+  if (it == index->sequences.end()) return std::nullopt;
+  const std::vector<size_t>& candidates = it->second;  // in file order
+  // The first candidate at or after `p` (strictly after when `after`).
+  const auto firstFrom = [&](const frontend::BlockPosition& p, bool after) {
+    return std::partition_point(candidates.begin(), candidates.end(), [&](size_t i) {
+      return after ? index->at(i) <= p : index->at(i) < p;
+    });
+  };
+  const auto answer = [&](size_t i) { return ProgramPoint{from.file, index->at(i)}; };
+  // As ProgramIndex::findSequence: ForwardThenFromStart reads the blocks after `from` (and at
+  // or after `begin`) before `end`, then from `begin` up to and including `from`.
+  auto first = firstFrom(begin.position, false);
+  if (order == SequenceSearch::ForwardThenFromStart) {
+    const auto forward = std::max(first, firstFrom(from.position, true));
+    if (forward != candidates.end() && index->at(*forward) < end.position) return answer(*forward);
+    if (first != candidates.end() && index->at(*first) <= from.position &&
+        index->at(*first) < end.position)
+      return answer(*first);
+    return std::nullopt;
+  }
+  if (first != candidates.end() && index->at(*first) < end.position) return answer(*first);
+  return std::nullopt;
+}
+
+ProgramPoint StoredProgramStore::programEnd(const ProgramPoint& start) {
+  const FileIndex* index = fileIndex(start.file);
+  if (!index) return start;
+  auto next = std::partition_point(index->programs.begin(), index->programs.end(),
+                                   [&](size_t i) { return index->at(i) <= start.position; });
+  if (next != index->programs.end()) return {start.file, index->at(*next)};
+  return {start.file, index->file->record_end};
+}
+
+}  // namespace ncc::eval
