@@ -90,18 +90,29 @@ std::optional<eval::ProgramPoint> SourceProgramStore::findProgramNamed(std::stri
   for (const std::filesystem::path& path : candidates) {
     std::error_code ec;
     if (!std::filesystem::is_regular_file(path, ec)) continue;
-    return eval::ProgramPoint{sources_.addFile(path.lexically_normal()), {}};
+    const eval::ProgramPoint found{sources_.addFile(path.lexically_normal()), {}};
+    named_.insert_or_assign(std::string(name), found);
+    return found;
   }
   return std::nullopt;
 }
 
 std::unique_ptr<eval::BlockCursor> SourceProgramStore::open(uint32_t file) {
+  opened_.insert(file);
   return std::make_unique<ReaderCursor>(sources_, file, diags_, options_);
 }
 
 std::optional<eval::ProgramPoint> SourceProgramStore::findProgram(int64_t number,
                                                                   uint32_t calling_file) {
   std::optional<frontend::ProgramLibrary::Found> found = library_.find(number, calling_file);
+  if (number >= 0 && !library_.index(calling_file).findProgram(number))
+    folder_numbers_.insert(number);  // the answer (or none) came from the folder
+  if (!found) return std::nullopt;
+  return eval::ProgramPoint{found->file, found->start};
+}
+
+std::optional<eval::ProgramPoint> SourceProgramStore::findInFolder(int64_t number) {
+  std::optional<frontend::ProgramLibrary::Found> found = library_.findInFolder(number);
   if (!found) return std::nullopt;
   return eval::ProgramPoint{found->file, found->start};
 }

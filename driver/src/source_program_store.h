@@ -3,7 +3,9 @@
 // and sequence numbers are found through the frontend's program library and indexes
 // (docs/middle.md, Block sources).
 #include <filesystem>
+#include <map>
 #include <memory>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -33,6 +35,20 @@ class SourceProgramStore final : public eval::ProgramStore {
   // The reader under a cursor this store opened (for the text after the program's end).
   static frontend::BlockReader& readerOf(eval::BlockCursor& cursor);
 
+  // What the compile asked of this store, for the block store (block_store_builder.h): the
+  // files opened, the program numbers asked that the calling file did not hold (found in the
+  // folder or not), and the names found.
+  const std::set<uint32_t>& openedFiles() const { return opened_; }
+  const std::set<int64_t>& folderNumbers() const { return folder_numbers_; }
+  const std::map<std::string, eval::ProgramPoint, std::less<>>& namedPrograms() const {
+    return named_;
+  }
+  // Program n in the program folder only (ProgramLibrary steps 2-3).
+  std::optional<eval::ProgramPoint> findInFolder(int64_t number);
+  frontend::ProgramIndex& index(uint32_t file) { return library_.index(file); }
+  SourceManager& sources() const { return sources_; }
+  const frontend::ReaderOptions& readerOptions() const { return options_; }
+
  private:
   SourceManager& sources_;
   DiagnosticEngine& diags_;
@@ -40,6 +56,9 @@ class SourceProgramStore final : public eval::ProgramStore {
   frontend::ProgramLibrary library_;
   std::filesystem::path folder_;
   std::vector<std::string> extensions_;  // of the name patterns: ".nc", ".spf", ...
+  std::set<uint32_t> opened_;
+  std::set<int64_t> folder_numbers_;
+  std::map<std::string, eval::ProgramPoint, std::less<>> named_;
 };
 
 }  // namespace ncc::driver

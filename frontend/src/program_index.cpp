@@ -168,6 +168,27 @@ BlockPosition ProgramIndex::programEnd(BlockPosition start) {
   return next != programs_.end() ? next->at : record_end_;
 }
 
+std::vector<ProgramIndex::Label> ProgramIndex::labels() {
+  scanHead();
+  BlockCursor cursor(sources_, file_);
+  ++stats_.scans;
+  std::vector<Label> out;
+  BlockCursor::Segment s;
+  while (cursor.next(s, semicolon_ends_block_)) {
+    const BlockStart b = blockStart(s.text);
+    if (b.kind == BlockStart::Kind::Percent && first_content_ && *first_content_ < s.at) break;
+    if (b.kind == BlockStart::Kind::Sequence || b.kind == BlockStart::Kind::Program)
+      out.push_back(Label{b.kind == BlockStart::Kind::Program, b.number, s.at});
+  }
+  stats_.lines += cursor.linesRead();
+  return out;
+}
+
+BlockPosition ProgramIndex::recordEnd() {
+  scanPrograms();
+  return record_end_;
+}
+
 std::optional<int64_t> ProgramIndex::firstProgramNumber() {
   scanHead();
   return first_program_number_;

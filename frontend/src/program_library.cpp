@@ -138,7 +138,11 @@ std::optional<ProgramLibrary::Found> ProgramLibrary::find(int64_t number, uint32
   if (number < 0) return std::nullopt;
   if (std::optional<BlockPosition> here = index(calling_file).findProgram(number))
     return Found{calling_file, *here};
-  if (folder_.empty()) return std::nullopt;
+  return findInFolder(number);
+}
+
+std::optional<ProgramLibrary::Found> ProgramLibrary::findInFolder(int64_t number) {
+  if (number < 0 || folder_.empty()) return std::nullopt;
   if (std::optional<Found> by_name = findByName(number)) return by_name;
   return findByFirstProgram(number);
 }

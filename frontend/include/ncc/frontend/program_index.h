@@ -67,6 +67,18 @@ class ProgramIndex {
   static std::optional<int64_t> firstProgramNumberOf(const std::filesystem::path& path,
                                                      ReaderOptions options);
 
+  // The blocks of the record that start with N n or O n, in file order, and where the record
+  // ends (programEnd's answer after the last program): what the lookups above answer from, for
+  // a copy of the file kept as parsed blocks (the block store, eval/block_store.h). One scan,
+  // not kept.
+  struct Label {
+    bool program;  // O n (or :n); else N n
+    int64_t number;
+    BlockPosition at;
+  };
+  std::vector<Label> labels();
+  BlockPosition recordEnd();
+
   uint32_t file() const { return file_; }
 
   // Counters for tests: how many scans read the file, and how many lines they read in all.

@@ -36,6 +36,9 @@ class ProgramLibrary {
   // nullopt when no program n exists (or n is negative).
   std::optional<Found> find(int64_t number, uint32_t calling_file);
 
+  // Steps 2 and 3 only: the program folder, whatever the calling file holds.
+  std::optional<Found> findInFolder(int64_t number);
+
   // One index per file, created on first use.
   ProgramIndex& index(uint32_t file);
 

@@ -1,0 +1,148 @@
+#include "block_store_builder.h"
+
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <deque>
+#include <set>
+#include <vector>
+
+#include "absl/strings/str_cat.h"
+
+namespace ncc::driver {
+
+namespace {
+
+// A block too deeply nested for the block store's decoder (kMaxStoredNesting).
+constexpr const char* kNestedTooDeep = "NCC0060";
+
+std::optional<double> literal(const ast::Expr& e) {
+  if (!e.isLiteral()) return std::nullopt;
+  return e.number;
+}
+
+// The program numbers a block calls with literal words: M98 P, G65 P, G66 P, G66.1 P.
+std::vector<int64_t> callTargets(const ast::Block& block, int program_number_digits) {
+  bool m98 = false, macro = false;
+  std::optional<double> p;
+  for (const ast::Word& w : block.words) {
+    const std::optional<double> v = literal(w.value);
+    if (!v) continue;
+    if (w.address == "M" && *v == 98) m98 = true;
+    if (w.address == "G" && (*v == 65 || *v == 66 || std::abs(*v - 66.1) < 1e-9)) macro = true;
+    if (w.address == "P") p = *v;
+  }
+  std::vector<int64_t> out;
+  if ((!m98 && !macro) || !p || *p < 0 || *p > 1e15 || *p != std::floor(*p)) return out;
+  const int64_t number = static_cast<int64_t>(*p);
+  out.push_back(number);
+  if (m98 && program_number_digits > 0) {
+    int64_t scale = 1;
+    for (int i = 0; i < std::min(program_number_digits, 18); ++i) scale *= 10;
+    if (number >= scale) out.push_back(number % scale);  // P30021: O21, three times
+  }
+  return out;
+}
+
+std::string fileName(const SourceManager& sources, uint32_t file) {
+  const std::filesystem::path& path = sources.path(file);
+  return path.empty() ? sources.displayName(file) : path.filename().string();
+}
+
+// The blocks of `file` up to the end of its record, each marked as the text scan of the
+// file's ProgramIndex sees its start.
+eval::StoredFile readFile(SourceProgramStore& store, uint32_t file, DiagnosticEngine& diags) {
+  frontend::ProgramIndex& index = store.index(file);
+  eval::StoredFile out;
+  out.id = file;
+  out.name = fileName(store.sources(), file);
+  out.language = store.readerOptions().initial_language;
+  out.record_end = index.recordEnd();
+  frontend::BlockReader reader(store.sources(), file, diags, store.readerOptions());
+  while (std::optional<ast::Block> block = reader.next()) {
+    const frontend::BlockPosition at = reader.lastPosition();
+    if (out.record_end < at) break;
+    if (eval::blockNesting(*block) > eval::kMaxStoredNesting) {
+      diags.error(kNestedTooDeep, block->loc,
+                  absl::StrCat("expressions nested deeper than ", eval::kMaxStoredNesting,
+                               " levels cannot be kept for preparation at run time"));
+    } else {
+      out.blocks.push_back(eval::StoredBlock{at, eval::StoredBlock::Start::Other, std::move(*block)});
+    }
+    if (!(at < out.record_end)) break;  // the closing '%'
+  }
+  for (const frontend::ProgramIndex::Label& label : index.labels()) {
+    auto it = std::lower_bound(out.blocks.begin(), out.blocks.end(), label.at,
+                               [](const eval::StoredBlock& b, const frontend::BlockPosition& p) {
+                                 return b.position < p;
+                               });
+    if (it == out.blocks.end() || !(it->position == label.at)) continue;  // rejected: reported
+    if (label.program && it->block.program_number == label.number)
+      it->start = eval::StoredBlock::Start::Program;
+    else if (!label.program && it->block.sequence == label.number)
+      it->start = eval::StoredBlock::Start::Sequence;
+  }
+  return out;
+}
+
+// The programs a file holds (its O blocks): calls to them stay in the file.
+std::set<int64_t> programsOf(const eval::StoredFile& file) {
+  std::set<int64_t> out;
+  for (const eval::StoredBlock& b : file.blocks)
+    if (b.start == eval::StoredBlock::Start::Program) out.insert(*b.block.program_number);
+  return out;
+}
+
+}  // namespace
+
+eval::BlockStore buildBlockStore(SourceProgramStore& store, uint32_t main_file,
+                                 const BlockStoreTargets& targets, DiagnosticEngine& diags) {
+  eval::BlockStore out;
+  out.main_file = main_file;
+
+  std::set<uint32_t> queued;
+  std::deque<uint32_t> work;
+  const auto want = [&](uint32_t file) {
+    if (file != 0 && queued.insert(file).second) work.push_back(file);
+  };
+  std::set<int64_t> looked_up;
+  const auto inFolder = [&](int64_t number) {
+    if (!looked_up.insert(number).second) return;
+    if (std::optional<eval::ProgramPoint> found = store.findInFolder(number)) {
+      out.folder_programs[number] = *found;
+      want(found->file);
+    }
+  };
+
+  want(main_file);
+  for (uint32_t file : store.openedFiles()) want(file);
+  for (int64_t number : store.folderNumbers()) inFolder(number);
+  for (const auto& [code, program] : targets.code_macros) {
+    int64_t number = 0;
+    auto [end, ec] = std::from_chars(program.data(), program.data() + program.size(), number);
+    if (ec == std::errc() && end == program.data() + program.size()) {
+      inFolder(number);
+    } else if (std::optional<eval::ProgramPoint> found = store.findProgramNamed(program)) {
+      want(found->file);
+    }
+  }
+  // After the lookups above: findProgramNamed records what it finds.
+  for (const auto& [name, point] : store.namedPrograms()) {
+    out.named_programs[name] = point;
+    want(point.file);
+  }
+
+  while (!work.empty()) {
+    const uint32_t file = work.front();
+    work.pop_front();
+    eval::StoredFile stored = readFile(store, file, diags);
+    const std::set<int64_t> local = programsOf(stored);
+    for (const eval::StoredBlock& b : stored.blocks)
+      for (int64_t number : callTargets(b.block, targets.program_number_digits))
+        if (!local.count(number)) inFolder(number);
+    out.files.push_back(std::move(stored));
+  }
+  return out;
+}
+
+}  // namespace ncc::driver
