@@ -18,6 +18,9 @@
 #include "ncc/ir/printer.h"
 #include "ncc/passes/lowering.h"
 #include "ncc/passes/pass_manager.h"
+#include "ncc/prepare/block_loop.h"
+#include "ncc/eval/block_store.h"
+#include "block_store_builder.h"
 #include "ast_stages.h"
 #include "source_program_store.h"
 
@@ -98,129 +101,29 @@ void afterProgramEnd(frontend::BlockReader& reader, DiagnosticEngine& diags) {
                 "text after the end of the program (M02/M30) is never executed and is ignored");
 }
 
-// --vars FILE: the values kept from the last run; false after reporting (NCC0017).
-bool loadSavedVariables(Session& session, eval::Variables& variables) {
-  if (!session.variablesFile()) return true;
+// --vars FILE: loads the values kept from the last run into `variables` and returns them;
+// nullopt after reporting (NCC0017).
+std::optional<std::map<int64_t, double>> loadSavedVariables(Session& session,
+                                                            eval::Variables& variables) {
+  std::map<int64_t, double> loaded;
+  if (!session.variablesFile()) return loaded;
   std::optional<std::map<int64_t, SavedVariable>> saved =
       readVariablesFile(*session.variablesFile(), session.sources(), session.diagnostics());
-  if (!saved) return false;
+  if (!saved) return std::nullopt;
   bool ok = true;
   for (const auto& [n, v] : *saved) {
-    if (variables.setPersistent(n, v.value, v.where)) continue;
+    if (variables.setPersistent(n, v.value, v.where)) {
+      loaded[n] = v.value;
+      continue;
+    }
     session.diagnostics().error(
         "NCC0017", v.where,
         absl::StrCat("#", n, " is not a variable the controller keeps across runs (its "
                      "persistent common variables)"));
     ok = false;
   }
-  return ok;
-}
-
-// The machine file's code macros (g_code_macros, m_code_macros): the code as the evaluator
-// names it ("M6", "G100"; the machine file reader checked the keys: `M06` is M6) -> program.
-std::map<std::string, std::string> codeMacros(const MachineConfig& machine) {
-  std::map<std::string, std::string> out;
-  for (const char* param : {"g_code_macros", "m_code_macros"})
-    if (const ParamStringTable* t = machine.params.getStringTable(param))
-      for (const auto& [code, program] : t->by_key) {
-        int64_t n = 0;
-        std::from_chars(code.data() + 1, code.data() + code.size(), n);
-        out[absl::StrCat(std::string(1, static_cast<char>(std::toupper(
-                                            static_cast<unsigned char>(code[0])))),
-                         n)] = program;
-      }
-  return out;
-}
-
-// M98's repeat count: the dialect's, unless the machine takes 8-digit program numbers
-// (Sinumerik MD20734 bit 6: the count is then in L).
-eval::RepeatEncoding repeatEncoding(const eval::MacroRules& rules, const MachineConfig& machine) {
-  return machine.params.getBool("eight_digit_program_numbers", false)
-             ? eval::RepeatEncoding::LAddress
-             : rules.repeat;
-}
-
-// Reads blocks through the evaluator (macro statements, calls) and lowers them until the end
-// of the program: M02/M30, or a '%' after the program's first block (the end of the record).
-// What follows is never executed; it is not parsed either, and draws a warning at most.
-void lowerProgram(Session& session, ir::BlockSink& entry, AstStageTap& tap) {
-  DiagnosticEngine& diags = session.diagnostics();
-  const eval::MacroRules& rules = eval::macroRules(session.dialect());
-  passes::LoweringOptions options;
-  options.dialect = session.dialect();
-  options.machine = &session.machine();
-  options.program_dir = session.programDir();
-  passes::Lowering lowering(options, diags, entry);
-
-  SourceProgramStore store(session.sources(), diags, session.programDir(),
-                           std::vector<std::string>(rules.program_file_names.begin(),
-                                                    rules.program_file_names.end()),
-                           readerOptionsFor(session.dialect()));
-  std::unique_ptr<eval::BlockCursor> main = store.open(session.mainFile());
-  frontend::BlockReader& main_reader = SourceProgramStore::readerOf(*main);
-
-  eval::Variables variables(rules, commonVariables(rules, session.machine()),
-                            &lowering.systemVariables());
-  // Variable writes reach the IR, one block per statement block, before the block that
-  // follows them (the VM holds #1 to #9999: the system variables above are the model's own).
-  std::vector<ir::SetVariable> writes;
-  SourceLocation writes_loc;
-  auto flushWrites = [&] {
-    if (!writes.empty()) lowering.variablesWritten(writes_loc, std::exchange(writes, {}));
-  };
-  variables.on_write = [&](int64_t n, const eval::Value& v, SourceLocation loc) {
-    if (n <= 0 || n >= bytecode::kDefaultVariableCount) return;
-    if (loc.line != writes_loc.line || loc.file != writes_loc.file) flushWrites();
-    writes_loc = loc;
-    writes.push_back({static_cast<uint32_t>(n), v.vacant ? 0.0 : v.number, v.vacant});
-  };
-  // After on_write: the loaded values reach the VM too, so a run ends with every kept
-  // variable, written by the program or not (and --vars saves them all back).
-  if (!loadSavedVariables(session, variables)) {
-    lowering.finish();
-    return;
-  }
-
-  eval::EvaluatorOptions eval_options;
-  eval_options.rules = &rules;
-  eval_options.repeat = repeatEncoding(rules, session.machine());
-  eval_options.max_back_jumps = session.maxBackJumps();
-  eval_options.skipped = [&](const ast::Block& b) { return lowering.skips(b); };
-  eval_options.is_axis = [&](std::string_view a) {
-    return session.machine().axisIndex(std::string(a)) >= 0;
-  };
-  eval_options.argument_value = [&](const ast::Word& w) { return lowering.argumentValue(w); };
-  eval_options.real_increment = [&] { return lowering.leastIncrement(); };
-  eval_options.address_digits = lowering.addressDigits();
-  eval_options.code_macros = codeMacros(session.machine());
-  eval::Evaluator evaluator(std::move(eval_options), store, std::move(main), variables, diags);
-
-  uint64_t unreadable = 0;
-  while (std::optional<ast::Block> block = evaluator.next()) {
-    flushWrites();
-    if (evaluator.rejectedBlocks() != unreadable) {
-      unreadable = evaluator.rejectedBlocks();
-      lowering.blockUnreadable();
-    }
-    if (session.blockObserver()) session.blockObserver()(block->loc);
-    // Lowered even when the pipeline stops after evaluation: the evaluator reads the state
-    // lowering keeps (positions, modal codes, offsets); the IR then goes nowhere.
-    tap.after("evaluate", *block);
-    passes::LowerResult result = lowering.lower(*block);
-    if (result.switch_language) evaluator.setLanguage(*result.switch_language);
-    if (result.program_end) {
-      evaluator.programEndCode();
-      break;
-    }
-  }
-  flushWrites();
-  tap.finish();
-  // The text after the main program's end, when the program ended in the main file's reader.
-  if (&evaluator.mainCursor() == evaluator.currentCursor()) {
-    if (evaluator.end() == eval::ProgramEnd::EndOfRecord) afterEndOfRecord(main_reader, diags);
-    if (evaluator.end() == eval::ProgramEnd::ProgramEndCode) afterProgramEnd(main_reader, diags);
-  }
-  lowering.finish();
+  if (!ok) return std::nullopt;
+  return loaded;
 }
 
 // Receives the IR and keeps nothing.
@@ -228,6 +131,91 @@ struct DiscardingSink : ir::BlockSink {
   void accept(ir::Block) override {}
   void finish() override {}
 };
+
+// The rest of the program goes to the VM's block preparation (docs/runtime.md): an ir::Prepare
+// carrying the block store, after the blocks prepared so far.
+void prepareAtRunTime(Session& session, SourceProgramStore& store, const prepare::BlockLoop& loop,
+                      bool deferred, std::map<int64_t, double> saved, ir::BlockSink& entry) {
+  const eval::MacroRules& rules = eval::macroRules(session.dialect());
+  BlockStoreTargets targets;
+  targets.code_macros = prepare::codeMacros(session.machine());
+  targets.program_number_digits =
+      prepare::repeatEncoding(rules, session.machine()) == eval::RepeatEncoding::HighDigitsOfP
+          ? rules.program_number_digits
+          : 0;
+  eval::BlockStore blocks = buildBlockStore(store, session.mainFile(), targets, session.diagnostics());
+  if (session.diagnostics().hasErrors()) return;
+  blocks.ahead_blocks = deferred ? 0 : loop.steps();
+  blocks.max_back_jumps = session.maxBackJumps();
+  blocks.saved_variables = std::move(saved);
+  ir::Prepare prepare;
+  prepare.ahead_blocks = blocks.ahead_blocks;
+  prepare.files = static_cast<uint32_t>(blocks.files.size());
+  for (const eval::StoredFile& f : blocks.files) prepare.blocks += f.blocks.size();
+  prepare.store = std::make_shared<const std::vector<uint8_t>>(eval::encodeBlockStore(blocks));
+  ir::Block block;
+  block.loc = deferred ? SourceLocation{session.mainFile(), 1, 1} : loop.runTimeReason().loc;
+  block.ops.push_back(std::move(prepare));
+  entry.accept(std::move(block));
+}
+
+// Reads blocks through the evaluator (macro statements, calls) and lowers them until the end
+// of the program: M02/M30, or a '%' after the program's first block (the end of the record).
+// What follows is never executed; it is not parsed either, and draws a warning at most.
+// From a block that needs a value known only when the program runs (or from the start, with
+// --defer) the VM prepares the blocks: the compiler writes the block store for it.
+void lowerProgram(Session& session, ir::BlockSink& entry, AstStageTap& tap) {
+  DiagnosticEngine& diags = session.diagnostics();
+  const eval::MacroRules& rules = eval::macroRules(session.dialect());
+  SourceProgramStore store(session.sources(), diags, session.programDir(),
+                           std::vector<std::string>(rules.program_file_names.begin(),
+                                                    rules.program_file_names.end()),
+                           readerOptionsFor(session.dialect()));
+  prepare::Settings settings;
+  settings.dialect = session.dialect();
+  settings.machine = &session.machine();
+  settings.program_dir = session.programDir();
+  settings.max_back_jumps = session.maxBackJumps();
+  // --defer: the whole program is still evaluated here, for its diagnostics and the programs
+  // it calls, but its IR goes nowhere: the VM prepares every block.
+  DiscardingSink discard;
+  const bool deferred = session.defer();
+  prepare::BlockLoop loop(settings, store, session.mainFile(), diags, deferred ? discard : entry);
+  // After on_write: the loaded values reach the VM too, so a run ends with every kept
+  // variable, written by the program or not (and --vars saves them all back).
+  std::optional<std::map<int64_t, double>> saved = loadSavedVariables(session, loop.variables());
+  if (!saved) {
+    if (deferred) entry.finish();
+    loop.finish();
+    return;
+  }
+  loop.on_block = [&](const ast::Block& block) {
+    if (session.blockObserver()) session.blockObserver()(block.loc);
+    // Lowered even when the pipeline stops after evaluation: the evaluator reads the state
+    // lowering keeps (positions, modal codes, offsets); the IR then goes nowhere.
+    tap.after("evaluate", block);
+  };
+  prepare::Step step;
+  while ((step = loop.step()) == prepare::Step::Block) {
+  }
+  tap.finish();
+  const eval::Evaluator& evaluator = loop.evaluator();
+  if (step == prepare::Step::RunTime && !deferred)
+    diags.report(Severity::Note, "NCC0023", loop.runTimeReason().loc,
+                 absl::StrCat("the program is prepared while it runs from here: ",
+                              loop.runTimeReason().message));
+  // The text after the main program's end, when the program ended in the main file's reader.
+  if (step == prepare::Step::End && &loop.evaluator().mainCursor() == evaluator.currentCursor()) {
+    frontend::BlockReader& main_reader = SourceProgramStore::readerOf(loop.evaluator().mainCursor());
+    if (evaluator.end() == eval::ProgramEnd::EndOfRecord) afterEndOfRecord(main_reader, diags);
+    if (evaluator.end() == eval::ProgramEnd::ProgramEndCode) afterProgramEnd(main_reader, diags);
+  }
+  if ((step == prepare::Step::RunTime || deferred) && !diags.hasErrors())
+    prepareAtRunTime(session, store, loop, deferred, std::move(*saved), entry);
+  if (deferred) entry.finish();
+  loop.finish();
+}
+
 
 // The pipeline of `which` from lowering to `sink`, shaped by `control` (names checked by
 // checkPassControl); `printer` receives what --print-after asks for.

@@ -49,6 +49,7 @@ std::optional<SetupError> Session::open(const std::filesystem::path& input,
   const Dialect by_name = from_stdin ? Dialect::FanucM : dialectFromFileName(input.filename().string());
   max_back_jumps_ = options.max_back_jumps;
   variables_file_ = options.variables_file;
+  defer_ = options.defer;
   if (options.machine_file) {
     if (std::optional<SetupError> error = unreadable(*options.machine_file)) {
       error->code = "NCC0003";

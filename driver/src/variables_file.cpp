@@ -1,5 +1,7 @@
 #include "ncc/driver/variables_file.h"
 
+#include "ncc/prepare/block_loop.h"
+
 #include <charconv>
 #include <cmath>
 #include <fstream>
@@ -99,19 +101,10 @@ void writeVariablesFile(std::ostream& out, const std::map<int64_t, double>& valu
   }
 }
 
-std::vector<eval::VariableRange> commonVariables(const eval::MacroRules& rules,
-                                                 const MachineConfig& machine) {
-  std::span<const eval::VariableRange> ranges = rules.commons;
-  if (const eval::MacroRules::CommonSet* set =
-          rules.commonSet(machine.params.getString("common_variables", "")))
-    ranges = set->ranges;
-  return std::vector<eval::VariableRange>(ranges.begin(), ranges.end());
-}
-
 std::map<int64_t, double> persistentVariables(
     const Session& session, const std::vector<std::pair<std::string, double>>& variables) {
   const eval::MacroRules& rules = eval::macroRules(session.dialect());
-  eval::Variables kept(rules, commonVariables(rules, session.machine()), nullptr);
+  eval::Variables kept(rules, prepare::commonVariables(rules, session.machine()), nullptr);
   std::map<int64_t, double> out;
   for (const auto& [name, value] : variables)
     if (std::optional<int64_t> n = variableNumber(name); n && kept.isPersistent(*n))

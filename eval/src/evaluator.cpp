@@ -51,6 +51,11 @@ Evaluator::Impl::Impl(EvaluatorOptions o, ProgramStore& s, std::unique_ptr<Block
 }
 
 void Evaluator::Impl::fail(const Failure& failure) {
+  if (failure.error == EvalError::RunTimeValue) {
+    run_time_reason = failure;
+    end = ProgramEnd::RunTime;
+    return;
+  }
   std::string code = failure.error == EvalError::UserAlarm ? absl::StrCat(failure.user_code)
                                                            : std::string(rules.alarm(failure.error));
   diags.error(code, failure.loc, failure.message);
@@ -442,6 +447,7 @@ uint64_t Evaluator::rejectedBlocks() const {
 }
 
 ProgramEnd Evaluator::end() const { return impl_->end; }
+const Failure& Evaluator::runTimeReason() const { return impl_->run_time_reason; }
 
 BlockCursor& Evaluator::mainCursor() { return *impl_->frames.front().cursor; }
 

@@ -76,6 +76,7 @@ struct Evaluator::Impl {
   std::vector<ModalCall> modal_calls;
   std::deque<Pending> pending;
   ProgramEnd end = ProgramEnd::Running;
+  Failure run_time_reason;  // with ProgramEnd::RunTime
   uint64_t back_jumps = 0;
   uint64_t rejected_closed = 0;  // unreadable blocks of cursors already closed
 

@@ -133,6 +133,11 @@ struct OperationPrinter {
   std::string operator()(const ReferenceCheck& c) const {
     return absl::StrCat("refcheck ref", c.reference, " ", axisList(c.position, axes, c.axes));
   }
+  std::string operator()(const Prepare& p) const {
+    return absl::StrCat("prepare at run time after ", p.ahead_blocks, " blocks (store: ", p.files,
+                        " files, ", p.blocks, " blocks, ", p.store ? p.store->size() : 0,
+                        " bytes)");
+  }
   std::string operator()(const SetVariable& v) const {
     return absl::StrCat("set #", v.number, " = ", v.vacant ? "vacant" : num(v.value));
   }

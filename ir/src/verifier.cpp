@@ -49,6 +49,9 @@ class BlockChecker {
     if (v.number == 0) add("assignment to #0 (always vacant)");
     if (!v.vacant && !std::isfinite(v.value)) add(absl::StrCat("variable value ", v.value, " is not finite"));
   }
+  void operator()(const Prepare& p) {
+    if (!p.store || p.store->empty()) add("prepare without a block store");
+  }
   void operator()(const ReferenceCheck& c) {
     axes(c.position, "position");
     const unsigned all = (1u << options_.axis_count) - 1u;

@@ -219,6 +219,10 @@ LowerResult lowerBlock(LoweringCore& core, const ast::Block& block) {
     lowerMotion(ctx);
   machineFunctions(ctx, result);
   checkSkipDependence(ctx);
+  if (ctx.needs_run_time) {
+    result.needs_run_time = std::move(ctx.needs_run_time);
+    return result;
+  }
   checkUnused(ctx);
   if (ctx.silent) return settleSilent(ctx, result);
   if (ctx.failed) return reject(ctx);
@@ -251,6 +255,7 @@ LowerResult Lowering::lower(const ast::Block& block) {
   }
   if (skips(block)) return {};
   if (block.words.empty() && block.statements.empty()) return {};
+  st.resolveSkip();
   return lowerBlock(st, block);
 }
 

@@ -44,6 +44,14 @@ LoweringCore::LoweringCore(LoweringOptions o, DiagnosticEngine& d, ir::BlockSink
   powerOn();
 }
 
+void LoweringCore::resolveSkip() {
+  if (!running() || cs.skip_axes == 0) return;
+  const AxisValues at = running()->machinePosition();
+  for (int i = 0; i < machine->axisCount(); ++i)
+    if (cs.skip_axes & (1u << i)) cs.position[i] = at[i];
+  cs.skip_axes = 0;
+}
+
 void LoweringCore::powerOn() {
   ir::Modal& m = cs.modal;
   m.units = settings.reset_unit;
@@ -65,6 +73,11 @@ void LoweringCore::powerOn() {
 // ---- BlockContext: diagnostics and values ---------------------------------------------------
 void BlockContext::fail(Alarm a, SourceLocation loc, std::string message) {
   if (!silent) core.diags.error(std::string(table.alarm(a)), loc, std::move(message));
+  failed = true;
+}
+
+void BlockContext::needRunTime(SourceLocation loc, std::string why) {
+  if (!needs_run_time) needs_run_time = eval::Failure{eval::EvalError::RunTimeValue, loc, std::move(why), 0};
   failed = true;
 }
 

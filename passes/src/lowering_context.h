@@ -61,6 +61,13 @@ struct LoweringCore {
 
   // The power-on state: the table's '*' codes, overridden by the reset_* parameters.
   void powerOn();
+  // At run time: the axes a G31 moved take the position where it stopped (ahead of time
+  // they stay unknown, ControllerState::skip_axes).
+  void resolveSkip();
+  // The running machine, or null (the compiler, or the VM replaying what the compiler did).
+  const RunTimeState* running() const {
+    return options.run_time && options.run_time->running() ? options.run_time : nullptr;
+  }
 };
 
 // One block being lowered: its decoded words, the state it produces, the IR it emits and the
@@ -102,6 +109,10 @@ struct BlockContext {
   // Reports an error with the dialect's alarm number (unless `silent`); the block then
   // produces no IR.
   void fail(Alarm a, SourceLocation loc, std::string message);
+  // The block needs a value known only when the program runs: no IR, no diagnostic, no state
+  // change; the compiler leaves the rest to the VM (LowerResult::needs_run_time).
+  void needRunTime(SourceLocation loc, std::string why);
+  std::optional<eval::Failure> needs_run_time;
   // The integer value of an address such as H, D, P, L, M (nullopt after reporting).
   std::optional<int64_t> integer(const WordValue& w);
   // Every word of the block against its format (format_digits): integer addresses by their

@@ -2,8 +2,9 @@
 // Sinumerik ISO "G31 X Y Z F"). Where it stops is known only when the program runs: the VM
 // simulates the signal ([machine.probe]) and stores the stop point in the skip-position
 // variables (#5061..). Lowering emits ir::Skip and marks the moved axes as known at run time
-// only (ControllerState::skip_axes); a later block that needs them is an error (run-time
-// evaluation, --defer, is not built yet), an absolute word makes an axis known again.
+// only (ControllerState::skip_axes); a later block that needs them ends the compiler's
+// preparation there (the VM prepares the rest, knowing where G31 stopped: docs/runtime.md);
+// an absolute word makes an axis known again.
 #include <cmath>
 
 #include "absl/strings/str_cat.h"
@@ -12,9 +13,6 @@
 namespace ncc::passes {
 
 namespace {
-
-constexpr const char* kRunTimeOnly =
-    "known only when the program runs: run-time evaluation (--defer) is not built yet";
 
 // The first skip-position variable of the dialect (#5061), 0 when it has none (Siemens ISO
 // latches $AA_MW, not a numbered variable).
@@ -123,11 +121,10 @@ void checkSkipDependence(BlockContext& ctx) {
       if (!w.axes[i] || !(unknown & bit)) continue;
       const WordValue& word = *w.axes[i];
       if (word.mode == ir::DistanceMode::Incremental || set_shift) {
-        ctx.fail(Alarm::DependsOnSkip, word.loc,
-                 absl::StrCat(set_shift ? "G92 " : "the incremental ", word.address,
-                              set_shift ? " sets the shift from" : " starts from",
-                              " the position where G31 stopped: it depends on where G31 stopped, ",
-                              kRunTimeOnly));
+        ctx.needRunTime(word.loc,
+                        absl::StrCat(set_shift ? "G92 " : "the incremental ", word.address,
+                                     set_shift ? " sets the shift from" : " starts from",
+                                     " the position where G31 stopped"));
         return;
       }
       known_again |= bit;
@@ -137,10 +134,8 @@ void checkSkipDependence(BlockContext& ctx) {
   // was told to go, not stay where it stopped.
   const AxisMask kept = unknown & ~known_again;
   if (kept != 0 && moves(ctx.ops)) {
-    ctx.fail(Alarm::DependsOnSkip, ctx.motionLoc(),
-             absl::StrCat("this move keeps ", axisNames(ctx, kept),
-                          " where G31 stopped: it depends on where G31 stopped, ", kRunTimeOnly,
-                          " (program ", axisNames(ctx, kept), " absolutely in this block)"));
+    ctx.needRunTime(ctx.motionLoc(),
+                    absl::StrCat("this move keeps ", axisNames(ctx, kept), " where G31 stopped"));
     return;
   }
   ctx.next.skip_axes = kept | ctx.skip_moved;

@@ -122,11 +122,27 @@ std::optional<eval::Value> modalWord(const LoweringCore& core, int n) {
 
 std::optional<eval::Value> ControllerVariables::read(int64_t number, SourceLocation loc,
                                                      eval::Failure& failure) {
+  core_.resolveSkip();
   const DialectTable& table = *core_.table;
   const ControllerState& cs = core_.cs;
   const SystemVariableRange* r = findRange(table, number);
   auto unknown = [&](std::string message) -> std::optional<eval::Value> {
     failure = {eval::EvalError::VariableNumber, loc, std::move(message), 0};
+    return std::nullopt;
+  };
+  // Ahead of time: the compiler stops preparing here and the VM goes on (docs/runtime.md).
+  auto atRunTime = [&](std::string why) -> std::optional<eval::Value> {
+    failure = {eval::EvalError::RunTimeValue, loc, std::move(why), 0};
+    return std::nullopt;
+  };
+  // At run time: the value the machine has, if the VM simulates it.
+  const RunTimeState* run = core_.running();
+  auto fromRun = [&]() -> std::optional<eval::Value> {
+    if (std::optional<eval::Value> v = run->machineVariable(number)) return v;
+    failure = {eval::EvalError::NotSupported, loc,
+               absl::StrCat("#", number, " (", std::string(r->what),
+                            ") is not simulated by the VM yet"),
+               0};
     return std::nullopt;
   };
   if (!r)
@@ -136,22 +152,27 @@ std::optional<eval::Value> ControllerVariables::read(int64_t number, SourceLocat
   const int axes = core_.machine->axisCount();
   auto axisOf = [&](int64_t i) { return i < axes ? static_cast<int>(i) : -1; };
   const ir::Frame frame = frameOf(cs, table.behaviour);
-  // Where a G31 stopped is known only when the program runs (lowering_skip.cpp).
+  // Where a G31 stopped is known only when the program runs (lowering_skip.cpp); at run time
+  // resolveSkip() above has made it known.
   auto afterSkip = [&](int axis) -> std::optional<eval::Value> {
-    return unknown(absl::StrCat("#", number, " (", std::string(r->what), " of ",
-                                core_.machine->axes[axis].name,
-                                ") depends on where G31 stopped, known only when the program "
-                                "runs: run-time evaluation (--defer) is not built yet"));
+    return atRunTime(absl::StrCat("#", number, " (", std::string(r->what), " of ",
+                                  core_.machine->axes[axis].name,
+                                  ") depends on where G31 stopped"));
   };
   switch (r->kind) {
     case SystemVariable::SkipPosition:
-      return unknown(absl::StrCat("#", number, " (", std::string(r->what),
-                                  ") is where G31 stopped, known only when the program runs: "
-                                  "run-time evaluation (--defer) is not built yet"));
+      if (run) return run->skipVariable(number);
+      return atRunTime(absl::StrCat("#", number, " (", std::string(r->what),
+                                    ") is where G31 stopped"));
     case SystemVariable::RunTime:
-      return unknown(absl::StrCat("#", number, " (", std::string(r->what),
-                                  ") is known only when the program runs on the machine: "
-                                  "run-time evaluation is not supported yet"));
+      // Not simulated by the VM (yet): refused ahead of time rather than stopping a run.
+      if (run) return fromRun();
+      failure = {eval::EvalError::NotSupported, loc,
+                 absl::StrCat("#", number, " (", std::string(r->what),
+                              ") is known only when the program runs, and the VM does not "
+                              "simulate it yet"),
+                 0};
+      return std::nullopt;
     case SystemVariable::LengthGeometry:
     case SystemVariable::LengthWear:
     case SystemVariable::RadiusGeometry:

@@ -70,6 +70,7 @@ void TravelCheckPass::accept(ir::Block block) {
                    [](const ir::MachineFunction&) {},
                    [](const ir::ReferenceCheck&) {},  // checks the position, does not move
                    [](const ir::SetVariable&) {},
+                   [](const ir::Prepare&) {},  // the blocks after it are checked as they run
                },
                op);
     if (beyond && !reported) {

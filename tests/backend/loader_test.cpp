@@ -50,7 +50,7 @@ TEST(Loader, HeaderBytesAreTheDocumentedLayout) {
   EXPECT_EQ(std::string(b.begin(), b.begin() + 4), "NCCB");
   EXPECT_EQ(b[4], 2);  // major, little-endian
   EXPECT_EQ(b[5], 0);
-  EXPECT_EQ(b[6], 1);  // minor (2.1: SKIP)
+  EXPECT_EQ(b[6], 2);  // minor (2.1: SKIP, 2.2: PREPARE and the block store)
   EXPECT_EQ(b[9], 3);  // axis count
   EXPECT_EQ(b[24], 64 + 3 * 16);  // code section offset = header size
   EXPECT_EQ(bytecode::storedChecksum(b), bytecode::fileChecksum(b));
@@ -84,16 +84,38 @@ TEST(Loader, RejectsBadMagic) {
   EXPECT_EQ(loadError(b).substr(0, 7), "NCC7002");
 }
 
-// 2.1 only added SKIP: a 2.0 file (the same bytes, minor 0) still loads; a newer minor is
-// refused, since it may hold opcodes this loader does not know.
+// 2.1 only added SKIP, 2.2 PREPARE and the block store: 2.0 and 2.1 files (the same bytes,
+// minor 0 or 1) still load; a newer minor is refused, since it may hold opcodes this loader
+// does not know.
 TEST(Loader, ReadsOlderMinorRefusesNewer) {
   std::vector<uint8_t> b = test::serialise(test::smallProgram());
-  b[6] = 0;
-  bytecode::sealChecksum(b);
-  EXPECT_EQ(loadError(b), "ok");
-  b[6] = 2;
+  for (uint8_t minor : {0, 1}) {
+    b[6] = minor;
+    bytecode::sealChecksum(b);
+    EXPECT_EQ(loadError(b), "ok");
+  }
+  b[6] = 3;
   bytecode::sealChecksum(b);
   EXPECT_EQ(loadError(b).substr(0, 7), "NCC7003");
+}
+
+// Since 2.2 the bytes after the unit table are the block store; before, they are refused.
+TEST(Loader, BytesAfterTheUnitsAreTheBlockStoreSince22) {
+  std::vector<uint8_t> b = test::serialise(test::smallProgram());
+  b.insert(b.end(), {'N', 'C', 'B', 'S'});
+  bytecode::sealChecksum(b);
+  bytecode::Program loaded;
+  ASSERT_FALSE(bytecode::load(b, loaded).has_value());
+  EXPECT_EQ(loaded.blocks, (std::vector<uint8_t>{'N', 'C', 'B', 'S'}));
+  b[6] = 1;
+  bytecode::sealChecksum(b);
+  EXPECT_EQ(loadError(b), "NCC7006: 4 bytes after the last section");
+  // The writer puts them there.
+  bytecode::Program with_store = test::smallProgram();
+  with_store.blocks = {1, 2, 3};
+  bytecode::Program back;
+  ASSERT_FALSE(bytecode::load(test::serialise(with_store), back).has_value());
+  EXPECT_EQ(back.blocks, with_store.blocks);
 }
 
 TEST(Loader, RejectsOtherMajorVersion) {
@@ -113,9 +135,9 @@ TEST(Loader, RejectsEveryChangedByte) {
       std::vector<uint8_t> flipped = b;
       flipped[i] ^= static_cast<uint8_t>(1u << bit);
       const std::string code = loadError(flipped).substr(0, 7);
-      // Clearing bit 0 of the minor makes a 2.0 header, a version this loader reads: the
+      // Clearing bit 1 of the minor makes a 2.0 header, a version this loader reads: the
       // checksum refuses it.
-      const bool older_minor = i == 6 && bit == 0;
+      const bool older_minor = i == 6 && bit == 1;
       const char* expected = i < 4 ? "NCC7002" : i < 8 && !older_minor ? "NCC7003" : "NCC7016";
       ASSERT_EQ(code, expected) << "byte " << i << " bit " << bit;
     }
@@ -159,6 +181,7 @@ TEST(Loader, RejectsBadAxisEntries) {
 TEST(Loader, RejectsSectionsThatDoNotTileTheFile) {
   std::vector<uint8_t> b = test::serialise(test::smallProgram());
   std::vector<uint8_t> trailing = b;
+  trailing[6] = 1;  // 2.1: nothing after the units (since 2.2 the block store is there)
   trailing.push_back(0);
   EXPECT_EQ(tamperedError(trailing), "NCC7006: 1 bytes after the last section");
   std::vector<uint8_t> truncated(b.begin(), b.end() - 1);

@@ -63,8 +63,11 @@ inline bytecode::Program everyOpcodeProgram() {
   a.skip({20.0, 0.0, -60.0}, 0.5, 0, {0.0, 0.0, 0.0},
          bytecode::kFlagExactStop | bytecode::kFlagFeedPerRev | bytecode::kFlagFixedOverride |
              bytecode::kFlagInch);
-  a.at(1, 9).op(Opcode::ProgramEnd).op(Opcode::ProgramEndRewind).op(Opcode::End);
-  return a.finish();
+  a.at(1, 9).op(Opcode::ProgramEnd).op(Opcode::ProgramEndRewind).op(Opcode::Prepare);
+  a.op(Opcode::End);
+  bytecode::Program program = a.finish();
+  program.blocks = {'N', 'C', 'B', 'S'};  // PREPARE needs a block store (not decoded here)
+  return program;
 }
 
 inline std::vector<uint8_t> serialise(const bytecode::Program& program) {

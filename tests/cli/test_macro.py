@@ -290,9 +290,11 @@ class MacroTest(ScratchDirTest):
         stderr = self.assert_alarm("ua.nc", "#3000=25 (TOOL BROKEN)\nM30\n", 1, "3025")
         self.assertIn("TOOL BROKEN", stderr)
 
-    def test_a_run_time_variable_is_refused_clearly(self):
-        stderr = self.assert_alarm("rt.nc", "#100=#3001\nM30\n", 1, "NCC2400")
-        self.assertIn("known only when the program runs", stderr)
+    def test_a_run_time_variable_the_vm_does_not_simulate_is_refused_clearly(self):
+        stderr = self.assert_alarm("rt.nc", "#100=#3001\nM30\n", 1, "NCC2010")
+        self.assertIn("#3001 (timers) is known only when the program runs, and the VM does not "
+                      "simulate it yet", stderr)
+        self.assert_alarm("sig.nc", "G00 X1.\nIF[#1000 EQ 1]GOTO5\nM30\n", 2, "NCC2010", col=4)
 
 
 if __name__ == "__main__":

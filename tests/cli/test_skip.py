@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """G31 skip with a simulated probe, end to end: [machine.probe] and `ncc run --probe`, the
 skip position in #5061.. (`--emit=vars`), the stop point in the moves, the blocks after G31
-that need where it stopped (NCC2090), and bad probe values.
+that need where it stopped (prepared by the VM while the program runs), and bad probe values.
 
 Run by ctest as: test_skip.py NCC_BINARY
 """
@@ -76,37 +76,84 @@ class SkipTest(ScratchDirTest):
         self.assertEqual(ncc("compile", prog, "-o", ncb).returncode, 0)
         dis = ncc("dis", ncb).stdout
         self.assertIn("SKIP X10 Y10 Z-50 F100 origin X0 Y0 Z0 #5061 exact-stop fixed-override", dis)
-        self.assertTrue(dis.startswith("; ncc bytecode 2.1"))
+        self.assertTrue(dis.startswith("; ncc bytecode 2.2"))
         self.assertEqual(self.run_vars("--probe", "Z=-12.25", ncb)["#5063"], -12.25)
         self.assertEqual(self.run_vars("--probe", "Z=-40", ncb)["#5063"], -40.0)
 
-    def test_incremental_move_after_g31_is_the_clear_error(self):
+    def run_moves(self, *args):
+        proc = ncc("run", "--emit=moves", *args)
+        self.assertEqual(proc.returncode, 0, proc.stderr)
+        return moves(proc.stdout)
+
+    def test_incremental_move_after_g31_starts_where_it_stopped(self):
         prog = self.write("inc.nc", "G90 G00 X10. Y10. Z10.\nG31 Z-50. F100.\nG91 G00 Z5.\nM30\n")
-        proc = ncc("run", "--probe", "Z=-42.5", prog)
-        self.assertEqual(proc.returncode, 1)
-        self.assertIn(
-            "inc.nc:3:9: error[NCC2090]: the incremental Z starts from the position where G31 "
-            "stopped: it depends on where G31 stopped, known only when the program runs: "
-            "run-time evaluation (--defer) is not built yet", proc.stderr)
+        for surface in (-42.5, -12.0):
+            m = self.run_moves("--probe", f"Z={surface}", prog)
+            self.assertEqual(m[1]["to"]["Z"], surface)
+            self.assertEqual(m[2]["to"]["Z"], surface + 5.0)
+        # The compiler says where the VM takes over, and writes PREPARE after the SKIP.
+        ncb = self.path("inc.ncb")
+        proc = ncc("compile", prog, "-o", ncb)
+        self.assertEqual(proc.returncode, 0, proc.stderr)
+        self.assertIn("inc.nc:3:9: note[NCC0023]: the program is prepared while it runs from "
+                      "here: the incremental Z starts from the position where G31 stopped",
+                      proc.stderr)
+        dis = ncc("dis", ncb).stdout
+        ops = [line.split()[2] for line in dis.splitlines() if not line.startswith(";")]
+        self.assertEqual(ops, ["RAPID", "SKIP", "PREPARE", "END"])
+        self.assertIn("; blocks ", dis)
+        # One .ncb, any probe: the block after G31 is prepared when it runs.
+        self.assertEqual(self.run_moves("--probe", "Z=-20", ncb)[2]["to"]["Z"], -15.0)
 
-    def test_a_move_that_keeps_the_skipped_axis_is_an_error(self):
+    def test_a_move_that_keeps_the_skipped_axis_leaves_it_where_it_stopped(self):
         prog = self.write("keep.nc", "G90 G00 X10. Y10. Z10.\nG31 Z-50. F100.\nG00 X20.\nM30\n")
-        proc = ncc("compile", prog, "-o", self.path("k.ncb"))
-        self.assertEqual(proc.returncode, 1)
-        self.assertIn("keep.nc:3:1: error[NCC2090]: this move keeps Z where G31 stopped", proc.stderr)
+        m = self.run_moves("--probe", "Z=-33", prog)
+        self.assertEqual(m[2]["to"], {"X": 20.0, "Y": 10.0, "Z": -33.0})
 
-    def test_reading_the_skip_position_at_compile_time_is_an_error(self):
+    def test_a_probing_macro_follows_the_probed_position(self):
+        # Touch the top, then cut 2 mm below it and come back up by a relative move: every
+        # move after the probe depends on where it stopped.
+        prog = self.write("touch.nc", "\n".join([
+            "G90 G54 G00 X0 Y0 Z20.",
+            "G31 Z-50. F100.",
+            "#100=#5063",
+            "IF[#100 LT -30.]GOTO9",
+            "G01 Z[#100-2.] F200.",
+            "X[#100*-2.]",
+            "G91 Z3.",
+            "N9 G90 G00 Z50.",
+            "M30", ""]))
+        machine = self.write("w.toml", "[machine.work]\nG54 = { Z = -10 }\n")
+        m = self.run_moves("--machine", machine, "--probe", "Z=-15", prog)  # work Z -5
+        self.assertEqual([x["kind"] for x in m], ["rapid", "line", "line", "line", "line", "rapid"])
+        self.assertEqual(m[1]["to"]["Z"], -15.0)                 # the skip stop
+        self.assertEqual(m[2]["to"]["Z"], -17.0)                 # work -7: 2 below the surface
+        self.assertEqual(m[3]["to"], {"X": 10.0, "Y": 0.0, "Z": -17.0})
+        self.assertEqual(m[4]["to"]["Z"], -14.0)                 # 3 up from there
+        self.assertEqual(m[5]["to"]["Z"], 40.0)
+        deep = self.run_moves("--machine", machine, "--probe", "Z=-45", prog)  # work Z -35
+        self.assertEqual([x["kind"] for x in deep], ["rapid", "line", "rapid"])  # GOTO9
+        variables = self.run_vars("--machine", machine, "--probe", "Z=-45", prog)
+        self.assertEqual(variables["#100"], -35.0)
+
+    def test_reading_the_skip_position_is_prepared_at_run_time(self):
         prog = self.write("var.nc", "G31 Z-50. F100.\n#1=#5063\nG00 Z[#1+5.]\nM30\n")
+        self.assertEqual(self.run_moves("--probe", "Z=-8", prog)[1]["to"]["Z"], -3.0)
         proc = ncc("compile", prog, "-o", self.path("v.ncb"))
-        self.assertEqual(proc.returncode, 1)
-        self.assertIn("var.nc:2:4: error[", proc.stderr)
-        self.assertIn("#5063 (skip position) is where G31 stopped, known only when the program "
-                      "runs: run-time evaluation (--defer) is not built yet", proc.stderr)
+        self.assertEqual(proc.returncode, 0, proc.stderr)
+        self.assertIn("var.nc:2:4: note[NCC0023]: the program is prepared while it runs from here: "
+                      "#5063 (skip position) is where G31 stopped", proc.stderr)
         # The end point of the skipped axis (#5043 work position) likewise.
-        prog2 = self.write("var2.nc", "G31 Z-50. F100.\n#1=#5043\nM30\n")
-        proc = ncc("compile", prog2, "-o", self.path("v2.ncb"))
-        self.assertEqual(proc.returncode, 1)
-        self.assertIn("depends on where G31 stopped", proc.stderr)
+        prog2 = self.write("var2.nc", "G31 Z-50. F100.\n#101=#5043\nM30\n")
+        self.assertEqual(self.run_vars("--probe", "Z=-8", prog2)["#101"], -8.0)
+
+    def test_an_alarm_in_a_block_prepared_at_run_time_names_the_block(self):
+        prog = self.write("alarm.nc", "G31 Z-50. F100.\n#1=#5063\n#2=1/[#1+8.]\nG00 Z#2\nM30\n")
+        self.assertEqual(self.run_moves("--probe", "Z=-7", prog)[1]["to"]["Z"], 1.0)
+        proc = ncc("run", "--probe", "Z=-8", prog)  # #1 + 8 = 0: division by zero
+        self.assertEqual(proc.returncode, 3, proc.stderr)
+        self.assertIn("alarm.nc:3:", proc.stderr)
+        self.assertIn("NCC2402", proc.stderr)
 
     def test_absolute_retract_after_g31_is_fine(self):
         prog = self.write("ok.nc", "G90 G00 X10. Y10. Z10.\nG31 Z-50. F100.\nG00 Z20.\n"

@@ -64,7 +64,8 @@ std::string xyzMachine(const std::string& params, const std::string& extra) {
                       "\n[start]\nposition = { X = 0.0, Y = 0.0, Z = 0.0 }\n");
 }
 
-Lowered lower(Dialect dialect, const std::string& program, const std::string& machine_toml) {
+Lowered lower(Dialect dialect, const std::string& program, const std::string& machine_toml,
+              const RunTimeState* run_time) {
   Lowered run;
   SourceManager sources;
   DiagnosticEngine diags(&sources);
@@ -86,6 +87,7 @@ Lowered lower(Dialect dialect, const std::string& program, const std::string& ma
   LoweringOptions options;
   options.dialect = dialect;
   options.machine = &machine;
+  options.run_time = run_time;
   Lowering lowering(options, diags, passes.entry());
   uint32_t line = 0;
   std::string_view rest = program;
@@ -100,6 +102,10 @@ Lowered lower(Dialect dialect, const std::string& program, const std::string& ma
     auto block = frontend::parseIsoBlock(text, file, line, diags);
     if (!block) continue;
     LowerResult r = lowering.lower(*block);
+    if (r.needs_run_time) {
+      run.run_time = r.needs_run_time;
+      break;
+    }
     if (r.program_end) {
       run.program_end = true;
       break;

@@ -9,6 +9,8 @@
 #include "ncc/ir/ir.h"
 #include "ncc/machine/machine_config.h"
 #include "ncc/machine/dialect.h"
+#include "ncc/passes/run_time_state.h"
+#include "ncc/eval/failure.h"
 #include "ncc/support/diagnostics.h"
 #include "ncc/support/source_manager.h"
 
@@ -29,12 +31,16 @@ struct Lowered {
   std::vector<Move> moves;
   std::vector<Diagnostic> diags;
   bool program_end = false;
+  // The first block that needs a value known only at run time (the compiler stops there).
+  std::optional<eval::Failure> run_time;
 
   std::string diagText() const;  // "line:col: error[CODE]: message" per diagnostic
 };
 
 // `machine_toml`: [machine] ... [start] ... ; empty -> defaultMachine().
-Lowered lower(Dialect dialect, const std::string& program, const std::string& machine_toml = "");
+// `run_time`: the running machine, as the VM's block preparation gives it (null: the compiler).
+Lowered lower(Dialect dialect, const std::string& program, const std::string& machine_toml = "",
+              const RunTimeState* run_time = nullptr);
 
 // A [machine] table with X Y Z, G54 at zero, and the given [machine.params] lines.
 std::string xyzMachine(const std::string& params = "", const std::string& extra = "");

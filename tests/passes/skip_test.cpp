@@ -1,5 +1,6 @@
 // G31 skip (lowering_skip.cpp): the IR Skip it becomes, the feed rules of each dialect, and
-// the blocks after it that need where it stopped (NCC2090) or do not (absolute words).
+// the blocks after it that need where it stopped (the compiler stops there: LowerResult::
+// needs_run_time; the VM knows the position) or do not (absolute words).
 #include <string>
 
 #include "gtest/gtest.h"
@@ -93,22 +94,51 @@ TEST(Skip, G31WithoutAnAxisWordIsAnError) {
   EXPECT_NE(r.diagText().find("error[NCC2080]"), std::string::npos) << r.diagText();
 }
 
-TEST(Skip, AnIncrementalWordOnASkippedAxisIsAnError) {
+TEST(Skip, AnIncrementalWordOnASkippedAxisNeedsTheRunTime) {
   Lowered r = lower(Dialect::FanucM, "G31 Z-50. F100.\nG91 G00 Z5.\n");
-  EXPECT_EQ(r.diagText(),
-            "2:9: error[NCC2090]: the incremental Z starts from the position where G31 stopped: "
-            "it depends on where G31 stopped, known only when the program runs: run-time "
-            "evaluation (--defer) is not built yet\n");
+  EXPECT_EQ(r.diagText(), "");
+  ASSERT_TRUE(r.run_time);
+  EXPECT_EQ(r.run_time->error, eval::EvalError::RunTimeValue);
+  EXPECT_EQ(r.run_time->message, "the incremental Z starts from the position where G31 stopped");
+  EXPECT_EQ(r.run_time->loc.line, 2u);
+  EXPECT_EQ(r.run_time->loc.column, 9u);
+  EXPECT_EQ(r.blocks.size(), 1u);  // the skip; nothing of the block that needs the run time
 }
 
-TEST(Skip, AMoveThatKeepsASkippedAxisIsAnError) {
+TEST(Skip, AMoveThatKeepsASkippedAxisNeedsTheRunTime) {
   Lowered r = lower(Dialect::FanucM, "G31 Z-50. F100.\nG00 X20.\n");
-  EXPECT_NE(r.diagText().find("2:1: error[NCC2090]: this move keeps Z where G31 stopped"),
-            std::string::npos)
-      << r.diagText();
+  ASSERT_TRUE(r.run_time);
+  EXPECT_EQ(r.run_time->message, "this move keeps Z where G31 stopped");
+  EXPECT_EQ(r.run_time->loc.line, 2u);
   Lowered g92 = lower(Dialect::FanucM, "G31 Z-50. F100.\nG92 Z0\n");
-  EXPECT_NE(g92.diagText().find("error[NCC2090]: G92 Z sets the shift from"), std::string::npos)
-      << g92.diagText();
+  ASSERT_TRUE(g92.run_time);
+  EXPECT_EQ(g92.run_time->message, "G92 Z sets the shift from the position where G31 stopped");
+}
+
+// The VM's block preparation: the running machine says where G31 stopped.
+struct StoppedAt final : RunTimeState {
+  AxisValues at{};
+  bool running() const override { return true; }
+  AxisValues machinePosition() const override { return at; }
+  eval::Value skipVariable(int64_t) const override { return eval::Value::none(); }
+  std::optional<eval::Value> machineVariable(int64_t) const override { return std::nullopt; }
+};
+
+TEST(Skip, AtRunTimeTheSkippedAxesStartWhereG31Stopped) {
+  StoppedAt machine;
+  machine.at = {10.0, 10.0, -42.5};
+  Lowered r = lower(Dialect::FanucM, "G90 G00 X10. Y10. Z10.\nG31 Z-50. F100.\nG91 G00 Z5.\nX1.\n",
+                    "", &machine);
+  EXPECT_EQ(r.diagText(), "");
+  EXPECT_FALSE(r.run_time);
+  ASSERT_EQ(r.blocks.size(), 4u);
+  const auto* up = std::get_if<ir::Rapid>(&r.blocks[2].ops[0]);
+  ASSERT_NE(up, nullptr);
+  EXPECT_EQ(up->to[2], -37.5);
+  const auto* side = std::get_if<ir::Rapid>(&r.blocks[3].ops[0]);
+  ASSERT_NE(side, nullptr);
+  EXPECT_EQ(side->to[0], 11.0);
+  EXPECT_EQ(side->to[2], -37.5);
 }
 
 TEST(Skip, AbsoluteWordsMakeTheAxisKnownAgain) {
@@ -125,8 +155,8 @@ TEST(Skip, AbsoluteWordsMakeTheAxisKnownAgain) {
 TEST(Skip, AnAxisTheSkipDoesNotMoveStaysKnown) {
   Lowered r = lower(Dialect::FanucM, "G00 Z5.\nG31 Z5. X10. F100.\nG91 G00 Z1.\n");
   // X moved (unknown), Z did not: an incremental Z is fine, but the move keeps X.
-  EXPECT_NE(r.diagText().find("this move keeps X where G31 stopped"), std::string::npos)
-      << r.diagText();
+  ASSERT_TRUE(r.run_time);
+  EXPECT_EQ(r.run_time->message, "this move keeps X where G31 stopped");
   Lowered fine = lower(Dialect::FanucM, "G00 Z5.\nG31 Z5. X10. F100.\nG90 G00 X0\nG91 Z1.\n");
   EXPECT_EQ(fine.diagText(), "");
 }

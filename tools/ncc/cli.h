@@ -17,13 +17,15 @@ enum ExitCode : int { kOk = 0, kProgramError = 1, kUsage = 2, kRuntimeAlarm = 3 
 // A driver error on stderr: `ncc: error[CODE]: message` (codes NCC00xx in docs/cli.md).
 void printError(std::string_view code, std::string_view message);
 
-// --dialect, --machine, --program-dir, --max-back-jumps, --vars: accepted by every command.
+// --dialect, --machine, --program-dir, --max-back-jumps, --vars, --defer: accepted by every
+// command.
 struct CommonOptions {
   std::string dialect;
   std::string machine_file;
   std::string program_dir;
   uint64_t max_back_jumps = 10'000;
   std::string vars_file;
+  bool defer = false;
   void addTo(CLI::App& command);
   // Converts to session options; an unknown dialect name is a usage error (message returned).
   std::optional<std::string> toSessionOptions(driver::SessionOptions& out) const;

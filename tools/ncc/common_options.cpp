@@ -23,6 +23,9 @@ void CommonOptions::addTo(CLI::App& command) {
   command.add_option("--vars", vars_file,
                      "variables file: the persistent common variables (#500.. on FANUC) loaded "
                      "before compiling; ncc run writes them back after a run without alarm");
+  command.add_flag("--defer", defer,
+                   "prepare every block in the VM while the program runs, as it is done from "
+                   "the first block that needs a run-time value (docs/runtime.md)");
 }
 
 std::optional<std::string> CommonOptions::toSessionOptions(driver::SessionOptions& out) const {
@@ -38,6 +41,7 @@ std::optional<std::string> CommonOptions::toSessionOptions(driver::SessionOption
   if (!program_dir.empty()) out.program_dir = program_dir;
   out.max_back_jumps = max_back_jumps;
   if (!vars_file.empty()) out.variables_file = vars_file;
+  out.defer = defer;
   return std::nullopt;
 }
 

@@ -6,6 +6,7 @@
 #include "ncc/bytecode/disassembler.h"
 #include "ncc/bytecode/instruction.h"
 #include "ncc/machine/travel.h"
+#include "block_preparation.h"
 
 namespace ncc::vm {
 
@@ -85,9 +86,49 @@ Executor::Executor(const bytecode::Program& program, const MachineConfig& machin
   } else {
     pc_ = program.units.front().entry;
   }
+  if (program.blocks.empty() || alarm_) return;
+  RunningMachine running;
+  running.position = [this] { return position_; };
+  running.variable = [this](uint32_t n) {
+    if (n >= variables_.size() || variables_[n].vacant) return eval::Value::none();
+    return eval::Value::of(variables_[n].number);
+  };
+  std::string error;
+  preparation_ = BlockPreparation::create(program, machine, std::move(running), error);
+  if (!preparation_) {
+    raise("NCC7212", "", 0);
+    alarm_->message = absl::StrCat("the program's block store cannot be prepared: ", error);
+  }
+}
+
+Executor::~Executor() = default;
+
+bool Executor::fetch(Instruction& in, uint32_t& at) {
+  at = pc_;
+  if (!preparing_) {
+    uint32_t size = 0;
+    if (code_.decode(at, axis_count_, in, size) != bytecode::DecodeStatus::Ok)
+      return raise("NCC7205", "cannot decode the instruction (unverified code)", at);
+    pc_ = at + size;
+    return true;
+  }
+  if (prepared_next_ == prepared_.size()) {
+    std::optional<Alarm> alarm;
+    prepared_next_ = 0;
+    if (!preparation_->next(prepared_, alarm)) {
+      finished_ = true;
+      if (alarm && !alarm_) alarm_ = std::move(alarm);
+      return false;
+    }
+  }
+  in = prepared_[prepared_next_].instruction;
+  prepared_where_ = prepared_[prepared_next_].where;
+  ++prepared_next_;
+  return true;
 }
 
 SourcePosition Executor::where(uint32_t offset) {
+  if (preparing_) return prepared_where_;
   const std::optional<bytecode::LineEntry> e = code_.lineFor(offset, line_hint_);
   return e ? SourcePosition{e->file, e->line, e->column} : SourcePosition{};
 }
@@ -161,12 +202,9 @@ bool Executor::next(Event& out) {
     if (step_limit_ != 0 && steps_ >= step_limit_)
       return raise("NCC7204", "step limit reached", pc_);
     ++steps_;
-    const uint32_t at = pc_;
+    uint32_t at = 0;
     Instruction in;
-    uint32_t size = 0;
-    if (code_.decode(at, axis_count_, in, size) != bytecode::DecodeStatus::Ok)
-      return raise("NCC7205", "cannot decode the instruction (unverified code)", at);
-    pc_ = at + size;
+    if (!fetch(in, at)) return false;
 
     switch (in.op) {
       case Opcode::End:
@@ -339,10 +377,18 @@ bool Executor::next(Event& out) {
         continue;
       }
 
+      case Opcode::Prepare:
+        if (!preparation_ || preparing_)
+          return raise("NCC7205", "PREPARE without a block store (unverified code)", at);
+        preparing_ = true;
+        continue;
+
       case Opcode::Jump:
+        if (preparing_) break;  // prepared blocks never jump
         pc_ = in.target;
         continue;
       case Opcode::JumpIfFalse: {
+        if (preparing_) break;
         Value c;
         if (!pop(c, at)) return false;
         if (numeric(c.vacant, c.number) == 0.0) pc_ = in.target;

@@ -163,6 +163,8 @@ void disassemble(const Program& program, std::ostream& out) {
         << " " << (u.name < program.strings.size() ? quoted(program.strings[u.name]) : "?")
         << "\n";
   }
+  if (!program.blocks.empty())
+    out << "; blocks     " << program.blocks.size() << " bytes (the block store of PREPARE)\n";
   uint32_t offset = 0;
   while (offset < program.code.size()) {
     Instruction in;

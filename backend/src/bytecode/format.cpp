@@ -61,6 +61,8 @@ constexpr std::array<OpcodeInfo, 256> makeTable() {
   set(Opcode::CoolantOff, "COOLANT_OFF", {}, "");
   set(Opcode::ProgramStop, "PROGRAM_STOP", {}, "");
   set(Opcode::OptionalStop, "OPTIONAL_STOP", {}, "");
+  // Control passes to the VM's block preparation for good: it never comes back to the code.
+  set(Opcode::Prepare, "PREPARE", {}, "", 0, 0, 0, Flow::Stop);
   set(Opcode::ProgramEnd, "PROGRAM_END", {}, "", 0, 0, 0, Flow::Stop);
   set(Opcode::ProgramEndRewind, "PROGRAM_END_REWIND", {}, "", 0, 0, 0, Flow::Stop);
   set(Opcode::MCode, "M_CODE", {Code}, "M{code}");

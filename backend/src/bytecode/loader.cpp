@@ -120,8 +120,9 @@ using ChecksumOf = std::function<std::optional<uint64_t>()>;
 
 // Everything before the sections: magic, version, checksum, header fields, axis table and the
 // section table, whose sections must tile the rest of the file exactly, in order.
+// Since 2.2 the bytes after the unit table are the block store (`blocks`; empty before).
 std::optional<Error> readHeader(const Head& head, const ChecksumOf& checksum, Header& header,
-                                SectionTable& sections) {
+                                SectionTable& sections, SectionRange& blocks) {
   const uint64_t file_size = head.file_size;
   if (file_size < kFixedHeaderSize)
     return problem("NCC7001", absl::StrCat("file of ", file_size, " bytes is shorter than the ",
@@ -180,9 +181,12 @@ std::optional<Error> readHeader(const Head& head, const ChecksumOf& checksum, He
                                              ") runs past the end of the file (", file_size,
                                              " bytes)"));
   }
-  if (expected != file_size)
+  blocks = {static_cast<uint32_t>(expected), 0};
+  if (expected == file_size) return std::nullopt;
+  if (header.version_minor < kFirstMinorWithBlocks)
     return problem("NCC7006", absl::StrCat(file_size - expected,
                                            " bytes after the last section"));
+  blocks.size = static_cast<uint32_t>(file_size - expected);
   return std::nullopt;
 }
 
@@ -222,9 +226,10 @@ std::optional<uint64_t> streamChecksum(const ProgramFile& file, uint64_t file_si
 std::optional<Error> load(std::span<const uint8_t> bytes, Program& program) {
   Program result;
   SectionTable sections;
+  SectionRange blocks;
   if (std::optional<Error> e = readHeader(Head{bytes, bytes.size()},
                                           [&] { return std::optional(fileChecksum(bytes)); },
-                                          result.header, sections))
+                                          result.header, sections, blocks))
     return e;
   auto section = [&](Section s) {
     const SectionRange& r = range(sections, s);
@@ -235,6 +240,8 @@ std::optional<Error> load(std::span<const uint8_t> bytes, Program& program) {
   if (std::optional<Error> e = readLines(section(Section::Lines), result.lines)) return e;
   if (std::optional<Error> e = readStrings(section(Section::Strings), result.strings)) return e;
   if (std::optional<Error> e = readUnits(section(Section::Units), result.units)) return e;
+  std::span<const uint8_t> store = bytes.subspan(blocks.offset, blocks.size);
+  result.blocks.assign(store.begin(), store.end());
   program = std::move(result);
   return std::nullopt;
 }
@@ -251,9 +258,10 @@ std::optional<Error> loadPaged(std::shared_ptr<const ProgramFile> file, Program&
   const Head head{std::span<const uint8_t>(head_bytes.data(), head_size), file_size};
   Program result;
   SectionTable sections;
+  SectionRange blocks;
   if (std::optional<Error> e = readHeader(
           head, [&] { return streamChecksum(*file, file_size, head.bytes); }, result.header,
-          sections))
+          sections, blocks))
     return e;
   const SectionRange& lines = range(sections, Section::Lines);
   if (lines.size % kLineEntrySize != 0)
@@ -261,7 +269,10 @@ std::optional<Error> loadPaged(std::shared_ptr<const ProgramFile> file, Program&
                                            " is not a multiple of ", kLineEntrySize));
   std::optional<std::vector<uint8_t>> strings = readSection(*file, range(sections, Section::Strings));
   std::optional<std::vector<uint8_t>> units = readSection(*file, range(sections, Section::Units));
-  if (!strings || !units) return problem("NCC7015", "cannot read the file");
+  // The block store is parsed by the run-time preparation as a whole: held in memory.
+  std::optional<std::vector<uint8_t>> store = readSection(*file, blocks);
+  if (!strings || !units || !store) return problem("NCC7015", "cannot read the file");
+  result.blocks = std::move(*store);
   if (std::optional<Error> e = readStrings(*strings, result.strings)) return e;
   if (std::optional<Error> e = readUnits(*units, result.units)) return e;
   const SectionRange& code = range(sections, Section::Code);

@@ -96,6 +96,9 @@ class Verifier {
           break;
       }
       if (auto e = checkOperands(offset, in)) return e;
+      if (in.op == Opcode::Prepare && program_.blocks.empty())
+        return problem("NCC7116", absl::StrCat(at(offset, in), ": PREPARE without a block "
+                                               "store to prepare from"));
       if (opcodeInfo(in.op).hasOperand(Operand::JumpTarget))
         jumps_.push_back({offset, in.target});
       offset += size;

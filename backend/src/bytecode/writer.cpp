@@ -102,7 +102,8 @@ void StreamWriter::spoolLine(const LineEntry& entry, bool replace_last) {
 }
 
 std::optional<Error> StreamWriter::finish(const std::vector<std::string>& strings,
-                                          const std::vector<Unit>& units) {
+                                          const std::vector<Unit>& units,
+                                          std::span<const uint8_t> blocks) {
   if (finished_) return error_;
   finished_ = true;
   SectionTable sections;
@@ -151,6 +152,8 @@ std::optional<Error> StreamWriter::finish(const std::vector<std::string>& string
   }
   sections[3] = {static_cast<uint32_t>(at), static_cast<uint32_t>(tail.size() - strings_end)};
   at += tail.size() - strings_end;
+  tail.insert(tail.end(), blocks.begin(), blocks.end());
+  at += blocks.size();
   if (at > std::numeric_limits<uint32_t>::max()) {
     fail("NCC7010", "program too large for the bytecode format (file over 4 GiB)");
     return error_;
@@ -195,7 +198,7 @@ std::optional<Error> write(const Program& program, std::ostream& out) {
     offset = next;
     if (offset == size && next_line >= program.lines.size()) break;
   }
-  return writer.finish(program.strings, program.units);
+  return writer.finish(program.strings, program.units, program.blocks);
 }
 
 }  // namespace ncc::bytecode

@@ -7,7 +7,9 @@
 // A value the verifier would refuse (a coordinate, arc centre, dwell or turn count beyond the
 // bounds of bytecode/format.h) is reported here as NCC7017 at its block, so the compiler never
 // writes a file the VM will not run.
+#include <memory>
 #include <optional>
+#include <vector>
 #include <string>
 #include <ostream>
 
@@ -36,14 +38,13 @@ class BytecodeWriter : public ir::BlockSink {
  private:
   void error(std::string code, SourceLocation where, std::string message);
   void encode(const ir::Operation& op, const ir::Block& block);
-  // Why `in` holds a value beyond the format's bounds, or nullopt.
-  std::optional<std::string> outOfBounds(const bytecode::Instruction& in) const;
 
   const MachineConfig& machine_;
   const SourceManager& sources_;
   DiagnosticEngine* diags_;
   bytecode::StreamWriter writer_;
   std::optional<uint32_t> main_file_;  // file of the first block: names the main unit
+  std::shared_ptr<const std::vector<uint8_t>> blocks_;  // of ir::Prepare: after the units
   bool ok_ = true;
   bool finished_ = false;
 };

@@ -11,9 +11,11 @@ namespace ncc::bytecode {
 
 inline constexpr char kMagic[4] = {'N', 'C', 'C', 'B'};
 // 2.0 added the file checksum (checksum.h) and the value bounds below; 1.x files are refused.
-// 2.1 added SKIP (G31); 2.0 files load unchanged.
+// 2.1 added SKIP (G31); 2.2 added PREPARE and the block store after the unit table. Older
+// minors load unchanged.
 inline constexpr uint16_t kVersionMajor = 2;
-inline constexpr uint16_t kVersionMinor = 1;
+inline constexpr uint16_t kVersionMinor = 2;
+inline constexpr uint16_t kFirstMinorWithBlocks = 2;
 
 // Fixed part of the header; the axis table (kAxisEntrySize bytes per axis) follows it and the
 // code section starts right after the axis table.
@@ -89,6 +91,8 @@ enum class Opcode : uint8_t {
   CmpGe = 0x5D,
   Jump = 0x60,
   JumpIfFalse = 0x61,      // pops the condition
+  // The rest of the program is prepared while it runs, from the block store (since 2.2).
+  Prepare = 0x70,
 };
 
 // Flag bits of the motion instructions (one flags byte each; unused bits must be zero).
@@ -133,7 +137,7 @@ enum class Flow : uint8_t {
   Next,    // to the next instruction
   Branch,  // to the next instruction or to its JumpTarget
   Jump,    // to its JumpTarget
-  Stop,    // nowhere: the program ends (END, M02, M30)
+  Stop,    // nowhere: the program ends (END, M02, M30) or goes on in the block store (PREPARE)
 };
 
 // Static facts about one opcode: one row of the opcode table (format.cpp), from which

@@ -67,6 +67,9 @@ struct Program {
   std::vector<LineEntry> lines;      // sorted by offset; empty when paged
   std::vector<Unit> units;           // units[0] is the main program
   std::optional<PagedSections> paged;  // set: code and lines are read from the file
+  // The block store (2.2): every block the run may still prepare, as the compiler parsed them
+  // (eval/block_store.h), for PREPARE. Empty when the compiler prepared the whole program.
+  std::vector<uint8_t> blocks;
 
   int axisCount() const { return static_cast<int>(header.axes.size()); }
   uint32_t codeSize() const {

@@ -9,6 +9,7 @@
 #include <cstdio>
 #include <optional>
 #include <ostream>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -41,8 +42,10 @@ class StreamWriter {
 
   // Appends line table, strings and units and patches the section table. The stream is left
   // positioned at the end of the file. Returns the first error (also kept in error()).
+  // `blocks`: the block store (2.2), appended after the units; empty for none.
   std::optional<Error> finish(const std::vector<std::string>& strings,
-                              const std::vector<Unit>& units);
+                              const std::vector<Unit>& units,
+                              std::span<const uint8_t> blocks = {});
 
   const std::optional<Error>& error() const { return error_; }
 

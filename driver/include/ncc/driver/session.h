@@ -23,6 +23,9 @@ struct SessionOptions {
   uint64_t max_back_jumps = 10'000;
   // --vars FILE: persistent common variables loaded before compiling (variables_file.h).
   std::optional<std::filesystem::path> variables_file;
+  // --defer: the VM prepares every block while the program runs, as it does from the first
+  // block that needs a run-time value (docs/runtime.md).
+  bool defer = false;
 };
 
 // Why a session could not be opened; maps to exit code 2 (usage / configuration). Codes
@@ -63,6 +66,7 @@ class Session {
   const std::filesystem::path& programDir() const { return program_dir_; }
   uint64_t maxBackJumps() const { return max_back_jumps_; }
   const std::optional<std::filesystem::path>& variablesFile() const { return variables_file_; }
+  bool defer() const { return defer_; }
   // The standard input's bytes when the input is "-", else nullptr.
   const std::string* stdinContents() const { return sources_.buffer(main_file_); }
   // Every file on disk the session reads: the program (source or bytecode), the subprograms
@@ -85,6 +89,7 @@ class Session {
   std::optional<std::filesystem::path> machine_file_;
   uint64_t max_back_jumps_ = 10'000;
   std::optional<std::filesystem::path> variables_file_;
+  bool defer_ = false;
   std::function<void(const SourceLocation&)> block_observer_;
 };
 

@@ -38,11 +38,6 @@ std::optional<std::map<int64_t, SavedVariable>> readVariablesFile(
 // Writes `values` in the file's format, in variable order.
 void writeVariablesFile(std::ostream& out, const std::map<int64_t, double>& values);
 
-// The common variables in force: the dialect's, or the set the machine file names
-// (common_variables, Mazak's A-D).
-std::vector<eval::VariableRange> commonVariables(const eval::MacroRules& rules,
-                                                 const MachineConfig& machine);
-
 // The variables among a run's end state (`#n` -> value) that the session's controller keeps
 // through power-off.
 std::map<int64_t, double> persistentVariables(

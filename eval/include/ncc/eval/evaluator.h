@@ -58,6 +58,8 @@ enum class ProgramEnd : uint8_t {
   NextProgram,     // the main program reached the O block of another program
   ProgramEndCode,  // M02 / M30 (seen by lowering)
   Alarm,           // an evaluation error or #3000: reported, the run stops
+  RunTime,         // the next block needs a value known only when the program runs
+                   // (runTimeReason()): the rest is prepared at run time (docs/runtime.md)
 };
 
 class Evaluator {
@@ -78,6 +80,8 @@ class Evaluator {
   uint64_t rejectedBlocks() const;
 
   ProgramEnd end() const;
+  // Why and where evaluation stopped with ProgramEnd::RunTime.
+  const Failure& runTimeReason() const;
   // The main program's cursor (for the text after its end), and the cursor the last block
   // came from.
   BlockCursor& mainCursor();

@@ -30,6 +30,9 @@ enum class EvalError : uint8_t {
   ArgumentBeforeCall,    // an argument written before G65 / G66 (Siemens)
   StepLimit,             // a loop that does not end: the configured step limit was reached
   NotSupported,          // a word of a call ncc does not build yet (Mazak M98 I J K figure rotation)
+  // A value known only when the program runs (where a G31 stopped, an interface signal): not
+  // an error; the compiler leaves the rest of the program to the VM (docs/runtime.md).
+  RunTimeValue,
   kCount,
 };
 

@@ -9,6 +9,7 @@
 // The coordinate-transform pass adds the block's frame and marks them Machine. The backend
 // accepts machine-space operations only (the verifier checks this).
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <variant>
 #include <vector>
@@ -136,8 +137,20 @@ struct SetVariable {
   bool vacant = false;  // `#100 = #0`: the variable becomes vacant again
 };
 
-using Operation =
-    std::variant<Rapid, Linear, Arc, Skip, Dwell, MachineFunction, ReferenceCheck, SetVariable>;
+// The rest of the program is prepared while it runs (docs/runtime.md): a value it needs is
+// known only then (where a G31 stopped, an interface signal), or --defer asked for it. The
+// VM's block preparation goes on from here with the same evaluation and lowering, reading
+// `store`, the encoded block store (eval/block_store.h): the parsed blocks of every program
+// the run may reach and how many blocks were prepared ahead. Nothing follows it.
+struct Prepare {
+  std::shared_ptr<const std::vector<uint8_t>> store;
+  uint64_t ahead_blocks = 0;  // blocks prepared by the compiler before this one
+  uint32_t files = 0;         // files in the store (for printing)
+  uint64_t blocks = 0;        // blocks in the store (for printing)
+};
+
+using Operation = std::variant<Rapid, Linear, Arc, Skip, Dwell, MachineFunction, ReferenceCheck,
+                               SetVariable, Prepare>;
 
 struct Block {
   SourceLocation loc;

@@ -14,6 +14,7 @@
 #include "ncc/ir/ir.h"
 #include "ncc/machine/dialect.h"
 #include "ncc/machine/machine_config.h"
+#include "ncc/passes/run_time_state.h"
 #include "ncc/support/diagnostics.h"
 
 namespace ncc::passes {
@@ -22,12 +23,19 @@ struct LoweringOptions {
   Dialect dialect = Dialect::FanucM;
   const MachineConfig* machine = nullptr;  // required
   std::filesystem::path program_dir;       // where called subprograms are looked up
+  // Set when the VM prepares blocks while the program runs; null in the compiler, where a
+  // block that needs a run-time value ends the ahead-of-time preparation (LowerResult).
+  const RunTimeState* run_time = nullptr;
 };
 
 // What the caller (the block loop) must do after a block.
 struct LowerResult {
   std::optional<frontend::Language> switch_language;  // G290 / G291 seen
   bool program_end = false;                           // M02 / M30: stop reading
+  // The block needs a value known only when the program runs (it moves from where a G31
+  // stopped): why. It produced no IR and changed no state; the rest of the program is
+  // prepared at run time (docs/runtime.md). Never set with LoweringOptions::run_time.
+  std::optional<eval::Failure> needs_run_time;
 };
 
 class Lowering {

@@ -9,6 +9,7 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <string>
 #include <utility>
@@ -22,6 +23,9 @@
 
 namespace ncc::vm {
 
+class BlockPreparation;
+struct PreparedInstruction;
+
 // G27: a position within this distance (mm or deg) of the reference point counts as on it;
 // half the 0.001 least input increment.
 inline constexpr double kReferenceTolerance = 0.0005;
@@ -30,7 +34,11 @@ class Executor {
  public:
   // `program` must outlive the executor. Starts at machine.start_position. A paged program
   // (bytecode::Program::paged) is read through a bounded window (bytecode::CodeView).
+  // A program with a block store (bytecode 2.2) goes on, at its PREPARE, with the blocks
+  // prepared while it runs (docs/runtime.md); the blocks the compiler prepared before it are
+  // replayed here, and a store that does not decode or replay is alarm NCC7212.
   Executor(const bytecode::Program& program, const MachineConfig& machine);
+  ~Executor();
 
   // Runs to the next event and stores it in `out`. A SKIP (G31) is a LINE that ends where the
   // machine's probe (MachineConfig::probe) turns the skip signal on, with an exact stop; the
@@ -75,6 +83,9 @@ class Executor {
   bool skip(const bytecode::Instruction& in, MotionPrimitive& m, uint32_t offset);
   bool pop(Value& out, uint32_t offset);
   bool push(Value v, uint32_t offset);
+  // The next instruction: decoded at pc_, or after PREPARE the next prepared one. False
+  // (with finished_ set) at the end of the prepared program or on an alarm.
+  bool fetch(bytecode::Instruction& in, uint32_t& at);
 
   const bytecode::Program& program_;
   bytecode::CodeView code_;             // the program's code and line table
@@ -89,6 +100,13 @@ class Executor {
   std::array<Value, bytecode::kMaxStackDepth> stack_{};
   int stack_size_ = 0;
   uint32_t pc_ = 0;
+  // After PREPARE: the instructions of the blocks prepared at run time, and where the one
+  // being run comes from.
+  std::unique_ptr<BlockPreparation> preparation_;
+  bool preparing_ = false;
+  std::vector<PreparedInstruction> prepared_;
+  std::size_t prepared_next_ = 0;
+  SourcePosition prepared_where_;
   uint64_t steps_ = 0;
   uint64_t step_limit_ = 0;
   bool finished_ = false;

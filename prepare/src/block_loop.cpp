@@ -1,0 +1,131 @@
+#include "ncc/prepare/block_loop.h"
+
+#include <cctype>
+#include <charconv>
+#include <map>
+#include <string>
+#include <utility>
+
+#include "absl/strings/str_cat.h"
+#include "ncc/bytecode/format.h"
+
+namespace ncc::prepare {
+
+namespace {
+
+passes::LoweringOptions loweringOptions(const Settings& settings) {
+  passes::LoweringOptions options;
+  options.dialect = settings.dialect;
+  options.machine = settings.machine;
+  options.program_dir = settings.program_dir;
+  options.run_time = settings.run_time;
+  return options;
+}
+
+}  // namespace
+
+std::map<std::string, std::string> codeMacros(const MachineConfig& machine) {
+  std::map<std::string, std::string> out;
+  for (const char* param : {"g_code_macros", "m_code_macros"})
+    if (const ParamStringTable* t = machine.params.getStringTable(param))
+      for (const auto& [code, program] : t->by_key) {
+        int64_t n = 0;
+        std::from_chars(code.data() + 1, code.data() + code.size(), n);
+        out[absl::StrCat(std::string(1, static_cast<char>(std::toupper(
+                                            static_cast<unsigned char>(code[0])))),
+                         n)] = program;
+      }
+  return out;
+}
+
+eval::RepeatEncoding repeatEncoding(const eval::MacroRules& rules, const MachineConfig& machine) {
+  return machine.params.getBool("eight_digit_program_numbers", false)
+             ? eval::RepeatEncoding::LAddress
+             : rules.repeat;
+}
+
+std::vector<eval::VariableRange> commonVariables(const eval::MacroRules& rules,
+                                                 const MachineConfig& machine) {
+  std::span<const eval::VariableRange> ranges = rules.commons;
+  if (const eval::MacroRules::CommonSet* set =
+          rules.commonSet(machine.params.getString("common_variables", "")))
+    ranges = set->ranges;
+  return std::vector<eval::VariableRange>(ranges.begin(), ranges.end());
+}
+
+BlockLoop::BlockLoop(const Settings& settings, eval::ProgramStore& store, uint32_t main_file,
+                     DiagnosticEngine& diags, ir::BlockSink& out)
+    : lowering_(loweringOptions(settings), diags, out),
+      variables_(eval::macroRules(settings.dialect),
+                 commonVariables(eval::macroRules(settings.dialect), *settings.machine),
+                 &lowering_.systemVariables()) {
+  const eval::MacroRules& rules = eval::macroRules(settings.dialect);
+  variables_.on_write = [this](int64_t n, const eval::Value& v, SourceLocation loc) {
+    if (n <= 0 || n >= bytecode::kDefaultVariableCount) return;
+    if (loc.line != writes_loc_.line || loc.file != writes_loc_.file) flushWrites();
+    writes_loc_ = loc;
+    writes_.push_back({static_cast<uint32_t>(n), v.vacant ? 0.0 : v.number, v.vacant});
+  };
+  const MachineConfig& machine = *settings.machine;
+  eval::EvaluatorOptions options;
+  options.rules = &rules;
+  options.repeat = repeatEncoding(rules, machine);
+  options.max_back_jumps = settings.max_back_jumps;
+  options.skipped = [this](const ast::Block& b) { return lowering_.skips(b); };
+  options.is_axis = [&machine](std::string_view a) {
+    return machine.axisIndex(std::string(a)) >= 0;
+  };
+  options.argument_value = [this](const ast::Word& w) { return lowering_.argumentValue(w); };
+  options.real_increment = [this] { return lowering_.leastIncrement(); };
+  options.address_digits = lowering_.addressDigits();
+  options.code_macros = codeMacros(machine);
+  evaluator_ = std::make_unique<eval::Evaluator>(std::move(options), store,
+                                                 store.open(main_file), variables_, diags);
+}
+
+BlockLoop::~BlockLoop() = default;
+
+eval::Variables& BlockLoop::variables() { return variables_; }
+
+void BlockLoop::flushWrites() {
+  if (!writes_.empty()) lowering_.variablesWritten(writes_loc_, std::exchange(writes_, {}));
+}
+
+Step BlockLoop::step() {
+  std::optional<ast::Block> block = evaluator_->next();
+  if (!block) {
+    if (evaluator_->end() == eval::ProgramEnd::RunTime) {
+      // The writes of the block that stopped: it is evaluated again where it runs.
+      writes_.clear();
+      run_time_reason_ = evaluator_->runTimeReason();
+      return Step::RunTime;
+    }
+    flushWrites();
+    return Step::End;
+  }
+  flushWrites();
+  if (evaluator_->rejectedBlocks() != unreadable_) {
+    unreadable_ = evaluator_->rejectedBlocks();
+    lowering_.blockUnreadable();
+  }
+  if (on_block) on_block(*block);
+  passes::LowerResult result = lowering_.lower(*block);
+  if (result.needs_run_time) {
+    run_time_reason_ = std::move(*result.needs_run_time);
+    return Step::RunTime;
+  }
+  ++steps_;
+  if (result.switch_language) evaluator_->setLanguage(*result.switch_language);
+  if (result.program_end) {
+    evaluator_->programEndCode();
+    return Step::End;
+  }
+  return Step::Block;
+}
+
+void BlockLoop::finish() {
+  flushWrites();
+  lowering_.finish();
+}
+
+}  // namespace ncc::prepare
