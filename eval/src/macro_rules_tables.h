@@ -34,7 +34,7 @@ inline constexpr std::array<std::string_view, static_cast<size_t>(EvalError::kCo
         "NCC2418",  // ArgumentBeforeCall
         "NCC2419",  // StepLimit
         "NCC2010",  // NotSupported: the code lowering gives a feature not built yet
-        "NCC2090",  // RunTimeValue: never reported (the rest is prepared at run time)
+        "NCC0023",  // RunTimeValue: never an error (the rest is prepared at run time)
 };
 
 // Argument specification I: A#1 B#2 C#3 I#4 J#5 K#6 D#7 E#8 F#9 H#11 M#13 Q#17 R#18 S#19

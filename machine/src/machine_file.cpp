@@ -130,7 +130,8 @@ class MachineFileReader {
     static constexpr std::string_view kKeys[] = {"axes",   "diameter_axes", "offsets",  "work",
                                                  "params", "axis",          "ipo_cycle",
                                                  "chord_tolerance", "corner_tolerance",
-                                                 "lookahead_segments", "dialect", "probe"};
+                                                 "lookahead_segments", "dialect", "probe",
+                                                 "signals"};
     for (const auto& [key, node] : t)
       if (std::find(std::begin(kKeys), std::end(kKeys), key.str()) == std::end(kKeys))
         ctx_.unknownKey(key, "[machine]");
@@ -154,6 +155,8 @@ class MachineFileReader {
     if (const toml::node* n = t.get("dialect")) readDialect(*n);
     if (const toml::node* n = t.get("probe"))
       if (const toml::table* p = ctx_.table(*n, "machine.probe")) readProbe(*p);
+    if (const toml::node* n = t.get("signals"))
+      if (const toml::table* s = ctx_.table(*n, "machine.signals")) readSignals(*s);
     readBounded(t, "ipo_cycle", bounds::kMinIpoCycle, bounds::kMaxIpoCycle, "s",
                 m_.ipo_cycle_seconds);
     readBounded(t, "chord_tolerance", bounds::kMinChordTolerance, bounds::kMaxChordTolerance,
@@ -497,6 +500,31 @@ class MachineFileReader {
       }
       m_.probe.axes |= static_cast<AxisMask>(1u << i);
       m_.probe.trigger[i] = *v;
+    }
+  }
+
+  // [machine.signals]: `1005 = 1` (or `"#1005" = 1`), the interface input signals a program
+  // reads (signals.h).
+  void readSignals(const toml::table& t) {
+    for (const auto& [key_ptr, value_ptr] : inFileOrder(t)) {
+      const toml::key& key = *key_ptr;
+      std::string_view name = key.str();
+      if (!name.empty() && name.front() == '#') name.remove_prefix(1);
+      int64_t n = 0;
+      const auto [end, ec] = std::from_chars(name.data(), name.data() + name.size(), n);
+      if (name.empty() || ec != std::errc() || end != name.data() + name.size()) {
+        ctx_.error(kUnknownKey, ctx_.at(key),
+                   cat("unknown key '", key.str(), "' in [machine.signals] (a variable number "
+                       "#1000 to #1035)"));
+        continue;
+      }
+      const std::optional<double> v = ctx_.number(*value_ptr, key.str());
+      if (!v) continue;
+      if (std::optional<std::string> refused = checkInputSignal(n, *v)) {
+        ctx_.error(kBadValue, ctx_.at(*value_ptr), *refused);
+        continue;
+      }
+      m_.signals.values[static_cast<int>(n)] = *v;
     }
   }
 

@@ -179,7 +179,6 @@ constexpr std::string_view kAlarms[] = {
     "NCC2081",  // G53Incremental
     "PS0003",   // TooManyDigits: too many digits
     "NCC2045",  // LengthCompInArc (not raised)
-    "NCC2090",  // DependsOnSkip
 };
 static_assert(std::size(kAlarms) == static_cast<size_t>(Alarm::kCount));
 
@@ -219,8 +218,8 @@ constexpr DialectBehaviour kBehaviour{
 // offsets: H wear #2001, H geometry #2201, D wear #2401, D geometry #2601). The project has no
 // FANUC milling manual; these are the documented FANUC numbers (docs/macro.md).
 constexpr SystemVariableRange kSystemVariables[] = {
-    {1000, 1035, SystemVariable::RunTime, 0, "interface input signals"},
-    {1100, 1135, SystemVariable::RunTime, 0, "interface output signals"},
+    {1000, 1035, SystemVariable::InputSignal, 0, "interface input signals"},
+    {1100, 1135, SystemVariable::OutputSignal, 0, "interface output signals"},
     {2001, 2200, SystemVariable::LengthWear, 0, "tool length wear offsets"},
     {2201, 2400, SystemVariable::LengthGeometry, 0, "tool length geometry offsets"},
     {2401, 2600, SystemVariable::RadiusWear, 0, "tool radius wear offsets"},

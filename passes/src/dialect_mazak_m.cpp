@@ -169,7 +169,6 @@ constexpr std::string_view kAlarms[] = {
     "NCC2081",  // G53Incremental (not raised: G53 is incremental in G91)
     "809",      // TooManyDigits: number of more than 8 digits
     "NCC2045",  // LengthCompInArc (not raised)
-    "NCC2090",  // DependsOnSkip
 };
 static_assert(std::size(kAlarms) == static_cast<size_t>(Alarm::kCount));
 
@@ -207,8 +206,8 @@ constexpr DialectBehaviour kBehaviour{
 };
 // §13-9-4 (notes §4.8, System variables); F96 bit 0 = 0 (the #2001 ranges, up to 200 offsets).
 constexpr SystemVariableRange kSystemVariables[] = {
-    {1000, 1035, SystemVariable::RunTime, 0, "interface input signals"},
-    {1100, 1135, SystemVariable::RunTime, 0, "interface output signals"},
+    {1000, 1035, SystemVariable::InputSignal, 0, "interface input signals"},
+    {1100, 1135, SystemVariable::OutputSignal, 0, "interface output signals"},
     {2001, 2200, SystemVariable::LengthGeometry, 0, "tool length geometry offsets"},
     {2201, 2400, SystemVariable::LengthWear, 0, "tool length wear offsets"},
     {2401, 2600, SystemVariable::RadiusGeometry, 0, "tool radius geometry offsets"},

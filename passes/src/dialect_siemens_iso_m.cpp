@@ -144,7 +144,6 @@ constexpr std::string_view kAlarms[] = {
     "NCC2081",  // G53Incremental
     "NCC2033",  // TooManyDigits (no number in the notes)
     "NCC2045",  // LengthCompInArc
-    "NCC2090",  // DependsOnSkip
 };
 static_assert(std::size(kAlarms) == static_cast<size_t>(Alarm::kCount));
 

@@ -17,6 +17,7 @@
 //
 // A block is lowered on a copy of the controller state (BlockContext::next); the driver
 // replaces LoweringCore::cs with it only when no concept reported an error.
+#include <array>
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -56,6 +57,9 @@ struct LoweringCore {
   DecimalPointAudit decimal_points;  // coordinate words without a point, over the file
   bool reported_dialect = false;
   ControllerVariables system_variables{*this};  // the system variables: views of cs, tables
+  // Interface outputs #1100-#1131 (one bit each) and #1133-#1135 (words), as last written:
+  // kept until power-off (Mazak §13-9-4 4. note 1). Not per block: not in ControllerState.
+  std::array<double, 36> output_signals{};
 
   LoweringCore(LoweringOptions o, DiagnosticEngine& d, ir::BlockSink& s);
 
@@ -157,8 +161,8 @@ bool checkFeed(BlockContext& ctx, bool inverse_time_needs_f);
 // G31: the skip move; the axes it moves are known only at run time afterwards.
 void skipMove(BlockContext& ctx, const GWord& g);
 // A block that needs the position where an earlier G31 stopped (an incremental word on such
-// an axis, G92 naming it, a move that leaves it where it is) is DependsOnSkip; an absolute
-// word makes the axis known again.
+// an axis, G92 naming it, a move that leaves it where it is) needs the run time
+// (BlockContext::needRunTime); an absolute word makes the axis known again.
 void checkSkipDependence(BlockContext& ctx);
 
 // ---- lowering_coordinates.cpp ----

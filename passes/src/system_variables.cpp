@@ -118,6 +118,46 @@ std::optional<eval::Value> modalWord(const LoweringCore& core, int n) {
   }
 }
 
+
+// Interface outputs (Mazak §13-9-4 4.): #1100 + i, i = 0..31 one bit each, i = 32 the word of
+// those bits, i = 33..35 words of their own.
+constexpr int64_t kOutputBits = 32;
+
+double outputSignal(const LoweringCore& core, int64_t i) {
+  if (i != kOutputBits) return core.output_signals[static_cast<size_t>(i)];
+  double word = 0.0;
+  for (int64_t bit = 0; bit < kOutputBits; ++bit)
+    if (core.output_signals[static_cast<size_t>(bit)] != 0.0) word += std::ldexp(1.0, static_cast<int>(bit));
+  return word;
+}
+
+// A bit takes 0 or 1: vacant is 0, any other value 1 (note 2; a value below 1e-8, which the
+// manual calls undefined, is taken as 0). A word takes an integer 0..2^32-1; the word of the
+// bits sets them all.
+bool writeOutputSignal(LoweringCore& core, int64_t i, const eval::Value& value,
+                       SourceLocation loc, eval::Failure& failure) {
+  const double v = value.vacant ? 0.0 : value.number;
+  if (i < kOutputBits) {
+    core.output_signals[static_cast<size_t>(i)] = std::fabs(v) < 1e-8 ? 0.0 : 1.0;
+    return true;
+  }
+  if (!(v >= 0.0 && v <= 4294967295.0) || v != std::floor(v)) {
+    failure = {eval::EvalError::ValueRange, loc,
+               absl::StrCat("#", 1100 + i, " is a 32-bit output word: an integer from 0 to "
+                            "4294967295, not ", v),
+               0};
+    return false;
+  }
+  if (i > kOutputBits) {
+    core.output_signals[static_cast<size_t>(i)] = v;
+    return true;
+  }
+  const auto word = static_cast<uint64_t>(v);
+  for (int64_t bit = 0; bit < kOutputBits; ++bit)
+    core.output_signals[static_cast<size_t>(bit)] = ((word >> bit) & 1u) ? 1.0 : 0.0;
+  return true;
+}
+
 }  // namespace
 
 std::optional<eval::Value> ControllerVariables::read(int64_t number, SourceLocation loc,
@@ -164,6 +204,11 @@ std::optional<eval::Value> ControllerVariables::read(int64_t number, SourceLocat
       if (run) return run->skipVariable(number);
       return atRunTime(absl::StrCat("#", number, " (", std::string(r->what),
                                     ") is where G31 stopped"));
+    case SystemVariable::InputSignal:
+      if (run) return fromRun();
+      return atRunTime(absl::StrCat("#", number, " (", std::string(r->what),
+                                    ") is known only when the program runs"));
+    case SystemVariable::OutputSignal: return eval::Value::of(outputSignal(core_, number - r->first));
     case SystemVariable::RunTime:
       // Not simulated by the VM (yet): refused ahead of time rather than stopping a run.
       if (run) return fromRun();
@@ -257,6 +302,8 @@ bool ControllerVariables::write(int64_t number, const eval::Value& value, Source
         cs.work_value = stored;
       return true;
     }
+    case SystemVariable::OutputSignal:
+      return writeOutputSignal(core_, number - r->first, value, loc, failure);
     default: return readOnly();
   }
 }

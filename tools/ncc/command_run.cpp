@@ -42,6 +42,7 @@ struct RunArgs {
   std::vector<std::string> rapid_override_at;  // "SECONDS=PERCENT", as given
   std::vector<std::string> feed_hold_at;      // "SECONDS=DURATION", as given
   std::vector<std::string> probe;             // "AXIS=VALUE", as given
+  std::vector<std::string> signal;            // "N=VALUE", as given
 };
 
 // A plain decimal number (digits, '.', an exponent, a leading '-'): no hex, no whitespace,
@@ -244,6 +245,13 @@ int runRun(const RunArgs& args) {
       return kUsage;
     }
   }
+  // --signal N=VALUE: an interface input signal, over [machine.signals]; run-time as well.
+  for (const std::string& text : args.signal) {
+    if (std::optional<std::string> error = setSignalFromOption(machine.signals, text)) {
+      printError("NCC0310", absl::StrCat("--signal: ", *error));
+      return kUsage;
+    }
+  }
   bytecode::Program program;
   bool loaded = false;
   std::optional<driver::SetupError> no_scratch;  // NCC0004: $TMPDIR unusable
@@ -333,6 +341,9 @@ void addRunCommand(CLI::App& app, int& exit_code) {
   cmd->add_option("--probe", args->probe,
                   "AXIS=VALUE: the simulated skip signal of G31 comes on where AXIS reaches VALUE "
                   "(machine coordinates) moving towards it (repeatable; over [machine.probe])");
+  cmd->add_option("--signal", args->signal,
+                  "N=VALUE: the interface input signal #N (#1000-#1031: 0 or 1; #1033-#1035: a "
+                  "32-bit word) a program reads (repeatable; over [machine.signals])");
   args->common.addTo(*cmd);
   cmd->callback([args, &exit_code] { exit_code = runRun(*args); });
 }

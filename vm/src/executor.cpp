@@ -94,7 +94,11 @@ Executor::Executor(const bytecode::Program& program, const MachineConfig& machin
     return eval::Value::of(variables_[n].number);
   };
   std::string error;
-  preparation_ = BlockPreparation::create(program, machine, std::move(running), error);
+  try {
+    preparation_ = BlockPreparation::create(program, machine, std::move(running), error);
+  } catch (const std::exception& e) {  // out of memory: the executor never throws
+    error = e.what();
+  }
   if (!preparation_) {
     raise("NCC7212", "", 0);
     alarm_->message = absl::StrCat("the program's block store cannot be prepared: ", error);
@@ -115,7 +119,13 @@ bool Executor::fetch(Instruction& in, uint32_t& at) {
   if (prepared_next_ == prepared_.size()) {
     std::optional<Alarm> alarm;
     prepared_next_ = 0;
-    if (!preparation_->next(prepared_, alarm)) {
+    bool more = false;
+    try {
+      more = preparation_->next(prepared_, alarm);
+    } catch (const std::exception& e) {  // out of memory: the executor never throws
+      alarm = Alarm{"NCC7212", absl::StrCat("block preparation failed: ", e.what()), prepared_where_};
+    }
+    if (!more) {
       finished_ = true;
       if (alarm && !alarm_) alarm_ = std::move(alarm);
       return false;

@@ -14,6 +14,7 @@
 #include "ncc/machine/dialect.h"
 #include "ncc/machine/params.h"
 #include "ncc/machine/probe.h"
+#include "ncc/machine/signals.h"
 #include "ncc/machine/servo_config.h"
 
 namespace ncc {
@@ -84,6 +85,9 @@ struct MachineConfig {
   // [machine.probe] (or `ncc run --probe`): where the simulated skip signal of G31 comes on.
   // Run-time only: not hashed.
   ProbeConfig probe;
+  // [machine.signals] (or `ncc run --signal`): the interface input signals #1000-#1035 a
+  // program reads. Run-time only: not hashed.
+  InputSignals signals;
   // [machine] dialect: the language of the machine's programs, when the file names it
   // (`--dialect` overrides it). Not hashed: the bytecode header carries the dialect.
   std::optional<Dialect> dialect;

@@ -87,7 +87,6 @@ enum class Alarm : uint8_t {
   G53Incremental,           // G53 in G91 where the controller ignores it (warning)
   TooManyDigits,            // a number longer than its address's format (format_digits)
   LengthCompInArc,          // G43/G44/G49 (or a new H) while G02/G03 is in force
-  DependsOnSkip,            // a block that needs the position where G31 stopped (run time)
   kCount,
 };
 
@@ -154,7 +153,9 @@ enum class SystemVariable : uint8_t {
   WorkPosition,        // per axis, work coordinates
   ToolLengthVector,    // per axis: the tool length offset in force
   SkipPosition,        // per axis, work coordinates: where the last G31 stopped (the VM writes it)
-  RunTime,             // interface signals, timers, servo lag: known when run
+  InputSignal,         // interface inputs: the machine's ([machine.signals]), known when run
+  OutputSignal,        // interface outputs: what the program last wrote (the model keeps them)
+  RunTime,             // timers, servo lag: known when run, not simulated
 };
 
 struct SystemVariableRange {

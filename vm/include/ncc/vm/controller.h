@@ -19,6 +19,8 @@
 // bit-identical outputs (tests/controller pins a hash).
 //
 // Links with ncc_vm, ncc_bytecode, ncc_machine and ncc_support only: never the frontend.
+// A program with blocks prepared while it runs (PREPARE, docs/runtime.md) evaluates and lowers
+// them in prepare(), which then allocates; tick() with prepare_in_tick false does not.
 #include <array>
 #include <cmath>
 #include <cstddef>
@@ -143,7 +145,8 @@ class Controller {
   // look-ahead while it wants more, at most max_events_per_tick of them, and plans the next
   // profile piece (MotionPlanner::planAhead). Real-time loops call
   // it after tick(), in the rest of the cycle; a look-ahead that is not refilled in time only
-  // makes the path brake at the end of what it holds. Never throws or allocates.
+  // makes the path brake at the end of what it holds. Never throws; allocates only to prepare
+  // the blocks of a program that prepares them while it runs (PREPARE, docs/runtime.md).
   void prepare() noexcept;
 
   // The operator turns the feed override knob (fraction, clamped to [0.001,
