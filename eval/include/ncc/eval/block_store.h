@@ -8,10 +8,11 @@
 //
 // Encoding (encodeBlockStore): little-endian, "NCBS" then a u16 version (1). Unsigned integers
 // are LEB128 varints, signed ones zigzag varints, strings a varint length and bytes; a number
-// literal is a varint when it is an integer whose double is bit-identical, else its IEEE bit
-// pattern (so -0.0, NaN payloads and fractions round-trip exactly). Block positions are
-// delta-coded within a file and source locations of words and expressions relative to their
-// block's line, which keeps a CAM program's store near the size of its text.
+// is written as m / 10^k (varint m and k) when that gives its double back bit for bit, as
+// every decimal literal of a program does, else as its IEEE bit pattern (-0.0, NaN payloads,
+// computed values round-trip exactly). Block positions are delta-coded within a file and
+// source locations of words and expressions relative to their block's line, which keeps a CAM
+// program's store near the size of its text.
 #include <cstdint>
 #include <map>
 #include <memory>
