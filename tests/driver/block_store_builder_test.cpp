@@ -179,6 +179,34 @@ TEST(BlockStoreBuilder, UnparsableReachableTextIsAnError) {
       << diagnosticsText(fx.diags);
 }
 
+TEST(BlockStoreBuilder, TextAfterTheMainProgramsEndIsNeverAnError) {
+  // docs/cli.md, The end of a program: what follows M30 is not parsed by the compile (a
+  // warning at most); the stored program after it is still kept.
+  Fixture fx;
+  const fs::path main = fx.folder.write(
+      "end.nc", "G0 X1.\nM30\nG00 X@@@\nN5 G0 X5.\nO100\nN1 G1 X2. F10.\nM99\n%\nX@@@\n");
+  const uint32_t id = fx.sources.addFile(main);
+  BlockStoreTargets targets;
+  targets.main_end = ProgramPoint{id, {7, 2, 1}};  // M30
+  SourceProgramStore store(fx.sources, fx.diags, fx.folder.path(), kPatterns, {});
+  const eval::BlockStore s = buildBlockStore(store, id, targets, fx.diags);
+  EXPECT_TRUE(fx.diags.diagnostics().empty()) << diagnosticsText(fx.diags);
+  ASSERT_EQ(s.files.size(), 1u);
+  std::vector<uint32_t> lines;
+  for (const eval::StoredBlock& b : s.files[0].blocks) lines.push_back(b.position.line);
+  // Line 3 does not parse and is left out; N5 after it parses and is kept; line 9 is after '%'.
+  EXPECT_EQ(lines, (std::vector<uint32_t>{1, 2, 4, 5, 6, 7, 8}));
+  EXPECT_EQ(s.files[0].blocks[3].start, eval::StoredBlock::Start::Program);
+  EXPECT_TRUE(s.files[0].blocks.back().block.percent);
+  std::string error;
+  ASSERT_TRUE(eval::decodeBlockStore(eval::encodeBlockStore(s), error)) << error;
+
+  // Without the end (a program that did not end with M30 in this file) it is an error.
+  SourceProgramStore again(fx.sources, fx.diags, fx.folder.path(), kPatterns, {});
+  buildBlockStore(again, id, {}, fx.diags);
+  EXPECT_NE(diagnosticsText(fx.diags).find("end.nc:3:"), std::string::npos) << diagnosticsText(fx.diags);
+}
+
 TEST(BlockStoreBuilder, ParsedProgramsRoundTrip) {
   Fixture fx;
   SourceProgramStore store(fx.sources, fx.diags, fx.folder.path(), kPatterns, {});
