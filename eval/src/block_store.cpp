@@ -52,7 +52,6 @@ struct LineBase {
   LineBase at(const SourceLocation& loc) const { return {file, line, loc.column}; }
 };
 
-
 // Expression header bits.
 constexpr uint8_t kExprKindMask = 0x07;
 constexpr uint8_t kExprPoint = 0x08;
