@@ -46,8 +46,8 @@ struct StoredFile {
   std::string name;   // file name without folders ("O0012.nc")
   frontend::Language language = frontend::Language::Iso;  // the language its blocks were read in
   // Every block the reader returned up to the end of the record, in file order (strictly
-  // increasing positions): the closing '%' block is the last one; text after it is not part of
-  // the program and is not stored.
+  // increasing positions): the closing '%' block, when there is one, is the last; text after
+  // it is not part of the program and is not stored.
   std::vector<StoredBlock> blocks;
   // The end of the record: the closing '%' block, or the end of the file (the reader's position
   // there: offset = size). ProgramIndex::programEnd's answer for the last program.
