@@ -49,28 +49,71 @@ std::string fileName(const SourceManager& sources, uint32_t file) {
   return path.empty() ? sources.displayName(file) : path.filename().string();
 }
 
+// Stores `block`, read at `at`, unless it is too deeply nested to store (reported).
+void keep(ast::Block block, frontend::BlockPosition at, DiagnosticEngine& diags,
+           eval::StoredFile& out) {
+  if (eval::blockNesting(block) > eval::kMaxStoredNesting) {
+    diags.error(kNestedTooDeep, block.loc,
+                absl::StrCat("expressions nested deeper than ", eval::kMaxStoredNesting,
+                             " levels cannot be kept for preparation at run time"));
+    return;
+  }
+  out.blocks.push_back(eval::StoredBlock{at, eval::StoredBlock::Start::Other, std::move(block)});
+}
+
+// Reads blocks from where `reader` stands up to `end` (exclusive) into `out`.
+void readBlocks(frontend::BlockReader& reader, frontend::BlockPosition end, DiagnosticEngine& diags,
+                eval::StoredFile& out) {
+  while (std::optional<ast::Block> block = reader.next()) {
+    const frontend::BlockPosition at = reader.lastPosition();
+    if (!(at < end)) break;
+    keep(std::move(*block), at, diags, out);
+  }
+}
+
+// The one block starting at `at` (the end block, the closing '%'), if it parses; the reader
+// then stands just after it.
+void readOneBlock(frontend::BlockReader& reader, frontend::BlockPosition at, DiagnosticEngine& diags,
+                  eval::StoredFile& out) {
+  reader.seek(at);
+  std::optional<ast::Block> block = reader.next();
+  if (block && reader.lastPosition() == at) keep(std::move(*block), at, diags, out);
+}
+
 // The blocks of `file` up to the end of its record, each marked as the text scan of the
-// file's ProgramIndex sees its start.
-eval::StoredFile readFile(SourceProgramStore& store, uint32_t file, DiagnosticEngine& diags) {
+// file's ProgramIndex sees its start. `quiet_after`: the block where the main program ended
+// (M02/M30); the text after it, up to the next program, is never executed and the compile
+// does not parse it (docs/cli.md, The end of a program): what parses there is kept, what does
+// not is left out without a diagnostic.
+eval::StoredFile readFile(SourceProgramStore& store, uint32_t file,
+                          std::optional<frontend::BlockPosition> quiet_after,
+                          DiagnosticEngine& diags) {
   frontend::ProgramIndex& index = store.index(file);
   eval::StoredFile out;
   out.id = file;
   out.name = fileName(store.sources(), file);
   out.language = store.readerOptions().initial_language;
   out.record_end = index.recordEnd();
-  frontend::BlockReader reader(store.sources(), file, diags, store.readerOptions());
-  while (std::optional<ast::Block> block = reader.next()) {
-    const frontend::BlockPosition at = reader.lastPosition();
-    if (out.record_end < at) break;
-    if (eval::blockNesting(*block) > eval::kMaxStoredNesting) {
-      diags.error(kNestedTooDeep, block->loc,
-                  absl::StrCat("expressions nested deeper than ", eval::kMaxStoredNesting,
-                               " levels cannot be kept for preparation at run time"));
-    } else {
-      out.blocks.push_back(eval::StoredBlock{at, eval::StoredBlock::Start::Other, std::move(*block)});
-    }
-    if (!(at < out.record_end)) break;  // the closing '%'
+  const frontend::ReaderOptions& options = store.readerOptions();
+  frontend::BlockReader reader(store.sources(), file, diags, options);
+  DiagnosticEngine scratch;
+  frontend::BlockReader quiet(store.sources(), file, scratch, options);
+  bool quiet_to_record_end = false;
+  if (quiet_after && *quiet_after < out.record_end) {
+    readBlocks(reader, *quiet_after, diags, out);
+    readOneBlock(reader, *quiet_after, diags, out);  // M02/M30
+    const frontend::BlockPosition next_program = index.programEnd(*quiet_after);
+    quiet.seek(reader.position());
+    readBlocks(quiet, next_program, scratch, out);
+    quiet_to_record_end = next_program == out.record_end;
+    reader.seek(next_program);
   }
+  readBlocks(reader, out.record_end, diags, out);
+  // The closing '%' (when the record has one: else record_end is the end of the file).
+  if (quiet_to_record_end)
+    readOneBlock(quiet, out.record_end, scratch, out);
+  else
+    readOneBlock(reader, out.record_end, diags, out);
   for (const frontend::ProgramIndex::Label& label : index.labels()) {
     auto it = std::lower_bound(out.blocks.begin(), out.blocks.end(), label.at,
                                [](const eval::StoredBlock& b, const frontend::BlockPosition& p) {
@@ -135,7 +178,9 @@ eval::BlockStore buildBlockStore(SourceProgramStore& store, uint32_t main_file,
   while (!work.empty()) {
     const uint32_t file = work.front();
     work.pop_front();
-    eval::StoredFile stored = readFile(store, file, diags);
+    std::optional<frontend::BlockPosition> quiet_after;
+    if (targets.main_end && targets.main_end->file == file) quiet_after = targets.main_end->position;
+    eval::StoredFile stored = readFile(store, file, quiet_after, diags);
     const std::set<int64_t> local = programsOf(stored);
     for (const eval::StoredBlock& b : stored.blocks)
       for (int64_t number : callTargets(b.block, targets.program_number_digits))

@@ -13,9 +13,11 @@
 //
 // Each file is read from its start with a fresh BlockReader to the end of its record. A block
 // that does not parse is reported as the reader does (an error, so the compile fails), also
-// in text the compile never reached: one verdict for what the run may reach.
+// in text the compile never reached: one verdict for what the run may reach. The exception is
+// the text after the main program's M02/M30 (BlockStoreTargets::main_end), never an error.
 #include <cstdint>
 #include <map>
+#include <optional>
 #include <string>
 
 #include "ncc/eval/block_store.h"
@@ -30,6 +32,11 @@ struct BlockStoreTargets {
   // The program part of M98 P when P may carry a repeat count in its high digits (FANUC
   // Pnnnnmmmm: 4); 0 when it never does. Both the whole P and its low digits are looked up.
   int program_number_digits = 4;
+  // The block where the compile's main program ended with M02/M30 (the last block lowering
+  // saw), if it did: the text after it up to the next program (O block) or the end of the
+  // record is never executed and not parsed by the compile (docs/cli.md, The end of a
+  // program), so a block there that does not parse is left out without a diagnostic.
+  std::optional<eval::ProgramPoint> main_end;
 };
 
 // `store`: the compile's store, after the compile (its records say what the run asked for).

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <bit>
+#include <cmath>
 #include <limits>
 #include <set>
 #include <unordered_map>
@@ -15,6 +16,9 @@ namespace {
 constexpr uint8_t kMagic[4] = {'N', 'C', 'B', 'S'};
 constexpr uint16_t kVersion = 1;
 
+uint64_t zigzag(int64_t v) { return (static_cast<uint64_t>(v) << 1) ^ static_cast<uint64_t>(v >> 63); }
+int64_t unzigzag(uint64_t u) { return static_cast<int64_t>((u >> 1) ^ (~(u & 1) + 1)); }
+
 // ---- Writing ------------------------------------------------------------------------------
 
 class Writer {
@@ -27,9 +31,7 @@ class Writer {
     }
     out.push_back(static_cast<uint8_t>(v));
   }
-  void svarint(int64_t v) {
-    varint((static_cast<uint64_t>(v) << 1) ^ static_cast<uint64_t>(v >> 63));
-  }
+  void svarint(int64_t v) { varint(zigzag(v)); }
   void fixed64(uint64_t v) {
     for (int i = 0; i < 8; ++i) out.push_back(static_cast<uint8_t>(v >> (8 * i)));
   }
@@ -40,17 +42,25 @@ class Writer {
   std::vector<uint8_t> out;
 };
 
-// Where source locations are coded relative to: the line a block starts on.
+// What source locations are coded relative to: the file and line a block starts on, and a
+// column near the location (its parent's: the block's, the previous word's, the enclosing
+// expression's or statement's), so that most take one byte even on long lines.
 struct LineBase {
   uint32_t file = 0;
   uint32_t line = 0;
+  uint32_t column = 0;
+  LineBase at(const SourceLocation& loc) const { return {file, line, loc.column}; }
 };
 
 // Expression header bits.
 constexpr uint8_t kExprKindMask = 0x07;
 constexpr uint8_t kExprPoint = 0x08;
-constexpr uint8_t kExprNumber = 0x10;   // number is not +0.0
-constexpr uint8_t kExprInteger = 0x20;  // ... and is written as a varint
+// How the number is written: two bits.
+constexpr uint8_t kExprFormMask = 0x30;
+constexpr uint8_t kExprZero = 0x00;     // +0.0, nothing written
+constexpr uint8_t kExprBits = 0x10;     // its IEEE bit pattern
+constexpr uint8_t kExprInteger = 0x30;  // a zigzag varint
+constexpr uint8_t kExprDecimal = 0x20;  // m / 10^k: a zigzag varint m, then k (1..15)
 constexpr uint8_t kExprOp = 0x40;
 constexpr uint8_t kExprArgs = 0x80;
 
@@ -64,17 +74,33 @@ constexpr uint8_t kBlockProgram = 0x02;
 constexpr uint8_t kBlockPercent = 0x04;
 constexpr uint8_t kBlockSkip = 0x08;
 constexpr int kBlockStartShift = 4;  // two bits: StoredBlock::Start
+constexpr uint8_t kBlockStatements = 0x40;
+constexpr uint8_t kBlockComments = 0x80;
 
-// A double that an int64 holds exactly, bit for bit (not -0.0).
-bool asInteger(double v, int64_t& i) {
-  if (!(v >= -9.0e15 && v <= 9.0e15)) return false;  // NaN fails too
-  i = static_cast<int64_t>(v);
-  return std::bit_cast<uint64_t>(static_cast<double>(i)) == std::bit_cast<uint64_t>(v);
+constexpr int kMaxDecimals = 15;
+constexpr double kPowersOf10[kMaxDecimals + 1] = {1e0, 1e1, 1e2,  1e3,  1e4,  1e5,  1e6,  1e7,
+                                                  1e8, 1e9, 1e10, 1e11, 1e12, 1e13, 1e14, 1e15};
+
+bool sameBits(double a, double b) { return std::bit_cast<uint64_t>(a) == std::bit_cast<uint64_t>(b); }
+
+// A literal as written in a program, `12.5` or `-0.0015`, is the double nearest m / 10^k; so
+// is the quotient of the two exact doubles m and 10^k (IEEE division rounds correctly). Such a
+// number is written as m and k, checked to give the same bits back (never -0.0). k = 0: an
+// integer.
+bool asDecimal(double v, int64_t& m, int& k) {
+  if (!(std::abs(v) <= 9.0e15) || sameBits(v, -0.0)) return false;  // NaN fails too
+  for (k = 0; k <= kMaxDecimals; ++k) {
+    const double scaled = v * kPowersOf10[k];
+    if (!(std::abs(scaled) < 9.0e15)) return false;
+    m = static_cast<int64_t>(std::nearbyint(scaled));
+    if (sameBits(static_cast<double>(m) / kPowersOf10[k], v)) return true;
+  }
+  return false;
 }
 
 void writeLoc(Writer& w, const SourceLocation& loc, const LineBase& base) {
   if (loc.file == base.file && loc.line == base.line) {
-    w.varint((uint64_t{loc.column} << 1) | 1);
+    w.varint((zigzag(int64_t{loc.column} - int64_t{base.column}) << 1) | 1);
     return;
   }
   w.varint(uint64_t{loc.column} << 1);
@@ -82,66 +108,84 @@ void writeLoc(Writer& w, const SourceLocation& loc, const LineBase& base) {
   w.varint(loc.line);
 }
 
+// An address: one byte for a letter 'A'..'Z' (nearly every word), else 0 and the string.
+void writeAddress(Writer& w, const std::string& address) {
+  if (address.size() == 1 && address[0] >= 'A' && address[0] <= 'Z') {
+    w.u8(static_cast<uint8_t>(address[0]));
+    return;
+  }
+  w.u8(0);
+  w.str(address);
+}
+
 void writeExpr(Writer& w, const ast::Expr& e, const LineBase& base) {
   uint8_t header = static_cast<uint8_t>(e.kind) & kExprKindMask;
-  int64_t integer = 0;
+  int64_t mantissa = 0;
+  int decimals = 0;
   const uint64_t bits = std::bit_cast<uint64_t>(e.number);
-  const bool integral = asInteger(e.number, integer);
+  const uint8_t form = bits == 0                                  ? kExprZero
+                       : !asDecimal(e.number, mantissa, decimals) ? kExprBits
+                       : decimals == 0                            ? kExprInteger
+                                                                  : kExprDecimal;
+  header |= form;
   if (e.has_point) header |= kExprPoint;
-  if (bits != 0) header |= kExprNumber;
-  if (bits != 0 && integral) header |= kExprInteger;
   if (!e.op.empty()) header |= kExprOp;
   if (!e.args.empty()) header |= kExprArgs;
   w.u8(header);
-  if (bits != 0) {
-    if (integral)
-      w.svarint(integer);
-    else
-      w.fixed64(bits);
-  }
+  if (form == kExprBits) w.fixed64(bits);
+  if (form == kExprInteger || form == kExprDecimal) w.svarint(mantissa);
+  if (form == kExprDecimal) w.u8(static_cast<uint8_t>(decimals));
   w.u8(e.digits);
+  writeLoc(w, e.loc, base);
   if (!e.op.empty()) w.str(e.op);
   if (!e.args.empty()) {
     w.varint(e.args.size());
-    for (const ast::Expr& a : e.args) writeExpr(w, a, base);
+    for (const ast::Expr& a : e.args) writeExpr(w, a, base.at(e.loc));
   }
-  writeLoc(w, e.loc, base);
 }
 
 void writeStatement(Writer& w, const ast::Statement& s, const LineBase& base) {
   uint8_t header = static_cast<uint8_t>(s.kind) & kStatementKindMask;
   if (s.then_assign) header |= kStatementThen;
   w.u8(header);
-  writeExpr(w, s.target, base);
-  writeExpr(w, s.value, base);
-  w.svarint(s.loop_id);
   writeLoc(w, s.loc, base);
-  if (s.then_assign) writeStatement(w, *s.then_assign, base);
+  writeExpr(w, s.target, base.at(s.loc));
+  writeExpr(w, s.value, base.at(s.loc));
+  w.svarint(s.loop_id);
+  if (s.then_assign) writeStatement(w, *s.then_assign, base.at(s.loc));
 }
 
 void writeBlock(Writer& w, const StoredBlock& stored, uint32_t file) {
   const ast::Block& b = stored.block;
-  const LineBase base{file, stored.position.line};
+  const LineBase base{file, stored.position.line, stored.position.column};
   uint8_t header = static_cast<uint8_t>(static_cast<uint8_t>(stored.start) << kBlockStartShift);
   if (b.sequence) header |= kBlockSequence;
   if (b.program_number) header |= kBlockProgram;
   if (b.percent) header |= kBlockPercent;
   if (b.skip_level != -1) header |= kBlockSkip;
+  if (!b.statements.empty()) header |= kBlockStatements;
+  if (!b.comments.empty()) header |= kBlockComments;
   w.u8(header);
   writeLoc(w, b.loc, base);
   if (b.skip_level != -1) w.svarint(b.skip_level);
   if (b.sequence) w.svarint(*b.sequence);
   if (b.program_number) w.svarint(*b.program_number);
   w.varint(b.words.size());
+  LineBase previous = base.at(b.loc);
   for (const ast::Word& word : b.words) {
-    w.str(word.address);
-    writeExpr(w, word.value, base);
-    writeLoc(w, word.loc, base);
+    writeAddress(w, word.address);
+    writeLoc(w, word.loc, previous);
+    writeExpr(w, word.value, base.at(word.loc));
+    previous = base.at(word.loc);
   }
-  w.varint(b.statements.size());
-  for (const ast::Statement& s : b.statements) writeStatement(w, s, base);
-  w.varint(b.comments.size());
-  for (const std::string& c : b.comments) w.str(c);
+  if (!b.statements.empty()) {
+    w.varint(b.statements.size());
+    for (const ast::Statement& s : b.statements) writeStatement(w, s, base.at(b.loc));
+  }
+  if (!b.comments.empty()) {
+    w.varint(b.comments.size());
+    for (const std::string& c : b.comments) w.str(c);
+  }
 }
 
 void writePosition(Writer& w, const frontend::BlockPosition& p) {
@@ -187,7 +231,7 @@ class Reader {
   bool svarint(int64_t& v) {
     uint64_t u = 0;
     if (!varint(u)) return false;
-    v = static_cast<int64_t>((u >> 1) ^ (~(u & 1) + 1));
+    v = unzigzag(u);
     return true;
   }
   bool u32(uint32_t& v, const char* what) {
@@ -213,6 +257,8 @@ class Reader {
     return true;
   }
   // A count of items that take at least `min_size` bytes each: never more than the rest allows.
+  // Items are appended as they are read (never allocated ahead from a count), so a damaged
+  // count at each of many nesting levels cannot multiply what is allocated.
   bool count(uint64_t& n, size_t min_size = 1) {
     if (!varint(n)) return false;
     if (n > remaining() / min_size) return fail("count beyond the remaining bytes");
@@ -240,14 +286,25 @@ class Reader {
 bool readLoc(Reader& r, SourceLocation& loc, const LineBase& base) {
   uint64_t head = 0;
   if (!r.varint(head)) return false;
-  if ((head >> 1) > std::numeric_limits<uint32_t>::max()) return r.fail("column out of range");
-  loc.column = static_cast<uint32_t>(head >> 1);
   if (head & 1) {
-    loc.file = base.file;
-    loc.line = base.line;
+    const int64_t column = int64_t{base.column} + unzigzag(head >> 1);  // |delta| < 2^62
+    if (column < 0 || column > std::numeric_limits<uint32_t>::max())
+      return r.fail("column out of range");
+    loc = {base.file, base.line, static_cast<uint32_t>(column)};
     return true;
   }
+  if ((head >> 1) > std::numeric_limits<uint32_t>::max()) return r.fail("column out of range");
+  loc.column = static_cast<uint32_t>(head >> 1);
   return r.u32(loc.file, "file id") && r.u32(loc.line, "line");
+}
+
+bool readAddress(Reader& r, std::string& address) {
+  uint8_t letter = 0;
+  if (!r.u8(letter)) return false;
+  if (letter == 0) return r.str(address);
+  if (letter < 'A' || letter > 'Z') return r.fail("bad address");
+  address.assign(1, static_cast<char>(letter));
+  return true;
 }
 
 bool readExpr(Reader& r, ast::Expr& e, const LineBase& base, int depth) {
@@ -259,29 +316,27 @@ bool readExpr(Reader& r, ast::Expr& e, const LineBase& base, int depth) {
   e.kind = static_cast<ast::Expr::Kind>(kind);
   e.has_point = (header & kExprPoint) != 0;
   e.number = 0.0;
-  if (header & kExprNumber) {
-    if (header & kExprInteger) {
-      int64_t i = 0;
-      if (!r.svarint(i)) return false;
-      e.number = static_cast<double>(i);
-    } else {
-      uint64_t bits = 0;
-      if (!r.fixed64(bits)) return false;
-      e.number = std::bit_cast<double>(bits);
-    }
-  } else if (header & kExprInteger) {
-    return r.fail("bad expression header");
+  const uint8_t form = header & kExprFormMask;
+  if (form == kExprBits) {
+    uint64_t bits = 0;
+    if (!r.fixed64(bits)) return false;
+    e.number = std::bit_cast<double>(bits);
+  } else if (form == kExprInteger || form == kExprDecimal) {
+    int64_t m = 0;
+    uint8_t k = 0;  // stays 0 for an integer
+    if (!r.svarint(m) || (form == kExprDecimal && !r.u8(k))) return false;
+    if (form == kExprDecimal && (k < 1 || k > kMaxDecimals)) return r.fail("bad decimal scale");
+    e.number = static_cast<double>(m) / kPowersOf10[k];
   }
-  if (!r.u8(e.digits)) return false;
+  if (!r.u8(e.digits) || !readLoc(r, e.loc, base)) return false;
   if ((header & kExprOp) && !r.str(e.op)) return false;
   if (header & kExprArgs) {
     uint64_t n = 0;
     if (!r.count(n, 3)) return false;  // an expression takes 3 bytes at least
-    e.args.resize(n);
-    for (ast::Expr& a : e.args)
-      if (!readExpr(r, a, base, depth + 1)) return false;
+    for (uint64_t i = 0; i < n; ++i)
+      if (!readExpr(r, e.args.emplace_back(), base.at(e.loc), depth + 1)) return false;
   }
-  return readLoc(r, e.loc, base);
+  return true;
 }
 
 bool readStatement(Reader& r, ast::Statement& s, const LineBase& base, int depth) {
@@ -292,22 +347,22 @@ bool readStatement(Reader& r, ast::Statement& s, const LineBase& base, int depth
   if (kind > static_cast<uint8_t>(ast::Statement::Kind::End) || (header & ~0x0f))
     return r.fail("unknown statement kind");
   s.kind = static_cast<ast::Statement::Kind>(kind);
-  if (!readExpr(r, s.target, base, depth + 1) || !readExpr(r, s.value, base, depth + 1) ||
-      !r.int32(s.loop_id, "loop id") || !readLoc(r, s.loc, base))
+  if (!readLoc(r, s.loc, base) || !readExpr(r, s.target, base.at(s.loc), depth + 1) ||
+      !readExpr(r, s.value, base.at(s.loc), depth + 1) || !r.int32(s.loop_id, "loop id"))
     return false;
   if (header & kStatementThen) {
     s.then_assign = std::make_unique<ast::Statement>();
-    return readStatement(r, *s.then_assign, base, depth + 1);
+    return readStatement(r, *s.then_assign, base.at(s.loc), depth + 1);
   }
   return true;
 }
 
 bool readBlock(Reader& r, StoredBlock& stored, uint32_t file) {
   ast::Block& b = stored.block;
-  const LineBase base{file, stored.position.line};
+  const LineBase base{file, stored.position.line, stored.position.column};
   uint8_t header = 0;
   if (!r.u8(header)) return false;
-  const uint8_t start = header >> kBlockStartShift;
+  const uint8_t start = (header >> kBlockStartShift) & 3;
   if (start > static_cast<uint8_t>(StoredBlock::Start::Program)) return r.fail("unknown block start");
   stored.start = static_cast<StoredBlock::Start>(start);
   if (!readLoc(r, b.loc, base)) return false;
@@ -329,18 +384,26 @@ bool readBlock(Reader& r, StoredBlock& stored, uint32_t file) {
     return r.fail("block start without its number");
   uint64_t n = 0;
   if (!r.count(n, 5)) return false;  // address, value (3), location
-  b.words.resize(n);
-  for (ast::Word& w : b.words)
-    if (!r.str(w.address) || !readExpr(r, w.value, base, 1) || !readLoc(r, w.loc, base))
+  LineBase previous = base.at(b.loc);
+  for (uint64_t i = 0; i < n; ++i) {
+    ast::Word& w = b.words.emplace_back();
+    if (!readAddress(r, w.address) || !readLoc(r, w.loc, previous) ||
+        !readExpr(r, w.value, base.at(w.loc), 1))
       return false;
-  if (!r.count(n, 9)) return false;  // header, two expressions, loop id, location
-  b.statements.resize(n);
-  for (ast::Statement& s : b.statements)
-    if (!readStatement(r, s, base, 1)) return false;
-  if (!r.count(n)) return false;
-  b.comments.resize(n);
-  for (std::string& c : b.comments)
-    if (!r.str(c)) return false;
+    previous = base.at(w.loc);
+  }
+  if (header & kBlockStatements) {
+    if (!r.count(n, 9)) return false;  // header, location, two expressions, loop id
+    if (n == 0) return r.fail("an empty list of statements");
+    for (uint64_t i = 0; i < n; ++i)
+      if (!readStatement(r, b.statements.emplace_back(), base.at(b.loc), 1)) return false;
+  }
+  if (header & kBlockComments) {
+    if (!r.count(n)) return false;
+    if (n == 0) return r.fail("an empty list of comments");
+    for (uint64_t i = 0; i < n; ++i)
+      if (!r.str(b.comments.emplace_back())) return false;
+  }
   return true;
 }
 
@@ -358,11 +421,10 @@ bool readFile(Reader& r, StoredFile& f) {
   if (language > static_cast<uint8_t>(frontend::Language::Din)) return r.fail("unknown language");
   f.language = static_cast<frontend::Language>(language);
   uint64_t n = 0;
-  if (!r.count(n, 7)) return false;  // position (3), header, location, three counts
-  f.blocks.resize(n);
+  if (!r.count(n, 6)) return false;  // position (3), header, location, word count
   frontend::BlockPosition previous{0, 0, 0};
-  for (size_t i = 0; i < f.blocks.size(); ++i) {
-    StoredBlock& b = f.blocks[i];
+  for (uint64_t i = 0; i < n; ++i) {
+    StoredBlock& b = f.blocks.emplace_back();
     // Positions: offset and line as differences from the previous block's (wrapping), the
     // column as it is. Order is checked below, so a difference cannot lie.
     int64_t offset_delta = 0, line_delta = 0;
@@ -478,9 +540,9 @@ std::optional<BlockStore> decodeBlockStore(std::span<const uint8_t> bytes, std::
     }
   }
   if (!r.count(n, 4)) return std::nullopt;  // id, name, language, block count
-  store.files.resize(n);
   std::set<uint32_t> ids;
-  for (StoredFile& f : store.files) {
+  for (uint64_t i = 0; i < n; ++i) {
+    StoredFile& f = store.files.emplace_back();
     if (!readFile(r, f)) return std::nullopt;
     if (!ids.insert(f.id).second) {
       r.fail("a file stored twice");

@@ -11,6 +11,8 @@
 
 #include "../eval/block_store_compare.h"
 #include "gtest/gtest.h"
+#include "ncc/eval/evaluator.h"
+#include "ncc/eval/variables.h"
 
 namespace ncc::driver {
 namespace {
@@ -177,6 +179,34 @@ TEST(BlockStoreBuilder, UnparsableReachableTextIsAnError) {
       << diagnosticsText(fx.diags);
 }
 
+TEST(BlockStoreBuilder, TextAfterTheMainProgramsEndIsNeverAnError) {
+  // docs/cli.md, The end of a program: what follows M30 is not parsed by the compile (a
+  // warning at most); the stored program after it is still kept.
+  Fixture fx;
+  const fs::path main = fx.folder.write(
+      "end.nc", "G0 X1.\nM30\nG00 X@@@\nN5 G0 X5.\nO100\nN1 G1 X2. F10.\nM99\n%\nX@@@\n");
+  const uint32_t id = fx.sources.addFile(main);
+  BlockStoreTargets targets;
+  targets.main_end = ProgramPoint{id, {7, 2, 1}};  // M30
+  SourceProgramStore store(fx.sources, fx.diags, fx.folder.path(), kPatterns, {});
+  const eval::BlockStore s = buildBlockStore(store, id, targets, fx.diags);
+  EXPECT_TRUE(fx.diags.diagnostics().empty()) << diagnosticsText(fx.diags);
+  ASSERT_EQ(s.files.size(), 1u);
+  std::vector<uint32_t> lines;
+  for (const eval::StoredBlock& b : s.files[0].blocks) lines.push_back(b.position.line);
+  // Line 3 does not parse and is left out; N5 after it parses and is kept; line 9 is after '%'.
+  EXPECT_EQ(lines, (std::vector<uint32_t>{1, 2, 4, 5, 6, 7, 8}));
+  EXPECT_EQ(s.files[0].blocks[3].start, eval::StoredBlock::Start::Program);
+  EXPECT_TRUE(s.files[0].blocks.back().block.percent);
+  std::string error;
+  ASSERT_TRUE(eval::decodeBlockStore(eval::encodeBlockStore(s), error)) << error;
+
+  // Without the end (a program that did not end with M30 in this file) it is an error.
+  SourceProgramStore again(fx.sources, fx.diags, fx.folder.path(), kPatterns, {});
+  buildBlockStore(again, id, {}, fx.diags);
+  EXPECT_NE(diagnosticsText(fx.diags).find("end.nc:3:"), std::string::npos) << diagnosticsText(fx.diags);
+}
+
 TEST(BlockStoreBuilder, ParsedProgramsRoundTrip) {
   Fixture fx;
   SourceProgramStore store(fx.sources, fx.diags, fx.folder.path(), kPatterns, {});
@@ -284,6 +314,50 @@ TEST(BlockStoreBuilder, StoredStoreAnswersAsTheSourceStore) {
   EXPECT_GT(sequence_answers, 100u);  // the comparison is not only of "not found"
   // Names are kept only for the code macros (none here).
   EXPECT_FALSE(stored.findProgramNamed("34"));
+}
+
+// The evaluator's output over each store: what reaches lowering. M30 ends the program as
+// lowering would say.
+std::vector<ast::Block> evaluate(eval::ProgramStore& store, uint32_t main, DiagnosticEngine& diags) {
+  const eval::MacroRules& rules = eval::macroRules(Dialect::FanucM);
+  eval::Variables variables(rules, {rules.commons.begin(), rules.commons.end()}, nullptr);
+  eval::EvaluatorOptions options;
+  options.rules = &rules;
+  options.repeat = eval::RepeatEncoding::HighDigitsOfP;
+  eval::Evaluator evaluator(options, store, store.open(main), variables, diags);
+  std::vector<ast::Block> out;
+  while (std::optional<ast::Block> b = evaluator.next()) {
+    out.push_back(*b);
+    for (const ast::Word& w : b->words)
+      if (w.address == "M" && w.value.number == 30) evaluator.programEndCode();
+  }
+  EXPECT_EQ(evaluator.end(), eval::ProgramEnd::ProgramEndCode);
+  return out;
+}
+
+TEST(BlockStoreBuilder, TheEvaluatorReadsTheSameProgramFromBothStores) {
+  Fixture fx;
+  SourceProgramStore source(fx.sources, fx.diags, fx.folder.path(), kPatterns, {});
+  const std::vector<ast::Block> compiled = evaluate(source, fx.main, fx.diags);
+  ASSERT_FALSE(fx.diags.hasErrors()) << diagnosticsText(fx.diags);
+  const eval::BlockStore built = buildBlockStore(source, fx.main, {}, fx.diags);
+  std::string error;
+  const std::optional<eval::BlockStore> decoded =
+      eval::decodeBlockStore(eval::encodeBlockStore(built), error);
+  ASSERT_TRUE(decoded) << error;
+  eval::StoredProgramStore stored(*decoded);
+  DiagnosticEngine run_diags(&fx.sources);
+  const std::vector<ast::Block> run = evaluate(stored, fx.main, run_diags);
+  EXPECT_TRUE(run_diags.diagnostics().empty()) << diagnosticsText(run_diags);
+  EXPECT_FALSE(stored.languageRefusal());
+  // Blocks for lowering came from all four files (34.nc's is its comment line).
+  std::set<uint32_t> files;
+  for (const ast::Block& b : run) files.insert(b.loc.file);
+  EXPECT_EQ(files.size(), 4u);
+  EXPECT_GE(run.size(), 16u);
+  ASSERT_EQ(compiled.size(), run.size());
+  for (size_t i = 0; i < run.size(); ++i)
+    EXPECT_EQ(eval::test::diffBlock(compiled[i], run[i], absl::StrCat("block ", i)), "");
 }
 
 }  // namespace

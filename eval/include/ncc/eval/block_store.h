@@ -8,10 +8,11 @@
 //
 // Encoding (encodeBlockStore): little-endian, "NCBS" then a u16 version (1). Unsigned integers
 // are LEB128 varints, signed ones zigzag varints, strings a varint length and bytes; a number
-// literal is a varint when it is an integer whose double is bit-identical, else its IEEE bit
-// pattern (so -0.0, NaN payloads and fractions round-trip exactly). Block positions are
-// delta-coded within a file and source locations of words and expressions relative to their
-// block's line, which keeps a CAM program's store near the size of its text.
+// is written as m / 10^k (varint m and k) when that gives its double back bit for bit, as
+// every decimal literal of a program does, else as its IEEE bit pattern (-0.0, NaN payloads,
+// computed values round-trip exactly). Block positions are delta-coded within a file and
+// source locations of words and expressions relative to their block's line, which keeps a CAM
+// program's store near the size of its text.
 #include <cstdint>
 #include <map>
 #include <memory>
@@ -45,8 +46,8 @@ struct StoredFile {
   std::string name;   // file name without folders ("O0012.nc")
   frontend::Language language = frontend::Language::Iso;  // the language its blocks were read in
   // Every block the reader returned up to the end of the record, in file order (strictly
-  // increasing positions): the closing '%' block is the last one; text after it is not part of
-  // the program and is not stored.
+  // increasing positions): the closing '%' block, when there is one, is the last; text after
+  // it is not part of the program and is not stored.
   std::vector<StoredBlock> blocks;
   // The end of the record: the closing '%' block, or the end of the file (the reader's position
   // there: offset = size). ProgramIndex::programEnd's answer for the last program.
