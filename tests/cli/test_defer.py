@@ -5,6 +5,7 @@ block by the VM while it runs (docs/runtime.md) must give identical results.
   - every conformance case (tests/conformance/<dialect>/<id>, the `ncc run` command line of the
     conformance runner): the same exit code, moves, diagnostics and, when the run succeeds,
     variables; passing and expected-failure cases alike;
+  - every corpus program in a supported dialect: the same exit code, moves and diagnostics;
   - the examples: the same moves and the same summary (cycle time included), the same trace
     byte for byte, and bolt-circle's moves are its golden file's;
   - the deferred bytecode is PREPARE and END and the block store, and runs as the source does;
@@ -131,6 +132,39 @@ class ConformanceBothWaysTest(unittest.TestCase):
                     self.assertEqual(late[2], plain[2], f"{report}: diagnostics")
                     if plain[0] == 0:  # a program may make no move, but the file is written
                         self.assertIsNotNone(plain[1], f"{report}: exit 0 and no -o file")
+
+
+# ---- corpus -----------------------------------------------------------------------------------
+
+# The corpus folders in a supported dialect (tests/corpus/corpus_check.py FOLDER_DIALECT).
+CORPUS_DIALECT = {"cam-iso": "fanuc-m", "fanuc-m": "fanuc-m"}
+# A simulated hour: a longer program stops with NCC7208 at the same block both ways.
+CORPUS_MAX_TIME = "3600"
+
+
+def corpus_both_ways(program):
+    dialect = CORPUS_DIALECT[os.path.basename(os.path.dirname(program))]
+    args = ["run", program, "--dialect", dialect, "--emit=moves", "--max-time", CORPUS_MAX_TIME]
+    plain, late = ncc(*args, timeout=300), ncc(*deferred(args), timeout=300)
+    return [(p.returncode, p.stdout, diagnostic_lines(p.stderr)) for p in (plain, late)]
+
+
+class CorpusBothWaysTest(unittest.TestCase):
+    def test_every_real_program_gives_the_same_moves_both_ways(self):
+        corpus = os.path.join(ROOT, "tests", "corpus")
+        programs = sorted(os.path.join(corpus, folder, name) for folder in CORPUS_DIALECT
+                          for name in os.listdir(os.path.join(corpus, folder)))
+        self.assertGreater(len(programs), 50)
+        with concurrent.futures.ThreadPoolExecutor(max_workers=2) as pool:
+            results = list(pool.map(corpus_both_ways, programs))
+        ran = 0
+        for program, (plain, late) in zip(programs, results):
+            with self.subTest(program=os.path.relpath(program, corpus)):
+                self.assertEqual(late[0], plain[0], f"exit code\n{plain[2]}\n{late[2]}")
+                self.assertEqual(late[2], plain[2], "diagnostics")
+                self.assertEqual(late[1], plain[1], "moves")
+                ran += plain[0] in (0, 3)
+        self.assertGreater(ran, 20)  # programs that run, not only rejected ones
 
 
 # ---- examples ---------------------------------------------------------------------------------
