@@ -4,24 +4,23 @@ their values at the end of a run, control flow, calls found in the file and in t
 folder, and bad input: each fault is the controller's alarm (or an NCC code where the manual
 gives none) at the offending block, exit 1, and no output file.
 
-Run by ctest as: test_macro.py NCC_BINARY
+Run by ctest as: test_macro.py NCC_BINARY; with NCC_TEST_DEFER=1 (ctest cli_macro_deferred)
+every command also runs with --defer and must give the same (cli_harness.run_ncc).
 """
 import json
 import os
 import re
-import subprocess
 import sys
 import unittest
 
-from cli_harness import ScratchDirTest
+from cli_harness import ScratchDirTest, run_ncc
 
 NCC = None
 DIAGNOSTIC = re.compile(r"^(?P<file>.+):(?P<line>\d+):(?P<col>\d+): (?P<severity>error|warning)\[(?P<code>[^\]]+)\]: (?P<message>.*)$")
 
 
 def ncc(*args, cwd=None):
-    return subprocess.run([NCC, *args], capture_output=True, text=True, errors="replace",
-                          timeout=120, cwd=cwd)
+    return run_ncc(NCC, args, cwd=cwd, timeout=120)
 
 
 def errors(stderr):

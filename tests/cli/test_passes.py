@@ -4,14 +4,14 @@ with --print-after (each pass's IR under a `; after PASS` line), --stop-after, -
 and the usage errors NCC0015 (no such pass in the command's pipeline) and NCC0016 (not with
 --emit=ir), which leave no output file behind.
 
-Run by ctest as: test_passes.py NCC_BINARY
+Run by ctest as: test_passes.py NCC_BINARY; with NCC_TEST_DEFER=1 (ctest cli_passes_deferred)
+every command also runs with --defer and must give the same (cli_harness.run_ncc).
 """
 import os
-import subprocess
 import sys
 import unittest
 
-from cli_harness import ScratchDirTest
+from cli_harness import ScratchDirTest, run_ncc
 
 NCC = None
 
@@ -22,8 +22,7 @@ COMPILE_PASSES = ["lower", "work-to-machine"]
 
 
 def ncc(*args, stdin=None):
-    return subprocess.run([NCC, *args], capture_output=True, text=True, errors="replace", timeout=120,
-                          input=stdin)
+    return run_ncc(NCC, args, timeout=120, stdin=stdin)
 
 
 def headers(text):

@@ -4,16 +4,16 @@ one diagnostic, long lines are quoted in a window, columns count characters, tex
 M02/M30 or the closing '%' is never executed nor an error, and `ncc check` reports motion
 beyond the machine's travel limits.
 
-Run by ctest as: test_recovery.py NCC_BINARY
+Run by ctest as: test_recovery.py NCC_BINARY; with NCC_TEST_DEFER=1 (ctest cli_recovery_deferred)
+every command also runs with --defer and must give the same (cli_harness.run_ncc).
 """
 import json
 import os
 import re
-import subprocess
 import sys
 import unittest
 
-from cli_harness import ScratchDirTest
+from cli_harness import ScratchDirTest, run_ncc
 
 NCC = None
 CORPUS = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "corpus")
@@ -21,7 +21,7 @@ DIAGNOSTIC = re.compile(r"^(?P<file>.+):(?P<line>\d+):(?P<col>\d+): (?P<severity
 
 
 def ncc(*args):
-    return subprocess.run([NCC, *args], capture_output=True, text=True, errors="replace", timeout=120)
+    return run_ncc(NCC, args, timeout=120)
 
 
 def diagnostics(stderr, severity=None):

@@ -3,14 +3,14 @@
 skip position in #5061.. (`--emit=vars`), the stop point in the moves, the blocks after G31
 that need where it stopped (prepared by the VM while the program runs), and bad probe values.
 
-Run by ctest as: test_skip.py NCC_BINARY
+Run by ctest as: test_skip.py NCC_BINARY; with NCC_TEST_DEFER=1 (ctest cli_skip_deferred)
+every command also runs with --defer and must give the same (cli_harness.run_ncc).
 """
 import json
-import subprocess
 import sys
 import unittest
 
-from cli_harness import ScratchDirTest
+from cli_harness import ScratchDirTest, run_ncc
 
 NCC = None
 
@@ -19,7 +19,7 @@ PROBE_TOML = "[machine.probe]\nZ = -42.5\n"
 
 
 def ncc(*args):
-    return subprocess.run([NCC, *args], capture_output=True, text=True, timeout=120)
+    return run_ncc(NCC, args, timeout=120)
 
 
 def moves(stdout):
