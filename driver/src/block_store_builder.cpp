@@ -80,6 +80,28 @@ void readOneBlock(frontend::BlockReader& reader, frontend::BlockPosition at, Dia
   if (block && reader.lastPosition() == at) keep(std::move(*block), at, diags, out);
 }
 
+// Where the main program ends when the compile stopped before it did (the rest is prepared at
+// run time): its first block, before the next program, that programs M02 or M30 as a literal.
+// A program that jumps over that block and runs on into the text after it is not expected;
+// that text is kept where it parses (see readFile).
+}  // namespace
+
+std::optional<eval::ProgramPoint> writtenMainEnd(SourceProgramStore& store, uint32_t file) {
+  DiagnosticEngine scratch;
+  frontend::BlockReader reader(store.sources(), file, scratch, store.readerOptions());
+  bool in_program = false;  // past the leading '%' and O blocks
+  while (std::optional<ast::Block> block = reader.next()) {
+    if (block->program_number && in_program) break;  // a subprogram stored after it
+    in_program |= !block->program_number && !block->percent && !block->empty();
+    for (const ast::Word& w : block->words)
+      if (w.address == "M" && w.value.isLiteral() && (w.value.number == 2 || w.value.number == 30))
+        return eval::ProgramPoint{file, reader.lastPosition()};
+  }
+  return std::nullopt;
+}
+
+namespace {
+
 // The blocks of `file` up to the end of its record, each marked as the text scan of the
 // file's ProgramIndex sees its start. `quiet_after`: the block where the main program ended
 // (M02/M30); the text after it, up to the next program, is never executed and the compile
@@ -179,7 +201,9 @@ eval::BlockStore buildBlockStore(SourceProgramStore& store, uint32_t main_file,
     const uint32_t file = work.front();
     work.pop_front();
     std::optional<frontend::BlockPosition> quiet_after;
-    if (targets.main_end && targets.main_end->file == file) quiet_after = targets.main_end->position;
+    std::optional<eval::ProgramPoint> main_end = targets.main_end;
+    if (!main_end && file == main_file) main_end = writtenMainEnd(store, file);
+    if (main_end && main_end->file == file) quiet_after = main_end->position;
     eval::StoredFile stored = readFile(store, file, quiet_after, diags);
     const std::set<int64_t> local = programsOf(stored);
     for (const eval::StoredBlock& b : stored.blocks)

@@ -39,6 +39,11 @@ struct BlockStoreTargets {
   std::optional<eval::ProgramPoint> main_end;
 };
 
+// Where the main program in `file` ends when the compile stopped before it did (the rest is
+// prepared at run time): its first block, before the next program, that programs M02 or M30
+// as a literal. The builder uses it when BlockStoreTargets::main_end is not given.
+std::optional<eval::ProgramPoint> writtenMainEnd(SourceProgramStore& store, uint32_t file);
+
 // `store`: the compile's store, after the compile (its records say what the run asked for).
 // The result's ahead_blocks, max_back_jumps and saved_variables are left at their defaults.
 eval::BlockStore buildBlockStore(SourceProgramStore& store, uint32_t main_file,

@@ -134,8 +134,11 @@ struct DiscardingSink : ir::BlockSink {
 
 // The rest of the program goes to the VM's block preparation (docs/runtime.md): an ir::Prepare
 // carrying the block store, after the blocks prepared so far.
+// `main_end`: where the main program ended, when the compile got there (--defer): the text
+// after it is never executed (without it, the builder finds the program's M02/M30 itself).
 void prepareAtRunTime(Session& session, SourceProgramStore& store, const prepare::BlockLoop& loop,
-                      bool deferred, std::map<int64_t, double> saved, ir::BlockSink& entry) {
+                      bool deferred, std::optional<eval::ProgramPoint> main_end,
+                      std::map<int64_t, double> saved, ir::BlockSink& entry) {
   const eval::MacroRules& rules = eval::macroRules(session.dialect());
   BlockStoreTargets targets;
   targets.code_macros = prepare::codeMacros(session.machine());
@@ -143,6 +146,16 @@ void prepareAtRunTime(Session& session, SourceProgramStore& store, const prepare
       prepare::repeatEncoding(rules, session.machine()) == eval::RepeatEncoding::HighDigitsOfP
           ? rules.program_number_digits
           : 0;
+  // The compile stopped before the end: the text after the written M02/M30 draws the warning
+  // it would have drawn.
+  if (!main_end && (main_end = writtenMainEnd(store, session.mainFile()))) {
+    frontend::BlockReader reader(session.sources(), session.mainFile(), session.diagnostics(),
+                                 readerOptionsFor(session.dialect()));
+    reader.seek(main_end->position);
+    reader.next();
+    afterProgramEnd(reader, session.diagnostics());
+  }
+  targets.main_end = main_end;
   eval::BlockStore blocks = buildBlockStore(store, session.mainFile(), targets, session.diagnostics());
   if (session.diagnostics().hasErrors()) return;
   blocks.ahead_blocks = deferred ? 0 : loop.steps();
@@ -205,13 +218,16 @@ void lowerProgram(Session& session, ir::BlockSink& entry, AstStageTap& tap) {
                  absl::StrCat("the program is prepared while it runs from here: ",
                               loop.runTimeReason().message));
   // The text after the main program's end, when the program ended in the main file's reader.
+  std::optional<eval::ProgramPoint> main_end;
   if (step == prepare::Step::End && &loop.evaluator().mainCursor() == evaluator.currentCursor()) {
+    if (evaluator.end() == eval::ProgramEnd::ProgramEndCode)
+      main_end = loop.evaluator().mainCursor().lastPoint();
     frontend::BlockReader& main_reader = SourceProgramStore::readerOf(loop.evaluator().mainCursor());
     if (evaluator.end() == eval::ProgramEnd::EndOfRecord) afterEndOfRecord(main_reader, diags);
     if (evaluator.end() == eval::ProgramEnd::ProgramEndCode) afterProgramEnd(main_reader, diags);
   }
   if ((step == prepare::Step::RunTime || deferred) && !diags.hasErrors())
-    prepareAtRunTime(session, store, loop, deferred, std::move(*saved), entry);
+    prepareAtRunTime(session, store, loop, deferred, main_end, std::move(*saved), entry);
   if (deferred) entry.finish();
   loop.finish();
 }

@@ -293,7 +293,47 @@ class MacroTest(ScratchDirTest):
         stderr = self.assert_alarm("rt.nc", "#100=#3001\nM30\n", 1, "NCC2010")
         self.assertIn("#3001 (timers) is known only when the program runs, and the VM does not "
                       "simulate it yet", stderr)
-        self.assert_alarm("sig.nc", "G00 X1.\nIF[#1000 EQ 1]GOTO5\nM30\n", 2, "NCC2010", col=4)
+        self.assert_alarm("lag.nc", "G00 X1.\nIF[#5101 EQ 1]GOTO5\nM30\n", 2, "NCC2010", col=4)
+
+    def test_interface_signals(self):
+        # Inputs are the machine's, known when the program runs: the VM prepares the blocks
+        # from the first that reads one. Outputs are what the program wrote.
+        prog = self.write("sig.nc", "G90 G00 X0 Y0 Z10.\nIF[#1005 EQ 1]GOTO10\nG01 X10. F100.\n"
+                                    "M30\nN10 G01 Y10. F100.\n#1100=1\n#1133=7\n#101=#1132+#1133\n"
+                                    "#102=#1032\nM30\n")
+
+        def run(*extra):
+            proc = ncc("run", "--dialect", "fanuc-m", "--emit=moves", prog, *extra)
+            self.assertEqual(proc.returncode, 0, proc.stderr)
+            return [json.loads(line)["to"] for line in proc.stdout.splitlines()]
+
+        self.assertEqual(run()[-1], {"X": 10.0, "Y": 0.0, "Z": 10.0})
+        self.assertEqual(run("--signal", "1005=1")[-1], {"X": 0.0, "Y": 10.0, "Z": 10.0})
+        machine = self.write("sig.toml", "[machine.signals]\n1005 = 1\n\"#1001\" = 1\n")
+        self.assertEqual(run("--machine", machine)[-1], {"X": 0.0, "Y": 10.0, "Z": 10.0})
+        self.assertEqual(run("--machine", machine, "--signal", "1005=0")[-1],
+                         {"X": 10.0, "Y": 0.0, "Z": 10.0})
+        proc = ncc("run", "--dialect", "fanuc-m", "--emit=vars", "--machine", machine,
+                   "--signal", "#1003=1", prog)
+        self.assertEqual(proc.returncode, 0, proc.stderr)
+        v = json.loads(proc.stdout)
+        self.assertEqual((v["#101"], v["#102"], v["#1100"]), (8.0, 2.0 + 8.0 + 32.0, 1.0))
+        # The compiler says where the VM takes over.
+        proc = ncc("check", "--dialect", "fanuc-m", prog)
+        self.assertIn("sig.nc:2:4: note[NCC0023]: the program is prepared while it runs from "
+                      "here: #1005 (interface input signals) is known only when the program runs",
+                      proc.stderr)
+        # Inputs are read only; bad values are refused where they are given.
+        self.assert_alarm("w.nc", "#1005=1\nM30\n", 1, "NCC2401", dialect="fanuc-m")
+        for bad in ("1032=1", "1005=2", "999=1", "1033=-1", "1005"):
+            proc = ncc("run", "--signal", bad, prog)
+            self.assertEqual(proc.returncode, 2, bad)
+            self.assertIn("error[NCC0310]: --signal: ", proc.stderr)
+        for text, code in (("1005 = 3", "NCC0306"), ("foo = 1", "NCC0302"), ("1032 = 0", "NCC0306")):
+            proc = ncc("check", "--machine", self.write("bad.toml", f"[machine.signals]\n{text}\n"), prog)
+            self.assertEqual(proc.returncode, 2, text)
+            self.assertIn(f"bad.toml:2:", proc.stderr)
+            self.assertIn(f"error[{code}]", proc.stderr)
 
 
 if __name__ == "__main__":

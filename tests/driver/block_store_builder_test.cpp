@@ -201,10 +201,18 @@ TEST(BlockStoreBuilder, TextAfterTheMainProgramsEndIsNeverAnError) {
   std::string error;
   ASSERT_TRUE(eval::decodeBlockStore(eval::encodeBlockStore(s), error)) << error;
 
-  // Without the end (a program that did not end with M30 in this file) it is an error.
+  // Without the end (the compile stopped before it: the rest is prepared at run time) the
+  // builder takes the main program's first M02/M30 block: the same store, no error.
   SourceProgramStore again(fx.sources, fx.diags, fx.folder.path(), kPatterns, {});
-  buildBlockStore(again, id, {}, fx.diags);
-  EXPECT_NE(diagnosticsText(fx.diags).find("end.nc:3:"), std::string::npos) << diagnosticsText(fx.diags);
+  const eval::BlockStore found = buildBlockStore(again, id, {}, fx.diags);
+  EXPECT_TRUE(fx.diags.diagnostics().empty()) << diagnosticsText(fx.diags);
+  EXPECT_EQ(eval::encodeBlockStore(found), eval::encodeBlockStore(s));
+  // Text that does not parse before the M30 is an error (the run may reach it).
+  const fs::path bad = fx.folder.write("bad.nc", "G0 X1.\nG00 X@@@\nM30\n");
+  const uint32_t bad_id = fx.sources.addFile(bad);
+  SourceProgramStore third(fx.sources, fx.diags, fx.folder.path(), kPatterns, {});
+  buildBlockStore(third, bad_id, {}, fx.diags);
+  EXPECT_NE(diagnosticsText(fx.diags).find("bad.nc:2:"), std::string::npos) << diagnosticsText(fx.diags);
 }
 
 TEST(BlockStoreBuilder, ParsedProgramsRoundTrip) {

@@ -5,6 +5,7 @@
 #include "absl/strings/str_cat.h"
 #include "ncc/backend/encode.h"
 #include "ncc/eval/block_store.h"
+#include "ncc/machine/signals.h"
 #include "ncc/passes/pass_manager.h"
 #include "ncc/passes/run_time_state.h"
 #include "ncc/prepare/block_loop.h"
@@ -42,7 +43,11 @@ struct BlockPreparation::Impl final : passes::RunTimeState, ir::BlockSink {
   eval::Value skipVariable(int64_t number) const override {
     return number > 0 ? running_.variable(static_cast<uint32_t>(number)) : eval::Value::none();
   }
-  std::optional<eval::Value> machineVariable(int64_t) const override { return std::nullopt; }
+  std::optional<eval::Value> machineVariable(int64_t number) const override {
+    if (number >= kFirstInputSignal && number <= kLastInputSignal)
+      return eval::Value::of(inputSignalValue(machine.signals, number));
+    return std::nullopt;  // timers, servo lag: not simulated
+  }
 
   // ir::BlockSink: the pipeline's IR, encoded as the backend encodes it ahead of time.
   void accept(ir::Block block) override {
@@ -110,6 +115,13 @@ std::unique_ptr<BlockPreparation> BlockPreparation::create(const bytecode::Progr
     return nullptr;
   }
   auto impl = std::make_unique<Impl>(program, machine, std::move(running), std::move(*store));
+  // The variables --vars loaded when the program was compiled, as the compiler loaded them
+  // (their writes reach the executor with the first block prepared, or were in the code).
+  for (const auto& [n, v] : impl->store.saved_variables)
+    if (!impl->loop.variables().setPersistent(n, v, SourceLocation{})) {
+      error = absl::StrCat("#", n, " of the saved variables is not a persistent variable");
+      return nullptr;
+    }
   // The blocks before PREPARE: prepared again as the compiler prepared them, so that the
   // controller model and the variables are where the compiler left them.
   std::vector<PreparedInstruction> discarded;
