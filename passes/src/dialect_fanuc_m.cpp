@@ -224,7 +224,8 @@ constexpr SystemVariableRange kSystemVariables[] = {
     {2201, 2400, SystemVariable::LengthGeometry, 0, "tool length geometry offsets"},
     {2401, 2600, SystemVariable::RadiusWear, 0, "tool radius wear offsets"},
     {2601, 2800, SystemVariable::RadiusGeometry, 0, "tool radius geometry offsets"},
-    {3001, 3002, SystemVariable::RunTime, 0, "timers"},
+    {3001, 3001, SystemVariable::TimerMs, 0, "timer, ms"},     // FANUC common
+    {3002, 3002, SystemVariable::TimerHours, 0, "timer, hours"},  // FANUC common
     {4001, 4030, SystemVariable::ModalGroup, 0, "modal G codes"},
     {4101, 4130, SystemVariable::ModalWord, 0, "modal words"},
     {5001, 5020, SystemVariable::EndPoint, 0, "block end point"},

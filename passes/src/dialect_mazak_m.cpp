@@ -212,7 +212,9 @@ constexpr SystemVariableRange kSystemVariables[] = {
     {2201, 2400, SystemVariable::LengthWear, 0, "tool length wear offsets"},
     {2401, 2600, SystemVariable::RadiusGeometry, 0, "tool radius geometry offsets"},
     {2601, 2800, SystemVariable::RadiusWear, 0, "tool radius wear offsets"},
-    {3001, 3002, SystemVariable::RunTime, 0, "timers"},
+    // §13-9-4 8.: both in ms (the table's unit cell spans both rows); #3001 counts from
+    // power-on, #3002 in automatic operation: both the run's time here.
+    {3001, 3002, SystemVariable::TimerMs, 0, "timer, ms"},
     {4001, 4021, SystemVariable::ModalGroup, 0, "modal G codes"},
     {4101, 4130, SystemVariable::ModalWord, 0, "modal words"},
     {5001, 5006, SystemVariable::EndPoint, 0, "block end point"},

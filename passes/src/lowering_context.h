@@ -60,6 +60,12 @@ struct LoweringCore {
   // Interface outputs #1100-#1131 (one bit each) and #1133-#1135 (words), as last written:
   // kept until power-off (Mazak §13-9-4 4. note 1). Not per block: not in ControllerState.
   std::array<double, 36> output_signals{};
+  // Timers #3001/#3002: the value written last and the run's time then (0 and 0 at the start).
+  struct TimerBase {
+    double value = 0.0;
+    double seconds = 0.0;
+  };
+  std::array<TimerBase, 2> timers{};
 
   LoweringCore(LoweringOptions o, DiagnosticEngine& d, ir::BlockSink& s);
 

@@ -209,6 +209,18 @@ std::optional<eval::Value> ControllerVariables::read(int64_t number, SourceLocat
       return atRunTime(absl::StrCat("#", number, " (", std::string(r->what),
                                     ") is known only when the program runs"));
     case SystemVariable::OutputSignal: return eval::Value::of(outputSignal(core_, number - r->first));
+    case SystemVariable::TimerMs:
+    case SystemVariable::TimerHours: {
+      if (!run)
+        return atRunTime(absl::StrCat("#", number, " (", std::string(r->what),
+                                      ") is known only when the program runs"));
+      const LoweringCore::TimerBase& base = core_.timers[static_cast<size_t>(number - 3001) % 2];
+      const double elapsed = run->seconds() - base.seconds;
+      // The ms timer counts whole milliseconds.
+      return eval::Value::of(r->kind == SystemVariable::TimerMs
+                                 ? base.value + std::floor(elapsed * 1000.0 + 1e-9)
+                                 : base.value + elapsed / 3600.0);
+    }
     case SystemVariable::RunTime:
       // Not simulated by the VM (yet): refused ahead of time rather than stopping a run.
       if (run) return fromRun();
@@ -304,6 +316,21 @@ bool ControllerVariables::write(int64_t number, const eval::Value& value, Source
     }
     case SystemVariable::OutputSignal:
       return writeOutputSignal(core_, number - r->first, value, loc, failure);
+    case SystemVariable::TimerMs:
+    case SystemVariable::TimerHours: {
+      // The timer restarts from the value at the time of the write: known only when run.
+      const RunTimeState* run = core_.running();
+      if (!run) {
+        failure = {eval::EvalError::RunTimeValue, loc,
+                   absl::StrCat("#", number, " (", std::string(r->what),
+                                ") restarts at the time of the write, known only when the "
+                                "program runs"),
+                   0};
+        return false;
+      }
+      core_.timers[static_cast<size_t>(number - 3001) % 2] = {value.arithmetic(), run->seconds()};
+      return true;
+    }
     default: return readOnly();
   }
 }

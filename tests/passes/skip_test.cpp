@@ -120,6 +120,7 @@ struct StoppedAt final : RunTimeState {
   AxisValues at{};
   bool running() const override { return true; }
   AxisValues machinePosition() const override { return at; }
+  double seconds() const override { return 0.0; }
   eval::Value skipVariable(int64_t) const override { return eval::Value::none(); }
   std::optional<eval::Value> machineVariable(int64_t) const override { return std::nullopt; }
 };

@@ -40,6 +40,7 @@ struct BlockPreparation::Impl final : passes::RunTimeState, ir::BlockSink {
   // passes::RunTimeState
   bool running() const override { return !replaying; }
   AxisValues machinePosition() const override { return running_.position(); }
+  double seconds() const override { return running_.seconds(); }
   eval::Value skipVariable(int64_t number) const override {
     return number > 0 ? running_.variable(static_cast<uint32_t>(number)) : eval::Value::none();
   }

@@ -32,6 +32,7 @@ struct PreparedInstruction {
 struct RunningMachine {
   std::function<AxisValues()> position;                   // commanded, machine coordinates
   std::function<eval::Value(uint32_t number)> variable;   // the executor's #number
+  std::function<double()> seconds;                        // the run's time (Executor::setClock)
 };
 
 class BlockPreparation {

@@ -164,6 +164,7 @@ double Controller::feedOverride() const {
 // revolutions), M00/M01/M02/M30 (stops) all go through MotionPlanner::accept().
 void Controller::pullEvents() {
   uint32_t budget = options_.max_events_per_tick;  // 0: unlimited
+  executor_.setClock(static_cast<double>(next_tick_) * machine_.ipo_cycle_seconds);
   while (!input_done_ && planner_.canAccept()) {
     if (!event_pending_) {
       if (options_.max_events_per_tick != 0 && budget-- == 0) return;

@@ -93,6 +93,7 @@ Executor::Executor(const bytecode::Program& program, const MachineConfig& machin
     if (n >= variables_.size() || variables_[n].vacant) return eval::Value::none();
     return eval::Value::of(variables_[n].number);
   };
+  running.seconds = [this] { return clock_; };
   std::string error;
   try {
     preparation_ = BlockPreparation::create(program, machine, std::move(running), error);

@@ -155,7 +155,9 @@ enum class SystemVariable : uint8_t {
   SkipPosition,        // per axis, work coordinates: where the last G31 stopped (the VM writes it)
   InputSignal,         // interface inputs: the machine's ([machine.signals]), known when run
   OutputSignal,        // interface outputs: what the program last wrote (the model keeps them)
-  RunTime,             // timers, servo lag: known when run, not simulated
+  TimerMs,             // a timer in ms of the run's time, settable (#3001): known when run
+  TimerHours,          // the same in hours (FANUC #3002)
+  RunTime,             // servo lag: known when run, not simulated
 };
 
 struct SystemVariableRange {

@@ -19,10 +19,13 @@ class RunTimeState {
   // The commanded machine position after every block prepared so far has run: where a G31
   // stopped, for the axes it moved.
   virtual AxisValues machinePosition() const = 0;
+  // The run's time, s, when the block is prepared (the controller's IPO time then; 0 for an
+  // executor run alone): the timers #3001/#3002 count it.
+  virtual double seconds() const = 0;
   // The skip position #number (#5061..) as the last G31 stored it; vacant before any.
   virtual eval::Value skipVariable(int64_t number) const = 0;
-  // Interface signals (#1000..), timers, servo lag: nullopt when the VM does not simulate
-  // it, which stops the run (NotSupported).
+  // Interface inputs (#1000..), servo lag: nullopt when the VM does not simulate it, which
+  // stops the run (NotSupported).
   virtual std::optional<eval::Value> machineVariable(int64_t number) const = 0;
 };
 

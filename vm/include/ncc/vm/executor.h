@@ -58,6 +58,9 @@ class Executor {
   // Stops the run with alarm NCC7204 after this many instructions (0: no limit). Guards
   // callers that must stay bounded (fuzzing, a run without a cycle-time budget).
   void setStepLimit(uint64_t limit) { step_limit_ = limit; }
+  // The run's time, s: what blocks prepared from now on read as the timers (#3001, #3002).
+  // The controller sets its IPO time before it asks for events; 0 unless set.
+  void setClock(double seconds) { clock_ = seconds; }
   uint64_t steps() const { return steps_; }
 
   // Value of #n, or nullopt when vacant or beyond the program's variable table.
@@ -109,6 +112,7 @@ class Executor {
   SourcePosition prepared_where_;
   uint64_t steps_ = 0;
   uint64_t step_limit_ = 0;
+  double clock_ = 0.0;
   bool finished_ = false;
   std::optional<Alarm> alarm_;
 };
