@@ -25,7 +25,7 @@ import unittest
 
 NCC = None
 ROOT = None
-COMMANDS = ("compile", "check", "dis", "run", "trace")
+COMMANDS = ("compile", "check", "dis", "run", "trace", "plot")
 
 FENCE = re.compile(r"^```(\S*)\s*$")
 EXIT_COMMENT = re.compile(r"\s+#\s*exit\s+(\d+)\s*$")

@@ -44,5 +44,6 @@ void addCheckCommand(CLI::App& app, int& exit_code);
 void addDisCommand(CLI::App& app, int& exit_code);
 void addRunCommand(CLI::App& app, int& exit_code);
 void addTraceCommand(CLI::App& app, int& exit_code);
+void addPlotCommand(CLI::App& app, int& exit_code);
 
 }  // namespace ncc::cli

@@ -19,6 +19,7 @@ int main(int argc, char** argv) {
   addDisCommand(app, exit_code);
   addRunCommand(app, exit_code);
   addTraceCommand(app, exit_code);
+  addPlotCommand(app, exit_code);
   try {
     app.parse(argc, argv);
   } catch (const CLI::Success& e) {  // --help, --help-all, --version
