@@ -160,7 +160,7 @@ class Writer {
     return p;
   }
   // The number of chords for a polyline of the arc: each within 0.01 mm of the arc, between
-  // 0.5 and 2 degrees of it.
+  // 0.5 and 2 degrees of it (at most 100,000 chords: 999 extra turns of a large helix).
   static int chords(const vm::MotionPrimitive& m, double sweep) {
     const double c1 = m.center[m.axis1], c2 = m.center[m.axis2];
     const double r = std::max(std::hypot(m.from[m.axis1] - c1, m.from[m.axis2] - c2),
@@ -168,7 +168,7 @@ class Writer {
     constexpr double kDeg = std::numbers::pi / 180.0;
     double step = r > 0.005 ? 2.0 * std::acos(1.0 - 0.01 / r) : 2.0 * kDeg;
     step = std::clamp(step, 0.5 * kDeg, 2.0 * kDeg);
-    return std::clamp(static_cast<int>(std::ceil(std::abs(sweep) / step)), 1, 1'000'000);
+    return std::clamp(static_cast<int>(std::ceil(std::abs(sweep) / step)), 1, 100'000);
   }
   // True when the view sees the arc's plane face-on; `same` then says whether the plane's
   // (axis1, axis2) is the view's (u, v) or its mirror (v, u).
@@ -195,12 +195,16 @@ class Writer {
   void fit(double left, double top, double width, double height);
   void writeView(PlotView view, double left, double top, double width, double height);
   void writeLegend(double top);
+  void findExtents();
+  void writeExtentsBox();
 
   std::ostream& out_;
   const std::vector<PlotMove>& moves_;
   const PlotOptions& o_;
   std::map<int64_t, const char*> colours_;  // tool -> colour
   std::vector<int64_t> tool_order_;
+  bool any_feed_ = false;  // the feed moves' extents lo_..hi_ are known
+  Point3 lo_, hi_;
   // The current view and its transform: screen = (ox + (u - u0) s, oy - (v - v0) s).
   PlotView view_ = PlotView::Top;
   double ox_ = 0.0, oy_ = 0.0, u0_ = 0.0, v0_ = 0.0, scale_ = 1.0;
@@ -311,6 +315,7 @@ void Writer::writeView(PlotView view, double left, double top, double width, dou
        << "\" r=\"4\" fill=\"none\" stroke=\"#000000\"/>"
        << "<text x=\"" << px(z.u + 6) << "\" y=\"" << px(z.v + 16) << "\" font-size=\"11\">"
        << xml(o_.work_zero_label) << " zero</text></g>\n";
+  writeExtentsBox();
   for (const PlotMove& pm : moves_) {
     const vm::MotionPrimitive& m = pm.motion;
     const bool rapid = m.kind == Kind::Rapid;
@@ -335,26 +340,52 @@ void Writer::writeView(PlotView view, double left, double top, double width, dou
   out_ << "</g>\n";
 }
 
-void Writer::writeLegend(double top) {
-  // The feed moves' extents: what the part occupies, per axis.
-  bool any = false;
-  Point3 lo{}, hi{};
-  const auto add = [&](const Point3& a, const Point3& b) {
-    if (!any) lo = a, hi = b, any = true;
-    lo = {std::min(lo.x, a.x), std::min(lo.y, a.y), std::min(lo.z, a.z)};
-    hi = {std::max(hi.x, b.x), std::max(hi.y, b.y), std::max(hi.z, b.z)};
-  };
+void Writer::findExtents() {
   for (const PlotMove& pm : moves_) {
     const vm::MotionPrimitive& m = pm.motion;
+    Point3 a, b;
     if (m.kind == Kind::Line) {
-      const Point3 a = point(m.from), b = point(m.to);
-      add({std::min(a.x, b.x), std::min(a.y, b.y), std::min(a.z, b.z)},
-          {std::max(a.x, b.x), std::max(a.y, b.y), std::max(a.z, b.z)});
+      a = point(m.from), b = point(m.to);
     } else if (m.kind == Kind::Arc) {
       const AxisBox box = arcExtent(arcOf(m), kMaxAxes);
-      add(point(box.low), point(box.high));
+      a = point(box.low), b = point(box.high);
+    } else {
+      continue;
     }
+    const Point3 lo{std::min(a.x, b.x), std::min(a.y, b.y), std::min(a.z, b.z)};
+    const Point3 hi{std::max(a.x, b.x), std::max(a.y, b.y), std::max(a.z, b.z)};
+    if (!any_feed_) lo_ = lo, hi_ = hi, any_feed_ = true;
+    lo_ = {std::min(lo_.x, lo.x), std::min(lo_.y, lo.y), std::min(lo_.z, lo.z)};
+    hi_ = {std::max(hi_.x, hi.x), std::max(hi_.y, hi.y), std::max(hi_.z, hi.z)};
   }
+}
+
+// The feed extents in an orthographic view: a dashed box with its two sizes written along it.
+void Writer::writeExtentsBox() {
+  if (!any_feed_ || view_ == PlotView::Iso) return;
+  const Point2 a = screen(lo_), b = screen(hi_);
+  const double left = std::min(a.u, b.u), right = std::max(a.u, b.u);
+  const double top = std::min(a.v, b.v), bottom = std::max(a.v, b.v);
+  const Point2 q0 = project(view_, lo_), q1 = project(view_, hi_);
+  const char* u_name = view_ == PlotView::Side ? "Y" : "X";
+  const char* v_name = view_ == PlotView::Top ? "Y" : "Z";
+  out_ << "<g class=\"extents-box\"><title>feed extents: " << u_name << " " << mm(q0.u) << " to "
+       << mm(q1.u) << ", " << v_name << " " << mm(q0.v) << " to " << mm(q1.v) << "</title>"
+       << "<rect x=\"" << px(left) << "\" y=\"" << px(top) << "\" width=\"" << px(right - left)
+       << "\" height=\"" << px(bottom - top)
+       << "\" fill=\"none\" stroke=\"#999999\" stroke-width=\"0.8\" stroke-dasharray=\"2 3\"/>"
+       << "<text class=\"dimension\" data-axis=\"" << u_name << "\" x=\"" << px((left + right) / 2)
+       << "\" y=\"" << px(bottom + 14) << "\" font-size=\"11\" fill=\"#555555\" "
+       << "text-anchor=\"middle\">" << u_name << " " << mm(q1.u - q0.u) << "</text>"
+       << "<text class=\"dimension\" data-axis=\"" << v_name << "\" x=\"" << px(right + 4)
+       << "\" y=\"" << px((top + bottom) / 2) << "\" font-size=\"11\" fill=\"#555555\">" << v_name
+       << " " << mm(q1.v - q0.v) << "</text></g>\n";
+}
+
+void Writer::writeLegend(double top) {
+  // The feed moves' extents: what the part occupies, per axis.
+  const bool any = any_feed_;
+  const Point3 lo = lo_, hi = hi_;
   out_ << "<g id=\"extents\">\n";
   double x = 12.0;
   if (!any) {
@@ -400,6 +431,7 @@ void Writer::writeLegend(double top) {
 }
 
 void Writer::write() {
+  findExtents();
   for (const PlotMove& pm : moves_) {
     if (colours_.count(pm.tool)) continue;
     colours_[pm.tool] = kPalette[tool_order_.size() % std::size(kPalette)];

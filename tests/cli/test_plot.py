@@ -170,6 +170,12 @@ class PlotTest(ScratchDirTest):
         self.assertEqual(ext["Y"][:2], ("-5.000", "5.000"))
         self.assertEqual(ext["Z"][:2], ("-1.000", "20.000"))
         self.assertEqual(ext["X"][2], "X 10.000 to 40.000 (30.000)")
+        # In the orthographic views a dashed box around them, its sizes written along it.
+        for name, sizes in (("top", ["X 30.000", "Y 10.000"]), ("front", ["X 30.000", "Z 21.000"]),
+                            ("side", ["Y 10.000", "Z 21.000"])):
+            box = view(root, name).find(f"{SVG}g[@class='extents-box']")
+            self.assertEqual([t.text for t in box.findall(f"{SVG}text")], sizes, name)
+        self.assertIsNone(view(root, "iso").find(f"{SVG}g[@class='extents-box']"))
 
     def test_from_to_restricts_the_moves(self):
         r, root, path = self.plot(os.path.join(EXAMPLES, "bolt-circle.nc"), "--from", "15",
