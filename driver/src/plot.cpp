@@ -190,6 +190,8 @@ class Writer {
     const Point2 q = project(view_, p);
     return {ox_ + (q.u - u0_) * scale_, oy_ - (q.v - v0_) * scale_};
   }
+  // " X1.000 Y2.000 Z3.000": the drawn axes the machine has.
+  std::string axesText(const AxisValues& a) const;
   std::string moveTitle(const PlotMove& m) const;
   std::string pathData(const vm::MotionPrimitive& m) const;
   void fit(double left, double top, double width, double height);
@@ -210,19 +212,23 @@ class Writer {
   double ox_ = 0.0, oy_ = 0.0, u0_ = 0.0, v0_ = 0.0, scale_ = 1.0;
 };
 
+std::string Writer::axesText(const AxisValues& a) const {
+  const Point3 p = point(a);
+  std::string text;
+  if (o_.x_axis >= 0) absl::StrAppend(&text, " X", mm(p.x));
+  if (o_.y_axis >= 0) absl::StrAppend(&text, " Y", mm(p.y));
+  if (o_.z_axis >= 0) absl::StrAppend(&text, " Z", mm(p.z));
+  return text;
+}
+
 std::string Writer::moveTitle(const PlotMove& pm) const {
   const vm::MotionPrimitive& m = pm.motion;
   const char* code = m.kind == Kind::Rapid ? "G00"
                      : m.kind == Kind::Line ? "G01"
                      : m.cw                 ? "G02"
                                             : "G03";
-  const Point3 p = point(m.to);
   std::string text = absl::StrCat(o_.file_name ? o_.file_name(m.where.file) : std::string(), ":",
-                                  m.where.line, ": ", code);
-  if (o_.x_axis >= 0) absl::StrAppend(&text, " X", mm(p.x));
-  if (o_.y_axis >= 0) absl::StrAppend(&text, " Y", mm(p.y));
-  if (o_.z_axis >= 0) absl::StrAppend(&text, " Z", mm(p.z));
-  absl::StrAppend(&text, " (T", pm.tool, ")");
+                                  m.where.line, ": ", code, axesText(m.to), " (T", pm.tool, ")");
   return text;
 }
 
@@ -305,9 +311,8 @@ void Writer::writeView(PlotView view, double left, double top, double width, dou
        << "\" font-size=\"14\" font-weight=\"bold\">" << viewLabel(view) << "</text>\n";
   // The work zero: a cross with its label.
   const Point2 z = screen(o_.work_zero);
-  out_ << "<g class=\"work-zero\"><title>" << xml(o_.work_zero_label) << " work zero: X"
-       << mm(point(o_.work_zero).x) << " Y" << mm(point(o_.work_zero).y) << " Z"
-       << mm(point(o_.work_zero).z) << " (machine)</title>"
+  out_ << "<g class=\"work-zero\"><title>" << xml(o_.work_zero_label) << " work zero:"
+       << axesText(o_.work_zero) << " (machine)</title>"
        << "<path d=\"M" << px(z.u - 8) << " " << px(z.v) << " L" << px(z.u + 8) << " " << px(z.v)
        << " M" << px(z.u) << " " << px(z.v - 8) << " L" << px(z.u) << " " << px(z.v + 8)
        << "\" stroke=\"#000000\" stroke-width=\"1.5\"/>"

@@ -193,6 +193,25 @@ class PlotTest(ScratchDirTest):
         self.assertIn("NCC0010", r.stderr)
         self.assertFalse(os.path.exists(self.path("bad.svg")))
 
+    def test_from_to_leaves_out_other_files(self):
+        main = self.write("main.nc", "G90 G00 X1.\nM98 P1234\nG00 X2.\nM30\n")
+        self.write("O1234.nc", "O1234\nG01 X5. F100.\nM99\n")
+        r, root, _ = self.plot(main)
+        self.assertEqual([title_of(p).split(": ")[0] for p in move_paths(view(root, "top"))],
+                         ["main.nc:1", "O1234.nc:2", "main.nc:3"])
+        r, root, _ = self.plot(main, "--from", "1", "--to", "3")
+        self.assertEqual([title_of(p).split(": ")[0] for p in move_paths(view(root, "top"))],
+                         ["main.nc:1", "main.nc:3"])
+
+    def test_machine_without_y(self):
+        machine = self.write("lathe.toml", '[machine]\naxes = ["X", "Z"]\n')
+        r, root, _ = self.plot("G00 X10. Z5.\nG01 Z-5. F100.\nM30\n", "--machine", machine)
+        self.assertEqual(r.returncode, 0, r.stderr)
+        self.assertEqual(title_of(move_paths(view(root, "front"))[1]),
+                         "part.nc:2: G01 X10.000 Z-5.000 (T0)")
+        extents = [t.get("data-axis") for t in root.iter(f"{SVG}text") if t.get("class") == "extent"]
+        self.assertEqual(extents, ["X", "Z"])
+
     def test_view_and_size(self):
         r, root, _ = self.plot(TOOLS, "--view", "front", "--size", "640x480")
         self.assertEqual(r.returncode, 0, r.stderr)
