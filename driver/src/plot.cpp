@@ -152,9 +152,9 @@ class Writer {
     const double r1 = std::hypot(m.to[m.axis1] - c1, m.to[m.axis2] - c2);
     const double a = std::atan2(m.from[m.axis2] - c2, m.from[m.axis1] - c1) + t * sweep;
     const double r = r0 + t * (r1 - r0);
+    if (t >= 1.0) return m.to;  // exactly, whatever the rounding of the angle
     AxisValues p{};
     for (int i = 0; i < kMaxAxes; ++i) p[i] = m.from[i] + t * (m.to[i] - m.from[i]);
-    if (t >= 1.0) return m.to;
     p[m.axis1] = c1 + r * std::cos(a);
     p[m.axis2] = c2 + r * std::sin(a);
     return p;
@@ -179,9 +179,8 @@ class Writer {
     else if (view == PlotView::Side) u = o_.y_axis, v = o_.z_axis;
     else return false;
     if (u < 0 || v < 0) return false;
-    if (m.axis1 == u && m.axis2 == v) return same = true;
-    if (m.axis1 == v && m.axis2 == u) return !(same = false);
-    return false;
+    same = m.axis1 == u && m.axis2 == v;
+    return same || (m.axis1 == v && m.axis2 == u);
   }
 
   // Screen coordinates of a machine position in the current view.
