@@ -320,16 +320,18 @@ void Writer::writeView(PlotView view, double left, double top, double width, dou
        << "<text x=\"" << px(z.u + 6) << "\" y=\"" << px(z.v + 16) << "\" font-size=\"11\">"
        << xml(o_.work_zero_label) << " zero</text></g>\n";
   writeExtentsBox();
+  // What every move shares is said once, by the group (SVG inheritance).
+  out_ << "<g class=\"moves\" fill=\"none\" stroke-linecap=\"round\" stroke-linejoin=\"round\">\n";
   for (const PlotMove& pm : moves_) {
     const vm::MotionPrimitive& m = pm.motion;
     const bool rapid = m.kind == Kind::Rapid;
     out_ << "<path class=\"" << (rapid ? "rapid" : "feed") << "\" d=\"" << pathData(m)
-         << "\" fill=\"none\" stroke=\"" << colours_.at(pm.tool) << "\" stroke-width=\""
-         << (rapid ? "1" : "1.6") << "\" stroke-linecap=\"round\" stroke-linejoin=\"round\"";
-    if (rapid) out_ << " stroke-dasharray=\"5 4\"";
-    out_ << " data-tool=\"" << pm.tool << "\" data-line=\"" << m.where.line << "\"><title>"
+         << "\" stroke=\"" << colours_.at(pm.tool) << "\""
+         << (rapid ? " stroke-width=\"1\" stroke-dasharray=\"5 4\"" : " stroke-width=\"1.6\"")
+         << " data-tool=\"" << pm.tool << "\" data-line=\"" << m.where.line << "\"><title>"
          << xml(moveTitle(pm)) << "</title></path>\n";
   }
+  out_ << "</g>\n";
   if (o_.alarm) {
     const Point2 a = screen(moves_.empty() ? o_.start : moves_.back().motion.to);
     std::string where = absl::StrCat(
