@@ -244,6 +244,11 @@ class PlotTest(ScratchDirTest):
         self.assertEqual(r.returncode, 0, r.stderr)
         self.assertEqual(r.stdout, from_source, "the same drawing from the source and the .ncb")
         self.assertEqual(len(move_paths(view(ET.fromstring(r.stdout.encode()), "top"))), 7)
+        # The standard input: named <stdin>, escaped in the XML.
+        r = ncc("plot", "-", stdin=TOOLS)
+        self.assertEqual(r.returncode, 0, r.stderr)
+        first = move_paths(view(ET.fromstring(r.stdout.encode()), "top"))[0]
+        self.assertTrue(title_of(first).startswith("<stdin>:3: G00 X10.000"))
 
     def test_program_errors_write_nothing(self):
         r, root, _ = self.plot("G01 X10. F100.\nG01 X#\nM30\n")
