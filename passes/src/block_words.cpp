@@ -220,6 +220,8 @@ class Decoder {
       out_.t.push_back(std::move(wv));
       return;
     }
+    if (!b.line_angle_address.empty() && a == b.line_angle_address)
+      return store(out_.line_angle, std::move(wv));
     if (a.size() == 1 && std::string_view("XYZABCUVW").find(a[0]) != std::string_view::npos) {
       fail(Alarm::AddressNotAnAxis, w.loc,
            absl::StrCat("address ", a, ": the machine has no axis ", a));

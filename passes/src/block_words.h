@@ -42,6 +42,7 @@ struct DecodedBlock {
   std::optional<WordValue> i, j, k, r, f, s, h, d, p, l;
   std::vector<WordValue> t, m;
   std::optional<WordValue> corner;  // ,C (chamfer) or ,R (rounding)
+  std::optional<WordValue> line_angle;  // Mazak A (not an axis): the angle of a G01 line
   std::string corner_kind() const { return corner ? corner->address : std::string(); }
   std::optional<SourceLocation> first_axis_loc;
 

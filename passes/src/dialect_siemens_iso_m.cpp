@@ -185,6 +185,7 @@ constexpr DialectBehaviour kBehaviour{
     .dwell_block_alone = true,              // §3.3.1: nothing but G04 in the dwell block
     .skip_feed_is_modal = true,             // G31 X Y Z F: F as for G01
     .corner_with_arcs = true,
+    .line_angle_address = "",
 };
 // Sinumerik ISO mode defines no FANUC system variables (notes §4.11: "the manual does not
 // define ... FANUC system variables"); its programs read the machine through DIN ($ variables).

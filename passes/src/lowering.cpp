@@ -104,6 +104,7 @@ void checkUnused(BlockContext& ctx) {
   unused(ctx.words.p, ctx.used_p);
   unused(ctx.words.l, ctx.used_l);
   unused(ctx.words.corner, ctx.corner.has_value());
+  unused(ctx.words.line_angle, ctx.used_angle);
 }
 
 // The offset-table writes, the new controller state and the IR block.

@@ -107,7 +107,7 @@ struct BlockContext {
   double length_delta = 0.0;
   bool length_delta_deferred = false;
   // Words some code of the block has read; the rest are reported as having no meaning.
-  bool used_ijk = false, used_r = false, used_p = false, used_l = false;
+  bool used_ijk = false, used_r = false, used_p = false, used_l = false, used_angle = false;
   // ,C / ,R of a G01-G03 move: recorded on the IR block for the corners pass.
   std::optional<ir::CornerRequest> corner;
   // G45-G48: the signed amount (+-1 or 2 x the D offset, mm) each move lengthens by.

@@ -284,6 +284,44 @@ bool arc(BlockContext& ctx, const AxisValues& start, const AxisValues& target,
   return true;
 }
 
+// Mazak §13-12 line angle: `G01 Aa` with one end coordinate in the plane; the other is where
+// the line from the start at angle a (from the plane's first axis, counter-clockwise positive)
+// reaches it. With both coordinates the angle is ignored; with neither it is the geometric
+// command (§13-13), not built.
+bool lineAngle(BlockContext& ctx, const AxisValues& start, AxisValues& target) {
+  const WordValue& w = *ctx.words.line_angle;
+  ctx.used_angle = true;
+  PlaneAxes pl = planeAxes(ctx);
+  if (pl.a < 0 || pl.b < 0) {
+    ctx.fail(Alarm::AxisMissing, w.loc,
+             absl::StrCat("a line angle in the ", pl.names, " plane (", pl.code,
+                          ") needs both plane axes, which the machine does not have"));
+    return false;
+  }
+  bool has_a = ctx.words.axes[pl.a].has_value(), has_b = ctx.words.axes[pl.b].has_value();
+  if (has_a && has_b) return true;
+  if (!has_a && !has_b) {
+    ctx.fail(Alarm::AddressNotSupported, w.loc,
+             "the geometric command (an angle without an end point, §13-13) is not supported yet");
+    return false;
+  }
+  double angle = ctx.settings.values.rotary(w.value, w.point) * std::numbers::pi / 180.0;
+  double c = std::cos(angle), s = std::sin(angle);
+  double along = has_a ? c : s;
+  if (std::fabs(along) < 1e-9) {
+    ctx.fail(Alarm::ValueOutOfRange, w.loc,
+             absl::StrCat("a line at ", mm(ctx.settings.values.rotary(w.value, w.point)),
+                          " degrees never changes ", std::string(1, pl.names[has_a ? 0 : 1]),
+                          ": give the other coordinate"));
+    return false;
+  }
+  if (has_a)
+    target[pl.b] = start[pl.b] + (target[pl.a] - start[pl.a]) / c * s;
+  else
+    target[pl.a] = start[pl.a] + (target[pl.b] - start[pl.b]) / s * c;
+  return true;
+}
+
 // ,C / ,R: the corner after this block's move, for the corners pass (docs/semantics.md,
 // Corner chamfer and rounding). Only a G01-G03 block that moves has a corner.
 void cornerRequest(BlockContext& ctx, GAction kind, bool moves, const AxisValues& start) {
@@ -327,6 +365,8 @@ void lowerMotion(BlockContext& ctx) {
   AxisValues start = ctx.baseWork();
   AxisValues target = ctx.workTargets(start);
   applyPositionOffset(ctx, start, target);  // G45-G48
+  if (ctx.words.line_angle && ctx.next.motion == GAction::Linear && !lineAngle(ctx, start, target))
+    return;
   AxisValues to_machine = ctx.toMachine(target, frame);
   bool moves = !ctx.samePosition(to_machine, ctx.next.position);
   bool feed_per_rev = ctx.next.modal.feed_mode == ir::FeedMode::PerRevolution;

@@ -151,6 +151,9 @@ struct DialectBehaviour {
   // ,C / ,R between arcs as well as lines (Siemens §4.8.2; FANUC common); false: line-line
   // corners only (Mazak §13-14: an arc in the next block is alarm 911).
   bool corner_with_arcs;
+  // The address of the line angle (Mazak §13-12: `G01 Aa Zz`, the end point's other plane
+  // coordinate computed from the angle; only where A is not an axis of the machine). Empty: none.
+  std::string_view line_angle_address;
 };
 
 // What a block of system variables (#1000 and up) holds; the controller model reads and
