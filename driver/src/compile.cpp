@@ -190,10 +190,18 @@ void lowerProgram(Session& session, ir::BlockSink& entry, AstStageTap& tap) {
   settings.program_dir = session.programDir();
   settings.max_back_jumps = session.maxBackJumps();
   // --defer: the whole program is still evaluated here, for its diagnostics and the programs
-  // it calls, but its IR goes nowhere: the VM prepares every block.
+  // it calls, but its IR goes nowhere: the VM prepares every block. It still passes the
+  // passes, whose alarms (a corner that does not fit, docs/semantics.md) are then reported
+  // here as they are without --defer.
   DiscardingSink discard;
+  passes::PipelineOptions check_options;
+  check_options.axis_count = session.machine().axisCount();
+  check_options.dialect = session.dialect();
+  check_options.verify = false;
+  passes::PassManager checks(check_options, diags, discard);
   const bool deferred = session.defer();
-  prepare::BlockLoop loop(settings, store, session.mainFile(), diags, deferred ? discard : entry);
+  prepare::BlockLoop loop(settings, store, session.mainFile(), diags,
+                          deferred ? checks.entry() : entry);
   // After on_write: the loaded values reach the VM too, so a run ends with every kept
   // variable, written by the program or not (and --vars saves them all back).
   std::optional<std::map<int64_t, double>> saved = loadSavedVariables(session, loop.variables());
@@ -228,6 +236,14 @@ void lowerProgram(Session& session, ir::BlockSink& entry, AstStageTap& tap) {
   }
   if ((step == prepare::Step::RunTime || deferred) && !diags.hasErrors())
     prepareAtRunTime(session, store, loop, deferred, main_end, std::move(*saved), entry);
+  if (deferred && step == prepare::Step::RunTime) {
+    // Where the compile stops for a value known at run time, the checking passes drop what
+    // they hold, as the pipeline does at its PREPARE block (the VM prepares it again).
+    ir::Block stop;
+    stop.loc = loop.runTimeReason().loc;
+    stop.ops.push_back(ir::Prepare{});
+    checks.entry().accept(std::move(stop));
+  }
   if (deferred) entry.finish();
   loop.finish();
 }

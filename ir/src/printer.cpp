@@ -155,6 +155,9 @@ void printBlock(std::ostream& out, const Block& block, const AxisNames& axes) {
   if (!allZero(block.frame.shift)) out << " shift(" << axisList(block.frame.shift, axes) << ")";
   if (!allZero(block.frame.tool_length))
     out << " tool(" << axisList(block.frame.tool_length, axes) << ")";
+  if (block.corner)  // ,C / ,R not yet inserted (before the corners pass)
+    out << (block.corner->kind == CornerRequest::Kind::Chamfer ? " chamfer(" : " round(")
+        << num(block.corner->amount) << ")";
   out << "\n";
   for (const Operation& op : block.ops) out << "  " << std::visit(OperationPrinter{axes}, op) << "\n";
 }

@@ -39,8 +39,6 @@ std::string groupLabel(const GCodeEntry& e) {
 const char* unsupportedAddress(std::string_view a) {
   if (a == "Q") return "canned cycle data";
   if (a == "E") return "precise thread lead";
-  if (a == ",C") return "chamfering";
-  if (a == ",R") return "corner rounding";
   if (a == ",A") return "drawing angle";
   return nullptr;
 }
@@ -201,6 +199,8 @@ class Decoder {
     if (a == "K") return store(out_.k, std::move(wv));
     if (a == "R") return store(out_.r, std::move(wv));
     if (a == "F") return store(out_.f, std::move(wv));
+    // ,C / ,R: one corner per block; of both, the last written is used (Mazak §13-14).
+    if (a == ",C" || a == ",R") return store(out_.corner, std::move(wv), a != out_.corner_kind());
     if (a == "S") return store(out_.s, std::move(wv));
     if (a == "P") return store(out_.p, std::move(wv));
     if (a == "L") return store(out_.l, std::move(wv));
@@ -220,6 +220,8 @@ class Decoder {
       out_.t.push_back(std::move(wv));
       return;
     }
+    if (!b.line_angle_address.empty() && a == b.line_angle_address)
+      return store(out_.line_angle, std::move(wv));
     if (a.size() == 1 && std::string_view("XYZABCUVW").find(a[0]) != std::string_view::npos) {
       fail(Alarm::AddressNotAnAxis, w.loc,
            absl::StrCat("address ", a, ": the machine has no axis ", a));

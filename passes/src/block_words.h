@@ -41,6 +41,9 @@ struct DecodedBlock {
   std::array<std::optional<WordValue>, kMaxAxes> axes;
   std::optional<WordValue> i, j, k, r, f, s, h, d, p, l;
   std::vector<WordValue> t, m;
+  std::optional<WordValue> corner;  // ,C (chamfer) or ,R (rounding)
+  std::optional<WordValue> line_angle;  // Mazak A (not an axis): the angle of a G01 line
+  std::string corner_kind() const { return corner ? corner->address : std::string(); }
   std::optional<SourceLocation> first_axis_loc;
 
   const std::optional<GWord>& group(GGroup g) const { return modal[static_cast<size_t>(g)]; }

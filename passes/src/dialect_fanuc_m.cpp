@@ -179,6 +179,12 @@ constexpr std::string_view kAlarms[] = {
     "NCC2081",  // G53Incremental
     "PS0003",   // TooManyDigits: too many digits
     "NCC2045",  // LengthCompInArc (not raised)
+    "PS0051",   // CornerNoMoveAfter: missing move after CNR/CHF (FANUC common)
+    "PS0052",   // CornerNotCuttingAfter: code is not G01 after CNR/CHF (FANUC common)
+    "NCC2092",  // CornerArcNotAllowed (not raised: arcs are allowed)
+    "PS0055",   // CornerTooLong: missing move value in CNR/CHF (FANUC common)
+    "PS0055",   // CornerTooLongAfter: the same alarm (FANUC common)
+    "PS0051",   // CornerContextChange: plane selected in the next block (FANUC common)
 };
 static_assert(std::size(kAlarms) == static_cast<size_t>(Alarm::kCount));
 
@@ -213,6 +219,8 @@ constexpr DialectBehaviour kBehaviour{
     .dwell_x_before_g04_is_coordinate = false,
     .dwell_block_alone = false,
     .skip_feed_is_modal = true,             // G31 takes F like G01
+    .corner_with_arcs = true,
+    .line_angle_address = "",
 };
 // FANUC Series 0i-MD/30i-M custom macro system variables (tool offset memory C, up to 200
 // offsets: H wear #2001, H geometry #2201, D wear #2401, D geometry #2601). The project has no

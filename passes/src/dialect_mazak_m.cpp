@@ -24,10 +24,10 @@ constexpr GCodeEntry kCodes[] = {
     {370, G::OneShot, 0, false, A::NotSupported, 0, "automatic tool length measurement"},
     {380, G::OneShot, 0, false, A::NotSupported, 0, "tool radius compensation vector selection"},
     {390, G::OneShot, 0, false, A::NotSupported, 0, "tool radius compensation corner arc"},
-    {450, G::OneShot, 0, false, A::NotSupported, 0, "tool position offset extension"},
-    {460, G::OneShot, 0, false, A::NotSupported, 0, "tool position offset reduction"},
-    {470, G::OneShot, 0, false, A::NotSupported, 0, "tool position offset double extension"},
-    {480, G::OneShot, 0, false, A::NotSupported, 0, "tool position offset double reduction"},
+    {450, G::OneShot, 0, false, A::PositionOffset, 0, "tool position offset extension"},
+    {460, G::OneShot, 0, false, A::PositionOffset, 0, "tool position offset reduction"},
+    {470, G::OneShot, 0, false, A::PositionOffset, 0, "tool position offset double extension"},
+    {480, G::OneShot, 0, false, A::PositionOffset, 0, "tool position offset double reduction"},
     {520, G::OneShot, 0, false, A::LocalShift, 0, "local coordinate system setting"},
     {530, G::OneShot, 0, false, A::MachineCoordinates, 0, "machine coordinate system selection"},
     {600, G::OneShot, 0, false, A::NotSupported, 0, "one-way positioning"},
@@ -169,6 +169,12 @@ constexpr std::string_view kAlarms[] = {
     "NCC2081",  // G53Incremental (not raised: G53 is incremental in G91)
     "809",      // TooManyDigits: number of more than 8 digits
     "NCC2045",  // LengthCompInArc (not raised)
+    "912",      // CornerNoMoveAfter: PAS CDE DEPLACE APRES R/C (§13-14)
+    "912",      // CornerNotCuttingAfter: the next block is not linear interpolation
+    "911",      // CornerArcNotAllowed: OPTION COIN R/C NON TROUVEE (next block an arc)
+    "913",      // CornerTooLong: COMMANDE R/C INCORRECT
+    "914",      // CornerTooLongAfter: COMMANDE INCORRECT APRES R/C
+    "NCC2095",  // CornerContextChange (no number stated)
 };
 static_assert(std::size(kAlarms) == static_cast<size_t>(Alarm::kCount));
 
@@ -203,6 +209,8 @@ constexpr DialectBehaviour kBehaviour{
     .dwell_x_before_g04_is_coordinate = true,  // §8-1: inch `X5. G04` = X50000 = 50 s
     .dwell_block_alone = false,             // §8-1: M, S, T, B in a G04 block run with it
     .skip_feed_is_modal = false,            // §4.10: K41 = 0, the modal F is not changed
+    .corner_with_arcs = false,
+    .line_angle_address = "A",   // §13-12 line angle
 };
 // §13-9-4 (notes §4.8, System variables); F96 bit 0 = 0 (the #2001 ranges, up to 200 offsets).
 constexpr SystemVariableRange kSystemVariables[] = {

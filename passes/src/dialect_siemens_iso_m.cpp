@@ -144,6 +144,12 @@ constexpr std::string_view kAlarms[] = {
     "NCC2081",  // G53Incremental
     "NCC2033",  // TooManyDigits (no number in the notes)
     "NCC2045",  // LengthCompInArc
+    "NCC2090",  // CornerNoMoveAfter (§4.8.2: "an alarm", no number)
+    "NCC2091",  // CornerNotCuttingAfter
+    "NCC2092",  // CornerArcNotAllowed (not raised: arcs are allowed)
+    "NCC2093",  // CornerTooLong
+    "NCC2094",  // CornerTooLongAfter
+    "NCC2095",  // CornerContextChange (§4.8.2: plane or coordinate change)
 };
 static_assert(std::size(kAlarms) == static_cast<size_t>(Alarm::kCount));
 
@@ -178,6 +184,8 @@ constexpr DialectBehaviour kBehaviour{
     .dwell_x_before_g04_is_coordinate = false,
     .dwell_block_alone = true,              // §3.3.1: nothing but G04 in the dwell block
     .skip_feed_is_modal = true,             // G31 X Y Z F: F as for G01
+    .corner_with_arcs = true,
+    .line_angle_address = "",
 };
 // Sinumerik ISO mode defines no FANUC system variables (notes §4.11: "the manual does not
 // define ... FANUC system variables"); its programs read the machine through DIN ($ variables).

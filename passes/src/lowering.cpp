@@ -80,6 +80,7 @@ void oneShot(BlockContext& ctx) {
     case GAction::SetShift: return setShift(ctx);
     case GAction::ResetShift: return resetShift(ctx, g);
     case GAction::Skip: return skipMove(ctx, g);
+    case GAction::PositionOffset: return positionOffsetMove(ctx, g);
     default: return;
   }
 }
@@ -102,6 +103,8 @@ void checkUnused(BlockContext& ctx) {
   unused(ctx.words.r, ctx.used_r);
   unused(ctx.words.p, ctx.used_p);
   unused(ctx.words.l, ctx.used_l);
+  unused(ctx.words.corner, ctx.corner.has_value());
+  unused(ctx.words.line_angle, ctx.used_angle);
 }
 
 // The offset-table writes, the new controller state and the IR block.
@@ -139,6 +142,7 @@ void commit(BlockContext& ctx) {
   out.exact_stop =
       ctx.words.exact_stop.has_value() || ctx.next.modal.path == ir::PathControl::ExactStop;
   out.ops = std::move(ctx.ops);
+  out.corner = ctx.corner;
   // While something is unknown (only after an error: the run fails anyway) targets may rest
   // on it; later passes would judge them (travel limits) and report consequences.
   if (ctx.next.unknown.any()) return;

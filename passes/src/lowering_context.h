@@ -107,7 +107,11 @@ struct BlockContext {
   double length_delta = 0.0;
   bool length_delta_deferred = false;
   // Words some code of the block has read; the rest are reported as having no meaning.
-  bool used_ijk = false, used_r = false, used_p = false, used_l = false;
+  bool used_ijk = false, used_r = false, used_p = false, used_l = false, used_angle = false;
+  // ,C / ,R of a G01-G03 move: recorded on the IR block for the corners pass.
+  std::optional<ir::CornerRequest> corner;
+  // G45-G48: the signed amount (+-1 or 2 x the D offset, mm) each move lengthens by.
+  double position_offset = 0.0;
   // The axes a G31 in this block moves: where they stop is known only at run time.
   AxisMask skip_moved = 0;
   bool failed = false;
@@ -162,6 +166,15 @@ void lowerMotion(BlockContext& ctx);
 // A cutting move's feed: reports FeedMissing when none is in force (G93: when the block has
 // none); `inverse_time_needs_f`: G93 needs an F in the block itself.
 bool checkFeed(BlockContext& ctx, bool inverse_time_needs_f);
+
+// ---- lowering_position_offset.cpp ----
+// G45-G48: the block's move in the group 01 mode, each named axis's move lengthened by the
+// signed offset amount (Mazak §12-3).
+void positionOffsetMove(BlockContext& ctx, const GWord& g);
+// Under G45-G48: `target` with each named axis's move from `start` lengthened; an arc's centre
+// offset or radius (`length`, non-zero) likewise. Unchanged without G45-G48.
+void applyPositionOffset(const BlockContext& ctx, const AxisValues& start, AxisValues& target);
+double positionOffsetLength(const BlockContext& ctx, double length);
 
 // ---- lowering_skip.cpp ----
 // G31: the skip move; the axes it moves are known only at run time afterwards.

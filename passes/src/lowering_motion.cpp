@@ -197,7 +197,7 @@ bool arc(BlockContext& ctx, const AxisValues& start, const AxisValues& target,
   if (by_radius) {
     // R beats I/J/K when an end point is given (Mazak §6-6, FANUC).
     ctx.used_r = true;
-    double r = ctx.lengthValue(*ctx.words.r);
+    double r = positionOffsetLength(ctx, ctx.lengthValue(*ctx.words.r));
     if (r == 0.0) {
       ctx.fail(Alarm::ArcDegenerate, ctx.words.r->loc, "an arc radius R cannot be 0");
       return false;
@@ -219,8 +219,8 @@ bool arc(BlockContext& ctx, const AxisValues& start, const AxisValues& target,
       return false;
     }
     ctx.used_r = true;  // an I/J/K full circle ignores R (Mazak §6-6)
-    c = {s.a + (pl.wa->has_value() ? ctx.lengthValue(**pl.wa) : 0.0),
-         s.b + (pl.wb->has_value() ? ctx.lengthValue(**pl.wb) : 0.0)};
+    c = {s.a + (pl.wa->has_value() ? positionOffsetLength(ctx, ctx.lengthValue(**pl.wa)) : 0.0),
+         s.b + (pl.wb->has_value() ? positionOffsetLength(ctx, ctx.lengthValue(**pl.wb)) : 0.0)};
     double rs = distance(s, c), re = distance(e, c);
     if (rs <= kSamePoint) {
       ctx.fail(Alarm::ArcDegenerate, ctx.motionLoc(), "the arc centre is at the start point");
@@ -284,12 +284,89 @@ bool arc(BlockContext& ctx, const AxisValues& start, const AxisValues& target,
   return true;
 }
 
+// Mazak §13-12 line angle: `G01 Aa` with one end coordinate in the plane; the other is where
+// the line from the start at angle a (from the plane's first axis, counter-clockwise positive)
+// reaches it. With both coordinates the angle is ignored; with neither it is the geometric
+// command (§13-13), not built.
+bool lineAngle(BlockContext& ctx, const AxisValues& start, AxisValues& target) {
+  const WordValue& w = *ctx.words.line_angle;
+  ctx.used_angle = true;
+  PlaneAxes pl = planeAxes(ctx);
+  if (pl.a < 0 || pl.b < 0) {
+    ctx.fail(Alarm::AxisMissing, w.loc,
+             absl::StrCat("a line angle in the ", pl.names, " plane (", pl.code,
+                          ") needs both plane axes, which the machine does not have"));
+    return false;
+  }
+  bool has_a = ctx.words.axes[pl.a].has_value(), has_b = ctx.words.axes[pl.b].has_value();
+  if (has_a && has_b) return true;
+  if (!has_a && !has_b) {
+    ctx.fail(Alarm::AddressNotSupported, w.loc,
+             "the geometric command (an angle without an end point, §13-13) is not supported yet");
+    return false;
+  }
+  double angle = ctx.settings.values.rotary(w.value, w.point) * std::numbers::pi / 180.0;
+  double c = std::cos(angle), s = std::sin(angle);
+  double along = has_a ? c : s;
+  if (std::fabs(along) < 1e-9) {
+    ctx.fail(Alarm::ValueOutOfRange, w.loc,
+             absl::StrCat("a line at ", mm(ctx.settings.values.rotary(w.value, w.point)),
+                          " degrees never changes ", std::string(1, pl.names[has_a ? 0 : 1]),
+                          ": give the other coordinate"));
+    return false;
+  }
+  if (has_a)
+    target[pl.b] = start[pl.b] + (target[pl.a] - start[pl.a]) / c * s;
+  else
+    target[pl.a] = start[pl.a] + (target[pl.b] - start[pl.b]) / s * c;
+  return true;
+}
+
+// ,C / ,R: the corner after this block's move, for the corners pass (docs/semantics.md,
+// Corner chamfer and rounding). Only a G01-G03 block that moves has a corner.
+void cornerRequest(BlockContext& ctx, GAction kind, bool moves, const AxisValues& start) {
+  const WordValue& w = *ctx.words.corner;
+  if (ctx.failed) return;
+  if (kind != GAction::Linear && kind != GAction::ArcCW && kind != GAction::ArcCCW) {
+    ctx.fail(Alarm::AddressWithoutMeaning, w.loc,
+             absl::StrCat("address ", w.address, " (", w.address == ",C" ? "chamfer" : "rounding",
+                          ") needs a G01, G02 or G03 move in its block"));
+    return;
+  }
+  double amount = ctx.lengthValue(w);
+  if (amount < 0) {
+    ctx.fail(Alarm::ValueOutOfRange, w.loc,
+             absl::StrCat("a ", w.address == ",C" ? "chamfer" : "corner radius",
+                          " cannot be negative"));
+    return;
+  }
+  ir::CornerRequest c;
+  c.kind = w.address == ",C" ? ir::CornerRequest::Kind::Chamfer : ir::CornerRequest::Kind::Round;
+  c.amount = amount;
+  c.from = start;
+  PlaneAxes pl = planeAxes(ctx);
+  if (pl.a < 0 || pl.b < 0) {
+    ctx.fail(Alarm::AxisMissing, w.loc,
+             absl::StrCat("a corner in the ", pl.names, " plane (", pl.code,
+                          ") needs both plane axes, which the machine does not have"));
+    return;
+  }
+  c.plane_a = pl.a;
+  c.plane_b = pl.b;
+  c.loc = w.loc;
+  ctx.corner = c;
+  if (!moves || amount == 0.0) ctx.corner->amount = 0.0;  // nothing to insert, still checked
+}
+
 }  // namespace
 
 void lowerMotion(BlockContext& ctx) {
   ir::Frame frame = frameOf(ctx.next, ctx.behaviour);
   AxisValues start = ctx.baseWork();
   AxisValues target = ctx.workTargets(start);
+  applyPositionOffset(ctx, start, target);  // G45-G48
+  if (ctx.words.line_angle && ctx.next.motion == GAction::Linear && !lineAngle(ctx, start, target))
+    return;
   AxisValues to_machine = ctx.toMachine(target, frame);
   bool moves = !ctx.samePosition(to_machine, ctx.next.position);
   bool feed_per_rev = ctx.next.modal.feed_mode == ir::FeedMode::PerRevolution;
@@ -317,6 +394,7 @@ void lowerMotion(BlockContext& ctx) {
       break;
     default: break;
   }
+  if (ctx.words.corner) cornerRequest(ctx, kind, moves, start);
   ctx.next.position = to_machine;
   ctx.lengthChangeTraversed();
 }

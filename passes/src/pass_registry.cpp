@@ -2,6 +2,7 @@
 
 #include "ncc/passes/coordinate_transform.h"
 #include "ncc/passes/travel_check.h"
+#include "corners.h"
 
 namespace ncc::passes {
 
@@ -16,6 +17,11 @@ std::unique_ptr<ir::BlockSink> workToMachine(ir::BlockSink& next, const Pipeline
   return std::make_unique<WorkToMachinePass>(next, o.axis_count);
 }
 
+std::unique_ptr<ir::BlockSink> corners(ir::BlockSink& next, const PipelineOptions& o,
+                                       DiagnosticEngine& diags) {
+  return std::make_unique<CornersPass>(next, o.dialect, diags);
+}
+
 std::unique_ptr<ir::BlockSink> travelCheck(ir::BlockSink& next, const PipelineOptions& o,
                                            DiagnosticEngine& diags) {
   return std::make_unique<TravelCheckPass>(next, *o.travel_limits, o.dialect, diags);
@@ -26,6 +32,8 @@ std::unique_ptr<ir::BlockSink> travelCheck(ir::BlockSink& next, const PipelineOp
 constexpr PassInfo kPasses[] = {
     {"lower", "AST blocks to canonical IR blocks (modal state, units, work-space targets)",
      always, nullptr, false},
+    {"corners", ",C / ,R: inserts the chamfer line or rounding arc between two moves", always,
+     corners, false},
     {"work-to-machine", "adds each block's frame: work offset, shifts, tool length", inMachineSpace,
      workToMachine, true},
     {"travel-check", "motion targets against the travel limits (ncc check only)", checksTravel,

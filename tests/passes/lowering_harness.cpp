@@ -82,6 +82,7 @@ Lowered lower(Dialect dialect, const std::string& program, const std::string& ma
   Collect collect(run);
   PipelineOptions pipeline;
   pipeline.axis_count = machine.axisCount();
+  pipeline.dialect = dialect;
   pipeline.verify_each = true;  // tests verify the IR after every pass
   PassManager passes(pipeline, diags, collect);
   LoweringOptions options;

@@ -10,6 +10,7 @@
 // accepts machine-space operations only (the verifier checks this).
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <string>
 #include <variant>
 #include <vector>
@@ -152,6 +153,17 @@ struct Prepare {
 using Operation = std::variant<Rapid, Linear, Arc, Skip, Dwell, MachineFunction, ReferenceCheck,
                                SetVariable, Prepare>;
 
+// `,C` / `,R` at the end of a G01/G02/G03 block: a chamfer (legs of `amount`) or a rounding
+// arc (radius `amount`) between the block's move and the next block's. The corners pass
+// inserts it and clears the request (docs/semantics.md, Corner chamfer and rounding).
+struct CornerRequest {
+  enum class Kind : uint8_t { Chamfer, Round } kind = Kind::Chamfer;
+  double amount = 0.0;  // mm
+  AxisValues from{};    // where the block's move starts (work space)
+  int plane_a = 0, plane_b = 1;  // the machine axes of the plane in force (first, second)
+  SourceLocation loc;   // the ,C / ,R word
+};
+
 struct Block {
   SourceLocation loc;
   int64_t sequence = -1;  // N number, -1 if none
@@ -159,6 +171,7 @@ struct Block {
   Frame frame;
   bool exact_stop = false;   // G09 in this block, or G61 in force
   std::vector<Operation> ops;
+  std::optional<CornerRequest> corner;  // lowering -> corners pass only
 };
 
 // A pass or the backend: receives blocks one at a time. finish() is called once at the end

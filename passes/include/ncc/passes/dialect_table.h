@@ -35,6 +35,7 @@ enum class GAction : uint8_t {
   SetShift,                                     // G92
   ResetShift,                                   // G92.1
   Skip,                                         // G31 (Mazak G31.1-G31.3 too): skip move
+  PositionOffset,  // G45 G46 G47 G48: the move +-1 or 2 x the D offset (multiple from the code)
   CancelNoEffect,  // the cancel/off code of a function ncc never switches on (G40, G80, G50..)
   LanguageDin, LanguageIso,                     // G290 G291
   NotSupported,    // a real code of the controller that ncc does not implement yet
@@ -87,6 +88,16 @@ enum class Alarm : uint8_t {
   G53Incremental,           // G53 in G91 where the controller ignores it (warning)
   TooManyDigits,            // a number longer than its address's format (format_digits)
   LengthCompInArc,          // G43/G44/G49 (or a new H) while G02/G03 is in force
+  // ,C / ,R (the corners pass): the next block has no move in the plane; its move is not
+  // G01-G03 (G00, G31); an arc where the dialect rounds line-line corners only; the chamfer
+  // or radius does not fit in the block's move / in the next block's; the plane or the
+  // coordinate system changes between the two blocks.
+  CornerNoMoveAfter,
+  CornerNotCuttingAfter,
+  CornerArcNotAllowed,
+  CornerTooLong,
+  CornerTooLongAfter,
+  CornerContextChange,
   kCount,
 };
 
@@ -137,6 +148,12 @@ struct DialectBehaviour {
   // G31's F: true, the F of the block (or the modal F) as for G01, and it stays modal; false
   // (Mazak §4.10): "F missing -> K41 (K41 = 0 -> error); the modal F is not changed".
   bool skip_feed_is_modal;
+  // ,C / ,R between arcs as well as lines (Siemens §4.8.2; FANUC common); false: line-line
+  // corners only (Mazak §13-14: an arc in the next block is alarm 911).
+  bool corner_with_arcs;
+  // The address of the line angle (Mazak §13-12: `G01 Aa Zz`, the end point's other plane
+  // coordinate computed from the angle; only where A is not an axis of the machine). Empty: none.
+  std::string_view line_angle_address;
 };
 
 // What a block of system variables (#1000 and up) holds; the controller model reads and
