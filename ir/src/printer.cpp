@@ -140,7 +140,7 @@ struct OperationPrinter {
   }
   std::string operator()(const HoleCycle& c) const {
     static constexpr const char* kKinds[] = {"drill", "high-speed-peck", "peck", "tap",
-                                             "fine-bore"};
+                                             "fine-bore", "back-bore"};
     std::string out = absl::StrCat("cycle G", c.code10 / 10, " ", kKinds[static_cast<int>(c.kind)],
                                    " work ", axisList(c.hole, axes), " initial ", num(c.initial),
                                    " R", num(c.r_level), " bottom ", num(c.bottom),
@@ -150,6 +150,7 @@ struct OperationPrinter {
     if (c.dwell > 0) absl::StrAppend(&out, " dwell ", num(c.dwell), c.dwell_revolutions ? " rev" : " s");
     if (c.feed_out) absl::StrAppend(&out, " out F", num(c.retract_feed));
     if (c.stop_spindle_at_bottom) absl::StrAppend(&out, " spindle-stop");
+    if (c.program_stop_at_bottom) absl::StrAppend(&out, " program-stop");
     if (!allZero(c.shift)) absl::StrAppend(&out, " shift(", axisList(c.shift, axes), ")");
     return out;
   }

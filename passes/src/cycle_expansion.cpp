@@ -85,6 +85,31 @@ void pecks(Sequence& s, const ir::HoleCycle& c) {
 
 K direction(int d) { return d < 0 ? K::SpindleCCW : K::SpindleCW; }
 
+AxisValues shifted(const AxisValues& at, const AxisValues& shift, double sign) {
+  AxisValues t = at;
+  for (int i = 0; i < kMaxAxes; ++i) t[i] += sign * shift[i];
+  return t;
+}
+
+// G87 (Siemens §4.1 table, Mazak §13-1-2, FANUC common): at the initial level orient the
+// spindle and shift off the hole axis, rapid down to R (below the part), shift back, spindle
+// on, bore upwards to Z, dwell, orient, shift, rapid up to the initial level, shift back, spindle
+// on. Always back to the initial level.
+void backBore(Sequence& s, const ir::HoleCycle& c) {
+  s.spindle(K::SpindleOrient);
+  s.rapid(shifted(s.at(), c.shift, 1.0));
+  s.rapidTo(c.r_level);
+  s.rapid(shifted(s.at(), c.shift, -1.0));
+  s.spindle(direction(c.spindle_direction));
+  s.feedTo(c.bottom, c.feed);
+  s.dwell();
+  s.spindle(K::SpindleOrient);
+  s.rapid(shifted(s.at(), c.shift, 1.0));
+  s.rapidTo(c.initial);
+  s.rapid(shifted(s.at(), c.shift, -1.0));
+  s.spindle(direction(c.spindle_direction));
+}
+
 }  // namespace
 
 std::vector<ir::Operation> expandHoleCycle(const ir::HoleCycle& c, int axis_count) {
@@ -95,6 +120,10 @@ std::vector<ir::Operation> expandHoleCycle(const ir::HoleCycle& c, int axis_coun
     s.feed(c.hole, c.feed);
   else
     s.rapid(c.hole);
+  if (c.kind == Kind::BackBore) {
+    backBore(s, c);
+    return s.take();
+  }
   // 2. Rapid to R.
   s.rapidTo(c.r_level);
   const double level = c.return_to_r ? c.r_level : c.initial;
@@ -115,24 +144,21 @@ std::vector<ir::Operation> expandHoleCycle(const ir::HoleCycle& c, int axis_coun
       s.spindle(direction(c.spindle_direction));
       s.rapidTo(level);
       break;
-    case Kind::FineBore: {
+    case Kind::FineBore:
       s.feedTo(c.bottom, c.feed);
       s.dwell();
       s.spindle(K::SpindleOrient);
-      AxisValues off = s.at();
-      for (int i = 0; i < kMaxAxes; ++i) off[i] += c.shift[i];
-      s.rapid(off);
+      s.rapid(shifted(s.at(), c.shift, 1.0));
       s.rapidTo(level);
-      AxisValues back = s.at();
-      for (int i = 0; i < kMaxAxes; ++i) back[i] -= c.shift[i];
-      s.rapid(back);
+      s.rapid(shifted(s.at(), c.shift, -1.0));
       s.spindle(direction(c.spindle_direction));
       break;
-    }
+    case Kind::BackBore: break;  // above
     case Kind::Drill:
       s.feedTo(c.bottom, c.feed);
       s.dwell();
       if (c.stop_spindle_at_bottom) s.spindle(K::SpindleStop);
+      if (c.program_stop_at_bottom) s.spindle(K::ProgramStop);  // G88: the manual moves
       if (c.feed_out) s.feedTo(c.r_level, c.retract_feed);
       s.rapidTo(level);
       if (c.stop_spindle_at_bottom) s.spindle(direction(c.spindle_direction));

@@ -90,8 +90,8 @@ constexpr GCodeEntry kCodes[] = {
     {843, G::Cycle, 9, false, A::NotSupported, 0, "synchronous reverse tapping cycle"},
     {850, G::Cycle, 9, false, A::HoleCycle, 0, "canned reaming cycle"},
     {860, G::Cycle, 9, false, A::HoleCycle, 0, "canned boring cycle"},
-    {870, G::Cycle, 9, false, A::NotSupported, 0, "canned back boring cycle"},
-    {880, G::Cycle, 9, false, A::NotSupported, 0, "canned boring cycle"},
+    {870, G::Cycle, 9, false, A::HoleCycle, 0, "canned back boring cycle"},
+    {880, G::Cycle, 9, false, A::HoleCycle, 0, "canned boring cycle"},
     {890, G::Cycle, 9, false, A::HoleCycle, 0, "canned boring cycle"},
     {1300, G::Cycle, 9, false, A::NotSupported, 0, "TORNADO cycle"},
     // group 10: return level, only meaningful with canned cycles (never active)
@@ -182,17 +182,19 @@ static_assert(std::size(kAlarms) == static_cast<size_t>(Alarm::kCount));
 // in the cycles whose format has it; G74/G84 count it in seconds (§13-1-2 "Remarques").
 using CK = ir::HoleCycle::Kind;
 constexpr CycleEntry kCycleEntries[] = {
-    // code kind              dwell  feed_out stop   tap  P in s shift
-    {730, CK::HighSpeedPeck, true, false, false, 0, false, false},
-    {740, CK::Tap, true, false, false, -1, true, false},
-    {760, CK::FineBore, true, false, false, 0, false, true},
-    {810, CK::Drill, false, false, false, 0, false, false},
-    {820, CK::Drill, true, false, false, 0, false, false},
-    {830, CK::Peck, true, false, false, 0, false, false},
-    {840, CK::Tap, true, false, false, 1, true, false},
-    {850, CK::Drill, true, true, false, 0, false, false},
-    {860, CK::Drill, true, false, true, 0, false, false},
-    {890, CK::Drill, true, true, false, 0, false, false},
+    // code kind              dwell  feed_out stop   tap  P in s shift  M00
+    {730, CK::HighSpeedPeck, true, false, false, 0, false, false, false},
+    {740, CK::Tap, true, false, false, -1, true, false, false},
+    {760, CK::FineBore, true, false, false, 0, false, true, false},
+    {810, CK::Drill, false, false, false, 0, false, false, false},
+    {820, CK::Drill, true, false, false, 0, false, false, false},
+    {830, CK::Peck, true, false, false, 0, false, false, false},
+    {840, CK::Tap, true, false, false, 1, true, false, false},
+    {850, CK::Drill, true, true, false, 0, false, false, false},
+    {860, CK::Drill, true, false, true, 0, false, false, false},
+    {870, CK::BackBore, true, false, false, 0, false, true, false},
+    {880, CK::Drill, true, false, true, 0, false, false, true},
+    {890, CK::Drill, true, true, false, 0, false, false, false},
 };
 constexpr CycleRules kCycles{
     .entries = kCycleEntries,

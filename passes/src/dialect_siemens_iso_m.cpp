@@ -50,7 +50,7 @@ constexpr GCodeEntry kCodes[] = {
     {840, G::Cycle, 9, false, A::HoleCycle, 0, "canned tapping cycle"},
     {850, G::Cycle, 9, false, A::HoleCycle, 0, "canned boring cycle"},
     {860, G::Cycle, 9, false, A::HoleCycle, 0, "canned boring cycle"},
-    {870, G::Cycle, 9, false, A::NotSupported, 0, "canned back boring cycle"},
+    {870, G::Cycle, 9, false, A::HoleCycle, 0, "canned back boring cycle"},
     {890, G::Cycle, 9, false, A::HoleCycle, 0, "canned boring cycle"},
     // group 10: return level, only meaningful with canned cycles (never active)
     {980, G::ReturnLevel, 10, true, A::ReturnInitial, 0, "canned cycle initial level return"},
@@ -156,17 +156,18 @@ static_assert(std::size(kAlarms) == static_cast<size_t>(Alarm::kCount));
 // The hole cycles, §4.1 (shell cycles CYCLE381M-CYCLE387M; docs/cycles.md). P is in ms.
 using CK = ir::HoleCycle::Kind;
 constexpr CycleEntry kCycleEntries[] = {
-    // code kind              dwell  feed_out stop   tap  P in s shift
-    {730, CK::HighSpeedPeck, false, false, false, 0, false, false},
-    {740, CK::Tap, true, false, false, -1, false, false},
-    {760, CK::FineBore, true, false, false, 0, false, true},
-    {810, CK::Drill, false, false, false, 0, false, false},
-    {820, CK::Drill, true, false, false, 0, false, false},
-    {830, CK::Peck, false, false, false, 0, false, false},
-    {840, CK::Tap, true, false, false, 1, false, false},
-    {850, CK::Drill, false, true, false, 0, false, false},
-    {860, CK::Drill, false, false, true, 0, false, false},
-    {890, CK::Drill, true, true, false, 0, false, false},
+    // code kind              dwell  feed_out stop   tap  P in s shift  M00
+    {730, CK::HighSpeedPeck, false, false, false, 0, false, false, false},
+    {740, CK::Tap, true, false, false, -1, false, false, false},
+    {760, CK::FineBore, true, false, false, 0, false, true, false},
+    {810, CK::Drill, false, false, false, 0, false, false, false},
+    {820, CK::Drill, true, false, false, 0, false, false, false},
+    {830, CK::Peck, false, false, false, 0, false, false, false},
+    {840, CK::Tap, true, false, false, 1, false, false, false},
+    {850, CK::Drill, false, true, false, 0, false, false, false},
+    {860, CK::Drill, false, false, true, 0, false, false, false},
+    {870, CK::BackBore, true, false, false, 0, false, true, false},
+    {890, CK::Drill, true, true, false, 0, false, false, false},
 };
 constexpr CycleRules kCycles{
     .entries = kCycleEntries,

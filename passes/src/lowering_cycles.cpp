@@ -186,9 +186,11 @@ void lowerCycle(BlockContext& ctx) {
     return;
   }
   const double r_level = c.has_r ? c.r : c.initial;
-  if (rules.r_beyond_bottom_is_error && r_level <= c.z) {
+  // G87 bores upwards: R (where it starts, below the part) lies below Z.
+  const bool back = entry.kind == ir::HoleCycle::Kind::BackBore;
+  if (rules.r_beyond_bottom_is_error && (back ? r_level >= c.z : r_level <= c.z)) {
     ctx.fail(Alarm::CycleReferencePlane, ctx.words.r ? ctx.words.r->loc : cycleLoc(ctx),
-             absl::StrCat(name, ": the R level ", mm(r_level), " is not above the bottom ",
+             absl::StrCat(name, ": the R level ", mm(r_level), back ? " is not below Z " : " is not above the bottom ",
                           mm(c.z)));
     return;
   }
@@ -201,7 +203,7 @@ void lowerCycle(BlockContext& ctx) {
   h.initial = c.initial;
   h.r_level = r_level;
   h.bottom = c.z;
-  h.return_to_r = c.return_to_r;
+  h.return_to_r = c.return_to_r && !back;  // G87 always returns to the initial level
   h.feed = ctx.next.modal.feed;
   h.feed_per_rev = ctx.next.modal.feed_mode == ir::FeedMode::PerRevolution;
   h.positioning_by_feed = rules.positioning_in_motion_mode && ctx.next.motion != GAction::Rapid;
@@ -225,6 +227,7 @@ void lowerCycle(BlockContext& ctx) {
     h.retract_feed = h.feed;
   }
   h.stop_spindle_at_bottom = entry.spindle_stop;
+  h.program_stop_at_bottom = entry.manual_stop;
   if (entry.q_shift && c.has_q) {
     // The shift off the wall (boring_shift_direction): 1 + first plane axis, 0/2 - first,
     // 3 + second, 4 - second (Siemens _ZSFI[5] table; FANUC RD1/RD2, Mazak I14 likewise).
@@ -235,7 +238,7 @@ void lowerCycle(BlockContext& ctx) {
     if (on >= 0 && on < kMaxAxes) h.shift[on] = sign * std::fabs(c.q);
   }
   AxisValues at = ctx.baseWork();
-  const double level = c.return_to_r ? r_level : c.initial;
+  const double level = h.return_to_r ? r_level : c.initial;
   for (int64_t n = 0; n < repeats; ++n) {
     h.from = at;
     AxisValues hole = at;

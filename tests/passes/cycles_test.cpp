@@ -243,6 +243,44 @@ TEST(Cycles, G76ShiftsOffTheWallInTheConfiguredDirection) {
                {"rapid", {{"X", 5}, {"Y", 0}, {"Z", 2}}}});
 }
 
+TEST(Cycles, G87BacksBoresUpwardsAndAlwaysReturnsToTheInitialLevel) {
+  // Siemens §4.1 table / FANUC common: orient, shift Q off the axis (+X, RD1 = RD2 = 0), rapid
+  // down to R (below the part), shift back, spindle on, bore up to Z, orient, shift, rapid to
+  // the initial level (also in G99), shift back.
+  Lowered r = lower(Dialect::FanucM, "M03 S500\nG00 Z10.\nG99 G87 X5. R-20. Z-8. Q1.5 F100.\nG80\n");
+  expectMoves(r, kXYZ,
+              {{"rapid", {{"Z", 10}}},
+               {"rapid", {{"X", 5}, {"Z", 10}}},
+               {"rapid", {{"X", 6.5}, {"Z", 10}}},
+               {"rapid", {{"X", 6.5}, {"Z", -20}}},
+               {"rapid", {{"X", 5}, {"Z", -20}}},
+               {"line", {{"X", 5}, {"Z", -8}}, {}, false, 100},
+               {"rapid", {{"X", 6.5}, {"Z", -8}}},
+               {"rapid", {{"X", 6.5}, {"Z", 10}}},
+               {"rapid", {{"X", 5}, {"Z", 10}}}});
+  // Siemens 61101: for G87, R must lie below Z.
+  Lowered bad = lower(Dialect::SiemensIsoM, "M3 S100\nG00 Z10.\nG87 X1. R2. Z-5. Q1. F100.\n",
+                      xyzMachine("decimal_point = \"calculator\""));
+  EXPECT_THAT(bad.diagText(), testing::HasSubstr("3:9: error[61101]"));
+}
+
+TEST(Cycles, G88StopsForTheOperatorAtTheBottom) {
+  // Mazak §13-1-2 / notes §4.6: "M05 + M00 at the bottom"; after cycle start, rapid out.
+  Lowered r = lower(Dialect::MazakM, "M03 S500\nG00 Z10.\nG98 G88 R2. Z-5. P500 F100.\nG80\n",
+                    xyzMachine("decimal_point = \"calculator\""));
+  expectMoves(r, kXYZ,
+              {{"rapid", {{"Z", 10}}},
+               {"rapid", {{"Z", 2}}},
+               {"line", {{"Z", -5}}, {}, false, 100},
+               {"dwell", {}, {}, false, -1, 0.5},
+               {"rapid", {{"Z", 10}}}});
+  std::vector<ir::MachineFunction::Kind> functions;
+  for (const ir::Operation& op : r.blocks[2].ops)
+    if (auto* f = std::get_if<ir::MachineFunction>(&op)) functions.push_back(f->kind);
+  using K = ir::MachineFunction::Kind;
+  EXPECT_EQ(functions, (std::vector<K>{K::SpindleStop, K::ProgramStop, K::SpindleCW}));
+}
+
 TEST(Cycles, StoreOnlyBlocksAndCancel) {
   // K0 stores the data; a block without a positioning word (only F) does not drill; the next
   // position drills with the stored data; a group-01 code ends the cycle (G00 X moves only).

@@ -23,8 +23,8 @@ TEST_P(DiagnosticTest, ReportsCodeLocationAndMessage) {
 const Case kCases[] = {
     {"MacroExpression", Dialect::FanucM, "G01 X#1 F100.",
      "1:5: error[NCC2001]: macro expressions/statements are not supported yet: X#1"},
-    {"NotSupportedCycle", Dialect::FanucM, "G87 X1. Z-1. R1. F100.",
-     "1:1: error[NCC2010]: G87 (canned back boring cycle) is not supported yet"},
+    {"NotSupportedCycle", Dialect::MazakM, "G75 X1. Z-1. R1. F100.",
+     "1:1: error[NCC2010]: G75 (boring cycle) is not supported yet"},
     {"NotSupportedCutterComp", Dialect::MazakM, "G41 D1 X1.",
      "1:1: error[NCC2010]: G41 (tool radius compensation left) is not supported yet"},
     {"NotSupportedSubprogram", Dialect::FanucM, "M98 P100",

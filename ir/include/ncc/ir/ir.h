@@ -162,6 +162,7 @@ struct HoleCycle {
     Peck,           // feed Q, rapid to R, rapid to d above the last depth, ... (G83)
     Tap,            // feed in, reverse the spindle at the bottom, feed out (G84, G74)
     FineBore,       // feed in, orient the spindle, shift off the wall, rapid out (G76)
+    BackBore,       // oriented and shifted down to R below the part, bore up to Z (G87)
   };
   Kind kind = Kind::Drill;
   int code10 = 0;           // the G code x 10, for printing and messages
@@ -184,6 +185,7 @@ struct HoleCycle {
   bool feed_out = false;       // the way back to R is a feed (G85, G89, tapping)
   double retract_feed = 0.0;   // the feed of that way back
   bool stop_spindle_at_bottom = false;  // G86: M05 at the bottom, rapid out, M03/M04 again
+  bool program_stop_at_bottom = false;  // G88: and M00 (the operator's manual moves) after it
   int spindle_direction = 1;   // +1 M03, -1 M04: the direction the cycle restores
   bool dwell_at_r = false;     // tapping: the dwell P also at R after the way out (FANUC)
   AxisValues shift{};          // G76: the shift off the wall at the bottom (a work-space vector)

@@ -187,7 +187,8 @@ struct CycleEntry {
   bool spindle_stop;     // M05 at the bottom, rapid out, spindle on again (G86)
   int tap_direction;     // tapping: +1 cuts in with M03 (G84), -1 with M04 (G74); else 0
   bool p_in_seconds;     // P counts seconds (Mazak G74/G84 "arrêt temporisé en secondes")
-  bool q_shift;          // Q is the shift off the wall at the bottom (G76)
+  bool q_shift;          // Q is the shift off the wall at the bottom (G76, G87)
+  bool manual_stop;      // M00 after the spindle stop at the bottom (G88)
 };
 
 // How the dialect's cycles read their words and where they differ; each field names its manual.
