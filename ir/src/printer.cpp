@@ -141,7 +141,9 @@ struct OperationPrinter {
   std::string operator()(const HoleCycle& c) const {
     static constexpr const char* kKinds[] = {"drill", "high-speed-peck", "peck", "tap",
                                              "fine-bore", "back-bore"};
-    std::string out = absl::StrCat("cycle G", c.code10 / 10, " ", kKinds[static_cast<int>(c.kind)],
+    std::string out = absl::StrCat("cycle G", c.code10 / 10,
+                                   c.code10 % 10 ? absl::StrCat(".", c.code10 % 10) : "", " ",
+                                   kKinds[static_cast<int>(c.kind)],
                                    " work ", axisList(c.hole, axes), " initial ", num(c.initial),
                                    " R", num(c.r_level), " bottom ", num(c.bottom),
                                    c.return_to_r ? " G99" : " G98", " F", num(c.feed),

@@ -194,19 +194,19 @@ static_assert(std::size(kAlarms) == static_cast<size_t>(Alarm::kCount));
 // No.5101 RD1 = RD2 = 0) are common FANUC knowledge.
 using CK = ir::HoleCycle::Kind;
 constexpr CycleEntry kCycleEntries[] = {
-    // code kind              dwell  feed_out stop   tap  P in s shift  M00
-    {730, CK::HighSpeedPeck, false, false, false, 0, false, false, false},
-    {740, CK::Tap, true, false, false, -1, false, false, false},
-    {760, CK::FineBore, true, false, false, 0, false, true, false},
-    {810, CK::Drill, false, false, false, 0, false, false, false},
-    {820, CK::Drill, true, false, false, 0, false, false, false},
-    {830, CK::Peck, false, false, false, 0, false, false, false},
-    {840, CK::Tap, true, false, false, 1, false, false, false},
-    {850, CK::Drill, false, true, false, 0, false, false, false},
-    {860, CK::Drill, false, false, true, 0, false, false, false},
-    {870, CK::BackBore, true, false, false, 0, false, true, false},
-    {880, CK::Drill, true, false, true, 0, false, false, true},
-    {890, CK::Drill, true, true, false, 0, false, false, false},
+    // code kind              dwell  feed_out stop   tap  P in s shift  M00   dwell R pitch
+    {730, CK::HighSpeedPeck, false, false, false, 0, false, false, false, false, false},
+    {740, CK::Tap, true, false, false, -1, false, false, false, true, false},
+    {760, CK::FineBore, true, false, false, 0, false, true, false, false, false},
+    {810, CK::Drill, false, false, false, 0, false, false, false, false, false},
+    {820, CK::Drill, true, false, false, 0, false, false, false, false, false},
+    {830, CK::Peck, false, false, false, 0, false, false, false, false, false},
+    {840, CK::Tap, true, false, false, 1, false, false, false, true, false},
+    {850, CK::Drill, false, true, false, 0, false, false, false, false, false},
+    {860, CK::Drill, false, false, true, 0, false, false, false, false, false},
+    {870, CK::BackBore, true, false, false, 0, false, true, false, false, false},
+    {880, CK::Drill, true, false, true, 0, false, false, true, false, false},
+    {890, CK::Drill, true, true, false, 0, false, false, false, false, false},
 };
 constexpr CycleRules kCycles{
     .entries = kCycleEntries,
@@ -216,7 +216,6 @@ constexpr CycleRules kCycles{
     .q_sign_ignored = false,
     .r_beyond_bottom_is_error = false,
     .peck_retract_feed = 0.0,             // G73 backs off at rapid (FANUC common)
-    .tap_dwell_at_r = true,               // FANUC common: G84 dwells at the bottom and at R
     .default_shift_direction = 1,         // FANUC common: RD1 = RD2 = 0, +X in G17
 };
 

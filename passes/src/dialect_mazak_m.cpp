@@ -86,8 +86,8 @@ constexpr GCodeEntry kCodes[] = {
     {820, G::Cycle, 9, false, A::HoleCycle, 0, "canned drilling cycle with dwell"},
     {830, G::Cycle, 9, false, A::HoleCycle, 0, "canned deep hole drilling cycle"},
     {840, G::Cycle, 9, false, A::HoleCycle, 0, "canned tapping cycle"},
-    {842, G::Cycle, 9, false, A::NotSupported, 0, "synchronous tapping cycle"},
-    {843, G::Cycle, 9, false, A::NotSupported, 0, "synchronous reverse tapping cycle"},
+    {842, G::Cycle, 9, false, A::HoleCycle, 0, "synchronous tapping cycle"},
+    {843, G::Cycle, 9, false, A::HoleCycle, 0, "synchronous reverse tapping cycle"},
     {850, G::Cycle, 9, false, A::HoleCycle, 0, "canned reaming cycle"},
     {860, G::Cycle, 9, false, A::HoleCycle, 0, "canned boring cycle"},
     {870, G::Cycle, 9, false, A::HoleCycle, 0, "canned back boring cycle"},
@@ -182,19 +182,23 @@ static_assert(std::size(kAlarms) == static_cast<size_t>(Alarm::kCount));
 // in the cycles whose format has it; G74/G84 count it in seconds (§13-1-2 "Remarques").
 using CK = ir::HoleCycle::Kind;
 constexpr CycleEntry kCycleEntries[] = {
-    // code kind              dwell  feed_out stop   tap  P in s shift  M00
-    {730, CK::HighSpeedPeck, true, false, false, 0, false, false, false},
-    {740, CK::Tap, true, false, false, -1, true, false, false},
-    {760, CK::FineBore, true, false, false, 0, false, true, false},
-    {810, CK::Drill, false, false, false, 0, false, false, false},
-    {820, CK::Drill, true, false, false, 0, false, false, false},
-    {830, CK::Peck, true, false, false, 0, false, false, false},
-    {840, CK::Tap, true, false, false, 1, true, false, false},
-    {850, CK::Drill, true, true, false, 0, false, false, false},
-    {860, CK::Drill, true, false, true, 0, false, false, false},
-    {870, CK::BackBore, true, false, false, 0, false, true, false},
-    {880, CK::Drill, true, false, true, 0, false, false, true},
-    {890, CK::Drill, true, true, false, 0, false, false, false},
+    // code kind              dwell  feed_out stop   tap  P in s shift  M00   dwell R pitch
+    {730, CK::HighSpeedPeck, true, false, false, 0, false, false, false, false, false},
+    {740, CK::Tap, true, false, false, -1, true, false, false, false, false},
+    {760, CK::FineBore, true, false, false, 0, false, true, false, false, false},
+    {810, CK::Drill, false, false, false, 0, false, false, false, false, false},
+    {820, CK::Drill, true, false, false, 0, false, false, false, false, false},
+    {830, CK::Peck, true, false, false, 0, false, false, false, false, false},
+    {840, CK::Tap, true, false, false, 1, true, false, false, false, false},
+    // §13-1-22: synchronous tapping, F the pitch; P at Z and at R (in seconds, as G84's);
+    // the way out at K90 % (tap_retract_percent).
+    {842, CK::Tap, true, false, false, 1, true, false, false, true, true},
+    {843, CK::Tap, true, false, false, -1, true, false, false, true, true},
+    {850, CK::Drill, true, true, false, 0, false, false, false, false, false},
+    {860, CK::Drill, true, false, true, 0, false, false, false, false, false},
+    {870, CK::BackBore, true, false, false, 0, false, true, false, false, false},
+    {880, CK::Drill, true, false, true, 0, false, false, true, false, false},
+    {890, CK::Drill, true, true, false, 0, false, false, false, false, false},
 };
 constexpr CycleRules kCycles{
     .entries = kCycleEntries,
@@ -204,7 +208,6 @@ constexpr CycleRules kCycles{
     .q_sign_ignored = false,              // Q0 -> 809; a negative Q likewise (not a depth)
     .r_beyond_bottom_is_error = false,
     .peck_retract_feed = 9999.0,          // §13-1-6: f2, the fixed return speed, 9999 mm/min
-    .tap_dwell_at_r = false,
     .default_shift_direction = 1,         // I14 bits 3-4 = 0: +X in G17
 };
 

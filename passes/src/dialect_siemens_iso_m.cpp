@@ -156,18 +156,18 @@ static_assert(std::size(kAlarms) == static_cast<size_t>(Alarm::kCount));
 // The hole cycles, §4.1 (shell cycles CYCLE381M-CYCLE387M; docs/cycles.md). P is in ms.
 using CK = ir::HoleCycle::Kind;
 constexpr CycleEntry kCycleEntries[] = {
-    // code kind              dwell  feed_out stop   tap  P in s shift  M00
-    {730, CK::HighSpeedPeck, false, false, false, 0, false, false, false},
-    {740, CK::Tap, true, false, false, -1, false, false, false},
-    {760, CK::FineBore, true, false, false, 0, false, true, false},
-    {810, CK::Drill, false, false, false, 0, false, false, false},
-    {820, CK::Drill, true, false, false, 0, false, false, false},
-    {830, CK::Peck, false, false, false, 0, false, false, false},
-    {840, CK::Tap, true, false, false, 1, false, false, false},
-    {850, CK::Drill, false, true, false, 0, false, false, false},
-    {860, CK::Drill, false, false, true, 0, false, false, false},
-    {870, CK::BackBore, true, false, false, 0, false, true, false},
-    {890, CK::Drill, true, true, false, 0, false, false, false},
+    // code kind              dwell  feed_out stop   tap  P in s shift  M00   dwell R pitch
+    {730, CK::HighSpeedPeck, false, false, false, 0, false, false, false, false, false},
+    {740, CK::Tap, true, false, false, -1, false, false, false, false, false},
+    {760, CK::FineBore, true, false, false, 0, false, true, false, false, false},
+    {810, CK::Drill, false, false, false, 0, false, false, false, false, false},
+    {820, CK::Drill, true, false, false, 0, false, false, false, false, false},
+    {830, CK::Peck, false, false, false, 0, false, false, false, false, false},
+    {840, CK::Tap, true, false, false, 1, false, false, false, false, false},
+    {850, CK::Drill, false, true, false, 0, false, false, false, false, false},
+    {860, CK::Drill, false, false, true, 0, false, false, false, false, false},
+    {870, CK::BackBore, true, false, false, 0, false, true, false, false, false},
+    {890, CK::Drill, true, true, false, 0, false, false, false, false, false},
 };
 constexpr CycleRules kCycles{
     .entries = kCycleEntries,
@@ -177,7 +177,6 @@ constexpr CycleRules kCycles{
     .q_sign_ignored = true,               // §4.1: "Q must be positive; the sign is ignored"
     .r_beyond_bottom_is_error = true,     // App. D 61101
     .peck_retract_feed = 0.0,
-    .tap_dwell_at_r = false,
     .default_shift_direction = 0,         // _ZSFI[5] = 0: -X in G17
 };
 

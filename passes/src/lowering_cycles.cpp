@@ -205,7 +205,8 @@ void lowerCycle(BlockContext& ctx) {
   h.bottom = c.z;
   h.return_to_r = c.return_to_r && !back;  // G87 always returns to the initial level
   h.feed = ctx.next.modal.feed;
-  h.feed_per_rev = ctx.next.modal.feed_mode == ir::FeedMode::PerRevolution;
+  // Mazak G84.2/G84.3: F is the pitch, the tap advancing it per spindle revolution.
+  h.feed_per_rev = entry.pitch_feed || ctx.next.modal.feed_mode == ir::FeedMode::PerRevolution;
   h.positioning_by_feed = rules.positioning_in_motion_mode && ctx.next.motion != GAction::Rapid;
   h.rapid_type = ctx.settings.rapid_type;
   if (peck) {
@@ -220,7 +221,7 @@ void lowerCycle(BlockContext& ctx) {
     h.spindle_direction = entry.tap_direction;
     h.feed_out = true;
     h.retract_feed = h.feed * ctx.settings.tap_retract_percent / 100.0;
-    h.dwell_at_r = rules.tap_dwell_at_r;
+    h.dwell_at_r = entry.dwell_at_r;
   }
   if (entry.feed_out) {
     h.feed_out = true;

@@ -204,6 +204,25 @@ TEST(Cycles, MazakTappingDwellIsInSecondsAndPositionsByTheGroup01Code) {
   EXPECT_EQ(spindle.back(), K::SpindleCW);
 }
 
+TEST(Cycles, MazakSynchronousTappingFeedsThePitchPerRevolution) {
+  // §13-1-22 3.: G84.2 F is the pitch; P dwells at Z and at R; the way out at K90 %
+  // (tap_retract_percent 50 here).
+  Lowered r = lower(Dialect::MazakM, "M03 S500\nG00 Z10.\nG98 G84.2 R2. Z-5. P1. F1.25\nG80\n",
+                    xyzMachine("decimal_point = \"calculator\"\ntap_retract_percent = 50"));
+  expectMoves(r, kXYZ,
+              {{"rapid", {{"Z", 10}}},
+               {"rapid", {{"Z", 2}}},
+               {"line", {{"Z", -5}}, {}, false, 1.25},
+               {"dwell", {}, {}, false, -1, 1.0},
+               {"line", {{"Z", 2}}, {}, false, 0.625},
+               {"dwell", {}, {}, false, -1, 1.0},
+               {"rapid", {{"Z", 10}}}});
+  int per_rev = 0;
+  for (const ir::Operation& op : r.blocks[2].ops)
+    if (auto* l = std::get_if<ir::Linear>(&op)) per_rev += l->feed_per_rev;
+  EXPECT_EQ(per_rev, 2);
+}
+
 TEST(Cycles, FanucTappingDwellsAtTheBottomAndAtR) {
   Lowered r = lower(Dialect::FanucM, "M03 S500\nG00 Z10.\nG99 G84 R2. Z-5. P200 F100.\nG80\n");
   expectMoves(r, kXYZ,

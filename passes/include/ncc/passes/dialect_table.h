@@ -189,6 +189,8 @@ struct CycleEntry {
   bool p_in_seconds;     // P counts seconds (Mazak G74/G84 "arrêt temporisé en secondes")
   bool q_shift;          // Q is the shift off the wall at the bottom (G76, G87)
   bool manual_stop;      // M00 after the spindle stop at the bottom (G88)
+  bool dwell_at_r;       // tapping: the dwell P also at R after the way out
+  bool pitch_feed;       // F is the thread pitch, per revolution (Mazak G84.2/G84.3)
 };
 
 // How the dialect's cycles read their words and where they differ; each field names its manual.
@@ -200,7 +202,6 @@ struct CycleRules {
   bool q_sign_ignored;              // Siemens §4.1: Q is taken positive; else Q <= 0 is an alarm
   bool r_beyond_bottom_is_error;    // Siemens 61101 (reference plane wrong)
   double peck_retract_feed;         // G73 back-off feed, mm/min (Mazak f2 = 9999); 0: rapid
-  bool tap_dwell_at_r;              // G74/G84 dwell P also at R after the way out (FANUC common)
   // The shift of G76 in the plane (first, second axis): its default direction when the
   // machine file sets none (boring_shift_direction).
   int default_shift_direction;
