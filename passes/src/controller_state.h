@@ -39,6 +39,8 @@ struct CycleState {
   double q = 0.0;               // Q as given (mm)
   double p = 0.0;               // P as given (the cycle entry says its unit)
   bool has_p = false;
+  double d = 0.0;               // Mazak G73/G83 D (mm); 0: the parameter
+  bool has_d = false;
 };
 
 struct ControllerState {

@@ -216,6 +216,7 @@ constexpr CycleRules kCycles{
     .q_sign_ignored = false,
     .r_beyond_bottom_is_error = false,
     .peck_retract_feed = 0.0,             // G73 backs off at rapid (FANUC common)
+    .d_is_peck_distance = false,
     .default_shift_direction = 1,         // FANUC common: RD1 = RD2 = 0, +X in G17
 };
 

@@ -208,6 +208,7 @@ constexpr CycleRules kCycles{
     .q_sign_ignored = false,              // Q0 -> 809; a negative Q likewise (not a depth)
     .r_beyond_bottom_is_error = false,
     .peck_retract_feed = 9999.0,          // §13-1-6: f2, the fixed return speed, 9999 mm/min
+    .d_is_peck_distance = true,
     .default_shift_direction = 1,         // I14 bits 3-4 = 0: +X in G17
 };
 

@@ -177,6 +177,7 @@ constexpr CycleRules kCycles{
     .q_sign_ignored = true,               // §4.1: "Q must be positive; the sign is ignored"
     .r_beyond_bottom_is_error = true,     // App. D 61101
     .peck_retract_feed = 0.0,
+    .d_is_peck_distance = false,
     .default_shift_direction = 0,         // _ZSFI[5] = 0: -X in G17
 };
 

@@ -48,9 +48,8 @@ SourceLocation cycleLoc(const BlockContext& ctx) {
   return ctx.motionLoc();
 }
 
-}  // namespace
-
-void applyCycleCodes(BlockContext& ctx) {
+// G98/G99, G80, a group-01 code and the cycle code into the cycle state; M03/M04/M05.
+void applyCodes(BlockContext& ctx) {
   // M03/M04/M05 of the block: the direction a cycle restores and Siemens checks (61102).
   for (const WordValue& m : ctx.words.m) {
     if (m.value == 3) ctx.next.spindle_direction = 1;
@@ -78,6 +77,26 @@ void applyCycleCodes(BlockContext& ctx) {
     if (axis >= 0) c.initial = ctx.baseWork()[axis];
   }
   c.code10 = cycle->entry->code10;
+}
+
+// Mazak G73/G83: D is the cycle's d, taken out of the block before the radius offset number
+// reads D (CycleRules::d_is_peck_distance). Modal like the other cycle data.
+void takePeckDistance(BlockContext& ctx) {
+  const CycleRules* rules = ctx.table.cycles;
+  if (!ctx.words.d || !rules || !rules->d_is_peck_distance || !inCycle(ctx)) return;
+  const CycleEntry* e = rules->find(ctx.next.cycle.code10);
+  if (e->kind != ir::HoleCycle::Kind::Peck && e->kind != ir::HoleCycle::Kind::HighSpeedPeck) return;
+  double d = ctx.lengthValue(*ctx.words.d);
+  ctx.next.cycle.d = d;
+  ctx.next.cycle.has_d = d > 0;
+  ctx.words.d.reset();
+}
+
+}  // namespace
+
+void applyCycleCodes(BlockContext& ctx) {
+  applyCodes(ctx);
+  takePeckDistance(ctx);
 }
 
 bool inCycle(const BlockContext& ctx) {
@@ -211,8 +230,9 @@ void lowerCycle(BlockContext& ctx) {
   h.rapid_type = ctx.settings.rapid_type;
   if (peck) {
     h.peck = rules.q_sign_ignored ? std::fabs(c.q) : c.q;
-    h.peck_distance = entry.kind == ir::HoleCycle::Kind::Peck ? ctx.settings.peck_clearance
-                                                              : ctx.settings.peck_return;
+    h.peck_distance = c.has_d ? c.d
+                      : entry.kind == ir::HoleCycle::Kind::Peck ? ctx.settings.peck_clearance
+                                                                : ctx.settings.peck_return;
     if (entry.kind == ir::HoleCycle::Kind::HighSpeedPeck) h.peck_retract_feed = rules.peck_retract_feed;
   }
   if (entry.dwell && c.has_p) h.dwell = entry.p_in_seconds ? c.p : c.p / 1000.0;

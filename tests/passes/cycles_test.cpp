@@ -171,6 +171,25 @@ TEST(Cycles, MazakG73BacksOffAtTheFixedReturnSpeed) {
                {"rapid", {{"Z", 50}}}});
 }
 
+TEST(Cycles, MazakDInAPeckCycleIsTheReturnAmount) {
+  // §13-1-6: D is d0, the return distance (F12 only when D is omitted or 0); it is cycle data
+  // here, not a radius offset number, and stays modal.
+  Lowered r = lower(Dialect::MazakM, "G00 Z10.\nG98 G73 R2. Z-6. Q3. D2. F100.\nX1.\nG80\n",
+                    xyzMachine("decimal_point = \"calculator\""));
+  std::vector<Expected> hole = {{"rapid", {{"Z", 2}}},
+                                {"line", {{"Z", -1}}, {}, false, 100},
+                                {"line", {{"Z", 1}}, {}, false, 9999},
+                                {"line", {{"Z", -4}}, {}, false, 100},
+                                {"line", {{"Z", -2}}, {}, false, 9999},
+                                {"line", {{"Z", -6}}, {}, false, 100},
+                                {"rapid", {{"Z", 10}}}};
+  std::vector<Expected> all = {{"rapid", {{"Z", 10}}}};
+  all.insert(all.end(), hole.begin(), hole.end());
+  all.push_back({"rapid", {{"X", 1}, {"Z", 10}}});
+  all.insert(all.end(), hole.begin(), hole.end());
+  expectMoves(r, kXYZ, all);
+}
+
 TEST(Cycles, G82DwellsPMillisecondsAtTheBottom) {
   Lowered r = lower(Dialect::FanucM, "G00 Z20.\nG99 G82 X1. R2. Z-3. P1500 F50.\nG80\n");
   expectMoves(r, kXYZ,

@@ -202,6 +202,9 @@ struct CycleRules {
   bool q_sign_ignored;              // Siemens §4.1: Q is taken positive; else Q <= 0 is an alarm
   bool r_beyond_bottom_is_error;    // Siemens 61101 (reference plane wrong)
   double peck_retract_feed;         // G73 back-off feed, mm/min (Mazak f2 = 9999); 0: rapid
+  // Mazak §13-1-6 / §13-1-9: D in G73/G83 is d (the return amount / the stop above the last
+  // depth; D omitted or D0: the parameter F12/F13), not a radius offset number.
+  bool d_is_peck_distance;
   // The shift of G76 in the plane (first, second axis): its default direction when the
   // machine file sets none (boring_shift_direction).
   int default_shift_direction;
