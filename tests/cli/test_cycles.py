@@ -57,7 +57,10 @@ class CycleCli(ScratchDirTest):
         prog = self.write("peck.nc", PECK)
         proc = ncc("compile", prog, "--emit=ir", "--print-after=lower", "-o", self.path("out.ir"))
         self.assertEqual(proc.returncode, 0, proc.stderr)
-        text = proc.stdout + open(self.path("out.ir")).read() if os.path.exists(self.path("out.ir")) else proc.stdout
+        text = proc.stdout
+        if os.path.exists(self.path("out.ir")):
+            with open(self.path("out.ir")) as f:
+                text += f.read()
         self.assertEqual(text.count("cycle G83 peck"), 2, text)
 
     def test_bad_cycle_is_the_alarm_and_writes_nothing(self):
