@@ -155,6 +155,14 @@ class Lowering {
   // The block store rides on the IR statement; the writer puts it after the units.
   Lowered operator()(const ir::Prepare&) const { return Lowered(instruction(Opcode::Prepare)); }
 
+  // The `cycles` pass replaces every hole cycle by its moves; one here is a pipeline fault.
+  Lowered operator()(const ir::HoleCycle& c) const {
+    Lowered failed;
+    failed.error = {"NCC9001", absl::StrCat("internal error: a hole cycle (G", c.code10 / 10,
+                                            ") reached the backend: the cycles pass did not run")};
+    return failed;
+  }
+
   Lowered operator()(const ir::SetVariable& v) const {
     Lowered code;
     bytecode::Instruction& value = code.instructions[0];

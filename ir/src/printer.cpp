@@ -138,6 +138,24 @@ struct OperationPrinter {
                         " files, ", p.blocks, " blocks, ", p.store ? p.store->size() : 0,
                         " bytes)");
   }
+  std::string operator()(const HoleCycle& c) const {
+    static constexpr const char* kKinds[] = {"drill", "high-speed-peck", "peck", "tap",
+                                             "fine-bore", "back-bore"};
+    std::string out = absl::StrCat("cycle G", c.code10 / 10,
+                                   c.code10 % 10 ? absl::StrCat(".", c.code10 % 10) : "", " ",
+                                   kKinds[static_cast<int>(c.kind)],
+                                   " work ", axisList(c.hole, axes), " initial ", num(c.initial),
+                                   " R", num(c.r_level), " bottom ", num(c.bottom),
+                                   c.return_to_r ? " G99" : " G98", " F", num(c.feed),
+                                   c.feed_per_rev ? " per-rev" : "");
+    if (c.peck > 0) absl::StrAppend(&out, " Q", num(c.peck), " d", num(c.peck_distance));
+    if (c.dwell > 0) absl::StrAppend(&out, " dwell ", num(c.dwell), c.dwell_revolutions ? " rev" : " s");
+    if (c.feed_out) absl::StrAppend(&out, " out F", num(c.retract_feed));
+    if (c.stop_spindle_at_bottom) absl::StrAppend(&out, " spindle-stop");
+    if (c.program_stop_at_bottom) absl::StrAppend(&out, " program-stop");
+    if (!allZero(c.shift)) absl::StrAppend(&out, " shift(", axisList(c.shift, axes), ")");
+    return out;
+  }
   std::string operator()(const SetVariable& v) const {
     return absl::StrCat("set #", v.number, " = ", v.vacant ? "vacant" : num(v.value));
   }

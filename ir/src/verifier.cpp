@@ -52,6 +52,18 @@ class BlockChecker {
   void operator()(const Prepare& p) {
     if (!p.store || p.store->empty()) add("prepare without a block store");
   }
+  void operator()(const HoleCycle& c) {
+    // Only in work space, before the `cycles` pass replaces it: never in the backend's input.
+    if (options_.require_machine_space) add("a hole cycle reached the backend (the cycles pass did not run)");
+    axes(c.hole, "hole position");
+    if (c.axis < 0 || c.axis >= options_.axis_count) add(absl::StrCat("drilling axis ", c.axis));
+    for (double v : {c.initial, c.r_level, c.bottom, c.peck, c.peck_distance, c.dwell})
+      if (!std::isfinite(v)) add("a hole cycle level or amount is not finite");
+    feed(c.feed);
+    if ((c.kind == HoleCycle::Kind::Peck || c.kind == HoleCycle::Kind::HighSpeedPeck) &&
+        !(c.peck > 0.0))
+      add(absl::StrCat("peck depth ", c.peck, " is not positive"));
+  }
   void operator()(const ReferenceCheck& c) {
     axes(c.position, "position");
     const unsigned all = (1u << options_.axis_count) - 1u;

@@ -92,8 +92,14 @@ std::vector<ParamSpec> buildRegistry() {
                        "is level 1)")
                       .range(1, 9)
                       .atMost(9));
-  specs.push_back(Spec("boring_shift_direction", T::Integer, "siemens-iso-m", "0", 0.0,
-                       "G76/G87 shift direction (GUD7 _ZSFI[5]); 0: shift in -X in G17"));
+  // The default is the dialect's (CycleRules::default_shift_direction); the value here is only
+  // the registry's placeholder.
+  specs.push_back(Spec("boring_shift_direction", T::Integer, "fanuc-m, mazak-m, siemens-iso-m",
+                       "1 (+X in G17) in fanuc-m and mazak-m, 0 (-X) in siemens-iso-m", 0.0,
+                       "G76 shift direction off the wall at the bottom: 1 + first plane axis, 0 "
+                       "or 2 - first, 3 + second, 4 - second (Siemens GUD7 _ZSFI[5]; FANUC "
+                       "No.5101 RD1/RD2, Mazak I14 bits 3-4: FANUC common +X)")
+                      .range(0, 4));
   specs.push_back(Spec("c_axis_clamp_m_code", T::Integer, "fanuc-t", "0 (none)", 0.0,
                        "M code that clamps the C axis in lathe drilling cycles (FANUC No.5110); "
                        "the unclamp code is this + 1")
@@ -233,9 +239,9 @@ std::vector<ParamSpec> buildRegistry() {
                        ParamStringTable{},
                        "Parallel axes by geometry axis, e.g. { X = \"U\" } (MD22930 "
                        "$MC_EXTERN_PARALLEL_GEOAX)"));
-  specs.push_back(Spec("peck_clearance", T::Number, "fanuc-t, siemens-iso-m", "1.0", 1.0,
+  specs.push_back(Spec("peck_clearance", T::Number, "fanuc-m, fanuc-t, mazak-m, siemens-iso-m", "1.0", 1.0,
                        "G83 peck: how far above the last depth the rapid approach stops, d, mm "
-                       "(FANUC No.5115)")
+                       "(FANUC No.5115, Mazak F13, Siemens ISO _ZSFR[1])")
                       .range(0, kInf));
   specs.push_back(Spec("peck_cycle_type", T::String, "fanuc-t", "\"high_speed\"",
                        std::string("high_speed"),
@@ -244,8 +250,8 @@ std::vector<ParamSpec> buildRegistry() {
                       .oneOf({"high_speed", "peck"}));
   specs.push_back(Spec("peck_return", T::Number, "fanuc-m, fanuc-t, mazak-m, siemens-iso-m", "1.0",
                        1.0,
-                       "G73 (and high-speed peck) retract amount d, mm (FANUC No.5114; Siemens "
-                       "ISO _ZSFR[1], 0 meaning 1 mm)")
+                       "G73 (and high-speed peck) retract amount d, mm (FANUC No.5114, Mazak F12; "
+                       "Siemens ISO _ZSFR[1], 0 meaning 1 mm)")
                       .range(0, kInf));
   // The default is the dialect's (DialectBehaviour::rapid_type_default); the value here is
   // only the registry's placeholder.
@@ -324,7 +330,7 @@ std::vector<ParamSpec> buildRegistry() {
   specs.push_back(Spec("t_code_digits", T::Integer, "fanuc-t", "4", 4.0,
                        "Digits in a T word (FANUC No.3032)")
                       .range(1, 8));
-  specs.push_back(Spec("tap_retract_percent", T::Number, "siemens-iso-m", "100", 100.0,
+  specs.push_back(Spec("tap_retract_percent", T::Number, "fanuc-m, mazak-m, siemens-iso-m", "100", 100.0,
                        "Tapping retract speed in % of the tapping speed (GUD7 _ZSFI[2])")
                       .range(1, 200));
   specs.push_back(Spec("tapping_type", T::String, "siemens-iso-m", "\"rigid\"",
@@ -357,22 +363,29 @@ std::vector<ParamSpec> buildRegistry() {
   // stage looks at them): they have no effect in any dialect, so a machine file setting one
   // gets warning NCC0307. Every other key is applied in every dialect.
   static constexpr std::string_view kNotApplied[] = {
-      "base_frames", "boring_shift_direction", "c_axis_clamp_m_code", "c_axis_unclamp_dwell",
+      "base_frames", "c_axis_clamp_m_code", "c_axis_unclamp_dwell",
       "chamfer_address", "comp3d_normal_length", "corner_move_limit",
       "cutting_edge_default", "cycle_safety_clearance", "drawing_dimension_input",
       "fs15_program_format", "g10_geometry_p_limit",
       "gcode_system", "geometry_number_from_tool_select", "geometry_offset_method",
       "geometry_wear_offsets", "index_table_1", "indexing_axes", "interference_check",
       "machine_unit", "offset_applied_at", "offset_number_digits", "outer_corner_connection",
-      "parallel_axes", "peck_clearance", "peck_cycle_type", "peck_return", "reset_feed_mode",
+      "parallel_axes", "peck_cycle_type", "reset_feed_mode",
       "rigid_tap_retract_override", "rotation_angle_incremental", "rough_finish_pass_type1",
       "rough_finish_pass_type2", "scale_factor_unit", "scale_per_axis", "second_geometry_axes",
-      "spindle_encoder", "startup_type", "t_code_digits", "tap_retract_percent", "tapping_type",
+      "spindle_encoder", "startup_type", "t_code_digits", "tapping_type",
       "thread_chamfer_signal", "tnrc_lookahead_blocks", "wear_offset_method"};
-  for (ParamSpec& spec : out)
+  // The hole-cycle keys act in the mill dialects' cycles (docs/cycles.md), not yet in fanuc-t.
+  static constexpr std::string_view kMillCycles[] = {"boring_shift_direction", "peck_clearance",
+                                                     "peck_return", "tap_retract_percent"};
+  for (ParamSpec& spec : out) {
     if (std::find(std::begin(kNotApplied), std::end(kNotApplied), spec.key) !=
         std::end(kNotApplied))
       spec.applied_in = "";
+    if (std::find(std::begin(kMillCycles), std::end(kMillCycles), spec.key) !=
+        std::end(kMillCycles))
+      spec.applied_in = "fanuc-m, mazak-m, siemens-iso-m";
+  }
   std::sort(out.begin(), out.end(),
             [](const ParamSpec& a, const ParamSpec& b) { return a.key < b.key; });
   return out;

@@ -37,7 +37,6 @@ std::string groupLabel(const GCodeEntry& e) {
 
 // Addresses of features ncc does not implement yet, with what they are for.
 const char* unsupportedAddress(std::string_view a) {
-  if (a == "Q") return "canned cycle data";
   if (a == "E") return "precise thread lead";
   if (a == ",A") return "drawing angle";
   return nullptr;
@@ -204,6 +203,16 @@ class Decoder {
     if (a == "S") return store(out_.s, std::move(wv));
     if (a == "P") return store(out_.p, std::move(wv));
     if (a == "L") return store(out_.l, std::move(wv));
+    if (a == "Q") {
+      // Cycle data (lowering_cycles.cpp): only with a hole cycle in force or in the block.
+      const auto& cycle = out_.group(GGroup::Cycle);
+      if (!ctx_.cycle_in_force && !(cycle && cycle->entry->action == GAction::HoleCycle)) {
+        fail(Alarm::AddressWithoutMeaning, w.loc,
+             "address Q (canned cycle data) has no meaning outside a hole cycle");
+        return;
+      }
+      return store(out_.q, std::move(wv));
+    }
     if (a == "H") return store(out_.h, std::move(wv), b.duplicate_h_d_last_wins);
     if (a == "D") return store(out_.d, std::move(wv), b.duplicate_h_d_last_wins);
     if (a == "M") {

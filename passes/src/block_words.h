@@ -39,7 +39,7 @@ struct DecodedBlock {
   std::optional<GWord> one_shot;  // G04 G10 G27 G28 G30 G52 G53 G92 G92.1
   std::optional<GWord> exact_stop;  // G09
   std::array<std::optional<WordValue>, kMaxAxes> axes;
-  std::optional<WordValue> i, j, k, r, f, s, h, d, p, l;
+  std::optional<WordValue> i, j, k, r, f, s, h, d, p, l, q;
   std::vector<WordValue> t, m;
   std::optional<WordValue> corner;  // ,C (chamfer) or ,R (rounding)
   std::optional<WordValue> line_angle;  // Mazak A (not an axis): the angle of a G01 line
@@ -60,6 +60,7 @@ struct DecodeContext {
   SameGroupPolicy policy;
   ir::DistanceMode modal_distance;  // G90/G91 before the block
   DiagnosticEngine& diags;
+  bool cycle_in_force = false;      // a hole cycle is in force: Q is cycle data
 };
 
 // Returns nullopt (after reporting) when the block has an error.

@@ -25,6 +25,24 @@ struct UnknownState {
   bool any() const { return axes != 0 || groups != 0 || feed; }
 };
 
+// The canned hole cycle in force (lowering_cycles.cpp): its data stay modal from the first
+// cycle block until G80 or a group-01 code clears them (docs/cycles.md).
+struct CycleState {
+  int code10 = 0;               // the cycle's G code x 10; 0: none (G80)
+  bool return_to_r = false;     // G99 in force (group 10; G98 at power-on); kept across G80
+  double initial = 0.0;         // the initial level, work coordinates on the drilling axis
+  bool has_r = false, has_z = false, has_q = false;
+  double r = 0.0;               // the R level, work coordinates
+  double z = 0.0;               // the bottom, work coordinates
+  bool z_from_r = false;        // Z was given in G91: the bottom follows a new R
+  double z_increment = 0.0;     // that distance from R
+  double q = 0.0;               // Q as given (mm)
+  double p = 0.0;               // P as given (the cycle entry says its unit)
+  bool has_p = false;
+  double d = 0.0;               // Mazak G73/G83 D (mm); 0: the parameter
+  bool has_d = false;
+};
+
 struct ControllerState {
   ir::Modal modal;
   GAction motion = GAction::Rapid;     // group 01
@@ -49,6 +67,8 @@ struct ControllerState {
   bool feed_after_inverse_time = false;  // G94/G95 after G93 without a new F yet
   int last_g10_l2_p = 1;               // Mazak: G10 L2 without P reuses the last P
   UnknownState unknown;                // nothing after power-on; see UnknownState
+  CycleState cycle;                    // the canned hole cycle in force
+  int spindle_direction = 0;           // +1 M03, -1 M04, 0 stopped (M05, power-on)
   // Axes whose commanded position is where a G31 stopped: known when the program runs, not
   // here (`position` holds G31's end point for them). An absolute word makes one known again
   // (lowering_skip.cpp).

@@ -27,6 +27,8 @@ void WorkToMachinePass::accept(ir::Block block) {
             }
             o.space = ir::Space::Machine;
           }
+          // ir::HoleCycle: the cycles pass (registered before this one) replaced it; one left
+          // here stays in work space and the verifier / backend report it.
         },
         op);
   }

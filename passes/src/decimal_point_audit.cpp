@@ -34,7 +34,7 @@ void DecimalPointAudit::block(const DecodedBlock& words, const ValueRules& value
     else
       word(*w, values.linear(w->value, w->point, units), "mm");
   }
-  for (const auto* w : {&words.i, &words.j, &words.k, &words.r})
+  for (const auto* w : {&words.i, &words.j, &words.k, &words.r, &words.q})
     if (*w) word(**w, values.linear((*w)->value, (*w)->point, units), "mm");
 }
 

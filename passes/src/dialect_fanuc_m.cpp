@@ -68,22 +68,22 @@ constexpr GCodeEntry kCodes[] = {
     {434, G::LengthComp, 8, false, A::NotSupported, 0, "tool center point control"},
     {490, G::LengthComp, 8, true, A::LengthCancel, 0, "tool length compensation cancel"},
     // group 09
-    {730, G::Cycle, 9, false, A::NotSupported, 0, "peck drilling cycle"},
-    {740, G::Cycle, 9, false, A::NotSupported, 0, "left-hand tapping cycle"},
-    {760, G::Cycle, 9, false, A::NotSupported, 0, "fine boring cycle"},
-    {800, G::Cycle, 9, true, A::CancelNoEffect, 0, "canned cycle cancel"},
-    {810, G::Cycle, 9, false, A::NotSupported, 0, "canned drilling cycle"},
-    {820, G::Cycle, 9, false, A::NotSupported, 0, "canned drilling cycle with dwell"},
-    {830, G::Cycle, 9, false, A::NotSupported, 0, "canned peck drilling cycle"},
-    {840, G::Cycle, 9, false, A::NotSupported, 0, "canned tapping cycle"},
-    {850, G::Cycle, 9, false, A::NotSupported, 0, "canned boring cycle"},
-    {860, G::Cycle, 9, false, A::NotSupported, 0, "canned boring cycle"},
-    {870, G::Cycle, 9, false, A::NotSupported, 0, "canned back boring cycle"},
-    {880, G::Cycle, 9, false, A::NotSupported, 0, "canned boring cycle"},
-    {890, G::Cycle, 9, false, A::NotSupported, 0, "canned boring cycle"},
+    {730, G::Cycle, 9, false, A::HoleCycle, 0, "peck drilling cycle"},
+    {740, G::Cycle, 9, false, A::HoleCycle, 0, "left-hand tapping cycle"},
+    {760, G::Cycle, 9, false, A::HoleCycle, 0, "fine boring cycle"},
+    {800, G::Cycle, 9, true, A::CycleCancel, 0, "canned cycle cancel"},
+    {810, G::Cycle, 9, false, A::HoleCycle, 0, "canned drilling cycle"},
+    {820, G::Cycle, 9, false, A::HoleCycle, 0, "canned drilling cycle with dwell"},
+    {830, G::Cycle, 9, false, A::HoleCycle, 0, "canned peck drilling cycle"},
+    {840, G::Cycle, 9, false, A::HoleCycle, 0, "canned tapping cycle"},
+    {850, G::Cycle, 9, false, A::HoleCycle, 0, "canned boring cycle"},
+    {860, G::Cycle, 9, false, A::HoleCycle, 0, "canned boring cycle"},
+    {870, G::Cycle, 9, false, A::HoleCycle, 0, "canned back boring cycle"},
+    {880, G::Cycle, 9, false, A::HoleCycle, 0, "canned boring cycle"},
+    {890, G::Cycle, 9, false, A::HoleCycle, 0, "canned boring cycle"},
     // group 10: return level, meaningful only with canned cycles (never active)
-    {980, G::ReturnLevel, 10, true, A::CancelNoEffect, 0, "canned cycle initial level return"},
-    {990, G::ReturnLevel, 10, false, A::CancelNoEffect, 0, "canned cycle R point level return"},
+    {980, G::ReturnLevel, 10, true, A::ReturnInitial, 0, "canned cycle initial level return"},
+    {990, G::ReturnLevel, 10, false, A::ReturnR, 0, "canned cycle R point level return"},
     // group 11
     {500, G::Scaling, 11, true, A::CancelNoEffect, 0, "scaling cancel"},
     {510, G::Scaling, 11, false, A::NotSupported, 0, "scaling"},
@@ -185,8 +185,46 @@ constexpr std::string_view kAlarms[] = {
     "PS0055",   // CornerTooLong: missing move value in CNR/CHF (FANUC common)
     "PS0055",   // CornerTooLongAfter: the same alarm (FANUC common)
     "PS0051",   // CornerContextChange: plane selected in the next block (FANUC common)
+    "NCC2096",  // CycleDepthMissing (no FANUC number known)
+    "PS0045",   // CyclePeckMissing: address Q not found (G73/G83) (FANUC common)
+    "NCC2097",  // CyclePeckInvalid: Q zero or negative (no FANUC number known)
+    "PS0011",   // CycleFeedMissing: feed zero (command)
+    "NCC2098",  // CycleSpindleDirection (not raised)
+    "NCC2099",  // CycleReferencePlane (not raised)
 };
 static_assert(std::size(kAlarms) == static_cast<size_t>(Alarm::kCount));
+
+// The hole cycles (docs/cycles.md). There is no FANUC mill manual here: the sequences are the
+// FANUC-family ones the Mazak EIA/ISO manual shares (§13-1, §13-2), and the details marked
+// "FANUC common" (no P in G73/G83/G85/G86, the G84 dwell at R, the +X shift of G76 with
+// No.5101 RD1 = RD2 = 0) are common FANUC knowledge.
+using CK = ir::HoleCycle::Kind;
+constexpr CycleEntry kCycleEntries[] = {
+    // code kind              dwell  feed_out stop   tap  P in s shift  M00   dwell R pitch
+    {730, CK::HighSpeedPeck, false, false, false, 0, false, false, false, false, false},
+    {740, CK::Tap, true, false, false, -1, false, false, false, true, false},
+    {760, CK::FineBore, true, false, false, 0, false, true, false, false, false},
+    {810, CK::Drill, false, false, false, 0, false, false, false, false, false},
+    {820, CK::Drill, true, false, false, 0, false, false, false, false, false},
+    {830, CK::Peck, false, false, false, 0, false, false, false, false, false},
+    {840, CK::Tap, true, false, false, 1, false, false, false, true, false},
+    {850, CK::Drill, false, true, false, 0, false, false, false, false, false},
+    {860, CK::Drill, false, false, true, 0, false, false, false, false, false},
+    {870, CK::BackBore, true, false, false, 0, false, true, false, false, false},
+    {880, CK::Drill, true, false, true, 0, false, false, true, false, false},
+    {890, CK::Drill, true, true, false, 0, false, false, false, false, false},
+};
+constexpr CycleRules kCycles{
+    .entries = kCycleEntries,
+    .repeat_address = 'K',
+    .positioning_in_motion_mode = false,  // FANUC common: positioning is always rapid
+    .spindle_direction_required = false,
+    .q_sign_ignored = false,
+    .r_beyond_bottom_is_error = false,
+    .peck_retract_feed = 0.0,             // G73 backs off at rapid (FANUC common)
+    .d_is_peck_distance = false,
+    .default_shift_direction = 1,         // FANUC common: RD1 = RD2 = 0, +X in G17
+};
 
 constexpr DialectBehaviour kBehaviour{
     .same_group_default = "error",          // the issue asks for an alarm (docs/semantics.md)
@@ -248,6 +286,7 @@ constexpr SystemVariableRange kSystemVariables[] = {
 };
 }  // namespace
 
-const DialectTable kFanucMTable{Dialect::FanucM, kCodes, kAlarms, kBehaviour, kSystemVariables};
+const DialectTable kFanucMTable{Dialect::FanucM, kCodes, kAlarms, kBehaviour, kSystemVariables,
+                                &kCycles};
 
 }  // namespace ncc::passes

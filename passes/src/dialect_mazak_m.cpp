@@ -74,29 +74,29 @@ constexpr GCodeEntry kCodes[] = {
     // group 09
     {711, G::Cycle, 9, false, A::NotSupported, 0, "chamfering cycle"},
     {721, G::Cycle, 9, false, A::NotSupported, 0, "chamfering cycle"},
-    {730, G::Cycle, 9, false, A::NotSupported, 0, "high-speed deep hole drilling cycle"},
-    {740, G::Cycle, 9, false, A::NotSupported, 0, "reverse tapping cycle"},
+    {730, G::Cycle, 9, false, A::HoleCycle, 0, "high-speed deep hole drilling cycle"},
+    {740, G::Cycle, 9, false, A::HoleCycle, 0, "reverse tapping cycle"},
     {750, G::Cycle, 9, false, A::NotSupported, 0, "boring cycle"},
-    {760, G::Cycle, 9, false, A::NotSupported, 0, "fine boring cycle"},
+    {760, G::Cycle, 9, false, A::HoleCycle, 0, "fine boring cycle"},
     {770, G::Cycle, 9, false, A::NotSupported, 0, "back spot facing cycle"},
     {780, G::Cycle, 9, false, A::NotSupported, 0, "boring cycle"},
     {790, G::Cycle, 9, false, A::NotSupported, 0, "boring cycle"},
-    {800, G::Cycle, 9, true, A::CancelNoEffect, 0, "fixed cycle cancel"},
-    {810, G::Cycle, 9, false, A::NotSupported, 0, "canned drilling cycle"},
-    {820, G::Cycle, 9, false, A::NotSupported, 0, "canned drilling cycle with dwell"},
-    {830, G::Cycle, 9, false, A::NotSupported, 0, "canned deep hole drilling cycle"},
-    {840, G::Cycle, 9, false, A::NotSupported, 0, "canned tapping cycle"},
-    {842, G::Cycle, 9, false, A::NotSupported, 0, "synchronous tapping cycle"},
-    {843, G::Cycle, 9, false, A::NotSupported, 0, "synchronous reverse tapping cycle"},
-    {850, G::Cycle, 9, false, A::NotSupported, 0, "canned reaming cycle"},
-    {860, G::Cycle, 9, false, A::NotSupported, 0, "canned boring cycle"},
-    {870, G::Cycle, 9, false, A::NotSupported, 0, "canned back boring cycle"},
-    {880, G::Cycle, 9, false, A::NotSupported, 0, "canned boring cycle"},
-    {890, G::Cycle, 9, false, A::NotSupported, 0, "canned boring cycle"},
+    {800, G::Cycle, 9, true, A::CycleCancel, 0, "fixed cycle cancel"},
+    {810, G::Cycle, 9, false, A::HoleCycle, 0, "canned drilling cycle"},
+    {820, G::Cycle, 9, false, A::HoleCycle, 0, "canned drilling cycle with dwell"},
+    {830, G::Cycle, 9, false, A::HoleCycle, 0, "canned deep hole drilling cycle"},
+    {840, G::Cycle, 9, false, A::HoleCycle, 0, "canned tapping cycle"},
+    {842, G::Cycle, 9, false, A::HoleCycle, 0, "synchronous tapping cycle"},
+    {843, G::Cycle, 9, false, A::HoleCycle, 0, "synchronous reverse tapping cycle"},
+    {850, G::Cycle, 9, false, A::HoleCycle, 0, "canned reaming cycle"},
+    {860, G::Cycle, 9, false, A::HoleCycle, 0, "canned boring cycle"},
+    {870, G::Cycle, 9, false, A::HoleCycle, 0, "canned back boring cycle"},
+    {880, G::Cycle, 9, false, A::HoleCycle, 0, "canned boring cycle"},
+    {890, G::Cycle, 9, false, A::HoleCycle, 0, "canned boring cycle"},
     {1300, G::Cycle, 9, false, A::NotSupported, 0, "TORNADO cycle"},
     // group 10: return level, only meaningful with canned cycles (never active)
-    {980, G::ReturnLevel, 10, true, A::CancelNoEffect, 0, "fixed cycle initial point level return"},
-    {990, G::ReturnLevel, 10, false, A::CancelNoEffect, 0, "fixed cycle R point level return"},
+    {980, G::ReturnLevel, 10, true, A::ReturnInitial, 0, "fixed cycle initial point level return"},
+    {990, G::ReturnLevel, 10, false, A::ReturnR, 0, "fixed cycle R point level return"},
     // group 11
     {500, G::Scaling, 11, true, A::CancelNoEffect, 0, "scaling cancel"},
     {510, G::Scaling, 11, false, A::NotSupported, 0, "scaling"},
@@ -175,8 +175,48 @@ constexpr std::string_view kAlarms[] = {
     "913",      // CornerTooLong: COMMANDE R/C INCORRECT
     "914",      // CornerTooLongAfter: COMMANDE INCORRECT APRES R/C
     "NCC2095",  // CornerContextChange (no number stated)
+    "NCC2096",  // CycleDepthMissing (no number in the manual)
+    "809",      // CyclePeckMissing: §13-1-3 "Q omitted or Q0: the alarm"
+    "809",      // CyclePeckInvalid: §13-1-6 Q0 -> 809 NOMBRE NON AUTORISE
+    "816",      // CycleFeedMissing: AVANCE D'USINAGE = ZERO
+    "NCC2098",  // CycleSpindleDirection (not raised)
+    "NCC2099",  // CycleReferencePlane (not raised)
 };
 static_assert(std::size(kAlarms) == static_cast<size_t>(Alarm::kCount));
+
+// The hole cycles, §13-1-2 (list and arguments) and §13-1-3 ff. (docs/cycles.md). P is a dwell
+// in the cycles whose format has it; G74/G84 count it in seconds (§13-1-2 "Remarques").
+using CK = ir::HoleCycle::Kind;
+constexpr CycleEntry kCycleEntries[] = {
+    // code kind              dwell  feed_out stop   tap  P in s shift  M00   dwell R pitch
+    {730, CK::HighSpeedPeck, true, false, false, 0, false, false, false, false, false},
+    {740, CK::Tap, true, false, false, -1, true, false, false, false, false},
+    {760, CK::FineBore, true, false, false, 0, false, true, false, false, false},
+    {810, CK::Drill, false, false, false, 0, false, false, false, false, false},
+    {820, CK::Drill, true, false, false, 0, false, false, false, false, false},
+    {830, CK::Peck, true, false, false, 0, false, false, false, false, false},
+    {840, CK::Tap, true, false, false, 1, true, false, false, false, false},
+    // §13-1-22: synchronous tapping, F the pitch; P at Z and at R (in seconds, as G84's);
+    // the way out at K90 % (tap_retract_percent).
+    {842, CK::Tap, true, false, false, 1, true, false, false, true, true},
+    {843, CK::Tap, true, false, false, -1, true, false, false, true, true},
+    {850, CK::Drill, true, true, false, 0, false, false, false, false, false},
+    {860, CK::Drill, true, false, true, 0, false, false, false, false, false},
+    {870, CK::BackBore, true, false, false, 0, false, true, false, false, false},
+    {880, CK::Drill, true, false, true, 0, false, false, true, false, false},
+    {890, CK::Drill, true, true, false, 0, false, false, false, false, false},
+};
+constexpr CycleRules kCycles{
+    .entries = kCycleEntries,
+    .repeat_address = 'L',                // §13-1-3: L repeats, L0 stores the data only
+    .positioning_in_motion_mode = true,   // §13-1-1 movement 1: the group-01 code (G01: feed)
+    .spindle_direction_required = false,
+    .q_sign_ignored = false,              // Q0 -> 809; a negative Q likewise (not a depth)
+    .r_beyond_bottom_is_error = false,
+    .peck_retract_feed = 9999.0,          // §13-1-6: f2, the fixed return speed, 9999 mm/min
+    .d_is_peck_distance = true,
+    .default_shift_direction = 1,         // I14 bits 3-4 = 0: +X in G17
+};
 
 constexpr DialectBehaviour kBehaviour{
     .same_group_default = "per_word",       // §5-1: G90X300. G91Y100.
@@ -237,6 +277,7 @@ constexpr SystemVariableRange kSystemVariables[] = {
 };
 }  // namespace
 
-const DialectTable kMazakMTable{Dialect::MazakM, kCodes, kAlarms, kBehaviour, kSystemVariables};
+const DialectTable kMazakMTable{Dialect::MazakM, kCodes, kAlarms, kBehaviour, kSystemVariables,
+                                &kCycles};
 
 }  // namespace ncc::passes

@@ -40,21 +40,21 @@ constexpr GCodeEntry kCodes[] = {
     {440, G::LengthComp, 8, false, A::LengthMinus, 0, "tool length compensation -"},
     {490, G::LengthComp, 8, true, A::LengthCancel, 0, "tool length compensation cancel"},
     // group 9
-    {730, G::Cycle, 9, false, A::NotSupported, 0, "high-speed peck drilling cycle"},
-    {740, G::Cycle, 9, false, A::NotSupported, 0, "counter tapping cycle"},
-    {760, G::Cycle, 9, false, A::NotSupported, 0, "fine boring cycle"},
-    {800, G::Cycle, 9, true, A::CancelNoEffect, 0, "canned cycle cancel"},
-    {810, G::Cycle, 9, false, A::NotSupported, 0, "canned drilling cycle"},
-    {820, G::Cycle, 9, false, A::NotSupported, 0, "canned drilling cycle with dwell"},
-    {830, G::Cycle, 9, false, A::NotSupported, 0, "canned peck drilling cycle"},
-    {840, G::Cycle, 9, false, A::NotSupported, 0, "canned tapping cycle"},
-    {850, G::Cycle, 9, false, A::NotSupported, 0, "canned boring cycle"},
-    {860, G::Cycle, 9, false, A::NotSupported, 0, "canned boring cycle"},
-    {870, G::Cycle, 9, false, A::NotSupported, 0, "canned back boring cycle"},
-    {890, G::Cycle, 9, false, A::NotSupported, 0, "canned boring cycle"},
+    {730, G::Cycle, 9, false, A::HoleCycle, 0, "high-speed peck drilling cycle"},
+    {740, G::Cycle, 9, false, A::HoleCycle, 0, "counter tapping cycle"},
+    {760, G::Cycle, 9, false, A::HoleCycle, 0, "fine boring cycle"},
+    {800, G::Cycle, 9, true, A::CycleCancel, 0, "canned cycle cancel"},
+    {810, G::Cycle, 9, false, A::HoleCycle, 0, "canned drilling cycle"},
+    {820, G::Cycle, 9, false, A::HoleCycle, 0, "canned drilling cycle with dwell"},
+    {830, G::Cycle, 9, false, A::HoleCycle, 0, "canned peck drilling cycle"},
+    {840, G::Cycle, 9, false, A::HoleCycle, 0, "canned tapping cycle"},
+    {850, G::Cycle, 9, false, A::HoleCycle, 0, "canned boring cycle"},
+    {860, G::Cycle, 9, false, A::HoleCycle, 0, "canned boring cycle"},
+    {870, G::Cycle, 9, false, A::HoleCycle, 0, "canned back boring cycle"},
+    {890, G::Cycle, 9, false, A::HoleCycle, 0, "canned boring cycle"},
     // group 10: return level, only meaningful with canned cycles (never active)
-    {980, G::ReturnLevel, 10, true, A::CancelNoEffect, 0, "canned cycle initial level return"},
-    {990, G::ReturnLevel, 10, false, A::CancelNoEffect, 0, "canned cycle R level return"},
+    {980, G::ReturnLevel, 10, true, A::ReturnInitial, 0, "canned cycle initial level return"},
+    {990, G::ReturnLevel, 10, false, A::ReturnR, 0, "canned cycle R level return"},
     // group 11
     {500, G::Scaling, 11, true, A::CancelNoEffect, 0, "scaling cancel"},
     {510, G::Scaling, 11, false, A::NotSupported, 0, "scaling"},
@@ -150,8 +150,42 @@ constexpr std::string_view kAlarms[] = {
     "NCC2093",  // CornerTooLong
     "NCC2094",  // CornerTooLongAfter
     "NCC2095",  // CornerContextChange (§4.8.2: plane or coordinate change)
+    "61808",    // CycleDepthMissing: final or single drilling depth missing (App. D)
+    "61808",    // CyclePeckMissing: the same alarm (Q is the single depth)
+    "61808",    // CyclePeckInvalid: Q0 is no single depth
+    "61003",    // CycleFeedMissing: no feed programmed in the cycle
+    "61102",    // CycleSpindleDirection: no spindle direction programmed
+    "61101",    // CycleReferencePlane: reference plane wrong
 };
 static_assert(std::size(kAlarms) == static_cast<size_t>(Alarm::kCount));
+
+// The hole cycles, §4.1 (shell cycles CYCLE381M-CYCLE387M; docs/cycles.md). P is in ms.
+using CK = ir::HoleCycle::Kind;
+constexpr CycleEntry kCycleEntries[] = {
+    // code kind              dwell  feed_out stop   tap  P in s shift  M00   dwell R pitch
+    {730, CK::HighSpeedPeck, false, false, false, 0, false, false, false, false, false},
+    {740, CK::Tap, true, false, false, -1, false, false, false, false, false},
+    {760, CK::FineBore, true, false, false, 0, false, true, false, false, false},
+    {810, CK::Drill, false, false, false, 0, false, false, false, false, false},
+    {820, CK::Drill, true, false, false, 0, false, false, false, false, false},
+    {830, CK::Peck, false, false, false, 0, false, false, false, false, false},
+    {840, CK::Tap, true, false, false, 1, false, false, false, false, false},
+    {850, CK::Drill, false, true, false, 0, false, false, false, false, false},
+    {860, CK::Drill, false, false, true, 0, false, false, false, false, false},
+    {870, CK::BackBore, true, false, false, 0, false, true, false, false, false},
+    {890, CK::Drill, true, true, false, 0, false, false, false, false, false},
+};
+constexpr CycleRules kCycles{
+    .entries = kCycleEntries,
+    .repeat_address = 'K',
+    .positioning_in_motion_mode = false,
+    .spindle_direction_required = true,   // App. D 61102
+    .q_sign_ignored = true,               // §4.1: "Q must be positive; the sign is ignored"
+    .r_beyond_bottom_is_error = true,     // App. D 61101
+    .peck_retract_feed = 0.0,
+    .d_is_peck_distance = false,
+    .default_shift_direction = 0,         // _ZSFI[5] = 0: -X in G17
+};
 
 constexpr DialectBehaviour kBehaviour{
     .same_group_default = "last_wins",      // §3.2.1: the one given last is effective
@@ -192,6 +226,7 @@ constexpr DialectBehaviour kBehaviour{
 constexpr std::span<const SystemVariableRange> kSystemVariables{};
 }  // namespace
 
-const DialectTable kSiemensIsoMTable{Dialect::SiemensIsoM, kCodes, kAlarms, kBehaviour, kSystemVariables};
+const DialectTable kSiemensIsoMTable{Dialect::SiemensIsoM, kCodes, kAlarms, kBehaviour, kSystemVariables,
+                                &kCycles};
 
 }  // namespace ncc::passes

@@ -99,7 +99,8 @@ void checkUnused(BlockContext& ctx) {
                    (ctx.next.motion == GAction::ArcCW || ctx.next.motion == GAction::ArcCCW);
   unused(ctx.words.i, ctx.used_ijk || arc_block);
   unused(ctx.words.j, ctx.used_ijk || arc_block);
-  unused(ctx.words.k, ctx.used_ijk || arc_block);
+  unused(ctx.words.k, ctx.used_ijk || ctx.used_k || arc_block);
+  unused(ctx.words.q, ctx.used_q);
   unused(ctx.words.r, ctx.used_r);
   unused(ctx.words.p, ctx.used_p);
   unused(ctx.words.l, ctx.used_l);
@@ -196,13 +197,21 @@ LowerResult lowerBlock(LoweringCore& core, const ast::Block& block) {
   LowerResult result;
   DecodeContext decode{ctx.table, *core.machine, ctx.settings.policy, core.cs.modal.distance,
                        core.diags};
+  decode.cycle_in_force = core.cs.cycle.code10 != 0;
   auto decoded = decodeBlock(block, decode);
   if (!decoded) return reject(ctx);
   ctx.words = std::move(*decoded);
 
   applyModalCodes(ctx, result);
+  applyCycleCodes(ctx);
   rejectParallelAxisPlane(ctx, *core.machine);
-  core.decimal_points.block(ctx.words, ctx.settings.values, ctx.next.modal.units, *core.machine);
+  if (ctx.words.k && repeatCountIsK(ctx)) {  // a cycle's K counts holes: no length
+    DecodedBlock audited = ctx.words;
+    audited.k.reset();
+    core.decimal_points.block(audited, ctx.settings.values, ctx.next.modal.units, *core.machine);
+  } else {
+    core.decimal_points.block(ctx.words, ctx.settings.values, ctx.next.modal.units, *core.machine);
+  }
   Dependence depends = dependsOnUnknown(ctx);
   ctx.silent = depends.words;
   ctx.checkFormats();
@@ -219,6 +228,8 @@ LowerResult lowerBlock(LoweringCore& core, const ast::Block& block) {
   ctx.silent = depends.words || depends.motion;
   if (ctx.words.one_shot)
     oneShot(ctx);
+  else if (inCycle(ctx))
+    lowerCycle(ctx);
   else
     lowerMotion(ctx);
   machineFunctions(ctx, result);

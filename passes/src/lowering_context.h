@@ -112,6 +112,7 @@ struct BlockContext {
   std::optional<ir::CornerRequest> corner;
   // G45-G48: the signed amount (+-1 or 2 x the D offset, mm) each move lengthens by.
   double position_offset = 0.0;
+  bool used_k = false, used_q = false;  // K as a cycle's repeat count, Q as cycle data
   // The axes a G31 in this block moves: where they stop is known only at run time.
   AxisMask skip_moved = 0;
   bool failed = false;
@@ -231,6 +232,18 @@ Dependence dependsOnUnknown(const BlockContext& ctx);
 // set from the word when the block itself did not get to it); an axis the block named on an
 // unknown base stays unknown.
 void relearn(BlockContext& ctx);
+
+// ---- lowering_cycles.cpp ----
+// G73-G89, G80, G98/G99 and a group-01 code into the cycle state; M03/M04/M05 into the
+// spindle direction the cycles read. Before the block's motion.
+void applyCycleCodes(BlockContext& ctx);
+// Whether the block is a cycle block (a cycle in force and no one-shot code).
+bool inCycle(const BlockContext& ctx);
+// A cycle block of a dialect whose repeat count is K (K is then no length).
+bool repeatCountIsK(const BlockContext& ctx);
+// A block in cycle mode: its cycle words into the cycle state, one ir::HoleCycle per hole
+// (repeats K/L), the position at the end of the last one.
+void lowerCycle(BlockContext& ctx);
 
 // ---- lowering_machine_functions.cpp ----
 void dwell(BlockContext& ctx, const GWord& g);  // G04

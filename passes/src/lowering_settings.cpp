@@ -45,6 +45,13 @@ LoweringSettings LoweringSettings::resolve(const DialectTable& table,
       }
     }
   }
+  // Siemens §4.1 _ZSFR[1]: "0 means 1 mm" (a positive value below 1 for a smaller d); the
+  // machine file holds d itself, so 0 is kept as given elsewhere.
+  s.peck_return = p.getNumber("peck_return", 1.0);
+  s.peck_clearance = p.getNumber("peck_clearance", 1.0);
+  s.boring_shift_direction = static_cast<int>(std::lround(p.getNumber(
+      "boring_shift_direction", table.cycles ? table.cycles->default_shift_direction : 1)));
+  s.tap_retract_percent = p.getNumber("tap_retract_percent", 100.0);
   s.block_skip = p.getBool("block_skip", false);
   if (const auto* levels = p.getNumberList("block_skip_levels"))
     for (double l : *levels) s.skip_levels.insert(static_cast<int>(std::lround(l)));

@@ -33,6 +33,11 @@ struct LoweringSettings {
   std::array<AxisValues, 4> reference{};  // reference points 1..4, machine coordinates
   bool block_skip = false;             // Mazak's single block-skip switch
   std::set<int> skip_levels;           // block_skip_levels
+  // Canned hole cycles (docs/cycles.md, Parameters).
+  double peck_return = 1.0;        // G73 back-off d (FANUC No.5114, Mazak F12, Siemens _ZSFR[1])
+  double peck_clearance = 1.0;     // G83 stop above the last depth d (FANUC No.5115, Mazak F13)
+  int boring_shift_direction = 1;  // G76 shift: 1 +first plane axis, 0/2 -first, 3 +second, 4 -second
+  double tap_retract_percent = 100.0;  // tapping way out, % of the way in (Siemens _ZSFI[2])
   // Power-on state (reset_unit, reset_motion_mode, reset_plane), resolved from the strings.
   ir::Units reset_unit = ir::Units::Millimetre;
   GAction reset_motion = GAction::Rapid;

@@ -1,5 +1,6 @@
 #include "ncc/passes/pass_registry.h"
 
+#include "cycle_expansion.h"
 #include "ncc/passes/coordinate_transform.h"
 #include "ncc/passes/travel_check.h"
 #include "corners.h"
@@ -11,6 +12,11 @@ namespace {
 bool always(const PipelineOptions&) { return true; }
 bool inMachineSpace(const PipelineOptions& o) { return o.to_machine_space; }
 bool checksTravel(const PipelineOptions& o) { return o.to_machine_space && o.travel_limits; }
+
+std::unique_ptr<ir::BlockSink> cycles(ir::BlockSink& next, const PipelineOptions& o,
+                                      DiagnosticEngine&) {
+  return std::make_unique<CycleExpansionPass>(next, o.axis_count);
+}
 
 std::unique_ptr<ir::BlockSink> workToMachine(ir::BlockSink& next, const PipelineOptions& o,
                                              DiagnosticEngine&) {
@@ -32,6 +38,8 @@ std::unique_ptr<ir::BlockSink> travelCheck(ir::BlockSink& next, const PipelineOp
 constexpr PassInfo kPasses[] = {
     {"lower", "AST blocks to canonical IR blocks (modal state, units, work-space targets)",
      always, nullptr, false},
+    {"cycles", "canned hole cycles (G73-G89) to their rapid, feed, dwell and spindle operations",
+     always, cycles, false},
     {"corners", ",C / ,R: inserts the chamfer line or rounding arc between two moves", always,
      corners, false},
     {"work-to-machine", "adds each block's frame: work offset, shifts, tool length", inMachineSpace,

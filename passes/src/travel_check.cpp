@@ -71,6 +71,8 @@ void TravelCheckPass::accept(ir::Block block) {
                    [](const ir::ReferenceCheck&) {},  // checks the position, does not move
                    [](const ir::SetVariable&) {},
                    [](const ir::Prepare&) {},  // the blocks after it are checked as they run
+                   // Expanded by the cycles pass before work-to-machine: never seen here.
+                   [](const ir::HoleCycle&) {},
                },
                op);
     if (beyond && !reported) {

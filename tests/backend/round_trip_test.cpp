@@ -5,6 +5,7 @@
 
 #include "gtest/gtest.h"
 #include "ncc/backend/bytecode_writer.h"
+#include "ncc/backend/encode.h"
 #include "ncc/bytecode/disassembler.h"
 #include "ncc/bytecode/loader.h"
 #include "ncc/bytecode/verifier.h"
@@ -207,6 +208,31 @@ TEST(BytecodeWriter, StringPoolHoldsFileNamesWithoutFolders) {
     if (first.empty()) first = bytes;
     EXPECT_EQ(bytes, first) << spelling;
   }
+}
+
+TEST(BytecodeWriter, HoleCycleIsAnInternalError) {
+  // The `cycles` pass replaces every ir::HoleCycle; one reaching the backend is a pipeline
+  // fault, reported (by the verifier and, behind it, the encoder), never written.
+  MachineConfig machine = defaultMachine();
+  SourceManager sources;
+  const uint32_t file = sources.addBuffer("part.nc", "");
+  DiagnosticEngine diags(&sources);
+  std::ostringstream out;
+  backend::BytecodeWriter writer(out, machine, Dialect::FanucM, sources, &diags);
+  ir::HoleCycle cycle;
+  cycle.code10 = 810;
+  cycle.feed = 100.0;
+  writer.accept(block(file, 3, {cycle}));
+  writer.finish();
+  EXPECT_FALSE(writer.ok());
+  ASSERT_EQ(diags.diagnostics().size(), 1u);
+  EXPECT_EQ(diags.diagnostics()[0].code, "NCC9001");
+  EXPECT_NE(diags.diagnostics()[0].message.find("hole cycle"), std::string::npos);
+  // The encoder alone says the same.
+  ir::Block b = block(file, 3, {cycle});
+  auto encoded = backend::encodeOperation(b.ops[0], b, machine);
+  ASSERT_TRUE(encoded.error.has_value());
+  EXPECT_EQ(encoded.error->first, "NCC9001");
 }
 
 TEST(BytecodeWriter, ArcPlaneNeedsItsAxesOnTheMachine) {

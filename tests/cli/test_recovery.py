@@ -61,7 +61,7 @@ class RecoveryTest(ScratchDirTest):
         proc = ncc("check", prog)
         self.assertEqual(proc.returncode, 1)
         errors = diagnostics(proc.stderr, "error")
-        self.assertEqual([(d["line"], d["code"]) for d in errors], [("2", "NCC2011")], proc.stderr)
+        self.assertEqual([(d["line"], d["code"]) for d in errors], [("2", "NCC2014")], proc.stderr)
 
     def test_an_absolute_move_determines_the_position_again(self):
         # After the rejected block, G00 X10. Y0 fixes X and Y: the wrong arc after it is judged.
@@ -69,7 +69,7 @@ class RecoveryTest(ScratchDirTest):
         proc = ncc("check", prog)
         self.assertEqual(proc.returncode, 1)
         errors = diagnostics(proc.stderr, "error")
-        self.assertEqual([(d["line"], d["code"]) for d in errors], [("2", "NCC2011"), ("4", "PS0020")], proc.stderr)
+        self.assertEqual([(d["line"], d["code"]) for d in errors], [("2", "NCC2014"), ("4", "PS0020")], proc.stderr)
 
     def test_independent_errors_after_a_rejected_block_are_still_reported(self):
         # The second fault does not depend on what the first block would have done.

@@ -27,7 +27,13 @@ TEST_P(DialectTableTest, CodesAreUniqueAndEachGroupHasAtMostOneDefault) {
   EXPECT_EQ(t->alarm_codes.size(), static_cast<size_t>(Alarm::kCount));
   EXPECT_EQ(t->powerOnDefault(GGroup::Motion)->code10, 0);
   EXPECT_EQ(t->powerOnDefault(GGroup::WorkOffset)->code10, 540);
-  EXPECT_EQ(t->findG(810)->action, GAction::NotSupported);
+  EXPECT_EQ(t->findG(810)->action, GAction::HoleCycle);
+  EXPECT_EQ(t->findG(870)->action, GAction::HoleCycle);  // G87 back boring
+  // Every hole-cycle code has its entry in the dialect's cycle table, and only those.
+  ASSERT_NE(t->cycles, nullptr);
+  for (const GCodeEntry& e : t->gcodes)
+    EXPECT_EQ(e.action == GAction::HoleCycle, t->cycles->find(e.code10) != nullptr)
+        << gCodeName(e.code10);
 }
 
 INSTANTIATE_TEST_SUITE_P(Iso, DialectTableTest,

@@ -42,7 +42,7 @@ TEST(Recovery, CodesAndAbsoluteWordsDetermineTheStateAgain) {
                     "G90 G02 X10. Y0 R2.\n"    // start X unknown: not judged; fixes X, Y
                     "G02 X20. Y0 R2.\n");      // judged: chord 10 > 2 R
   EXPECT_EQ(r.diagText(),
-            "2:10: error[NCC2011]: address Q (canned cycle data) is not supported yet\n"
+            "2:10: error[NCC2014]: address Q (canned cycle data) has no meaning outside a hole cycle\n"
             "5:13: error[PS0020]: no arc of radius 2.000 joins the start and end points 10.000 "
             "apart (the radius must be at least half the chord)\n");
 }
@@ -54,7 +54,7 @@ TEST(Recovery, AnIncrementalMoveFromAnUnknownPointStaysUnknown) {
                     "G91 G01 X1.\n"        // X = unknown + 1
                     "G90 G02 X5. Y0 R1.\n");  // from an unknown X: not judged
   EXPECT_EQ(r.diagText(),
-            "2:9: error[NCC2011]: address Q (canned cycle data) is not supported yet\n");
+            "2:9: error[NCC2014]: address Q (canned cycle data) has no meaning outside a hole cycle\n");
 }
 
 TEST(Recovery, AFeedOfARejectedBlockIsUnknownUntilTheNextF) {
@@ -65,7 +65,7 @@ TEST(Recovery, AFeedOfARejectedBlockIsUnknownUntilTheNextF) {
                     "G00 X0 Y0\n"
                     "G94 G01 X1. F0\n");   // its own F: judged (PS0011 at the G01)
   EXPECT_EQ(r.diagText(),
-            "2:9: error[NCC2011]: address Q (canned cycle data) is not supported yet\n"
+            "2:9: error[NCC2014]: address Q (canned cycle data) has no meaning outside a hole cycle\n"
             "5:5: error[PS0011]: no feed rate: a cutting move needs an F word and none has "
             "been programmed\n");
 }
@@ -78,7 +78,7 @@ TEST(Recovery, IndependentFaultsAreStillReportedAndOutputResumes) {
                     "G00 X5.\n"           // fixes X and the group; Y still unknown
                     "G00 Y2.\n");         // everything known again: emitted
   EXPECT_EQ(r.diagText(),
-            "2:9: error[NCC2011]: address Q (canned cycle data) is not supported yet\n"
+            "2:9: error[NCC2014]: address Q (canned cycle data) has no meaning outside a hole cycle\n"
             "3:9: error[PS0009]: address B: the machine has no axis B\n");
   ASSERT_EQ(r.moves.size(), 1u);
   EXPECT_EQ(r.moves[0].line, 5);
@@ -92,7 +92,7 @@ TEST(Recovery, AWorkOffsetOfARejectedBlockMakesEveryAxisUnknown) {
                     "G55 X1. Q1.\n"           // rejected: the work system is not known
                     "G02 X2. Y0 R0.5 F100.\n");  // start Y unknown too: not judged
   EXPECT_EQ(r.diagText(),
-            "2:9: error[NCC2011]: address Q (canned cycle data) is not supported yet\n");
+            "2:9: error[NCC2014]: address Q (canned cycle data) has no meaning outside a hole cycle\n");
 }
 
 }  // namespace

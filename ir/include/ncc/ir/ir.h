@@ -150,8 +150,50 @@ struct Prepare {
   uint64_t blocks = 0;        // blocks in the store (for printing)
 };
 
+// One hole of a canned hole cycle (G73-G89), in work space, as lowering decoded it
+// (passes/src/lowering_cycles.cpp): where the hole is, the levels on the drilling axis and what
+// the cycle does there. The `cycles` pass (passes/src/cycle_expansion.cpp) replaces it by its
+// rapid, feed, dwell and spindle operations before work-to-machine; the backend never sees it.
+// docs/cycles.md gives each cycle's sequence.
+struct HoleCycle {
+  // What happens between R and the bottom (the dialect's cycle table maps G codes to these).
+  enum class Kind : uint8_t {
+    Drill,          // feed to the bottom (G81, G82, G85, G86, G89)
+    HighSpeedPeck,  // feed Q, back off d, feed d + Q, ... (G73)
+    Peck,           // feed Q, rapid to R, rapid to d above the last depth, ... (G83)
+    Tap,            // feed in, reverse the spindle at the bottom, feed out (G84, G74)
+    FineBore,       // feed in, orient the spindle, shift off the wall, rapid out (G76)
+    BackBore,       // oriented and shifted down to R below the part, bore up to Z (G87)
+  };
+  Kind kind = Kind::Drill;
+  int code10 = 0;           // the G code x 10, for printing and messages
+  int axis = 2;             // the drilling axis (the plane's normal)
+  AxisValues from{};        // where the tool is before the cycle
+  AxisValues hole{};        // the hole position (the drilling axis: from's level, unchanged)
+  double initial = 0.0;     // the initial level (latched at the first cycle block)
+  double r_level = 0.0;     // the R level
+  double bottom = 0.0;      // the hole bottom (Z)
+  bool return_to_r = false; // G99: the cycle ends at R; G98: at the initial level
+  double feed = 0.0;        // the cutting feed, mm/min, or mm/rev when feed_per_rev
+  bool feed_per_rev = false;
+  bool positioning_by_feed = false;  // the plane positioning is a G01 move (Mazak: group 01 mode)
+  RapidType rapid_type = RapidType::Linear;
+  double peck = 0.0;           // Q: the depth of each infeed
+  double peck_distance = 0.0;  // d: the back-off (G73) or the stop above the last depth (G83)
+  double peck_retract_feed = 0.0;  // G73 back-off at this feed (Mazak 9999 mm/min); 0: rapid
+  double dwell = 0.0;          // seconds at the bottom (P), 0: none
+  bool dwell_revolutions = false;
+  bool feed_out = false;       // the way back to R is a feed (G85, G89, tapping)
+  double retract_feed = 0.0;   // the feed of that way back
+  bool stop_spindle_at_bottom = false;  // G86: M05 at the bottom, rapid out, M03/M04 again
+  bool program_stop_at_bottom = false;  // G88: and M00 (the operator's manual moves) after it
+  int spindle_direction = 1;   // +1 M03, -1 M04: the direction the cycle restores
+  bool dwell_at_r = false;     // tapping: the dwell P also at R after the way out (FANUC)
+  AxisValues shift{};          // G76: the shift off the wall at the bottom (a work-space vector)
+};
+
 using Operation = std::variant<Rapid, Linear, Arc, Skip, Dwell, MachineFunction, ReferenceCheck,
-                               SetVariable, Prepare>;
+                               SetVariable, Prepare, HoleCycle>;
 
 // `,C` / `,R` at the end of a G01/G02/G03 block: a chamfer (legs of `amount`) or a rounding
 // arc (radius `amount`) between the block's move and the next block's. The corners pass

@@ -9,6 +9,7 @@
 #include <string>
 #include <string_view>
 
+#include "ncc/ir/ir.h"
 #include "ncc/machine/dialect.h"
 
 namespace ncc::passes {
@@ -38,6 +39,9 @@ enum class GAction : uint8_t {
   PositionOffset,  // G45 G46 G47 G48: the move +-1 or 2 x the D offset (multiple from the code)
   CancelNoEffect,  // the cancel/off code of a function ncc never switches on (G40, G80, G50..)
   LanguageDin, LanguageIso,                     // G290 G291
+  HoleCycle,       // G73-G89: a canned hole cycle (its entry in DialectTable::cycles)
+  CycleCancel,     // G80
+  ReturnInitial, ReturnR,                       // G98 G99
   NotSupported,    // a real code of the controller that ncc does not implement yet
 };
 
@@ -98,6 +102,12 @@ enum class Alarm : uint8_t {
   CornerTooLong,
   CornerTooLongAfter,
   CornerContextChange,
+  CycleDepthMissing,        // a hole cycle without its bottom (Z) at the first hole
+  CyclePeckMissing,         // G73/G83 without the peck depth Q
+  CyclePeckInvalid,         // G73/G83 with Q zero (or negative where the sign counts)
+  CycleFeedMissing,         // a hole cycle before any F
+  CycleSpindleDirection,    // a hole cycle with the spindle neither M03 nor M04 (Siemens)
+  CycleReferencePlane,      // R beyond the bottom (Siemens), or a bad repeat count
   kCount,
 };
 
@@ -185,12 +195,51 @@ struct SystemVariableRange {
   std::string_view what;   // for messages: "G54-G59 work offsets"
 };
 
+// One canned hole cycle of the dialect: what its G code does (docs/cycles.md).
+struct CycleEntry {
+  int code10;
+  ir::HoleCycle::Kind kind;
+  bool dwell;            // reads P: a dwell at the bottom
+  bool feed_out;         // back to R at the cutting feed (G85, G89)
+  bool spindle_stop;     // M05 at the bottom, rapid out, spindle on again (G86)
+  int tap_direction;     // tapping: +1 cuts in with M03 (G84), -1 with M04 (G74); else 0
+  bool p_in_seconds;     // P counts seconds (Mazak G74/G84 "arrêt temporisé en secondes")
+  bool q_shift;          // Q is the shift off the wall at the bottom (G76, G87)
+  bool manual_stop;      // M00 after the spindle stop at the bottom (G88)
+  bool dwell_at_r;       // tapping: the dwell P also at R after the way out
+  bool pitch_feed;       // F is the thread pitch, per revolution (Mazak G84.2/G84.3)
+};
+
+// How the dialect's cycles read their words and where they differ; each field names its manual.
+struct CycleRules {
+  std::span<const CycleEntry> entries;
+  char repeat_address;              // 'K' (FANUC, Siemens) or 'L' (Mazak)
+  bool positioning_in_motion_mode;  // Mazak §13-1-1 1.: positioned by the group-01 code (G01)
+  bool spindle_direction_required;  // Siemens App. D 61102: M03/M04 before a cycle
+  bool q_sign_ignored;              // Siemens §4.1: Q is taken positive; else Q <= 0 is an alarm
+  bool r_beyond_bottom_is_error;    // Siemens 61101 (reference plane wrong)
+  double peck_retract_feed;         // G73 back-off feed, mm/min (Mazak f2 = 9999); 0: rapid
+  // Mazak §13-1-6 / §13-1-9: D in G73/G83 is d (the return amount / the stop above the last
+  // depth; D omitted or D0: the parameter F12/F13), not a radius offset number.
+  bool d_is_peck_distance;
+  // The shift of G76 in the plane (first, second axis): its default direction when the
+  // machine file sets none (boring_shift_direction).
+  int default_shift_direction;
+
+  const CycleEntry* find(int code10) const {
+    for (const CycleEntry& e : entries)
+      if (e.code10 == code10) return &e;
+    return nullptr;
+  }
+};
+
 struct DialectTable {
   Dialect dialect;
   std::span<const GCodeEntry> gcodes;
   std::span<const std::string_view> alarm_codes;  // indexed by Alarm
   DialectBehaviour behaviour;
   std::span<const SystemVariableRange> system_variables;
+  const CycleRules* cycles = nullptr;  // the canned hole cycles
 
   const GCodeEntry* findG(int code10) const;
   std::string_view alarm(Alarm a) const { return alarm_codes[static_cast<size_t>(a)]; }
