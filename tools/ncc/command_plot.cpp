@@ -8,6 +8,7 @@
 
 #include "absl/strings/str_cat.h"
 #include "cli.h"
+#include "run_input.h"
 #include "pending_output.h"
 #include "progress.h"
 #include "ncc/driver/json_output.h"
@@ -29,8 +30,7 @@ struct PlotArgs {
   uint32_t to_line = 0;    // 0: to the end
   uint64_t max_steps = driver::kDefaultMaxSteps;
   double max_time = vm::kDefaultMaxRunSeconds;
-  std::vector<std::string> probe;   // "AXIS=VALUE", as given
-  std::vector<std::string> signal;  // "N=VALUE", as given
+  RunInput run;  // --probe, --signal
 };
 
 constexpr int kMinSize = 200, kMaxSize = 20000;  // px
@@ -62,45 +62,11 @@ int runPlot(const PlotArgs& args) {
     return kUsage;
   }
   driver::Session session;
-  if (std::optional<int> failed = openSession(session, args.input, args.common)) return *failed;
-  if (session.variablesFile() && driver::isBytecodeInput(session)) {
-    printError("NCC0018", "--vars needs a source program: a bytecode file's variables were fixed "
-                          "when it was compiled");
-    return kUsage;
-  }
-  // --probe and --signal: run-time properties of the machine, as for ncc run.
-  MachineConfig machine = session.machine();
-  for (const std::string& text : args.probe) {
-    if (std::optional<std::string> error = setProbeFromOption(machine.probe, machine.axes, text)) {
-      printError("NCC0308", absl::StrCat("--probe: ", *error));
-      return kUsage;
-    }
-  }
-  for (const std::string& text : args.signal) {
-    if (std::optional<std::string> error = setSignalFromOption(machine.signals, text)) {
-      printError("NCC0310", absl::StrCat("--signal: ", *error));
-      return kUsage;
-    }
-  }
+  MachineConfig machine;
   bytecode::Program program;
-  bool loaded = false;
-  std::optional<driver::SetupError> no_scratch;  // NCC0004: $TMPDIR unusable
-  {
-    CompileProgress progress(session);
-    loaded = driver::loadProgram(session, program, /*check_machine=*/true,
-                                 driver::Residence::Paged, &no_scratch);
-  }
-  if (no_scratch) {
-    printDiagnostics(session);
-    printError(no_scratch->code, no_scratch->message);
-    return kUsage;
-  }
-  if (!loaded) {
-    printDiagnostics(session);
-    return kProgramError;
-  }
-  printDiagnostics(session);  // warnings of the compile
-  session.diagnostics().clear();
+  if (std::optional<int> failed =
+          loadForRun(session, args.input, args.common, args.run, machine, program))
+    return *failed;
   // Opened after the compile: the inputs then include the called subprograms (NCC0005).
   PendingOutput output;
   if (!output.open(args.output, session.inputFiles())) return kUsage;
@@ -193,9 +159,7 @@ void addPlotCommand(CLI::App& app, int& exit_code) {
                   "stop with alarm NCC7208 after this many seconds of simulated time (0: no limit)")
       ->check(CLI::Range(0.0, 1e12))
       ->capture_default_str();
-  cmd->add_option("--probe", args->probe,
-                  "AXIS=VALUE: the simulated skip signal of G31, as for ncc run (repeatable)");
-  cmd->add_option("--signal", args->signal,
+  args->run.addTo(*cmd, "AXIS=VALUE: the simulated skip signal of G31, as for ncc run (repeatable)",
                   "N=VALUE: an interface input signal, as for ncc run (repeatable)");
   args->common.addTo(*cmd);
   cmd->callback([args, &exit_code] { exit_code = runPlot(*args); });

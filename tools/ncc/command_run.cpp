@@ -17,6 +17,7 @@
 #include "ncc/driver/variables_file.h"
 #include "pending_output.h"
 #include "progress.h"
+#include "run_input.h"
 #include "run_summary.h"
 #include "ncc/bytecode/disassembler.h"
 #include "ncc/driver/json_output.h"
@@ -41,8 +42,7 @@ struct RunArgs {
   std::vector<std::string> feed_override_at;  // "SECONDS=PERCENT", as given
   std::vector<std::string> rapid_override_at;  // "SECONDS=PERCENT", as given
   std::vector<std::string> feed_hold_at;      // "SECONDS=DURATION", as given
-  std::vector<std::string> probe;             // "AXIS=VALUE", as given
-  std::vector<std::string> signal;            // "N=VALUE", as given
+  RunInput run;                               // --probe, --signal
 };
 
 // A plain decimal number (digits, '.', an exponent, a leading '-'): no hex, no whitespace,
@@ -230,48 +230,11 @@ int runController(driver::Session& session, const MachineConfig& machine,
 
 int runRun(const RunArgs& args) {
   driver::Session session;
-  if (std::optional<int> failed = openSession(session, args.input, args.common)) return *failed;
-  if (session.variablesFile() && driver::isBytecodeInput(session)) {
-    printError("NCC0018", "--vars needs a source program: a bytecode file's variables were fixed "
-                          "when it was compiled");
-    return kUsage;
-  }
-  // --probe AXIS=VALUE: the simulated skip signal, over the machine file's [machine.probe].
-  // A run-time property (not hashed): the VM applies it, the compile does not see it.
-  MachineConfig machine = session.machine();
-  for (const std::string& text : args.probe) {
-    if (std::optional<std::string> error = setProbeFromOption(machine.probe, machine.axes, text)) {
-      printError("NCC0308", absl::StrCat("--probe: ", *error));
-      return kUsage;
-    }
-  }
-  // --signal N=VALUE: an interface input signal, over [machine.signals]; run-time as well.
-  for (const std::string& text : args.signal) {
-    if (std::optional<std::string> error = setSignalFromOption(machine.signals, text)) {
-      printError("NCC0310", absl::StrCat("--signal: ", *error));
-      return kUsage;
-    }
-  }
+  MachineConfig machine;
   bytecode::Program program;
-  bool loaded = false;
-  std::optional<driver::SetupError> no_scratch;  // NCC0004: $TMPDIR unusable
-  {
-    CompileProgress progress(session);
-    // Paged: the run's memory does not grow with the program (docs/cli.md, "ncc run memory").
-    loaded = driver::loadProgram(session, program, /*check_machine=*/true,
-                                 driver::Residence::Paged, &no_scratch);
-  }
-  if (no_scratch) {
-    printDiagnostics(session);
-    printError(no_scratch->code, no_scratch->message);
-    return kUsage;
-  }
-  if (!loaded) {
-    printDiagnostics(session);
-    return kProgramError;
-  }
-  printDiagnostics(session);  // warnings of the compile
-  session.diagnostics().clear();
+  if (std::optional<int> failed =
+          loadForRun(session, args.input, args.common, args.run, machine, program))
+    return *failed;
   return runController(session, machine, program, args);
 }
 
@@ -338,10 +301,9 @@ void addRunCommand(CLI::App& app, int& exit_code) {
                   "SECONDS=DURATION: the operator holds the feed at that time of the simulated "
                   "run and releases it DURATION seconds later (repeatable): the path brakes to "
                   "rest on the programmed path, stands, and goes on");
-  cmd->add_option("--probe", args->probe,
+  args->run.addTo(*cmd,
                   "AXIS=VALUE: the simulated skip signal of G31 comes on where AXIS reaches VALUE "
-                  "(machine coordinates) moving towards it (repeatable; over [machine.probe])");
-  cmd->add_option("--signal", args->signal,
+                  "(machine coordinates) moving towards it (repeatable; over [machine.probe])",
                   "N=VALUE: the interface input signal #N (#1000-#1031: 0 or 1; #1033-#1035: a "
                   "32-bit word) a program reads (repeatable; over [machine.signals])");
   args->common.addTo(*cmd);
