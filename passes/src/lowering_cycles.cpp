@@ -22,6 +22,9 @@ namespace ncc::passes {
 namespace {
 
 constexpr int64_t kMaxRepeats = 9999;
+// The pecks one block may make, all repeats together: a Q tiny against the depth would expand
+// one block into millions of moves (or, below the resolution of a double, never end).
+constexpr double kMaxPecksPerBlock = 100000;
 
 // The drilling axis of the plane (its normal), or -1 when the machine lacks it.
 int drillingAxis(const BlockContext& ctx) {
@@ -234,6 +237,14 @@ void lowerCycle(BlockContext& ctx) {
                       : entry.kind == ir::HoleCycle::Kind::Peck ? ctx.settings.peck_clearance
                                                                 : ctx.settings.peck_return;
     if (entry.kind == ir::HoleCycle::Kind::HighSpeedPeck) h.peck_retract_feed = rules.peck_retract_feed;
+    const double pecks = std::ceil(std::fabs(r_level - c.z) / h.peck) * static_cast<double>(repeats);
+    if (!(pecks <= kMaxPecksPerBlock) || !(h.peck >= 1e-6)) {
+      ctx.fail(Alarm::ValueOutOfRange, ctx.words.q ? ctx.words.q->loc : cycleLoc(ctx),
+               absl::StrCat(name, ": the peck depth Q", h.peck, " makes more than ",
+                            kMaxPecksPerBlock, " pecks in this block (", mm(std::fabs(r_level - c.z)),
+                            " deep, ", repeats, " times)"));
+      return;
+    }
   }
   if (entry.dwell && c.has_p) h.dwell = entry.p_in_seconds ? c.p : c.p / 1000.0;
   h.spindle_direction = ctx.next.spindle_direction < 0 ? -1 : 1;

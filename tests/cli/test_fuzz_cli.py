@@ -13,7 +13,8 @@ Mutants of three kinds are run in every output mode (summary, trace, moves, vars
 Each mutant must: exit with 0..3 (and print no sanitizer report, in an instrumented build),
 exit with the same code in every mode, leave nothing in its output folder when the exit code
 is 1 or 2 (after an alarm, exit 3, only the documented output: the moves ending with the alarm
-record, the summary, the trace up to the alarm; nothing for vars), and end within TIMEOUT seconds (`--max-steps` bounds the VM). All failures are
+record, the summary, the trace up to the alarm; nothing for vars), and end within TIMEOUT seconds (`--max-steps` bounds the VM's instructions and `--max-time` the simulated
+time: a mutant's F1 in a peck cycle is hours of simulated motion, an alarm NCC7208 here). All failures are
 collected and printed together.
 
 The seed is fixed: the same mutants every run. NCC_FUZZ_CLI_SEED and NCC_FUZZ_CLI_COUNT
@@ -38,6 +39,7 @@ SEED = int(os.environ.get("NCC_FUZZ_CLI_SEED", "21"))
 COUNT = int(os.environ.get("NCC_FUZZ_CLI_COUNT", "400"))  # mutants in all, about 40/30/30 %
 DIALECTS = ("mazak-m", "siemens-iso-m")  # conformance folders of supported dialects
 TIMEOUT = 30  # seconds per run: far above any seed's run time
+MAX_SIMULATED_SECONDS = "600"  # simulated time per run (an instrumented build ticks slowly)
 MAX_STEPS = "200000"
 MODES = ("summary", "trace", "moves", "vars")
 OUTPUT = {"summary": "out.txt", "trace": "out.trace", "moves": "out.jsonl", "vars": "out.json"}
@@ -301,7 +303,7 @@ def run_mutant(mutant, workdir):
         os.mkdir(outdir)
         out = os.path.join(outdir, OUTPUT[mode])
         args = [NCC, "run", mutant.input, f"--emit={mode}", "-o", out, "--max-steps", mutant.max_steps,
-                *mutant.extra]
+                "--max-time", MAX_SIMULATED_SECONDS, *mutant.extra]
         try:
             proc = subprocess.run(args, cwd=base, capture_output=True, timeout=TIMEOUT)
         except subprocess.TimeoutExpired:

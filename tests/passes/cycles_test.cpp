@@ -368,6 +368,11 @@ INSTANTIATE_TEST_SUITE_P(
         BadCase{Dialect::FanucM, "", "G00 Z10.\nG73 X1. R2. Z-5. Q0 F100.\n", "2:18: error[NCC2097]"},
         BadCase{Dialect::FanucM, "", "G00 Z10.\nG83 X1. R2. Z-5. Q-1. F100.\n", "2:18: error[NCC2097]"},
         BadCase{Dialect::FanucM, "", "G00 Z10.\nG81 X1. R2. F100.\n", "2:1: error[NCC2096]"},
+        // A Q tiny against the depth (100,000 pecks at most per block, K included).
+        BadCase{Dialect::FanucM, "", "G00 Z10.\nG83 X1. R2. Z-500. Q0.000001 F100.\n",
+                "2:20: error[NCC2031]"},
+        BadCase{Dialect::FanucM, "", "G00 Z10.\nG83 X1. R2. Z-98. Q0.01 K11 F100.\n",
+                "2:19: error[NCC2031]"},
         BadCase{Dialect::FanucM, "", "G00 Z10.\nG81 X1. R2. Z-3.\n", "2:1: error[PS0011]"},
         // Mazak §13-1-6: Q0 -> 809; §13-1-3: Q omitted -> the same alarm.
         BadCase{Dialect::MazakM, kCalc, "G00 Z10.\nG73 X1. R2. Z-5. Q0 F100.\n", "2:18: error[809]"},
