@@ -194,14 +194,17 @@ void lowerProgram(Session& session, ir::BlockSink& entry, AstStageTap& tap) {
   // passes, whose alarms (a corner that does not fit, docs/semantics.md) are then reported
   // here as they are without --defer.
   DiscardingSink discard;
-  passes::PipelineOptions check_options;
-  check_options.axis_count = session.machine().axisCount();
-  check_options.dialect = session.dialect();
-  check_options.verify = false;
-  passes::PassManager checks(check_options, diags, discard);
   const bool deferred = session.defer();
+  std::optional<passes::PassManager> checks;  // built for --defer only
+  if (deferred) {
+    passes::PipelineOptions check_options;
+    check_options.axis_count = session.machine().axisCount();
+    check_options.dialect = session.dialect();
+    check_options.verify = false;
+    checks.emplace(check_options, diags, discard);
+  }
   prepare::BlockLoop loop(settings, store, session.mainFile(), diags,
-                          deferred ? checks.entry() : entry);
+                          deferred ? checks->entry() : entry);
   // After on_write: the loaded values reach the VM too, so a run ends with every kept
   // variable, written by the program or not (and --vars saves them all back).
   std::optional<std::map<int64_t, double>> saved = loadSavedVariables(session, loop.variables());
@@ -242,7 +245,7 @@ void lowerProgram(Session& session, ir::BlockSink& entry, AstStageTap& tap) {
     ir::Block stop;
     stop.loc = loop.runTimeReason().loc;
     stop.ops.push_back(ir::Prepare{});
-    checks.entry().accept(std::move(stop));
+    checks->entry().accept(std::move(stop));
   }
   if (deferred) entry.finish();
   loop.finish();

@@ -149,6 +149,18 @@ PlaneAxes planeAxes(const BlockContext& ctx) {
   return {ctx.axisNamed("X"), ctx.axisNamed("Y"), &w.i, &w.j, &w.k, "XY", "G17"};
 }
 
+// The plane's axes when the machine has both, else nullopt after AxisMissing at `loc`: `what`
+// ("an arc", "a corner") needs them.
+std::optional<PlaneAxes> bothPlaneAxes(BlockContext& ctx, SourceLocation loc,
+                                       const char* what) {
+  PlaneAxes pl = planeAxes(ctx);
+  if (pl.a >= 0 && pl.b >= 0) return pl;
+  ctx.fail(Alarm::AxisMissing, loc,
+           absl::StrCat(what, " in the ", pl.names, " plane (", pl.code,
+                        ") needs both plane axes, which the machine does not have"));
+  return std::nullopt;
+}
+
 // Full turns beyond the arc's own sweep, from the dialect's turn count (0 when the block has
 // none or after an error). Mazak §6-7: P = p in l = Z / ((2 pi p + theta) / 2 pi), theta in
 // [0, 2 pi): an open arc runs theta + p turns (P omitted: p = 0), a closed one p turns (P
@@ -180,13 +192,9 @@ uint32_t arcExtraTurns(BlockContext& ctx, bool closed) {
 bool arc(BlockContext& ctx, const AxisValues& start, const AxisValues& target,
          const ir::Frame& frame) {
   bool cw = ctx.next.motion == GAction::ArcCW;
-  PlaneAxes pl = planeAxes(ctx);
-  if (pl.a < 0 || pl.b < 0) {
-    ctx.fail(Alarm::AxisMissing, ctx.motionLoc(),
-             absl::StrCat("an arc in the ", pl.names, " plane (", pl.code,
-                          ") needs both plane axes, which the machine does not have"));
-    return false;
-  }
+  const std::optional<PlaneAxes> plane = bothPlaneAxes(ctx, ctx.motionLoc(), "an arc");
+  if (!plane) return false;
+  const PlaneAxes& pl = *plane;
   PlanePoint s{start[pl.a], start[pl.b]}, e{target[pl.a], target[pl.b]};
   bool end_given = ctx.words.axes[pl.a] || ctx.words.axes[pl.b];
   bool closed = distance(s, e) <= kSamePoint;
@@ -291,13 +299,9 @@ bool arc(BlockContext& ctx, const AxisValues& start, const AxisValues& target,
 bool lineAngle(BlockContext& ctx, const AxisValues& start, AxisValues& target) {
   const WordValue& w = *ctx.words.line_angle;
   ctx.used_angle = true;
-  PlaneAxes pl = planeAxes(ctx);
-  if (pl.a < 0 || pl.b < 0) {
-    ctx.fail(Alarm::AxisMissing, w.loc,
-             absl::StrCat("a line angle in the ", pl.names, " plane (", pl.code,
-                          ") needs both plane axes, which the machine does not have"));
-    return false;
-  }
+  const std::optional<PlaneAxes> plane = bothPlaneAxes(ctx, w.loc, "a line angle");
+  if (!plane) return false;
+  const PlaneAxes& pl = *plane;
   bool has_a = ctx.words.axes[pl.a].has_value(), has_b = ctx.words.axes[pl.b].has_value();
   if (has_a && has_b) return true;
   if (!has_a && !has_b) {
@@ -344,13 +348,9 @@ void cornerRequest(BlockContext& ctx, GAction kind, bool moves, const AxisValues
   c.kind = w.address == ",C" ? ir::CornerRequest::Kind::Chamfer : ir::CornerRequest::Kind::Round;
   c.amount = amount;
   c.from = start;
-  PlaneAxes pl = planeAxes(ctx);
-  if (pl.a < 0 || pl.b < 0) {
-    ctx.fail(Alarm::AxisMissing, w.loc,
-             absl::StrCat("a corner in the ", pl.names, " plane (", pl.code,
-                          ") needs both plane axes, which the machine does not have"));
-    return;
-  }
+  const std::optional<PlaneAxes> plane = bothPlaneAxes(ctx, w.loc, "a corner");
+  if (!plane) return;
+  const PlaneAxes& pl = *plane;
   c.plane_a = pl.a;
   c.plane_b = pl.b;
   c.loc = w.loc;
