@@ -173,6 +173,16 @@ void printBlock(std::ostream& out, const Block& block, const AxisNames& axes) {
   if (!allZero(block.frame.shift)) out << " shift(" << axisList(block.frame.shift, axes) << ")";
   if (!allZero(block.frame.tool_length))
     out << " tool(" << axisList(block.frame.tool_length, axes) << ")";
+  // Before the transform pass: the map of programmed points (rows of m | t over X Y Z).
+  for (const auto& [name, a] : {std::pair{" transform(", &block.transform.work},
+                                std::pair{" machine-rotation(", &block.transform.machine}}) {
+    if (!*a) continue;
+    out << name;
+    for (int r = 0; r < 3; ++r)
+      out << (r ? "; " : "") << num((*a)->m[3 * r]) << " " << num((*a)->m[3 * r + 1]) << " "
+          << num((*a)->m[3 * r + 2]) << " | " << num((*a)->t[r]);
+    out << ")";
+  }
   if (block.corner)  // ,C / ,R not yet inserted (before the corners pass)
     out << (block.corner->kind == CornerRequest::Kind::Chamfer ? " chamfer(" : " round(")
         << num(block.corner->amount) << ")";

@@ -82,6 +82,20 @@ class BlockChecker {
     axes(f.shift, "shift");
     axes(f.tool_length, "tool length");
   }
+  void transform(const Transform& t) {
+    // Only before the `transform` pass applies them: never in the backend's input.
+    if (options_.require_machine_space && t.any())
+      add("a coordinate transform reached the backend (the transform pass did not run)");
+    for (const auto& a : {t.work, t.machine}) {
+      if (!a) continue;
+      for (double v : a->m)
+        if (!std::isfinite(v)) add("a transform coefficient is not finite");
+      for (double v : a->t)
+        if (!std::isfinite(v)) add("a transform translation is not finite");
+      for (int8_t i : a->axes)
+        if (i < -1 || i >= options_.axis_count) add(absl::StrCat("transform axis index ", i));
+    }
+  }
   void modal(const Modal& m) {
     if (!std::isfinite(m.feed) || m.feed < 0.0) add(absl::StrCat("modal feed ", m.feed));
     if (!std::isfinite(m.spindle_speed) || m.spindle_speed < 0.0)
@@ -119,6 +133,7 @@ std::vector<std::string> verify(const Block& block, const VerifyOptions& options
   checker.setBlock();
   checker.modal(block.modal);
   checker.frame(block.frame);
+  checker.transform(block.transform);
   for (size_t i = 0; i < block.ops.size(); ++i) {
     checker.setOperation(i);
     std::visit(checker, block.ops[i]);

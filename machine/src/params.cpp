@@ -294,8 +294,9 @@ std::vector<ParamSpec> buildRegistry() {
                        "the axes named A, B or C", std::nullopt,
                        "Rotary axes (MD30300 IS_ROT_AX = 1); when given, exactly these axes are "
                        "rotary and all others linear"));
-  specs.push_back(Spec("rotation_angle_incremental", T::Bool, "fanuc-t", "false", false,
-                       "G68/G68.1 angle R is incremental (FANUC RIN)"));
+  specs.push_back(Spec("rotation_angle_incremental", T::Bool, "fanuc-m, fanuc-t", "false", false,
+                       "G68/G68.1 angle R follows G90/G91 (FANUC RIN, No.5400#0); false: R is "
+                       "always absolute"));
   specs.push_back(Spec("rough_finish_pass_type1", T::Bool, "fanuc-t", "true", true,
                        "G71/G72 type I: rough finishing pass along the contour after roughing "
                        "(FANUC RF1 = 0)"));
@@ -307,13 +308,23 @@ std::vector<ParamSpec> buildRegistry() {
                        "Two G codes of one modal group in a block: \"last_wins\" (the last one "
                        "is effective) or \"error\" (an alarm)")
                       .oneOf({"error", "last_wins"}));
-  specs.push_back(Spec("scale_factor_unit", T::Number, "siemens-iso-m", "0.001", 0.001,
-                       "Unit of the G51 scale factor P (MD22910 WEIGHTING_FACTOR_FOR_SCALE = 0: "
-                       "0.001, = 1: 0.00001)")
+  specs.push_back(Spec("scale_factor_unit", T::Number, "fanuc-m, siemens-iso-m", "0.001", 0.001,
+                       "Unit of a G51 scale factor P, I, J, K written without a decimal point "
+                       "(MD22910 WEIGHTING_FACTOR_FOR_SCALE = 0: 0.001, = 1: 0.00001; FANUC "
+                       "No.5400#7 SCR = 1: 0.001, = 0: 0.00001)")
                       .range(1e-9, 1));
-  specs.push_back(Spec("scale_per_axis", T::Bool, "siemens-iso-m", "false", false,
-                       "G51 scales per axis with I J K; false: one factor from P (MD22914 "
-                       "AXES_SCALE_ENABLE = 0)"));
+  specs.push_back(Spec("scale_per_axis", T::Bool, "fanuc-m, siemens-iso-m", "false", false,
+                       "G51 scales per axis with I J K (a negative factor mirrors); false: one "
+                       "factor from P (MD22914 AXES_SCALE_ENABLE = 0; FANUC XSC, No.5401#6)"));
+  specs.push_back(Spec("default_scale_factor", T::Number, "fanuc-m, mazak-m, siemens-iso-m",
+                       "0 (none: x1)", 0.0,
+                       "The G51 factor when the block gives none (FANUC No.5411, Mazak F20, "
+                       "SD42140 DEFAULT_SCALE_FACTOR_P); 0: none, the shape keeps its size")
+                      .range(0, 1e6));
+  specs.push_back(Spec("default_rotation_angle", T::Number, "fanuc-m, siemens-iso-m", "0", 0.0,
+                       "The G68 angle, degrees, when the block gives no R (FANUC No.5410, "
+                       "SD42150 DEFAULT_ROT_FACTOR_R)")
+                      .range(-360, 360));
   specs.push_back(Spec("second_geometry_axes", T::AxisList, "fanuc-t", "[] (none)", no_names,
                        "Axes to which the 2nd geometry offset applies"));
   specs.push_back(Spec("second_geometry_signal_G2SLC", T::Bool, "fanuc-t", "false", false,
@@ -371,14 +382,21 @@ std::vector<ParamSpec> buildRegistry() {
       "geometry_wear_offsets", "index_table_1", "indexing_axes", "interference_check",
       "machine_unit", "offset_applied_at", "offset_number_digits", "outer_corner_connection",
       "parallel_axes", "peck_cycle_type", "reset_feed_mode",
-      "rigid_tap_retract_override", "rotation_angle_incremental", "rough_finish_pass_type1",
-      "rough_finish_pass_type2", "scale_factor_unit", "scale_per_axis", "second_geometry_axes",
+      "rigid_tap_retract_override", "rough_finish_pass_type1",
+      "rough_finish_pass_type2", "second_geometry_axes",
       "spindle_encoder", "startup_type", "t_code_digits", "tapping_type",
       "thread_chamfer_signal", "tnrc_lookahead_blocks", "wear_offset_method"};
   // The hole-cycle keys act in the mill dialects' cycles (docs/cycles.md), not yet in fanuc-t.
   static constexpr std::string_view kMillCycles[] = {"boring_shift_direction", "peck_clearance",
                                                      "peck_return", "tap_retract_percent"};
+  // The transform keys act in the mill dialects' G68/G51 (docs/transforms.md).
+  static constexpr std::string_view kMillTransforms[] = {
+      "default_rotation_angle", "default_scale_factor", "rotation_angle_incremental",
+      "scale_factor_unit", "scale_per_axis"};
   for (ParamSpec& spec : out) {
+    if (std::find(std::begin(kMillTransforms), std::end(kMillTransforms), spec.key) !=
+        std::end(kMillTransforms))
+      spec.applied_in = spec.key == "rotation_angle_incremental" ? "fanuc-m" : spec.dialects;
     if (std::find(std::begin(kNotApplied), std::end(kNotApplied), spec.key) !=
         std::end(kNotApplied))
       spec.applied_in = "";

@@ -3,9 +3,12 @@
 // frame (work offset, G92 shift, G52 local shift, tool length). Small and copyable: a block
 // is lowered on a copy that replaces the state only when the block has no error. The offset
 // tables written by G10 live apart (OffsetTables) and are written at the commit.
+#include <array>
 #include <cstdint>
 #include <map>
+#include <optional>
 #include <string>
+#include <vector>
 
 #include "ncc/ir/ir.h"
 #include "ncc/machine/axes.h"
@@ -43,6 +46,36 @@ struct CycleState {
   bool has_d = false;
 };
 
+// The coordinate transforms in force (lowering_transforms.cpp, docs/transforms.md). Centres are
+// work coordinates, so a G92, G52 or work-offset change moves them with the work system as the
+// manuals state; G92.5's centre is a machine point. Each stage is kept as its map.
+struct TransformState {
+  // G68: the rotations in force, the first given first (Siemens base frames 1 and 2: the second
+  // acts in the first's coordinates). The last 2-D angle, for an incremental R.
+  std::vector<ir::Affine> rotations;
+  double angle_2d = 0.0;
+  // G51: the scaled X/Y/Z slots, their centres and factors.
+  std::array<bool, 3> scaled{};
+  std::array<double, 3> scale_centre{};
+  std::array<double, 3> scale_factor{1.0, 1.0, 1.0};
+  bool scaling = false;
+  // G51.1: the mirrored slots and their centres.
+  std::array<bool, 3> mirrored{};
+  std::array<double, 3> mirror_centre{};
+  // Mazak G92.5: the rotation about a machine point; its centre stays for the next G92.5.
+  std::optional<ir::Affine> work_rotation;
+  std::array<double, 3> work_rotation_centre{};
+  bool work_rotation_just_set = false;  // the next move must be G00/G01 (Mazak 817)
+  // Mazak figure rotation (M98 I J K L): the turn of the repeat being run.
+  std::optional<ir::Affine> figure;
+  // Where the tool is (machine coordinates) when that is not the commanded point, which is
+  // `ControllerState::position`: after a block that moved under a transform. A block whose
+  // programmed point stays may still move the tool (a transform changed since).
+  std::optional<AxisValues> tool_at;
+
+  bool mirrorsAny() const { return mirrored[0] || mirrored[1] || mirrored[2]; }
+};
+
 struct ControllerState {
   ir::Modal modal;
   GAction motion = GAction::Rapid;     // group 01
@@ -68,6 +101,7 @@ struct ControllerState {
   int last_g10_l2_p = 1;               // Mazak: G10 L2 without P reuses the last P
   UnknownState unknown;                // nothing after power-on; see UnknownState
   CycleState cycle;                    // the canned hole cycle in force
+  TransformState transforms;           // G68, G51, G51.1, G92.5, figure rotation
   int spindle_direction = 0;           // +1 M03, -1 M04, 0 stopped (M05, power-on)
   // Axes whose commanded position is where a G31 stopped: known when the program runs, not
   // here (`position` holds G31's end point for them). An absolute word makes one known again

@@ -247,7 +247,8 @@ bool CornersPass::insertCorner(ir::Block& held, ir::Block& next, AxisValues& nex
   const ir::CornerRequest& req = *held.corner;
   const char* name = what(req);
   const Planar pl{req.plane_a, req.plane_b};
-  if (next.modal.plane != held.modal.plane || !(next.frame == held.frame)) {
+  if (next.modal.plane != held.modal.plane || !(next.frame == held.frame) ||
+      !(next.transform == held.transform)) {
     fail(Alarm::CornerContextChange, next.loc,
          absl::StrCat("the block after a ", name, " changes the ",
                       next.modal.plane != held.modal.plane ? "plane" : "coordinate system"));

@@ -85,8 +85,8 @@ constexpr GCodeEntry kCodes[] = {
     {980, G::ReturnLevel, 10, true, A::ReturnInitial, 0, "canned cycle initial level return"},
     {990, G::ReturnLevel, 10, false, A::ReturnR, 0, "canned cycle R point level return"},
     // group 11
-    {500, G::Scaling, 11, true, A::CancelNoEffect, 0, "scaling cancel"},
-    {510, G::Scaling, 11, false, A::NotSupported, 0, "scaling"},
+    {500, G::Scaling, 11, true, A::ScalingCancel, 0, "scaling cancel"},
+    {510, G::Scaling, 11, false, A::Scaling, 0, "scaling"},
     // group 12
     {660, G::MacroModal, 12, false, A::NotSupported, 0, "macro modal call"},
     {670, G::MacroModal, 12, true, A::CancelNoEffect, 0, "macro modal call cancel"},
@@ -107,14 +107,14 @@ constexpr GCodeEntry kCodes[] = {
     {630, G::PathControl, 15, false, A::TappingMode, 0, "tapping mode"},
     {640, G::PathControl, 15, true, A::ContinuousMode, 0, "cutting mode"},
     // group 16
-    {680, G::Rotation, 16, false, A::NotSupported, 0, "coordinate system rotation"},
-    {690, G::Rotation, 16, true, A::CancelNoEffect, 0, "coordinate system rotation cancel"},
+    {680, G::Rotation, 16, false, A::Rotation, 0, "coordinate system rotation"},
+    {690, G::Rotation, 16, true, A::RotationCancel, 0, "coordinate system rotation cancel"},
     // group 17
     {150, G::Polar, 17, true, A::CancelNoEffect, 0, "polar coordinates command cancel"},
     {160, G::Polar, 17, false, A::NotSupported, 0, "polar coordinates command"},
     // group 22
-    {501, G::Mirror, 22, true, A::CancelNoEffect, 0, "programmable mirror image cancel"},
-    {511, G::Mirror, 22, false, A::NotSupported, 0, "programmable mirror image"},
+    {501, G::Mirror, 22, true, A::MirrorCancel, 0, "programmable mirror image cancel"},
+    {511, G::Mirror, 22, false, A::Mirror, 0, "programmable mirror image"},
     // Further codes of the FANUC 30i series (the 30i manual's G-code table, notes §3.1, and
     // the 30i-M functions): real on the control, not built in ncc yet. Listed so that they
     // say "not supported yet" instead of "not a G code" (PS0010 stays for codes no table has).
@@ -191,6 +191,17 @@ constexpr std::string_view kAlarms[] = {
     "PS0011",   // CycleFeedMissing: feed zero (command)
     "NCC2098",  // CycleSpindleDirection (not raised)
     "NCC2099",  // CycleReferencePlane (not raised)
+    "NCC2110",  // TransformArcNotCircle
+    "NCC2111",  // TransformWordMissing
+    "NCC2112",  // TransformNotAlone (not raised)
+    "NCC2113",  // TransformOrder (not raised)
+    "NCC2114",  // RotationVector (not raised: any I J K vector)
+    "NCC2115",  // RotationNesting: a third G68 (FANUC 3-D conversion nests twice)
+    "PS0142",   // ScaleFactorRange: illegal scale rate (FANUC common)
+    "NCC2116",  // RotationAngleRange
+    "NCC2117",  // FigureRotationNested (not raised)
+    "NCC2118",  // FigureRotationWithRotation (not raised)
+    "NCC2119",  // ArcAfterWorkRotation (not raised)
 };
 static_assert(std::size(kAlarms) == static_cast<size_t>(Alarm::kCount));
 
@@ -284,9 +295,41 @@ constexpr SystemVariableRange kSystemVariables[] = {
     {5221, 5340, SystemVariable::WorkOffset, 20, "G54-G59 work offsets"},
     {7001, 7960, SystemVariable::ExtendedWorkOffset, 20, "G54.1 P1-P48 work offsets"},
 };
+
+// Coordinate rotation, scaling and mirror (docs/transforms.md). There is no FANUC mill manual
+// here: these are the FANUC-family rules the lathe manual states for G68.1 (§5.9: centre
+// absolute, the position when omitted, R absolute unless RIN) and the common FANUC mill ones
+// (the order mirror, scaling, rotation; G51 centre absolute, the position when omitted; P in
+// scale_factor_unit; 3-D conversion with I J K nests twice).
+constexpr TransformRules kTransforms{
+    .order = {TransformRules::Stage::FigureRotation, TransformRules::Stage::Mirror,
+              TransformRules::Stage::Scaling, TransformRules::Stage::Rotation},
+    .rotation_angle_required = false,  // R omitted: the parameter's angle (No.5410)
+    .rotation_angle_follows_distance = false,
+    .rotation_stacks_2d = false,
+    .rotation_stacks_3d = true,
+    .max_rotations = 2,
+    .extra_rotation_replaces_last = false,
+    .rotation_3d_unit_axis_only = false,
+    .rotation_3d_centre_is_origin = false,
+    .rotation_3d_angle_absolute = true,
+    .transform_block_alone = false,
+    .scale_centre_omitted = TransformRules::ScaleCentre::CurrentPosition,
+    .scale_centre_follows_distance = false,
+    .rescale_adds_axes = false,
+    .scale_p_point_only_after_g51 = false,
+    .scale_p_fixed_increment = false,
+    .scale_p_increment = 0.0,
+    .scale_factor_max = 999.999,
+    .scale_tiny_factor_is_one = false,
+    .scale_cancel_moves = false,
+    .reference_return_cancels_scaling = false,
+    .mirror_centre_follows_distance = false,
+    .mirror_only_outside_others = false,
+};
 }  // namespace
 
 const DialectTable kFanucMTable{Dialect::FanucM, kCodes, kAlarms, kBehaviour, kSystemVariables,
-                                &kCycles};
+                                &kCycles, &kTransforms};
 
 }  // namespace ncc::passes

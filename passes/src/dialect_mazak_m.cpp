@@ -37,7 +37,7 @@ constexpr GCodeEntry kCodes[] = {
     {31, G::OneShot, 0, false, A::NotSupported, 0, "spiral interpolation CCW"},
     {50, G::Other, 0, false, A::NotSupported, 0, "high-speed machining mode"},
     {70, G::Other, 0, false, A::NotSupported, 0, "virtual axis interpolation"},
-    {925, G::Other, 0, false, A::NotSupported, 0, "work coordinate system rotation"},
+    {925, G::OneShot, 0, false, A::WorkRotation, 0, "work coordinate system rotation"},
     // group 01
     {0, G::Motion, 1, true, A::Rapid, 0, "positioning"},
     {10, G::Motion, 1, false, A::Linear, 0, "linear interpolation"},
@@ -98,8 +98,8 @@ constexpr GCodeEntry kCodes[] = {
     {980, G::ReturnLevel, 10, true, A::ReturnInitial, 0, "fixed cycle initial point level return"},
     {990, G::ReturnLevel, 10, false, A::ReturnR, 0, "fixed cycle R point level return"},
     // group 11
-    {500, G::Scaling, 11, true, A::CancelNoEffect, 0, "scaling cancel"},
-    {510, G::Scaling, 11, false, A::NotSupported, 0, "scaling"},
+    {500, G::Scaling, 11, true, A::ScalingCancel, 0, "scaling cancel"},
+    {510, G::Scaling, 11, false, A::Scaling, 0, "scaling"},
     // group 12
     {540, G::WorkOffset, 12, true, A::WorkOffset, 1, "work coordinate system 1"},
     {550, G::WorkOffset, 12, false, A::WorkOffset, 2, "work coordinate system 2"},
@@ -123,11 +123,11 @@ constexpr GCodeEntry kCodes[] = {
     {411, G::Profiling, 15, false, A::NotSupported, 0, "normal line control left"},
     {421, G::Profiling, 15, false, A::NotSupported, 0, "normal line control right"},
     // group 16
-    {680, G::Rotation, 16, false, A::NotSupported, 0, "coordinate rotation"},
-    {690, G::Rotation, 16, true, A::CancelNoEffect, 0, "coordinate rotation cancel"},
+    {680, G::Rotation, 16, false, A::Rotation, 0, "coordinate rotation"},
+    {690, G::Rotation, 16, true, A::RotationCancel, 0, "coordinate rotation cancel"},
     // group 19
-    {501, G::Mirror, 19, true, A::CancelNoEffect, 0, "programmable mirror image cancel"},
-    {511, G::Mirror, 19, false, A::NotSupported, 0, "programmable mirror image"},
+    {501, G::Mirror, 19, true, A::MirrorCancel, 0, "programmable mirror image cancel"},
+    {511, G::Mirror, 19, false, A::Mirror, 0, "programmable mirror image"},
     // Five-face machining (ch. 21): real codes of the control, not built in ncc yet.
     {171, G::Other, 0, false, A::NotSupported, 0, "five-face machining: top face mode"},
     {172, G::Other, 0, false, A::NotSupported, 0, "five-face machining: 0 deg face mode"},
@@ -181,6 +181,17 @@ constexpr std::string_view kAlarms[] = {
     "816",      // CycleFeedMissing: AVANCE D'USINAGE = ZERO
     "NCC2098",  // CycleSpindleDirection (not raised)
     "NCC2099",  // CycleReferencePlane (not raised)
+    "NCC2110",  // TransformArcNotCircle
+    "807",      // TransformWordMissing: format error
+    "NCC2112",  // TransformNotAlone (not raised)
+    "NCC2113",  // TransformOrder (not raised)
+    "807",      // RotationVector: 3-D G68 I J K not one axis (ch. 22)
+    "NCC2115",  // RotationNesting (not raised: nested 3-D G68 compose)
+    "809",      // ScaleFactorRange: G51 P too large (§13-10 3.A)
+    "809",      // RotationAngleRange: number not allowed
+    "849",      // FigureRotationNested (§13-7 note 3)
+    "850",      // FigureRotationWithRotation: G68 with M98 (§13-7 note 4)
+    "817",      // ArcAfterWorkRotation: an arc after G92.5 (§14-13)
 };
 static_assert(std::size(kAlarms) == static_cast<size_t>(Alarm::kCount));
 
@@ -275,9 +286,39 @@ constexpr SystemVariableRange kSystemVariables[] = {
     {5221, 5340, SystemVariable::WorkOffset, 20, "G54-G59 work offsets"},
     {7001, 7960, SystemVariable::ExtendedWorkOffset, 20, "G54.1 P1-P48 work offsets"},
 };
+
+// Coordinate rotation, scaling, mirror and figure rotation (docs/transforms.md): §13-7, §13-8
+// (rotation before mirror, offsets after), §13-10 (the scaling centre turns with a rotation
+// given before it), §13-11, ch. 22 (3-D G68).
+constexpr TransformRules kTransforms{
+    .order = {TransformRules::Stage::FigureRotation, TransformRules::Stage::Scaling,
+              TransformRules::Stage::Rotation, TransformRules::Stage::Mirror},
+    .rotation_angle_required = true,   // §13-8 2.: R is part of the format
+    .rotation_angle_follows_distance = true,
+    .rotation_stacks_2d = false,       // §13-8 3.4: a new centre and angle
+    .rotation_stacks_3d = true,        // ch. 22: nested G68 compose
+    .max_rotations = 0,
+    .extra_rotation_replaces_last = false,
+    .rotation_3d_unit_axis_only = true,
+    .rotation_3d_centre_is_origin = false,
+    .rotation_3d_angle_absolute = true,
+    .transform_block_alone = false,
+    .scale_centre_omitted = TransformRules::ScaleCentre::AxisNotScaled,  // §13-10 3.A
+    .scale_centre_follows_distance = true,
+    .rescale_adds_axes = true,
+    .scale_p_point_only_after_g51 = true,
+    .scale_p_fixed_increment = true,
+    .scale_p_increment = 0.000001,
+    .scale_factor_max = 99.999999,
+    .scale_tiny_factor_is_one = true,
+    .scale_cancel_moves = true,
+    .reference_return_cancels_scaling = true,
+    .mirror_centre_follows_distance = true,
+    .mirror_only_outside_others = false,
+};
 }  // namespace
 
 const DialectTable kMazakMTable{Dialect::MazakM, kCodes, kAlarms, kBehaviour, kSystemVariables,
-                                &kCycles};
+                                &kCycles, &kTransforms};
 
 }  // namespace ncc::passes

@@ -56,8 +56,8 @@ constexpr GCodeEntry kCodes[] = {
     {980, G::ReturnLevel, 10, true, A::ReturnInitial, 0, "canned cycle initial level return"},
     {990, G::ReturnLevel, 10, false, A::ReturnR, 0, "canned cycle R level return"},
     // group 11
-    {500, G::Scaling, 11, true, A::CancelNoEffect, 0, "scaling cancel"},
-    {510, G::Scaling, 11, false, A::NotSupported, 0, "scaling"},
+    {500, G::Scaling, 11, true, A::ScalingCancel, 0, "scaling cancel"},
+    {510, G::Scaling, 11, false, A::Scaling, 0, "scaling"},
     // group 12
     {660, G::MacroModal, 12, false, A::NotSupported, 0, "macro modal call"},
     {670, G::MacroModal, 12, true, A::CancelNoEffect, 0, "macro modal call cancel"},
@@ -77,8 +77,8 @@ constexpr GCodeEntry kCodes[] = {
     {640, G::PathControl, 15, true, A::ContinuousMode, 0, "continuous path mode"},
     {620, G::PathControl, 15, false, A::CornerOverride, 0, "automatic corner override"},
     // group 16
-    {680, G::Rotation, 16, false, A::NotSupported, 0, "coordinate rotation"},
-    {690, G::Rotation, 16, true, A::CancelNoEffect, 0, "coordinate rotation cancel"},
+    {680, G::Rotation, 16, false, A::Rotation, 0, "coordinate rotation"},
+    {690, G::Rotation, 16, true, A::RotationCancel, 0, "coordinate rotation cancel"},
     // group 17
     {150, G::Polar, 17, true, A::CancelNoEffect, 0, "polar coordinates cancel"},
     {160, G::Polar, 17, false, A::NotSupported, 0, "polar coordinates"},
@@ -103,8 +103,8 @@ constexpr GCodeEntry kCodes[] = {
     {301, G::OneShot, 18, false, A::NotSupported, 0, "floating reference point return"},
     {921, G::OneShot, 18, false, A::ResetShift, 0, "work coordinate system reset"},
     // group 22
-    {501, G::Mirror, 22, true, A::CancelNoEffect, 0, "programmable mirror cancel"},
-    {511, G::Mirror, 22, false, A::NotSupported, 0, "programmable mirror"},
+    {501, G::Mirror, 22, true, A::MirrorCancel, 0, "programmable mirror cancel"},
+    {511, G::Mirror, 22, false, A::Mirror, 0, "programmable mirror"},
     // group 25
     {131, G::PolarInterpolation, 25, true, A::CancelNoEffect, 0, "polar interpolation cancel"},
     {121, G::PolarInterpolation, 25, false, A::NotSupported, 0, "polar interpolation"},
@@ -156,6 +156,17 @@ constexpr std::string_view kAlarms[] = {
     "61003",    // CycleFeedMissing: no feed programmed in the cycle
     "61102",    // CycleSpindleDirection: no spindle direction programmed
     "61101",    // CycleReferencePlane: reference plane wrong
+    "NCC2110",  // TransformArcNotCircle
+    "NCC2111",  // TransformWordMissing
+    "NCC2112",  // TransformNotAlone: §3.1.9, §3.2.3 (no alarm number given)
+    "NCC2113",  // TransformOrder: §3.2.4 (no alarm number given)
+    "NCC2114",  // RotationVector (not raised: any vector)
+    "NCC2115",  // RotationNesting (not raised: a third G68 replaces the second)
+    "NCC2116",  // ScaleFactorRange: a zero factor
+    "NCC2116",  // RotationAngleRange
+    "NCC2117",  // FigureRotationNested (not raised)
+    "NCC2118",  // FigureRotationWithRotation (not raised)
+    "NCC2119",  // ArcAfterWorkRotation (not raised)
 };
 static_assert(std::size(kAlarms) == static_cast<size_t>(Alarm::kCount));
 
@@ -224,9 +235,38 @@ constexpr DialectBehaviour kBehaviour{
 // Sinumerik ISO mode defines no FANUC system variables (notes §4.11: "the manual does not
 // define ... FANUC system variables"); its programs read the machine through DIN ($ variables).
 constexpr std::span<const SystemVariableRange> kSystemVariables{};
+
+// Coordinate rotation, scaling and mirror (docs/transforms.md): §3.1.9-§3.1.10 (G68 2-D and
+// 3-D, two base frames), §3.2.3 (G51), §3.2.4 (G51.1; the order mirror, scaling, rotation).
+constexpr TransformRules kTransforms{
+    .order = {TransformRules::Stage::FigureRotation, TransformRules::Stage::Mirror,
+              TransformRules::Stage::Scaling, TransformRules::Stage::Rotation},
+    .rotation_angle_required = false,  // R omitted: SD42150 DEFAULT_ROT_FACTOR_R
+    .rotation_angle_follows_distance = true,
+    .rotation_stacks_2d = true,        // §3.1.10 "座標回転の重ね合わせ": base frames 1 and 2
+    .rotation_stacks_3d = true,
+    .max_rotations = 2,
+    .extra_rotation_replaces_last = true,  // a third G68 replaces the second
+    .rotation_3d_unit_axis_only = false,
+    .rotation_3d_centre_is_origin = true,
+    .rotation_3d_angle_absolute = true,
+    .transform_block_alone = true,
+    .scale_centre_omitted = TransformRules::ScaleCentre::WorkOrigin,  // "always the work origin"
+    .scale_centre_follows_distance = false,
+    .rescale_adds_axes = false,
+    .scale_p_point_only_after_g51 = false,
+    .scale_p_fixed_increment = false,
+    .scale_p_increment = 0.0,
+    .scale_factor_max = 99999.999,
+    .scale_tiny_factor_is_one = false,
+    .scale_cancel_moves = false,
+    .reference_return_cancels_scaling = false,
+    .mirror_centre_follows_distance = false,
+    .mirror_only_outside_others = true,
+};
 }  // namespace
 
 const DialectTable kSiemensIsoMTable{Dialect::SiemensIsoM, kCodes, kAlarms, kBehaviour, kSystemVariables,
-                                &kCycles};
+                                &kCycles, &kTransforms};
 
 }  // namespace ncc::passes

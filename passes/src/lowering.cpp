@@ -81,6 +81,7 @@ void oneShot(BlockContext& ctx) {
     case GAction::ResetShift: return resetShift(ctx, g);
     case GAction::Skip: return skipMove(ctx, g);
     case GAction::PositionOffset: return positionOffsetMove(ctx, g);
+    case GAction::WorkRotation: return workRotation(ctx, g);
     default: return;
   }
 }
@@ -140,6 +141,7 @@ void commit(BlockContext& ctx) {
   out.modal = ctx.next.modal;
   out.modal.work_offset = ctx.next.work_name;
   out.frame = frameOf(ctx.next, ctx.behaviour);
+  out.transform = transformOf(ctx);
   out.exact_stop =
       ctx.words.exact_stop.has_value() || ctx.next.modal.path == ir::PathControl::ExactStop;
   out.ops = std::move(ctx.ops);
@@ -226,12 +228,17 @@ LowerResult lowerBlock(LoweringCore& core, const ast::Block& block) {
     return result;
   }
   ctx.silent = depends.words || depends.motion;
-  if (ctx.words.one_shot)
+  applyTransformCodes(ctx);
+  // G68 / G51 / G51.1 / G50.1 take the axis words as their centres: such a block moves nothing.
+  if (ctx.failed || transformTakesAxisWords(ctx))
+    ;
+  else if (ctx.words.one_shot)
     oneShot(ctx);
   else if (inCycle(ctx))
     lowerCycle(ctx);
   else
     lowerMotion(ctx);
+  scalingCancelMove(ctx);
   machineFunctions(ctx, result);
   checkSkipDependence(ctx);
   if (ctx.needs_run_time) {
@@ -242,6 +249,7 @@ LowerResult lowerBlock(LoweringCore& core, const ast::Block& block) {
   if (ctx.silent) return settleSilent(ctx, result);
   if (ctx.failed) return reject(ctx);
   relearn(ctx);
+  trackTool(ctx);
   commit(ctx);
   return result;
 }

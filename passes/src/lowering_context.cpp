@@ -38,6 +38,10 @@ LoweringCore::LoweringCore(LoweringOptions o, DiagnosticEngine& d, ir::BlockSink
   table = dialectTable(options.dialect);
   if (!table) return;
   settings = LoweringSettings::resolve(*table, *machine);
+  for (int s = 0; s < 3; ++s) {
+    const int i = machine->axisIndex(std::string(1, "XYZ"[s]));
+    xyz[s] = static_cast<int8_t>(i >= 0 && i < kMaxAxes ? i : -1);
+  }
   tables.work = machine->work_offsets;
   tables.length = machine->tool_offsets.length;
   tables.radius = machine->tool_offsets.radius;

@@ -66,6 +66,7 @@ struct LoweringCore {
     double seconds = 0.0;
   };
   std::array<TimerBase, 2> timers{};
+  std::array<int8_t, 3> xyz{-1, -1, -1};  // the machine indices of X, Y, Z (-1: none)
 
   LoweringCore(LoweringOptions o, DiagnosticEngine& d, ir::BlockSink& s);
 
@@ -244,6 +245,29 @@ bool repeatCountIsK(const BlockContext& ctx);
 // A block in cycle mode: its cycle words into the cycle state, one ir::HoleCycle per hole
 // (repeats K/L), the position at the end of the last one.
 void lowerCycle(BlockContext& ctx);
+
+// ---- lowering_transforms.cpp ----
+// Whether the block's axis words belong to G68, G51, G51.1 or G50.1 (centres, mirrored axes)
+// rather than to a move: the block then moves nothing.
+bool transformTakesAxisWords(const BlockContext& ctx);
+// G68/G69, G51/G50, G51.1/G50.1 into the transform state. Before the block's motion.
+void applyTransformCodes(BlockContext& ctx);
+// Mazak's G50 without a move of its own: every axis goes back to its unscaled point.
+void scalingCancelMove(BlockContext& ctx);
+// G27/G28/G30 end scaling where the manual says so (Mazak §13-10 5.4-5.5).
+void cancelScalingAfterReference(BlockContext& ctx);
+void workRotation(BlockContext& ctx, const GWord& g);  // Mazak G92.5
+// The transforms in force after the block, for its IR block (or in a given state).
+ir::Transform transformOf(const BlockContext& ctx);
+ir::Transform transformOf(const BlockContext& ctx, const ControllerState& cs);
+// Whether the tool moves on the way to the work-space `target`: `moves` (the programmed point
+// changes) unless a transform is or was in force, then whether the point it maps to changes.
+bool movesUnderTransforms(const BlockContext& ctx, const AxisValues& target, bool moves);
+// After a block that moved: where the tool now is, if not at the commanded point.
+void trackTool(BlockContext& ctx);
+// The machine coordinates of the programmed point that the transforms in force take to
+// `machine` (after a move given in machine coordinates: G53, a reference return).
+AxisValues programmedAt(const BlockContext& ctx, const AxisValues& machine);
 
 // ---- lowering_machine_functions.cpp ----
 void dwell(BlockContext& ctx, const GWord& g);  // G04

@@ -76,7 +76,7 @@ void machineCoordinateMove(BlockContext& ctx, const GWord& g) {
   }
   if (!ctx.samePosition(target, ctx.next.position))
     ctx.ops.push_back(ir::Rapid{target, ir::Space::Machine, ctx.settings.rapid_type});
-  ctx.next.position = target;
+  ctx.next.position = programmedAt(ctx, target);  // under a transform: the point that maps there
 }
 
 // G52: the local shift of the selected work system (or of all, where it is shared).

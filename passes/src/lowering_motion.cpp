@@ -368,7 +368,8 @@ void lowerMotion(BlockContext& ctx) {
   if (ctx.words.line_angle && ctx.next.motion == GAction::Linear && !lineAngle(ctx, start, target))
     return;
   AxisValues to_machine = ctx.toMachine(target, frame);
-  bool moves = !ctx.samePosition(to_machine, ctx.next.position);
+  const bool moves =
+      movesUnderTransforms(ctx, target, !ctx.samePosition(to_machine, ctx.next.position));
   bool feed_per_rev = ctx.next.modal.feed_mode == ir::FeedMode::PerRevolution;
   GAction kind = ctx.next.motion;
   bool arc_mode = kind == GAction::ArcCW || kind == GAction::ArcCCW;

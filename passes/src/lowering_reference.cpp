@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "absl/strings/str_cat.h"
+#include "affine.h"
 #include "lowering_context.h"
 
 namespace ncc::passes {
@@ -27,15 +28,30 @@ int referenceNumber(BlockContext& ctx, const GWord& g, int fallback) {
 void referenceReturn(BlockContext& ctx, const GWord&, int n) {
   if (ctx.failed) return;
   ir::Frame frame = frameOf(ctx.next, ctx.behaviour);
-  AxisValues via = ctx.toMachine(ctx.workTargets(ctx.baseWork()), frame);
-  if (!ctx.samePosition(via, ctx.next.position))
+  // Mazak §13-10 5.5: the return ends scaling (the block's transforms are those after it).
+  cancelScalingAfterReference(ctx);
+  const AxisValues via_work = ctx.workTargets(ctx.baseWork());
+  AxisValues via = ctx.toMachine(via_work, frame);
+  const ir::Transform transform = transformOf(ctx);
+  if (transform.any()) {
+    // The intermediate point is a programmed point like any other (turned, mirrored): the
+    // transform pass maps it; the way on to the reference point is in machine coordinates.
+    const ir::Affine map = workSpaceMap(transform, frame.total());
+    AxisValues image = via_work, here = ctx.baseWork();
+    applyPoint(map, image);
+    applyPoint(map, here);
+    via = ctx.toMachine(image, frame);
+    if (!ctx.samePosition(image, here))
+      ctx.ops.push_back(ir::Rapid{via_work, ir::Space::Work, ctx.settings.rapid_type});
+  } else if (!ctx.samePosition(via, ctx.next.position)) {
     ctx.ops.push_back(ir::Rapid{via, ir::Space::Machine, ctx.settings.rapid_type});
+  }
   AxisValues home = via;
   for (int i = 0; i < ctx.axisCount(); ++i)
     if (ctx.words.axes[i]) home[i] = ctx.settings.reference[n - 1][i];
   if (!ctx.samePosition(home, via))
     ctx.ops.push_back(ir::Rapid{home, ir::Space::Machine, ir::RapidType::PerAxis});
-  ctx.next.position = home;
+  ctx.next.position = programmedAt(ctx, home);
   ctx.lengthChangeTraversed();
   // The length offset is cancelled in the axis returned (Mazak §14: "length offset cancelled
   // in that axis"): only when the length axis is among the named axes.
@@ -54,7 +70,10 @@ void referenceCheck(BlockContext& ctx, const GWord& g) {
   if (ctx.failed) return;
   ir::Frame frame = frameOf(ctx.next, ctx.behaviour);
   AxisValues target = ctx.workTargets(ctx.baseWork());
-  AxisValues reached = ctx.toMachine(target, frame);
+  AxisValues image = target;  // where the tool goes: the programmed point under the transforms
+  if (const ir::Transform t = transformOf(ctx); t.any())
+    applyPoint(workSpaceMap(t, frame.total()), image);
+  AxisValues reached = ctx.toMachine(image, frame);
   for (int i = 0; i < ctx.axisCount(); ++i) {
     if (!ctx.words.axes[i]) continue;
     double ref = ctx.settings.reference[n - 1][i];
@@ -68,7 +87,7 @@ void referenceCheck(BlockContext& ctx, const GWord& g) {
   if (!ctx.samePosition(reached, ctx.next.position))
     ctx.ops.push_back(ir::Rapid{target, ir::Space::Work, ctx.settings.rapid_type});
   ctx.ops.push_back(ir::ReferenceCheck{reached, ctx.namedAxes(), n});
-  ctx.next.position = reached;
+  ctx.next.position = ctx.toMachine(target, frame);
   ctx.lengthChangeTraversed();
 }
 

@@ -52,6 +52,11 @@ LoweringSettings LoweringSettings::resolve(const DialectTable& table,
   s.boring_shift_direction = static_cast<int>(std::lround(p.getNumber(
       "boring_shift_direction", table.cycles ? table.cycles->default_shift_direction : 1)));
   s.tap_retract_percent = p.getNumber("tap_retract_percent", 100.0);
+  s.scale_per_axis = p.getBool("scale_per_axis", false);
+  s.scale_factor_unit = p.getNumber("scale_factor_unit", 0.001);
+  s.default_scale_factor = p.getNumber("default_scale_factor", 0.0);
+  s.default_rotation_angle = p.getNumber("default_rotation_angle", 0.0);
+  s.rotation_angle_incremental = p.getBool("rotation_angle_incremental", false);
   s.block_skip = p.getBool("block_skip", false);
   if (const auto* levels = p.getNumberList("block_skip_levels"))
     for (double l : *levels) s.skip_levels.insert(static_cast<int>(std::lround(l)));

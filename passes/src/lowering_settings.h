@@ -38,6 +38,12 @@ struct LoweringSettings {
   double peck_clearance = 1.0;     // G83 stop above the last depth d (FANUC No.5115, Mazak F13)
   int boring_shift_direction = 1;  // G76 shift: 1 +first plane axis, 0/2 -first, 3 +second, 4 -second
   double tap_retract_percent = 100.0;  // tapping way out, % of the way in (Siemens _ZSFI[2])
+  // Coordinate transforms (docs/transforms.md, Parameters).
+  bool scale_per_axis = false;        // G51 I J K factors (MD22914, FANUC XSC)
+  double scale_factor_unit = 0.001;   // P/I/J/K without a point (MD22910, FANUC SCR)
+  double default_scale_factor = 0.0;  // G51 without a factor; 0: x1
+  double default_rotation_angle = 0.0;  // G68 without R, degrees
+  bool rotation_angle_incremental = false;  // FANUC RIN: R follows G90/G91
   // Power-on state (reset_unit, reset_motion_mode, reset_plane), resolved from the strings.
   ir::Units reset_unit = ir::Units::Millimetre;
   GAction reset_motion = GAction::Rapid;

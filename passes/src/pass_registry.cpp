@@ -4,6 +4,7 @@
 #include "ncc/passes/coordinate_transform.h"
 #include "ncc/passes/travel_check.h"
 #include "corners.h"
+#include "transform_pass.h"
 
 namespace ncc::passes {
 
@@ -28,6 +29,11 @@ std::unique_ptr<ir::BlockSink> corners(ir::BlockSink& next, const PipelineOption
   return std::make_unique<CornersPass>(next, o.dialect, diags);
 }
 
+std::unique_ptr<ir::BlockSink> transform(ir::BlockSink& next, const PipelineOptions& o,
+                                          DiagnosticEngine& diags) {
+  return std::make_unique<TransformPass>(next, o.dialect, diags);
+}
+
 std::unique_ptr<ir::BlockSink> travelCheck(ir::BlockSink& next, const PipelineOptions& o,
                                            DiagnosticEngine& diags) {
   return std::make_unique<TravelCheckPass>(next, *o.travel_limits, o.dialect, diags);
@@ -42,6 +48,8 @@ constexpr PassInfo kPasses[] = {
      always, cycles, false},
     {"corners", ",C / ,R: inserts the chamfer line or rounding arc between two moves", always,
      corners, false},
+    {"transform", "G68 rotation, G51 scaling, G51.1 mirror, G92.5: maps targets and arc centres",
+     always, transform, false},
     {"work-to-machine", "adds each block's frame: work offset, shifts, tool length", inMachineSpace,
      workToMachine, true},
     {"travel-check", "motion targets against the travel limits (ncc check only)", checksTravel,

@@ -8,6 +8,7 @@
 // normalisation and G90/G91 resolution; G53 and reference returns are already machine space).
 // The coordinate-transform pass adds the block's frame and marks them Machine. The backend
 // accepts machine-space operations only (the verifier checks this).
+#include <array>
 #include <cstdint>
 #include <memory>
 #include <optional>
@@ -56,6 +57,28 @@ struct Frame {
     return t;
   }
   friend bool operator==(const Frame&, const Frame&) = default;
+};
+
+// A map of programmed points onto the points the tool goes to, on the X, Y and Z axes (their
+// machine indices in `axes`, -1 where the machine has none): p' = m p + t, m row-major. The
+// lowering composes it from the modes in force (G68 rotation, G51 scaling, G51.1 mirror, Mazak
+// figure rotation) in the order the dialect's manual states (passes/src/affine.h builds and
+// composes them; docs/transforms.md).
+struct Affine {
+  std::array<double, 9> m{1, 0, 0, 0, 1, 0, 0, 0, 1};
+  std::array<double, 3> t{};
+  std::array<int8_t, 3> axes{0, 1, 2};
+  friend bool operator==(const Affine&, const Affine&) = default;
+};
+
+// The transforms in force for the block; the `transform` pass applies them to its work-space
+// targets and clears them. `work` acts in work coordinates; `machine` (Mazak G92.5 work
+// coordinate rotation) about a point given in machine coordinates: it acts on work + frame.
+struct Transform {
+  std::optional<Affine> work;
+  std::optional<Affine> machine;
+  bool any() const { return work.has_value() || machine.has_value(); }
+  friend bool operator==(const Transform&, const Transform&) = default;
 };
 
 struct Rapid {
@@ -211,6 +234,7 @@ struct Block {
   int64_t sequence = -1;  // N number, -1 if none
   Modal modal;
   Frame frame;
+  Transform transform;       // lowering -> transform pass only
   bool exact_stop = false;   // G09 in this block, or G61 in force
   std::vector<Operation> ops;
   std::optional<CornerRequest> corner;  // lowering -> corners pass only

@@ -4,6 +4,7 @@
 // of every diagnostic lowering raises, and the defaults of the controller parameters it reads.
 // Lowering is written against this table only; there is no `if (dialect == ...)` in it.
 // docs/semantics.md documents the three tables.
+#include <array>
 #include <cstdint>
 #include <span>
 #include <string>
@@ -37,6 +38,10 @@ enum class GAction : uint8_t {
   ResetShift,                                   // G92.1
   Skip,                                         // G31 (Mazak G31.1-G31.3 too): skip move
   PositionOffset,  // G45 G46 G47 G48: the move +-1 or 2 x the D offset (multiple from the code)
+  Rotation, RotationCancel,                     // G68 G69 (2-D, and 3-D with I J K)
+  Scaling, ScalingCancel,                       // G51 G50
+  Mirror, MirrorCancel,                         // G51.1 G50.1
+  WorkRotation,                                 // Mazak G92.5: work coordinate rotation
   CancelNoEffect,  // the cancel/off code of a function ncc never switches on (G40, G80, G50..)
   LanguageDin, LanguageIso,                     // G290 G291
   HoleCycle,       // G73-G89: a canned hole cycle (its entry in DialectTable::cycles)
@@ -108,6 +113,18 @@ enum class Alarm : uint8_t {
   CycleFeedMissing,         // a hole cycle before any F
   CycleSpindleDirection,    // a hole cycle with the spindle neither M03 nor M04 (Siemens)
   CycleReferencePlane,      // R beyond the bottom (Siemens), or a bad repeat count
+  // Coordinate transforms (lowering_transforms.cpp, the transform pass).
+  TransformArcNotCircle,    // an arc whose image is no circle in a principal plane
+  TransformWordMissing,     // G68 without R where R is required, G51.1 / G92.5 without words
+  TransformNotAlone,        // a G68/G69/G51/G50 block with another G code (Siemens)
+  TransformOrder,           // G51.1/G50.1 while scaling or rotation is in force (Siemens)
+  RotationVector,           // 3-D G68 whose I J K is not one axis (Mazak 807)
+  RotationNesting,          // more G68 in force than the control stacks
+  ScaleFactorRange,         // G51 factor zero or beyond the range
+  RotationAngleRange,       // G68 / G92.5 angle beyond +-360 degrees
+  FigureRotationNested,     // M98 with I J K inside a figure rotation (Mazak 849)
+  FigureRotationWithRotation,  // figure rotation and G68 together (Mazak 850)
+  ArcAfterWorkRotation,     // the move after G92.5 is an arc (Mazak 817)
   kCount,
 };
 
@@ -233,6 +250,44 @@ struct CycleRules {
   }
 };
 
+// How the dialect's coordinate transforms read their words and compose (docs/transforms.md);
+// each field names its manual.
+struct TransformRules {
+  // The stages, in the order they act on a programmed point (first to last).
+  enum class Stage : uint8_t { FigureRotation, Mirror, Scaling, Rotation };
+  std::array<Stage, 4> order;
+  // ---- G68 / G69 ----
+  bool rotation_angle_required;        // R missing is an alarm; else the default angle parameter
+  // A 2-D R follows G90/G91 (Mazak §13-8 3.3, Siemens §3.1.9); else absolute unless the
+  // rotation_angle_incremental parameter (FANUC RIN) says so.
+  bool rotation_angle_follows_distance;
+  // G68 while one is in force: stacked on it (Siemens base frames 1 and 2) rather than
+  // replacing its centre and angle (Mazak §13-8 3.4).
+  bool rotation_stacks_2d;
+  bool rotation_stacks_3d;
+  int max_rotations;                   // stacked rotations at most (0: no limit)
+  bool extra_rotation_replaces_last;   // beyond the limit: replaces the last (Siemens) or alarm
+  bool rotation_3d_unit_axis_only;     // 3-D: exactly one of I J K is 1 (Mazak ch. 22, 807)
+  bool rotation_3d_centre_is_origin;   // 3-D centre omitted: the work origin (else the position)
+  bool rotation_3d_angle_absolute;     // 3-D R always absolute (Siemens §3.1.10)
+  bool transform_block_alone;          // G68/G69/G51/G50 blocks hold no other G code (Siemens)
+  // ---- G51 / G50 ----
+  enum class ScaleCentre : uint8_t { CurrentPosition, WorkOrigin, AxisNotScaled };
+  ScaleCentre scale_centre_omitted;    // a centre word left out
+  bool scale_centre_follows_distance;  // the centre in G90/G91 (Mazak); else always absolute
+  bool rescale_adds_axes;              // G51 in G51 mode adds axes, its P for all (Mazak 13-10 11)
+  bool scale_p_point_only_after_g51;   // Mazak §13-10 4.7: `P0.5 G51` is P = 0, i.e. x1
+  bool scale_p_fixed_increment;        // P without a point counts this increment (else the
+  double scale_p_increment;            // scale_factor_unit parameter)
+  double scale_factor_max;             // a larger factor is an alarm
+  bool scale_tiny_factor_is_one;       // Mazak: below 0.000001 counts as 1; else an alarm
+  bool scale_cancel_moves;             // Mazak §13-10 3.B: G50 moves every axis back (deviation)
+  bool reference_return_cancels_scaling;  // Mazak §13-10 5.4/5.5: G27/G28/G30 end scaling
+  // ---- G51.1 / G50.1 ----
+  bool mirror_centre_follows_distance; // Mazak §13-11: absolute or incremental; else absolute
+  bool mirror_only_outside_others;     // Siemens §3.2.4: not while scaling or rotation is in force
+};
+
 struct DialectTable {
   Dialect dialect;
   std::span<const GCodeEntry> gcodes;
@@ -240,6 +295,7 @@ struct DialectTable {
   DialectBehaviour behaviour;
   std::span<const SystemVariableRange> system_variables;
   const CycleRules* cycles = nullptr;  // the canned hole cycles
+  const TransformRules* transforms = nullptr;  // coordinate rotation, scaling, mirror
 
   const GCodeEntry* findG(int code10) const;
   std::string_view alarm(Alarm a) const { return alarm_codes[static_cast<size_t>(a)]; }
