@@ -181,6 +181,7 @@ constexpr std::string_view kAlarms[] = {
     "816",      // CycleFeedMissing: AVANCE D'USINAGE = ZERO
     "NCC2098",  // CycleSpindleDirection (not raised)
     "NCC2099",  // CycleReferencePlane (not raised)
+    "NCC2088",  // PolarNotAllowed (not raised: the manual has no G16)
 };
 static_assert(std::size(kAlarms) == static_cast<size_t>(Alarm::kCount));
 

@@ -80,8 +80,8 @@ constexpr GCodeEntry kCodes[] = {
     {680, G::Rotation, 16, false, A::NotSupported, 0, "coordinate rotation"},
     {690, G::Rotation, 16, true, A::CancelNoEffect, 0, "coordinate rotation cancel"},
     // group 17
-    {150, G::Polar, 17, true, A::CancelNoEffect, 0, "polar coordinates cancel"},
-    {160, G::Polar, 17, false, A::NotSupported, 0, "polar coordinates"},
+    {150, G::Polar, 17, true, A::PolarOff, 0, "polar coordinates cancel"},
+    {160, G::Polar, 17, false, A::PolarOn, 0, "polar coordinates"},
     // group 18 (one-shot)
     {40, G::OneShot, 18, false, A::Dwell, 0, "dwell"},
     {90, G::OneShot, 18, false, A::ExactStopOneShot, 0, "exact stop"},
@@ -156,6 +156,7 @@ constexpr std::string_view kAlarms[] = {
     "61003",    // CycleFeedMissing: no feed programmed in the cycle
     "61102",    // CycleSpindleDirection: no spindle direction programmed
     "61101",    // CycleReferencePlane: reference plane wrong
+    "NCC2088",  // PolarNotAllowed (§4.5 names no alarm)
 };
 static_assert(std::size(kAlarms) == static_cast<size_t>(Alarm::kCount));
 
@@ -226,7 +227,15 @@ constexpr DialectBehaviour kBehaviour{
 constexpr std::span<const SystemVariableRange> kSystemVariables{};
 }  // namespace
 
+// G15/G16, §4.5 (docs/semantics.md).
+constexpr PolarRules kPolar{
+    // N15 `G91 X100 Y0` from X70.711 Y70.711 ends at X170.711 Y70.711: the angle from +X.
+    .angle_from_axis_at_current_pole = true,
+    .arcs = PolarRules::Arcs::NotSupported,  // §4.5 says nothing of G02/G03 in G16
+    .corners_allowed = true,                 // §4.8.2 puts no limit; the corner is Cartesian
+};
+
 const DialectTable kSiemensIsoMTable{Dialect::SiemensIsoM, kCodes, kAlarms, kBehaviour, kSystemVariables,
-                                &kCycles};
+                                &kCycles, &kPolar};
 
 }  // namespace ncc::passes

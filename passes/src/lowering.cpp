@@ -203,6 +203,7 @@ LowerResult lowerBlock(LoweringCore& core, const ast::Block& block) {
   ctx.words = std::move(*decoded);
 
   applyModalCodes(ctx, result);
+  applyPolarCode(ctx);
   applyCycleCodes(ctx);
   rejectParallelAxisPlane(ctx, *core.machine);
   if (ctx.words.k && repeatCountIsK(ctx)) {  // a cycle's K counts holes: no length
@@ -226,7 +227,10 @@ LowerResult lowerBlock(LoweringCore& core, const ast::Block& block) {
     return result;
   }
   ctx.silent = depends.words || depends.motion;
-  if (ctx.words.one_shot)
+  convertPolarWords(ctx);  // G16: the plane words become Cartesian before anything reads them
+  if (ctx.failed)
+    ;  // polar words that cannot be read: nothing to lower
+  else if (ctx.words.one_shot)
     oneShot(ctx);
   else if (inCycle(ctx))
     lowerCycle(ctx);

@@ -85,6 +85,7 @@ std::optional<double> modalCode(const LoweringCore& core, int group_number) {
                     : cs.modal.path == ir::PathControl::CornerOverride ? GAction::CornerOverride
                     : cs.modal.path == ir::PathControl::Tapping        ? GAction::TappingMode
                                                                        : GAction::ContinuousMode);
+    case GGroup::Polar: return codeOf(cs.polar ? GAction::PolarOn : GAction::PolarOff);
     case GGroup::WorkOffset: {
       const std::string& w = cs.work_name;  // "G54".."G59", "G54.1P3", "G54P3"
       if (w.rfind("G54.1", 0) == 0) return 54.1;
