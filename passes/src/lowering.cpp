@@ -209,9 +209,11 @@ LowerResult lowerBlock(LoweringCore& core, const ast::Block& block) {
   if (ctx.words.k && repeatCountIsK(ctx)) {  // a cycle's K counts holes: no length
     DecodedBlock audited = ctx.words;
     audited.k.reset();
-    core.decimal_points.block(audited, ctx.settings.values, ctx.next.modal.units, *core.machine);
+    core.decimal_points.block(audited, ctx.settings.values, ctx.next.modal.units, *core.machine,
+                              polarAngleAxis(ctx));
   } else {
-    core.decimal_points.block(ctx.words, ctx.settings.values, ctx.next.modal.units, *core.machine);
+    core.decimal_points.block(ctx.words, ctx.settings.values, ctx.next.modal.units, *core.machine,
+                              polarAngleAxis(ctx));
   }
   Dependence depends = dependsOnUnknown(ctx);
   ctx.silent = depends.words;

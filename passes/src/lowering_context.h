@@ -267,6 +267,9 @@ void applyPolarCode(BlockContext& ctx);
 // G27/G28/G30/G45-G48 with plane words, and arcs and corners the dialect's PolarRules refuse,
 // are PolarNotAllowed. The original words stay in BlockContext::polar.
 void convertPolarWords(BlockContext& ctx);
+// The axis whose word is an angle in this block (G16 in force, a code that reads positions),
+// else -1: the decimal-point audit counts it in degrees.
+int polarAngleAxis(const BlockContext& ctx);
 // A hole cycle's repeat (K/L) in G16: the plane coordinates of `hole` from the block's polar
 // words taken from `from` (the previous hole), as the control repeats them (`G91 Y45. K7`
 // drills round a bolt circle). Unchanged without polar words.

@@ -151,6 +151,12 @@ void applyPolarCode(BlockContext& ctx) {
                         "; the machine has no ", p.first < 0 ? p.first_name : p.second_name));
 }
 
+int polarAngleAxis(const BlockContext& ctx) {
+  if (!ctx.table.polar || !ctx.next.polar) return -1;
+  if (ctx.words.one_shot && wordsAreNoPosition(ctx.words.one_shot->entry->action)) return -1;
+  return planeOf(ctx).second;
+}
+
 void convertPolarWords(BlockContext& ctx) {
   ctx.polar.reset();
   if (!ctx.table.polar || ctx.failed) return;
