@@ -230,9 +230,9 @@ LowerResult lowerBlock(LoweringCore& core, const ast::Block& block) {
   }
   ctx.silent = depends.words || depends.motion;
   convertPolarWords(ctx);  // G16: the plane words become Cartesian before anything reads them
-  if (ctx.failed)
-    ;  // polar words that cannot be read: nothing to lower
-  else if (ctx.words.one_shot)
+  if (ctx.failed) {
+    // polar words that cannot be read: nothing to lower
+  } else if (ctx.words.one_shot)
     oneShot(ctx);
   else if (inCycle(ctx))
     lowerCycle(ctx);
