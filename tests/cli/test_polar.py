@@ -72,6 +72,15 @@ class PolarCli(ScratchDirTest):
         self.assertEqual(proc.returncode, 0, proc.stderr)
         self.assertEqual(json.loads(proc.stdout), {"#100": 16.0, "#101": 15.0})
 
+    def test_after_g31_the_polar_point_is_taken_where_the_skip_stopped(self):
+        # G31 towards radius 50 at 90 deg stops at Y30 (--probe); `G91 Y-90.` has no radius:
+        # 30 about the origin, turned to 0 deg -> (30, 0). Only known when run (note NCC0023).
+        prog = self.write("skip.nc", "G90 G16 G31 X50. Y90. F100.\nG91 Y-90.\nM30\n")
+        proc = ncc("run", prog, "--probe", "Y=30", "--emit=moves")
+        self.assertEqual(proc.returncode, 0, proc.stderr)
+        self.assertIn("note[NCC0023]", proc.stderr)
+        self.assertEqual([xy(m) for m in moves(proc.stdout)], [(0.0, 30.0), (30.0, 0.0)])
+
     def test_refused_combinations_are_alarms(self):
         xz = self.write("xz.toml", '[machine]\naxes = ["X", "Z"]\n')
         for dialect, text, extra, where in [

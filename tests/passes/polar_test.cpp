@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "expect_moves.h"
+#include "ncc/passes/dialect_table.h"
 
 namespace ncc::passes::test {
 namespace {
@@ -17,6 +18,22 @@ std::string standard() { return xyzMachine("decimal_point = \"standard\""); }
 
 bool reports(const Lowered& r, const std::string& text) {
   return r.diagText().find(text) != std::string::npos;
+}
+
+TEST(Polar, TablesCarryTheRulesWhereTheManualHasG16) {
+  for (Dialect d : {Dialect::FanucM, Dialect::SiemensIsoM}) {
+    const DialectTable* t = dialectTable(d);
+    ASSERT_NE(t->polar, nullptr);
+    EXPECT_EQ(t->findG(160)->action, GAction::PolarOn);
+    EXPECT_EQ(t->findG(150)->action, GAction::PolarOff);
+    EXPECT_TRUE(t->findG(150)->power_on_default);
+    EXPECT_EQ(t->alarm(Alarm::PolarNotAllowed), "NCC2088");
+  }
+  // Mazak: no G16 in the manual, so no rules and no code.
+  EXPECT_EQ(dialectTable(Dialect::MazakM)->polar, nullptr);
+  EXPECT_EQ(dialectTable(Dialect::MazakM)->findG(160), nullptr);
+  EXPECT_FALSE(dialectTable(Dialect::FanucM)->polar->angle_from_axis_at_current_pole);
+  EXPECT_TRUE(dialectTable(Dialect::SiemensIsoM)->polar->angle_from_axis_at_current_pole);
 }
 
 TEST(Polar, SiemensManualExampleE12) {
