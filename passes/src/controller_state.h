@@ -107,6 +107,7 @@ struct ControllerState {
   // here (`position` holds G31's end point for them). An absolute word makes one known again
   // (lowering_skip.cpp).
   AxisMask skip_axes = 0;
+  bool polar = false;                  // G16 in force (group 17; lowering_polar.cpp)
 };
 
 struct OffsetTables {

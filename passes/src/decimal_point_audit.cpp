@@ -21,7 +21,7 @@ void DecimalPointAudit::word(const WordValue& w, double as_read, const char* uni
 }
 
 void DecimalPointAudit::block(const DecodedBlock& words, const ValueRules& values,
-                              ir::Units units, const MachineConfig& machine) {
+                              ir::Units units, const MachineConfig& machine, int angle_axis) {
   if (!values.standard) return;  // calculator notation: `Z3` is 3 mm, as meant
   bool dwell = words.one_shot && words.one_shot->entry->action == GAction::Dwell;
   int x = machine.axisIndex("X");
@@ -29,7 +29,7 @@ void DecimalPointAudit::block(const DecodedBlock& words, const ValueRules& value
   for (int i = 0; i < count; ++i) {
     const auto& w = words.axes[i];
     if (!w || (dwell && i == x)) continue;
-    if (machine.axes[i].kind == AxisKind::Rotary)
+    if (machine.axes[i].kind == AxisKind::Rotary || i == angle_axis)
       word(*w, values.rotary(w->value, w->point), "deg");
     else
       word(*w, values.linear(w->value, w->point, units), "mm");

@@ -21,8 +21,9 @@ class DecimalPointAudit {
  public:
   // The coordinate words of one decoded block: axes (not G04's X, a time), I, J, K and R.
   // A zero reads the same either way and is not counted.
+  // `angle_axis`: an axis whose word is an angle in degrees in this block (G16), else -1.
   void block(const DecodedBlock& words, const ValueRules& values, ir::Units units,
-             const MachineConfig& machine);
+             const MachineConfig& machine, int angle_axis = -1);
   // At the end of the file: the warning, when the file has both kinds of coordinate words
   // and the decimal-point mode is standard.
   void finish(DiagnosticEngine& diags, const ValueRules& values) const;

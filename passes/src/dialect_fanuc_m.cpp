@@ -110,8 +110,8 @@ constexpr GCodeEntry kCodes[] = {
     {680, G::Rotation, 16, false, A::Rotation, 0, "coordinate system rotation"},
     {690, G::Rotation, 16, true, A::RotationCancel, 0, "coordinate system rotation cancel"},
     // group 17
-    {150, G::Polar, 17, true, A::CancelNoEffect, 0, "polar coordinates command cancel"},
-    {160, G::Polar, 17, false, A::NotSupported, 0, "polar coordinates command"},
+    {150, G::Polar, 17, true, A::PolarOff, 0, "polar coordinates command cancel"},
+    {160, G::Polar, 17, false, A::PolarOn, 0, "polar coordinates command"},
     // group 22
     {501, G::Mirror, 22, true, A::MirrorCancel, 0, "programmable mirror image cancel"},
     {511, G::Mirror, 22, false, A::Mirror, 0, "programmable mirror image"},
@@ -202,6 +202,7 @@ constexpr std::string_view kAlarms[] = {
     "NCC2117",  // FigureRotationNested (not raised)
     "NCC2118",  // FigureRotationWithRotation (not raised)
     "NCC2119",  // ArcAfterWorkRotation (not raised)
+    "NCC2088",  // PolarNotAllowed (the FANUC alarm number is not in the project's manuals)
 };
 static_assert(std::size(kAlarms) == static_cast<size_t>(Alarm::kCount));
 
@@ -329,7 +330,14 @@ constexpr TransformRules kTransforms{
 };
 }  // namespace
 
+// G15/G16 (FANUC Series 0i/30i-M "polar coordinate command"; docs/semantics.md).
+constexpr PolarRules kPolar{
+    .angle_from_axis_at_current_pole = false,  // an incremental angle continues the angle in force
+    .arcs = PolarRules::Arcs::RadiusOnly,      // "specify the radius ... with R"
+    .corners_allowed = false,                  // ,C / ,R "cannot be specified" in G16
+};
+
 const DialectTable kFanucMTable{Dialect::FanucM, kCodes, kAlarms, kBehaviour, kSystemVariables,
-                                &kCycles, &kTransforms};
+                                &kCycles, &kTransforms, &kPolar};
 
 }  // namespace ncc::passes

@@ -192,6 +192,7 @@ constexpr std::string_view kAlarms[] = {
     "849",      // FigureRotationNested (§13-7 note 3)
     "850",      // FigureRotationWithRotation: G68 with M98 (§13-7 note 4)
     "817",      // ArcAfterWorkRotation: an arc after G92.5 (§14-13)
+    "NCC2088",  // PolarNotAllowed (not raised: the manual has no G16)
 };
 static_assert(std::size(kAlarms) == static_cast<size_t>(Alarm::kCount));
 

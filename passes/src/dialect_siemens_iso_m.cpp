@@ -80,8 +80,8 @@ constexpr GCodeEntry kCodes[] = {
     {680, G::Rotation, 16, false, A::Rotation, 0, "coordinate rotation"},
     {690, G::Rotation, 16, true, A::RotationCancel, 0, "coordinate rotation cancel"},
     // group 17
-    {150, G::Polar, 17, true, A::CancelNoEffect, 0, "polar coordinates cancel"},
-    {160, G::Polar, 17, false, A::NotSupported, 0, "polar coordinates"},
+    {150, G::Polar, 17, true, A::PolarOff, 0, "polar coordinates cancel"},
+    {160, G::Polar, 17, false, A::PolarOn, 0, "polar coordinates"},
     // group 18 (one-shot)
     {40, G::OneShot, 18, false, A::Dwell, 0, "dwell"},
     {90, G::OneShot, 18, false, A::ExactStopOneShot, 0, "exact stop"},
@@ -167,6 +167,7 @@ constexpr std::string_view kAlarms[] = {
     "NCC2117",  // FigureRotationNested (not raised)
     "NCC2118",  // FigureRotationWithRotation (not raised)
     "NCC2119",  // ArcAfterWorkRotation (not raised)
+    "NCC2088",  // PolarNotAllowed (§4.5 names no alarm)
 };
 static_assert(std::size(kAlarms) == static_cast<size_t>(Alarm::kCount));
 
@@ -266,7 +267,15 @@ constexpr TransformRules kTransforms{
 };
 }  // namespace
 
+// G15/G16, §4.5 (docs/semantics.md).
+constexpr PolarRules kPolar{
+    // N15 `G91 X100 Y0` from X70.711 Y70.711 ends at X170.711 Y70.711: the angle from +X.
+    .angle_from_axis_at_current_pole = true,
+    .arcs = PolarRules::Arcs::NotSupported,  // §4.5 says nothing of G02/G03 in G16
+    .corners_allowed = true,                 // §4.8.2 puts no limit; the corner is Cartesian
+};
+
 const DialectTable kSiemensIsoMTable{Dialect::SiemensIsoM, kCodes, kAlarms, kBehaviour, kSystemVariables,
-                                &kCycles, &kTransforms};
+                                &kCycles, &kTransforms, &kPolar};
 
 }  // namespace ncc::passes

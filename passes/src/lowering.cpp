@@ -205,14 +205,17 @@ LowerResult lowerBlock(LoweringCore& core, const ast::Block& block) {
   ctx.words = std::move(*decoded);
 
   applyModalCodes(ctx, result);
+  applyPolarCode(ctx);
   applyCycleCodes(ctx);
   rejectParallelAxisPlane(ctx, *core.machine);
   if (ctx.words.k && repeatCountIsK(ctx)) {  // a cycle's K counts holes: no length
     DecodedBlock audited = ctx.words;
     audited.k.reset();
-    core.decimal_points.block(audited, ctx.settings.values, ctx.next.modal.units, *core.machine);
+    core.decimal_points.block(audited, ctx.settings.values, ctx.next.modal.units, *core.machine,
+                              polarAngleAxis(ctx));
   } else {
-    core.decimal_points.block(ctx.words, ctx.settings.values, ctx.next.modal.units, *core.machine);
+    core.decimal_points.block(ctx.words, ctx.settings.values, ctx.next.modal.units, *core.machine,
+                              polarAngleAxis(ctx));
   }
   Dependence depends = dependsOnUnknown(ctx);
   ctx.silent = depends.words;
@@ -230,7 +233,10 @@ LowerResult lowerBlock(LoweringCore& core, const ast::Block& block) {
   ctx.silent = depends.words || depends.motion;
   applyTransformCodes(ctx);
   // G68 / G51 / G51.1 / G50.1 take the axis words as their centres: such a block moves nothing.
-  if (ctx.failed || transformTakesAxisWords(ctx))
+  const bool centres = transformTakesAxisWords(ctx);
+  // G16: the plane words become Cartesian before anything reads them.
+  if (!ctx.failed && !centres) convertPolarWords(ctx);
+  if (ctx.failed || centres)
     ;
   else if (ctx.words.one_shot)
     oneShot(ctx);

@@ -123,10 +123,11 @@ void BlockContext::checkFormats() {
   const char* length_unit = units == ir::Units::Inch ? "in" : "mm";
   double length = v.lengthIncrement(units);
   int x = axisNamed("X");
+  const int angle = polarAngleAxis(*this);  // G16: the angle word has the rotary format
   for (int i = 0; i < axisCount(); ++i) {
     if (one_shot == GAction::Dwell && i == x)
       value(words.axes[i], v.time_increment, "s");
-    else if (isRotary(i))
+    else if (isRotary(i) || i == angle)
       value(words.axes[i], v.deg_increment * v.x10, "deg");
     else
       value(words.axes[i], length * v.x10, length_unit);

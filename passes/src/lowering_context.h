@@ -11,6 +11,7 @@
 //   lowering_reference.cpp         G27, G28, G30
 //   lowering_skip.cpp              G31 skip, and the blocks after it that need where it stopped
 //   lowering_machine_functions.cpp G04 dwell, S, T, M
+//   lowering_polar.cpp             G15/G16: radius and angle words into Cartesian ones
 //   lowering_recovery.cpp          after a rejected block: what is unknown, which later
 //                                  blocks depend on it (skipped without a diagnostic)
 //   lowering_context.cpp           the helpers below, shared by all of them
@@ -42,6 +43,13 @@ std::string mm(double v);
 ir::Frame frameOf(const ControllerState& cs, const DialectBehaviour& b);
 // The G52 shift that applies to the selected work system (shared or per work system).
 AxisValues& localOf(ControllerState& cs, const DialectBehaviour& b);
+
+// G16: a block's words on the plane's first axis (the radius) and second axis (the angle), as
+// written; `first`/`second` are the axis indices (lowering_polar.cpp).
+struct PolarWords {
+  int first = -1, second = -1;
+  std::optional<WordValue> radius, angle;
+};
 
 // Everything lowering keeps between blocks.
 struct LoweringCore {
@@ -116,6 +124,8 @@ struct BlockContext {
   bool used_k = false, used_q = false;  // K as a cycle's repeat count, Q as cycle data
   // The axes a G31 in this block moves: where they stop is known only at run time.
   AxisMask skip_moved = 0;
+  // G16: the block's plane words as written, before convertPolarWords made them Cartesian.
+  std::optional<PolarWords> polar;
   bool failed = false;
   // The block depends on unknown state (lowering_recovery.cpp): it is lowered for its effects
   // on the state only, and its errors are not reported (they would be consequences).
@@ -268,6 +278,26 @@ void trackTool(BlockContext& ctx);
 // The machine coordinates of the programmed point that the transforms in force take to
 // `machine` (after a move given in machine coordinates: G53, a reference return).
 AxisValues programmedAt(const BlockContext& ctx, const AxisValues& machine);
+
+// ---- lowering_polar.cpp ----
+// G15/G16 into the state; G16 (or a plane chosen under it) in a plane whose axes the machine
+// lacks is AxisMissing.
+void applyPolarCode(BlockContext& ctx);
+// In G16: the block's radius and angle words (the plane's first and second axis) rewritten as
+// Cartesian words on both plane axes, so that every move, hole cycle and G31 reads them as
+// usual: absolute where the point follows from the words alone, else incremental from the
+// block's start (baseWork), so that recovery and the G31 dependence see that it rests on the
+// current position. Codes whose words are no positions (G04 G10 G52 G53 G92 G92.1) keep them;
+// G27/G28/G30/G45-G48 with plane words, and arcs and corners the dialect's PolarRules refuse,
+// are PolarNotAllowed. The original words stay in BlockContext::polar.
+void convertPolarWords(BlockContext& ctx);
+// The axis whose word is an angle in this block (G16 in force, a code that reads positions),
+// else -1: the decimal-point audit counts it in degrees.
+int polarAngleAxis(const BlockContext& ctx);
+// A hole cycle's repeat (K/L) in G16: the plane coordinates of `hole` from the block's polar
+// words taken from `from` (the previous hole), as the control repeats them (`G91 Y45. K7`
+// drills round a bolt circle). Unchanged without polar words.
+void polarHole(const BlockContext& ctx, const AxisValues& from, AxisValues& hole);
 
 // ---- lowering_machine_functions.cpp ----
 void dwell(BlockContext& ctx, const GWord& g);  // G04

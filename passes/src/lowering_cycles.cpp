@@ -280,6 +280,7 @@ void lowerCycle(BlockContext& ctx) {
       double v = ctx.axisValue(i, *w);
       hole[i] = w->mode == ir::DistanceMode::Absolute ? v : hole[i] + v;
     }
+    polarHole(ctx, at, hole);  // G16: each repeat from the previous hole
     h.hole = hole;
     ctx.ops.push_back(h);
     at = hole;

@@ -91,6 +91,7 @@ std::optional<double> modalCode(const LoweringCore& core, int group_number) {
       return codeOf(cs.transforms.scaling ? GAction::Scaling : GAction::ScalingCancel);
     case GGroup::Mirror:
       return codeOf(cs.transforms.mirrorsAny() ? GAction::Mirror : GAction::MirrorCancel);
+    case GGroup::Polar: return codeOf(cs.polar ? GAction::PolarOn : GAction::PolarOff);
     case GGroup::WorkOffset: {
       const std::string& w = cs.work_name;  // "G54".."G59", "G54.1P3", "G54P3"
       if (w.rfind("G54.1", 0) == 0) return 54.1;

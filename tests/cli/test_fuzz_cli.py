@@ -150,7 +150,7 @@ def mutate_source(rng, data):
     lines = data.split(b"\n")
     for _ in range(rng.randint(1, 2)):
         kind = rng.randrange(7)
-        if kind == 0 and data:  # flip a bit
+        if kind == 0 and b"\n".join(lines):  # flip a bit (lines cut before may leave none)
             b = bytearray(b"\n".join(lines))
             i = rng.randrange(len(b))
             b[i] ^= 1 << rng.randrange(8)

@@ -47,6 +47,7 @@ enum class GAction : uint8_t {
   HoleCycle,       // G73-G89: a canned hole cycle (its entry in DialectTable::cycles)
   CycleCancel,     // G80
   ReturnInitial, ReturnR,                       // G98 G99
+  PolarOff, PolarOn,                            // G15 G16: polar coordinate command
   NotSupported,    // a real code of the controller that ncc does not implement yet
 };
 
@@ -125,6 +126,7 @@ enum class Alarm : uint8_t {
   FigureRotationNested,     // M98 with I J K inside a figure rotation (Mazak 849)
   FigureRotationWithRotation,  // figure rotation and G68 together (Mazak 850)
   ArcAfterWorkRotation,     // the move after G92.5 is an arc (Mazak 817)
+  PolarNotAllowed,          // in G16: a code, an arc or a corner the dialect's rules refuse
   kCount,
 };
 
@@ -288,6 +290,23 @@ struct TransformRules {
   bool mirror_only_outside_others;     // Siemens §3.2.4: not while scaling or rotation is in force
 };
 
+// How the dialect reads the polar coordinate command G16 (group 17; lowering_polar.cpp,
+// docs/semantics.md). Common to FANUC and Siemens: the plane's first axis word is the radius,
+// the second the angle (degrees, counter-clockwise from the first axis); the pole is the work
+// origin for an absolute radius and the current position for an incremental one; without a
+// radius the pole is the work origin and the radius the current position's distance from it.
+struct PolarRules {
+  // The angle an incremental or omitted angle starts from while the pole is the current
+  // position: true, 0 (the plane's first axis; Siemens §4.5 N15: `G91 X100 Y0` moves along +X);
+  // false, the current position's angle about the work origin (FANUC: the angle in force).
+  bool angle_from_axis_at_current_pole;
+  // G02/G03 in G16: the end point polar, the arc's radius by R only (FANUC "specify the radius
+  // of circular interpolation with R in the polar coordinate mode"), or not supported (the
+  // Siemens §4.5 text says nothing of arcs).
+  enum class Arcs : uint8_t { RadiusOnly, NotSupported } arcs;
+  bool corners_allowed;  // ,C / ,R (FANUC: "cannot be specified in the polar coordinate mode")
+};
+
 struct DialectTable {
   Dialect dialect;
   std::span<const GCodeEntry> gcodes;
@@ -296,6 +315,7 @@ struct DialectTable {
   std::span<const SystemVariableRange> system_variables;
   const CycleRules* cycles = nullptr;  // the canned hole cycles
   const TransformRules* transforms = nullptr;  // coordinate rotation, scaling, mirror
+  const PolarRules* polar = nullptr;   // G16; null where the dialect has no polar command
 
   const GCodeEntry* findG(int code10) const;
   std::string_view alarm(Alarm a) const { return alarm_codes[static_cast<size_t>(a)]; }
