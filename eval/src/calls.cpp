@@ -261,14 +261,23 @@ bool Evaluator::Impl::callWords(ast::Block& block, const ProgramPoint& at, bool&
         if (!n) return false;
         call.repeats = *n;
       }
-      // Mazak figure rotation (§13-7: M98 P H I J K L turns each repeat about I J) is a
-      // coordinate rotation, not built yet: refused rather than run unrotated.
-      for (const char a : {'I', 'J', 'K'})
-        if (std::optional<ast::Word> w = take(block.words, a)) {
-          fail(EvalError::NotSupported, w->loc,
-               "M98 with I J K (figure rotation) is not supported yet");
+      // Mazak figure rotation (§13-7: M98 P H I J K L turns each repeat about start + I J K;
+      // "when L is 1 or less, the figure is not rotated").
+      std::array<std::optional<double>, 3> ijk;
+      bool any_ijk = false;
+      for (const char a : {'I', 'J', 'K'}) {
+        std::optional<ast::Word> w = take(block.words, a);
+        if (!w) continue;
+        if (!rules.figure_rotation || !options.figure_rotation.begin) {
+          fail(EvalError::AddressValue, w->loc,
+               absl::StrCat("address ", w->address, " has no meaning in M98"));
           return false;
         }
+        ijk[static_cast<size_t>(a - 'I')] =
+            options.argument_value ? options.argument_value(*w) : literalValue(w->value);
+        any_ijk = true;
+      }
+      if (any_ijk && call.repeats > 1) call.figure = ijk;
       if (call.repeats < 0) {
         fail(EvalError::AddressValue, l ? l->loc : code_loc, "a negative repeat count");
         return false;
@@ -375,6 +384,20 @@ bool Evaluator::Impl::call(const Pending& p) {
       f.header_at_begin = false;
     }
   }
+  if (p.figure) {
+    for (const Frame& open : frames)
+      if (open.figure_rotation) {
+        fail(EvalError::FigureRotationNested, p.loc,
+             "a figure rotation (M98 with I J K) cannot be called inside another one");
+        return false;
+      }
+    if (!options.figure_rotation.begin(*p.figure)) {
+      fail(EvalError::FigureRotationWithRotation, p.loc,
+           "a figure rotation (M98 with I J K) cannot be called while G68 is in force");
+      return false;
+    }
+    f.figure_rotation = true;
+  }
   f.cursor->seek(f.begin);
   f.call_point = p.at;
   f.call_loc = p.loc;
@@ -389,6 +412,7 @@ bool Evaluator::Impl::call(const Pending& p) {
 void Evaluator::Impl::closeFrame() {
   Frame& f = frames.back();
   if (f.macro) variables.popLocals();
+  if (f.figure_rotation) options.figure_rotation.end();
   rejected_closed += f.cursor->rejectedBlocks();
   frames.pop_back();
 }
@@ -411,6 +435,7 @@ bool Evaluator::Impl::ret(const Pending& p) {
     --f.repeats_left;
     f.loops.clear();
     f.cursor->seek(f.begin);
+    if (f.figure_rotation) options.figure_rotation.run(++f.run);
     return true;
   }
   const ProgramPoint call_point = f.call_point;

@@ -31,6 +31,8 @@ struct Frame {
   SourceLocation call_loc;
   int64_t repeats_left = 0;      // runs still to come after this one (M98 L, G65 L)
   bool macro = false;            // a macro call: it opened a level of locals
+  bool figure_rotation = false;  // Mazak M98 I J K L: each repeat is turned (FigureRotationHooks)
+  int64_t run = 0;               // the run being made (0: the first)
   bool is_main = false;
   std::string code;              // a code macro's code ("M6"): it acts as the plain code inside
   bool seen_content = false;
@@ -59,6 +61,7 @@ struct Pending {
   int64_t repeats = 1;
   bool macro = false;
   Variables::Locals arguments;
+  std::optional<std::array<std::optional<double>, 3>> figure;  // M98 I J K with L > 1
   SourceLocation loc;
   ProgramPoint at;  // the call or return block
 };

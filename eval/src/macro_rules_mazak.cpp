@@ -19,6 +19,8 @@ constexpr std::array<std::string_view, kNccCodes.size()> alarms() {
   set(EvalError::CallNesting, "842");      // §13-4: "DEPASS. EMBOIT. SOUS-PROGRAM."
   set(EvalError::ModalCallCancel, "857");  // §13-9-2: "OPER. ERRONEE DU MACRO G67"
   set(EvalError::AddressValue, "809");     // §6: "number: >8 digits" (notes §6)
+  set(EvalError::FigureRotationNested, "849");        // §13-7 note 3: "DEPASS. EMBOIT. ROTAT. FIGURE"
+  set(EvalError::FigureRotationWithRotation, "850");  // §13-7 note 4: "COMMANDE G68 AVEC M98"
   // Unnumbered in the manual (NCC codes): a negative variable number (§13-6 "provoque une
   // erreur"), #0 on the left (§13-9-3), [ ] deeper than 5, unpaired WHILE/END ("alarm at
   // M99"), DO nesting and identifiers, the 4-level macro nesting (§13-9-2 7.).
@@ -66,6 +68,7 @@ constinit const MacroRules kMazakRules{
     .return_search = SequenceSearch::ForwardThenFromStart,  // M99 P: not stated, as GOTO
     .repeat = RepeatEncoding::LAddress,  // §13-4: M98 P H L, L 1-9999, L0 = skip
     .program_number_digits = 8,          // §13-4: P up to 8 digits
+    .figure_rotation = true,             // §13-7: M98 P H I J K L
     .user_alarms = kUserAlarms,
     .argument_spec1 = kArgumentSpec1,    // §13-9-4 table (G L N P only in G66.1, O never)
     .program_file_names = kIsoProgramFiles,

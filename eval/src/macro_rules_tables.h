@@ -34,6 +34,8 @@ inline constexpr std::array<std::string_view, static_cast<size_t>(EvalError::kCo
         "NCC2418",  // ArgumentBeforeCall
         "NCC2419",  // StepLimit
         "NCC2010",  // NotSupported: the code lowering gives a feature not built yet
+        "NCC2420",  // FigureRotationNested
+        "NCC2421",  // FigureRotationWithRotation
         "NCC0023",  // RunTimeValue: never an error (the rest is prepared at run time)
 };
 

@@ -66,7 +66,15 @@ struct TransformState {
   std::optional<ir::Affine> work_rotation;
   std::array<double, 3> work_rotation_centre{};
   bool work_rotation_just_set = false;  // the next move must be G00/G01 (Mazak 817)
-  // Mazak figure rotation (M98 I J K L): the turn of the repeat being run.
+  // Mazak figure rotation (M98 I J K L): the call in progress (its start, work coordinates, and
+  // centre on X Y Z, the angle the first run swept) and the turn of the run being made.
+  struct FigureCall {
+    std::array<double, 3> start{}, centre{};
+    AxisValues start_position{};  // ControllerState::position at the call
+    ir::Plane plane = ir::Plane::XY;
+    double angle = 0.0;           // degrees, known after the first run
+  };
+  std::optional<FigureCall> figure_call;
   std::optional<ir::Affine> figure;
   // Where the tool is (machine coordinates) when that is not the commanded point, which is
   // `ControllerState::position`: after a block that moved under a transform. A block whose

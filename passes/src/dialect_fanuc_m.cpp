@@ -199,7 +199,6 @@ constexpr std::string_view kAlarms[] = {
     "NCC2115",  // RotationNesting: a third G68 (FANUC 3-D conversion nests twice)
     "PS0142",   // ScaleFactorRange: illegal scale rate (FANUC common)
     "NCC2116",  // RotationAngleRange
-    "NCC2117",  // FigureRotationNested (not raised)
     "NCC2118",  // FigureRotationWithRotation (not raised)
     "NCC2119",  // ArcAfterWorkRotation (not raised)
     "NCC2088",  // PolarNotAllowed (the FANUC alarm number is not in the project's manuals)

@@ -189,7 +189,6 @@ constexpr std::string_view kAlarms[] = {
     "NCC2115",  // RotationNesting (not raised: nested 3-D G68 compose)
     "809",      // ScaleFactorRange: G51 P too large (§13-10 3.A)
     "809",      // RotationAngleRange: number not allowed
-    "849",      // FigureRotationNested (§13-7 note 3)
     "850",      // FigureRotationWithRotation: G68 with M98 (§13-7 note 4)
     "817",      // ArcAfterWorkRotation: an arc after G92.5 (§14-13)
     "NCC2088",  // PolarNotAllowed (not raised: the manual has no G16)

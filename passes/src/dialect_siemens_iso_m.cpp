@@ -164,7 +164,6 @@ constexpr std::string_view kAlarms[] = {
     "NCC2115",  // RotationNesting (not raised: a third G68 replaces the second)
     "NCC2116",  // ScaleFactorRange: a zero factor
     "NCC2116",  // RotationAngleRange
-    "NCC2117",  // FigureRotationNested (not raised)
     "NCC2118",  // FigureRotationWithRotation (not raised)
     "NCC2119",  // ArcAfterWorkRotation (not raised)
     "NCC2088",  // PolarNotAllowed (§4.5 names no alarm)

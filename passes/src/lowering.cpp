@@ -329,6 +329,18 @@ double Lowering::leastIncrement() const {
 
 int Lowering::addressDigits() const { return state_->settings.values.digits; }
 
+bool Lowering::figureRotationBegin(const std::array<std::optional<double>, 3>& ijk) {
+  return !state_->table || passes::figureRotationBegin(*state_, ijk);
+}
+
+void Lowering::figureRotationRun(int64_t run) {
+  if (state_->table) passes::figureRotationRun(*state_, run);
+}
+
+void Lowering::figureRotationEnd() {
+  if (state_->table) passes::figureRotationEnd(*state_);
+}
+
 void Lowering::blockUnreadable() {
   if (state_->table) forgetEverything(state_->cs);
 }

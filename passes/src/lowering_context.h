@@ -270,11 +270,19 @@ void workRotation(BlockContext& ctx, const GWord& g);  // Mazak G92.5
 // The transforms in force after the block, for its IR block (or in a given state).
 ir::Transform transformOf(const BlockContext& ctx);
 ir::Transform transformOf(const BlockContext& ctx, const ControllerState& cs);
+ir::Transform transformOf(const LoweringCore& core, const ControllerState& cs);
+// The machine point the tool goes to for the programmed point `position` (machine coordinates
+// of the programmed point, as ControllerState::position) under the state's transforms.
+AxisValues imageOf(const LoweringCore& core, const ControllerState& cs, const AxisValues& position);
 // Whether the tool moves on the way to the work-space `target`: `moves` (the programmed point
 // changes) unless a transform is or was in force, then whether the point it maps to changes.
 bool movesUnderTransforms(const BlockContext& ctx, const AxisValues& target, bool moves);
 // After a block that moved: where the tool now is, if not at the commanded point.
 void trackTool(BlockContext& ctx);
+// Mazak figure rotation (Lowering::figureRotationBegin/Run/End).
+bool figureRotationBegin(LoweringCore& core, const std::array<std::optional<double>, 3>& ijk);
+void figureRotationRun(LoweringCore& core, int64_t run);
+void figureRotationEnd(LoweringCore& core);
 // The machine coordinates of the programmed point that the transforms in force take to
 // `machine` (after a move given in machine coordinates: G53, a reference return).
 AxisValues programmedAt(const BlockContext& ctx, const AxisValues& machine);

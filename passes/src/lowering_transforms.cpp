@@ -65,6 +65,11 @@ bool angleInRange(BlockContext& ctx, const WordValue& w, double degrees, const c
 // ---- G68 ----------------------------------------------------------------------------------
 void pushRotation(BlockContext& ctx, const GWord& g, const ir::Affine& r, bool stacks) {
   TransformState& t = ctx.next.transforms;
+  if (t.figure_call) {  // Mazak §13-8 6., §13-7 note 4
+    ctx.fail(Alarm::FigureRotationWithRotation, g.loc,
+             "G68 cannot be given during a figure rotation (M98 with I J K)");
+    return;
+  }
   if (!stacks || t.rotations.empty()) {
     t.rotations.assign(1, r);
     return;
@@ -465,14 +470,20 @@ void workRotation(BlockContext& ctx, const GWord& g) {
   (void)g;
 }
 
-ir::Transform transformOf(const BlockContext& ctx) { return transformOf(ctx, ctx.next); }
+ir::Transform transformOf(const BlockContext& ctx) { return transformOf(ctx.core, ctx.next); }
 
 ir::Transform transformOf(const BlockContext& ctx, const ControllerState& cs) {
+  return transformOf(ctx.core, cs);
+}
+
+ir::Transform transformOf(const LoweringCore& core, const ControllerState& cs) {
   ir::Transform out;
-  if (!ctx.table.transforms) return out;
+  const TransformRules* rules = core.table->transforms;
+  if (!rules) return out;
+  const std::array<int8_t, 3>& xyz = core.xyz;
   const TransformState& t = cs.transforms;
-  ir::Affine map = identityAffine(xyz(ctx));
-  for (Stage stage : rules(ctx).order) {
+  ir::Affine map = identityAffine(xyz);
+  for (Stage stage : rules->order) {
     switch (stage) {
       case Stage::FigureRotation:
         if (t.figure) map = compose(*t.figure, map);
@@ -482,7 +493,7 @@ ir::Transform transformOf(const BlockContext& ctx, const ControllerState& cs) {
           Vec3 f{1, 1, 1};
           for (int s = 0; s < 3; ++s)
             if (t.mirrored[s]) f[s] = -1.0;
-          map = compose(scaling(xyz(ctx), t.mirror_centre, f), map);
+          map = compose(scaling(xyz, t.mirror_centre, f), map);
         }
         break;
       case Stage::Scaling:
@@ -490,12 +501,12 @@ ir::Transform transformOf(const BlockContext& ctx, const ControllerState& cs) {
           Vec3 f{1, 1, 1};
           for (int s = 0; s < 3; ++s)
             if (t.scaled[s]) f[s] = t.scale_factor[s];
-          map = compose(scaling(xyz(ctx), t.scale_centre, f), map);
+          map = compose(scaling(xyz, t.scale_centre, f), map);
         }
         break;
       case Stage::Rotation: {
         // The first rotation acts last: the second is given in the first's coordinates.
-        ir::Affine r = identityAffine(xyz(ctx));
+        ir::Affine r = identityAffine(xyz);
         for (const ir::Affine& each : t.rotations) r = compose(r, each);
         map = compose(r, map);
         break;
@@ -507,20 +518,19 @@ ir::Transform transformOf(const BlockContext& ctx, const ControllerState& cs) {
   return out;
 }
 
-namespace {
 // The machine point the tool goes to for the programmed point `position` (machine coordinates
 // of the programmed point, ControllerState::position) under the state's transforms.
-AxisValues imageOf(const BlockContext& ctx, const ControllerState& cs, const AxisValues& position) {
-  const ir::Transform t = transformOf(ctx, cs);
+AxisValues imageOf(const LoweringCore& core, const ControllerState& cs, const AxisValues& position) {
+  const ir::Transform t = transformOf(core, cs);
   if (!t.any()) return position;
-  const AxisValues total = frameOf(cs, ctx.behaviour).total();
+  const int n = std::min(core.machine->axisCount(), kMaxAxes);
+  const AxisValues total = frameOf(cs, core.table->behaviour).total();
   AxisValues work = position;
-  for (int i = 0; i < ctx.axisCount(); ++i) work[i] -= total[i];
+  for (int i = 0; i < n; ++i) work[i] -= total[i];
   applyPoint(workSpaceMap(t, total), work);
-  for (int i = 0; i < ctx.axisCount(); ++i) work[i] += total[i];
+  for (int i = 0; i < n; ++i) work[i] += total[i];
   return work;
 }
-}  // namespace
 
 bool movesUnderTransforms(const BlockContext& ctx, const AxisValues& target, bool moves) {
   const std::optional<AxisValues>& tool_at = ctx.core.cs.transforms.tool_at;
@@ -529,7 +539,7 @@ bool movesUnderTransforms(const BlockContext& ctx, const AxisValues& target, boo
   const AxisValues total = frameOf(ctx.next, ctx.behaviour).total();
   AxisValues to = target;
   for (int i = 0; i < ctx.axisCount(); ++i) to[i] += total[i];
-  return !ctx.samePosition(tool_at ? *tool_at : ctx.core.cs.position, imageOf(ctx, ctx.next, to));
+  return !ctx.samePosition(tool_at ? *tool_at : ctx.core.cs.position, imageOf(ctx.core, ctx.next, to));
 }
 
 void trackTool(BlockContext& ctx) {
@@ -540,12 +550,72 @@ void trackTool(BlockContext& ctx) {
             std::holds_alternative<ir::Linear>(op) || std::holds_alternative<ir::Arc>(op) ||
             std::holds_alternative<ir::Skip>(op) || std::holds_alternative<ir::HoleCycle>(op);
   if (!moved) return;
-  const AxisValues at = imageOf(ctx, ctx.next, ctx.next.position);
+  const AxisValues at = imageOf(ctx.core, ctx.next, ctx.next.position);
   std::optional<AxisValues>& tool_at = ctx.next.transforms.tool_at;
   if (ctx.samePosition(at, ctx.next.position))
     tool_at.reset();
   else
     tool_at = at;
+}
+
+// ---- Mazak figure rotation (§13-7) ----------------------------------------------------------
+bool figureRotationBegin(LoweringCore& core, const std::array<std::optional<double>, 3>& ijk) {
+  ControllerState& cs = core.cs;
+  TransformState& t = cs.transforms;
+  if (!t.rotations.empty()) return false;  // 850: "COMMANDE G68 AVEC M98"
+  TransformState::FigureCall call;
+  call.plane = cs.modal.plane;
+  call.start_position = cs.position;
+  const AxisValues total = frameOf(cs, core.table->behaviour).total();
+  const auto sl = planeSlots(call.plane);
+  for (int s = 0; s < 3; ++s) {
+    const int i = core.xyz[s];
+    if (i >= 0) call.start[s] = cs.position[i] - total[i];
+  }
+  call.centre = call.start;
+  // I J in G17, K I in G18, J K in G19: the centre's offset from the start in the plane.
+  for (int s : {sl[0], sl[1]})
+    if (ijk[s]) call.centre[s] += *ijk[s];
+  t.figure_call = call;
+  t.figure.reset();
+  return true;
+}
+
+void figureRotationRun(LoweringCore& core, int64_t run) {
+  ControllerState& cs = core.cs;
+  TransformState& t = cs.transforms;
+  if (!t.figure_call) return;
+  TransformState::FigureCall& call = *t.figure_call;
+  const auto sl = planeSlots(call.plane);
+  if (run == 1) {
+    // The angle start - centre - end of the first run, counterclockwise positive.
+    const AxisValues total = frameOf(cs, core.table->behaviour).total();
+    double end[3] = {};
+    for (int s = 0; s < 3; ++s)
+      if (core.xyz[s] >= 0) end[s] = cs.position[core.xyz[s]] - total[core.xyz[s]];
+    const double a0 = call.start[sl[0]] - call.centre[sl[0]], b0 = call.start[sl[1]] - call.centre[sl[1]];
+    const double a1 = end[sl[0]] - call.centre[sl[0]], b1 = end[sl[1]] - call.centre[sl[1]];
+    call.angle = std::atan2(a0 * b1 - b0 * a1, a0 * a1 + b0 * b1) * 180.0 / std::numbers::pi;
+  }
+  // The tool stays where the last run left it; the next run is programmed from the start again
+  // (absolute programs repeat as written, incremental ones from the same point).
+  const AxisValues at = imageOf(core, cs, cs.position);
+  cs.position = call.start_position;
+  Vec3 axis{};
+  axis[sl[2]] = 1.0;
+  t.figure = rotation(core.xyz, call.centre, axis, call.angle * static_cast<double>(run));
+  t.tool_at = at;
+}
+
+void figureRotationEnd(LoweringCore& core) {
+  ControllerState& cs = core.cs;
+  TransformState& t = cs.transforms;
+  if (!t.figure_call) return;
+  // The programmed point becomes where the tool is: the next call or move starts there.
+  cs.position = imageOf(core, cs, cs.position);
+  t.figure_call.reset();
+  t.figure.reset();
+  t.tool_at.reset();
 }
 
 AxisValues programmedAt(const BlockContext& ctx, const AxisValues& machine) {

@@ -79,6 +79,11 @@ BlockLoop::BlockLoop(const Settings& settings, eval::ProgramStore& store, uint32
   options.real_increment = [this] { return lowering_.leastIncrement(); };
   options.address_digits = lowering_.addressDigits();
   options.code_macros = codeMacros(machine);
+  options.figure_rotation.begin = [this](const std::array<std::optional<double>, 3>& ijk) {
+    return lowering_.figureRotationBegin(ijk);
+  };
+  options.figure_rotation.run = [this](int64_t run) { lowering_.figureRotationRun(run); };
+  options.figure_rotation.end = [this] { lowering_.figureRotationEnd(); };
   evaluator_ = std::make_unique<eval::Evaluator>(std::move(options), store,
                                                  store.open(main_file), variables_, diags);
 }

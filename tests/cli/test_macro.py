@@ -270,8 +270,15 @@ class MacroTest(ScratchDirTest):
             ("w0", "#0=1\nM30\n", 1, 1, "NCC2401", "#0 is always vacant and cannot be assigned", "mazak-m"),
             ("pi", "#1=1.5\nGOTO#1\nM30\n", 2, 1, "809", "the GOTO target must be an integer, not 1.5",
              "mazak-m"),
-            ("fr", "M98 P10 I1.\nM30\n", 1, 9, "NCC2010", "M98 with I J K (figure rotation) is not supported yet",
-             "mazak-m"),
+            # Figure rotation (§13-7 notes 3 and 4): nested, with G68 either way; FANUC has none.
+            ("fr", "M98 P10 I1. L2\nM30\nO10\nM98 P20 I1. L2\nM99\nO20\nX1.\nM99\n", 4, 1, "849",
+             "a figure rotation (M98 with I J K) cannot be called inside another one", "mazak-m"),
+            ("fg", "G68 X0 Y0 R10.\nM98 P10 I1. L2\nM30\nO10\nX1.\nM99\n", 2, 1, "850",
+             "a figure rotation (M98 with I J K) cannot be called while G68 is in force", "mazak-m"),
+            ("fh", "M98 P10 I1. L2\nM30\nO10\nG68 X0 Y0 R10.\nM99\n", 4, 1, "850",
+             "G68 cannot be given during a figure rotation (M98 with I J K)", "mazak-m"),
+            ("fi", "M98 P10 I1.\nM30\nO10\nX1.\nM99\n", 1, 9, "NCC2406", "address I has no meaning in M98",
+             "fanuc-m"),
         ]
         for name, text, line, col, code, message, dialect in cases:
             with self.subTest(name):

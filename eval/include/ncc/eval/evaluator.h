@@ -4,6 +4,7 @@
 // lowering blocks whose words hold plain values: `X#1` becomes `X12.5`, a word whose variable
 // is vacant is dropped, the call words are gone. Plain blocks (no `#`, no call) pass through
 // untouched. docs/middle.md places it among the stages; docs/macro.md gives the semantics.
+#include <array>
 #include <cstdint>
 #include <functional>
 #include <map>
@@ -46,6 +47,16 @@ struct EvaluatorOptions {
   // ("M6_MAKRO"). The block's other words are the arguments, as with G65; inside the macro a
   // code calls nothing and acts as the plain code.
   std::map<std::string, std::string> code_macros;
+  // Mazak figure rotation (M98 P H I J K L, MacroRules::figure_rotation): the controller turns
+  // run k (0 .. L-1) of the subprogram. `begin` when the call starts, with I J K as passed (mm;
+  // nullopt where not written), false when the controller refuses (G68 in force); `run` before
+  // each later run; `end` when the call returns for good. Unset: such a call is refused.
+  struct FigureRotationHooks {
+    std::function<bool(const std::array<std::optional<double>, 3>& ijk)> begin;
+    std::function<void(int64_t run)> run;
+    std::function<void()> end;
+  };
+  FigureRotationHooks figure_rotation;
   // ADP[x]: least input increments per input unit (1000 with 0.001 mm).
   double adp_scale = 1000.0;
 };

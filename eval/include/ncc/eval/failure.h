@@ -29,7 +29,9 @@ enum class EvalError : uint8_t {
   ModalCallCancel,       // G67 without G66
   ArgumentBeforeCall,    // an argument written before G65 / G66 (Siemens)
   StepLimit,             // a loop that does not end: the configured step limit was reached
-  NotSupported,          // a word of a call ncc does not build yet (Mazak M98 I J K figure rotation)
+  NotSupported,          // a word of a call ncc does not build yet
+  FigureRotationNested,  // M98 with I J K inside a figure rotation (Mazak 849)
+  FigureRotationWithRotation,  // figure rotation while G68 is in force (Mazak 850)
   // A value known only when the program runs (where a G31 stopped, an interface signal): not
   // an error; the compiler leaves the rest of the program to the VM (docs/runtime.md).
   RunTimeValue,

@@ -67,6 +67,9 @@ struct MacroRules {
   SequenceSearch return_search;             // M99 P n
   RepeatEncoding repeat;
   int program_number_digits;                // the program part of P (4 with HighDigitsOfP)
+  // M98 with I J K and L turns each repeat about a centre (Mazak §13-7 figure rotation);
+  // false: I J K have no meaning in M98.
+  bool figure_rotation = false;
   // #3000 = n: the alarm number shown is n + offset for the first range n lies in.
   struct UserAlarmRange {
     int64_t first, last, offset;

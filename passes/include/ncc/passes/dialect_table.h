@@ -123,7 +123,6 @@ enum class Alarm : uint8_t {
   RotationNesting,          // more G68 in force than the control stacks
   ScaleFactorRange,         // G51 factor zero or beyond the range
   RotationAngleRange,       // G68 / G92.5 angle beyond +-360 degrees
-  FigureRotationNested,     // M98 with I J K inside a figure rotation (Mazak 849)
   FigureRotationWithRotation,  // figure rotation and G68 together (Mazak 850)
   ArcAfterWorkRotation,     // the move after G92.5 is an arc (Mazak 817)
   PolarNotAllowed,          // in G16: a code, an arc or a corner the dialect's rules refuse

@@ -4,6 +4,7 @@
 // per block), the decimal-point and increment-system rules, units, G90/G91, feeds, and the
 // semantics of motion, dwell, coordinate systems, offsets and reference returns. Targets are
 // emitted in the work space with the frame in force (see ir.h).
+#include <array>
 #include <filesystem>
 #include <memory>
 #include <optional>
@@ -66,6 +67,14 @@ class Lowering {
   // The least input increment of a length in the unit in force (0.001 mm, 0.0001 inch), and
   // the digits an address holds (format_digits).
   double leastIncrement() const;
+  // Mazak figure rotation (M98 P H I J K L, §13-7; eval::EvaluatorOptions::FigureRotationHooks):
+  // the call starts where the tool is, about that point + I J K (mm, in the plane); false when
+  // G68 is in force (alarm 850). Run k >= 1 starts from the call's start point again and is
+  // turned by k times the angle the first run swept about the centre; at the end the
+  // programmed point is where the tool is.
+  bool figureRotationBegin(const std::array<std::optional<double>, 3>& ijk);
+  void figureRotationRun(int64_t run);
+  void figureRotationEnd();
   int addressDigits() const;
   // End of input: finishes the sink. (None of fanuc-m, mazak-m, siemens-iso-m requires
   // M02/M30: Mazak memory operation implies M30, and the Siemens examples end without it.)
