@@ -248,6 +248,12 @@ std::vector<ParamSpec> buildRegistry() {
                        "Lathe G83/G87: \"high_speed\" (retract d) or \"peck\" (retract to R) "
                        "(FANUC RTR, No.5101#2)")
                       .oneOf({"high_speed", "peck"}));
+  specs.push_back(Spec("peck_tapping_type", T::String, "fanuc-m", "\"high_speed\"",
+                       std::string("high_speed"),
+                       "Deep-hole rigid tapping (G84/G74 with Q after M29): \"high_speed\" (back off "
+                       "d, peck_return) or \"peck\" (out to R, back to d above, peck_clearance) "
+                       "(FANUC PCP, No.5200#5; d is No.5213)")
+                      .oneOf({"high_speed", "peck"}));
   specs.push_back(Spec("peck_return", T::Number, "fanuc-m, fanuc-t, mazak-m, siemens-iso-m", "1.0",
                        1.0,
                        "G73 (and high-speed peck) retract amount d, mm (FANUC No.5114, Mazak F12; "
@@ -384,11 +390,12 @@ std::vector<ParamSpec> buildRegistry() {
       "parallel_axes", "peck_cycle_type", "reset_feed_mode",
       "rigid_tap_retract_override", "rough_finish_pass_type1",
       "rough_finish_pass_type2", "second_geometry_axes",
-      "spindle_encoder", "startup_type", "t_code_digits", "tapping_type",
+      "spindle_encoder", "startup_type", "t_code_digits",
       "thread_chamfer_signal", "tnrc_lookahead_blocks", "wear_offset_method"};
   // The hole-cycle keys act in the mill dialects' cycles (docs/cycles.md), not yet in fanuc-t.
   static constexpr std::string_view kMillCycles[] = {"boring_shift_direction", "peck_clearance",
-                                                     "peck_return", "tap_retract_percent"};
+                                                     "peck_return", "tap_retract_percent",
+                                                     "tapping_type", "peck_tapping_type"};
   // The transform keys act in the mill dialects' G68/G51 (docs/transforms.md).
   static constexpr std::string_view kMillTransforms[] = {
       "default_rotation_angle", "default_scale_factor", "rotation_angle_incremental",
@@ -402,7 +409,9 @@ std::vector<ParamSpec> buildRegistry() {
       spec.applied_in = "";
     if (std::find(std::begin(kMillCycles), std::end(kMillCycles), spec.key) !=
         std::end(kMillCycles))
-      spec.applied_in = "fanuc-m, mazak-m, siemens-iso-m";
+      spec.applied_in = spec.key == "tapping_type" || spec.key == "peck_tapping_type"
+                            ? spec.dialects
+                            : "fanuc-m, mazak-m, siemens-iso-m";
   }
   std::sort(out.begin(), out.end(),
             [](const ParamSpec& a, const ParamSpec& b) { return a.key < b.key; });

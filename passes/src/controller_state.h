@@ -44,6 +44,7 @@ struct CycleState {
   bool has_p = false;
   double d = 0.0;               // Mazak G73/G83 D (mm); 0: the parameter
   bool has_d = false;
+  bool rigid = false;           // FANUC M29: rigid tapping until G80 (deep-hole tapping with Q)
 };
 
 // The coordinate transforms in force (lowering_transforms.cpp, docs/transforms.md). Centres are

@@ -83,6 +83,29 @@ void pecks(Sequence& s, const ir::HoleCycle& c) {
   }
 }
 
+// Peck tapping (FANUC deep-hole rigid tapping, Siemens §4.1.13): tap Q at F; then back off d
+// at the retract speed and tap d + Q (high speed), or out to R at the retract speed, back down
+// to d above the last depth (Siemens at F, FANUC at the retract speed) and tap d + Q; to Z. The
+// spindle follows the axis (rigid): the back-offs reverse it without an M code.
+void tapPecks(Sequence& s, const ir::HoleCycle& c) {
+  const double dir = c.bottom < c.r_level ? -1.0 : 1.0;
+  double depth = c.r_level;
+  for (;;) {
+    double next = depth + dir * c.peck;
+    if ((next - c.bottom) * dir >= -kSame) next = c.bottom;
+    s.feedTo(next, c.feed);
+    depth = next;
+    if (next == c.bottom) return;
+    const double above = depth - dir * c.peck_distance;
+    if (c.peck_tap_to_r) {
+      s.feedTo(c.r_level, c.retract_feed);
+      s.feedTo(above, c.peck_approach_feed);
+    } else {
+      s.feedTo(above, c.retract_feed);
+    }
+  }
+}
+
 K direction(int d) { return d < 0 ? K::SpindleCCW : K::SpindleCW; }
 
 AxisValues shifted(const AxisValues& at, const AxisValues& shift, double sign) {
@@ -136,7 +159,10 @@ std::vector<ir::Operation> expandHoleCycle(const ir::HoleCycle& c, int axis_coun
       s.rapidTo(level);
       break;
     case Kind::Tap:
-      s.feedTo(c.bottom, c.feed);
+      if (c.peck > 0)
+        tapPecks(s, c);
+      else
+        s.feedTo(c.bottom, c.feed);
       s.dwell();
       s.spindle(direction(-c.spindle_direction));
       s.feedTo(c.r_level, c.retract_feed);

@@ -235,6 +235,9 @@ constexpr CycleRules kCycles{
     .peck_retract_feed = 0.0,             // G73 backs off at rapid (FANUC common)
     .d_is_peck_distance = false,
     .default_shift_direction = 1,         // FANUC common: RD1 = RD2 = 0, +X in G17
+    .peck_tapping = CycleRules::PeckTapping::RigidMode,  // deep-hole rigid tapping (lathe §4.4)
+    .rigid_tap_m_code = 29,
+    .peck_tap_approach_at_feed = false,
 };
 
 constexpr DialectBehaviour kBehaviour{

@@ -227,6 +227,9 @@ constexpr CycleRules kCycles{
     .peck_retract_feed = 9999.0,          // §13-1-6: f2, the fixed return speed, 9999 mm/min
     .d_is_peck_distance = true,
     .default_shift_direction = 1,         // I14 bits 3-4 = 0: +X in G17
+    .peck_tapping = CycleRules::PeckTapping::None,  // §13-1: no Q in G74/G84
+    .rigid_tap_m_code = 0,
+    .peck_tap_approach_at_feed = false,
 };
 
 constexpr DialectBehaviour kBehaviour{

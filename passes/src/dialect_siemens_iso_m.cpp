@@ -196,6 +196,9 @@ constexpr CycleRules kCycles{
     .peck_retract_feed = 0.0,
     .d_is_peck_distance = false,
     .default_shift_direction = 0,         // _ZSFI[5] = 0: -X in G17
+    .peck_tapping = CycleRules::PeckTapping::TappingType,  // §4.1.13
+    .rigid_tap_m_code = 29,  // MD20095 (ISO mode; rigid is the tapping_type default anyway)
+    .peck_tap_approach_at_feed = true,
 };
 
 constexpr DialectBehaviour kBehaviour{

@@ -60,6 +60,10 @@ void applyCodes(BlockContext& ctx) {
     if (m.value == 5) ctx.next.spindle_direction = 0;
   }
   CycleState& c = ctx.next.cycle;
+  // M29 (FANUC rigid tapping): the next G84/G74 are rigid, until the cycle is cancelled.
+  const CycleRules* rules = ctx.table.cycles;
+  for (const WordValue& m : ctx.words.m)
+    if (rules && rules->rigid_tap_m_code != 0 && m.value == rules->rigid_tap_m_code) c.rigid = true;
   if (const auto& g = ctx.words.group(GGroup::ReturnLevel))
     c.return_to_r = g->entry->action == GAction::ReturnR;
   const auto& cycle = ctx.words.group(GGroup::Cycle);
@@ -170,8 +174,13 @@ void lowerCycle(BlockContext& ctx) {
     }
     repeats = *n;
   }
-  const bool peck =
-      entry.kind == ir::HoleCycle::Kind::Peck || entry.kind == ir::HoleCycle::Kind::HighSpeedPeck;
+  // Deep-hole tapping: G84/G74 with Q where the dialect pecks (CycleRules::peck_tapping).
+  const bool tap_pecks =
+      entry.kind == ir::HoleCycle::Kind::Tap && c.has_q && c.q != 0.0 &&
+      ((rules.peck_tapping == CycleRules::PeckTapping::RigidMode && c.rigid) ||
+       (rules.peck_tapping == CycleRules::PeckTapping::TappingType && ctx.settings.tapping_pecks));
+  const bool peck = entry.kind == ir::HoleCycle::Kind::Peck ||
+                    entry.kind == ir::HoleCycle::Kind::HighSpeedPeck || tap_pecks;
   if (ctx.words.q && peck) {
     double q = rules.q_sign_ignored ? std::fabs(c.q) : c.q;
     if (!(q > 0)) {
@@ -192,7 +201,7 @@ void lowerCycle(BlockContext& ctx) {
                           "): none has been given since the cycle began"));
     return;
   }
-  if (peck && !c.has_q) {
+  if (peck && !c.has_q) {  // (peck tapping needs Q by its definition)
     ctx.fail(Alarm::CyclePeckMissing, cycleLoc(ctx),
              absl::StrCat(name, " needs the peck depth Q: none has been given"));
     return;
@@ -233,9 +242,10 @@ void lowerCycle(BlockContext& ctx) {
   h.rapid_type = ctx.settings.rapid_type;
   if (peck) {
     h.peck = rules.q_sign_ignored ? std::fabs(c.q) : c.q;
-    h.peck_distance = c.has_d ? c.d
-                      : entry.kind == ir::HoleCycle::Kind::Peck ? ctx.settings.peck_clearance
-                                                                : ctx.settings.peck_return;
+    const bool to_r = entry.kind == ir::HoleCycle::Kind::Peck ||
+                      (tap_pecks && ctx.settings.tapping_peck_to_r);
+    h.peck_distance = c.has_d ? c.d : to_r ? ctx.settings.peck_clearance : ctx.settings.peck_return;
+    h.peck_tap_to_r = tap_pecks && to_r;
     if (entry.kind == ir::HoleCycle::Kind::HighSpeedPeck) h.peck_retract_feed = rules.peck_retract_feed;
     const double pecks = std::ceil(std::fabs(r_level - c.z) / h.peck) * static_cast<double>(repeats);
     if (!(pecks <= kMaxPecksPerBlock) || !(h.peck >= 1e-6)) {
@@ -253,6 +263,7 @@ void lowerCycle(BlockContext& ctx) {
     h.feed_out = true;
     h.retract_feed = h.feed * ctx.settings.tap_retract_percent / 100.0;
     h.dwell_at_r = entry.dwell_at_r;
+    if (tap_pecks) h.peck_approach_feed = rules.peck_tap_approach_at_feed ? h.feed : h.retract_feed;
   }
   if (entry.feed_out) {
     h.feed_out = true;

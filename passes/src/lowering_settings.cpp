@@ -52,6 +52,14 @@ LoweringSettings LoweringSettings::resolve(const DialectTable& table,
   s.boring_shift_direction = static_cast<int>(std::lround(p.getNumber(
       "boring_shift_direction", table.cycles ? table.cycles->default_shift_direction : 1)));
   s.tap_retract_percent = p.getNumber("tap_retract_percent", 100.0);
+  if (table.cycles && table.cycles->peck_tapping == CycleRules::PeckTapping::TappingType) {
+    const std::string type = p.getString("tapping_type", "rigid");
+    s.tapping_pecks = type == "high_speed_peck" || type == "peck";
+    s.tapping_peck_to_r = type == "peck";
+  } else {
+    s.tapping_pecks = true;  // in rigid mode (FANUC): Q selects it
+    s.tapping_peck_to_r = p.getString("peck_tapping_type", "high_speed") == "peck";
+  }
   s.scale_per_axis = p.getBool("scale_per_axis", false);
   s.scale_factor_unit = p.getNumber("scale_factor_unit", 0.001);
   s.default_scale_factor = p.getNumber("default_scale_factor", 0.0);

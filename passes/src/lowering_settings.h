@@ -38,6 +38,10 @@ struct LoweringSettings {
   double peck_clearance = 1.0;     // G83 stop above the last depth d (FANUC No.5115, Mazak F13)
   int boring_shift_direction = 1;  // G76 shift: 1 +first plane axis, 0/2 -first, 3 +second, 4 -second
   double tap_retract_percent = 100.0;  // tapping way out, % of the way in (Siemens _ZSFI[2])
+  // Peck tapping: Siemens tapping_type (_ZSFI[1]) high_speed_peck / peck; FANUC
+  // peck_tapping_type (PCP) high_speed / peck. Whether pecking is on, and its type.
+  bool tapping_pecks = false;         // Siemens: tapping_type is a peck type
+  bool tapping_peck_to_r = false;     // the "peck" type: out to R after each infeed
   // Coordinate transforms (docs/transforms.md, Parameters).
   bool scale_per_axis = false;        // G51 I J K factors (MD22914, FANUC XSC)
   double scale_factor_unit = 0.001;   // P/I/J/K without a point (MD22910, FANUC SCR)

@@ -242,6 +242,74 @@ TEST(Cycles, MazakSynchronousTappingFeedsThePitchPerRevolution) {
   EXPECT_EQ(per_rev, 2);
 }
 
+TEST(Cycles, FanucDeepHoleRigidTappingPecksOnlyAfterM29) {
+  // Lathe manual §4.4 (notes §4.5), PCP = 0: tap q, back off d (peck_return 1), tap d + q, ...;
+  // the back-offs and the way out at the retract speed (100 % here). From R 2 to Z-7, Q3:
+  // -1, back to 0, -4, back to -3, -7; out to R 2.
+  // M29 after the G00: a group-01 code ends rigid mode as it ends a cycle (and G80).
+  const std::string rigid_program = "M03 S500\nG00 Z10.\nM29 S500\nG99 G84 R2. Z-7. Q3. F500.\nG80\n";
+  const char* program = "M03 S500\nG00 Z10.\nG99 G84 R2. Z-7. Q3. F500.\nG80\n";
+  Lowered floating = lower(Dialect::FanucM, program);
+  expectMoves(floating, kXYZ,
+              {{"rapid", {{"Z", 10}}},
+               {"rapid", {{"Z", 2}}},
+               {"line", {{"Z", -7}}, {}, false, 500},
+               {"line", {{"Z", 2}}, {}, false, 500}});
+  Lowered rigid = lower(Dialect::FanucM, rigid_program);
+  expectMoves(rigid, kXYZ,
+              {{"rapid", {{"Z", 10}}},
+               {"rapid", {{"Z", 2}}},
+               {"line", {{"Z", -1}}, {}, false, 500},
+               {"line", {{"Z", 0}}, {}, false, 500},
+               {"line", {{"Z", -4}}, {}, false, 500},
+               {"line", {{"Z", -3}}, {}, false, 500},
+               {"line", {{"Z", -7}}, {}, false, 500},
+               {"line", {{"Z", 2}}, {}, false, 500}});
+  // PCP = 1 (peck_tapping_type = "peck"): out to R after each infeed, back to d (peck_clearance
+  // 0.5) above the last depth at the retract speed (tap_retract_percent 200: 1000).
+  Lowered peck = lower(Dialect::FanucM, rigid_program,
+                       xyzMachine("peck_tapping_type = \"peck\"\npeck_clearance = 0.5\n"
+                                  "tap_retract_percent = 200"));
+  expectMoves(peck, kXYZ,
+              {{"rapid", {{"Z", 10}}},
+               {"rapid", {{"Z", 2}}},
+               {"line", {{"Z", -1}}, {}, false, 500},
+               {"line", {{"Z", 2}}, {}, false, 1000},
+               {"line", {{"Z", -0.5}}, {}, false, 1000},
+               {"line", {{"Z", -4}}, {}, false, 500},
+               {"line", {{"Z", 2}}, {}, false, 1000},
+               {"line", {{"Z", -3.5}}, {}, false, 1000},
+               {"line", {{"Z", -7}}, {}, false, 500},
+               {"line", {{"Z", 2}}, {}, false, 1000}});
+}
+
+TEST(Cycles, SiemensPeckTappingByTheTappingType) {
+  // §4.1.13, _ZSFI[1] = 3 (tapping_type "peck"): tap Q, out to R, back at F to d above the
+  // last depth, tap d + Q. d = 0.5: -1, R 2, -0.5, -4, R 2, -3.5, -7, out to R.
+  const char* program = "M03 S500\nG00 Z10.\nG99 G84 R2. Z-7. Q3. F500.\nG80\n";
+  Lowered peck = lower(Dialect::SiemensIsoM, program,
+                       xyzMachine("decimal_point = \"calculator\"\ntapping_type = \"peck\"\n"
+                                  "peck_clearance = 0.5"));
+  expectMoves(peck, kXYZ,
+              {{"rapid", {{"Z", 10}}},
+               {"rapid", {{"Z", 2}}},
+               {"line", {{"Z", -1}}, {}, false, 500},
+               {"line", {{"Z", 2}}, {}, false, 500},
+               {"line", {{"Z", -0.5}}, {}, false, 500},
+               {"line", {{"Z", -4}}, {}, false, 500},
+               {"line", {{"Z", 2}}, {}, false, 500},
+               {"line", {{"Z", -3.5}}, {}, false, 500},
+               {"line", {{"Z", -7}}, {}, false, 500},
+               {"line", {{"Z", 2}}, {}, false, 500}});
+  // _ZSFI[1] = 0 (rigid, the default): Q is cycle data only, one infeed.
+  Lowered rigid = lower(Dialect::SiemensIsoM, program, xyzMachine("decimal_point = \"calculator\""));
+  expectMoves(rigid, kXYZ,
+              {{"rapid", {{"Z", 10}}},
+               {"rapid", {{"Z", 2}}},
+               {"line", {{"Z", -7}}, {}, false, 500},
+               {"line", {{"Z", 2}}, {}, false, 500}});
+}
+
 TEST(Cycles, FanucTappingDwellsAtTheBottomAndAtR) {
   Lowered r = lower(Dialect::FanucM, "M03 S500\nG00 Z10.\nG99 G84 R2. Z-5. P200 F100.\nG80\n");
   expectMoves(r, kXYZ,

@@ -212,6 +212,11 @@ struct HoleCycle {
   bool program_stop_at_bottom = false;  // G88: and M00 (the operator's manual moves) after it
   int spindle_direction = 1;   // +1 M03, -1 M04: the direction the cycle restores
   bool dwell_at_r = false;     // tapping: the dwell P also at R after the way out (FANUC)
+  // Tapping with `peck` > 0 (deep-hole tapping, FANUC rigid G84/G74 with Q, Siemens
+  // _ZSFI[1] = 2/3): back off `peck_distance` after each infeed (high speed), or out to R and
+  // back to `peck_distance` above the last depth (`peck_tap_to_r`), at `peck_approach_feed`.
+  bool peck_tap_to_r = false;
+  double peck_approach_feed = 0.0;
   AxisValues shift{};          // G76: the shift off the wall at the bottom (a work-space vector)
 };
 

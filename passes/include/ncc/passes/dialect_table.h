@@ -243,6 +243,14 @@ struct CycleRules {
   // The shift of G76 in the plane (first, second axis): its default direction when the
   // machine file sets none (boring_shift_direction).
   int default_shift_direction;
+  // Peck tapping (G84/G74 with Q): none (Q is stored cycle data), in rigid mode only (FANUC
+  // deep-hole rigid tapping: after M29 `rigid_tap_m_code`, the type by peck_tapping_type, PCP),
+  // or by the tapping type (Siemens §4.1.13: tapping_type = _ZSFI[1] high_speed_peck / peck).
+  enum class PeckTapping : uint8_t { None, RigidMode, TappingType } peck_tapping;
+  int rigid_tap_m_code;             // M29 (FANUC; Siemens MD20095); 0: none
+  // The peck type's way back down from R: at F (Siemens §4.1.13) or at the retract speed
+  // (FANUC: "2, 3 and bottom -> R use the retract override").
+  bool peck_tap_approach_at_feed;
 
   const CycleEntry* find(int code10) const {
     for (const CycleEntry& e : entries)
