@@ -71,14 +71,15 @@ class TransformsCli(ScratchDirTest):
                 self.assertEqual(got[1]["center"], {"X": 0.0, "Y": 15.0})
                 self.assertTrue(got[1]["cw"])
 
-    def test_the_order_of_mirror_and_rotation_differs(self):
-        # FANUC and Siemens §3.2.4 mirror first: (-10, 0), then turned: (0, -10). Mazak §13-8
-        # 1.3 rotation first: (0, 10), then mirrored in X (x = 0): (0, 10).
-        prog = self.write("order.nc", MIRROR_THEN_ROTATION)
-        for dialect, want in (("fanuc-m", (0.0, -10.0)), ("siemens-iso-m", (0.0, -10.0)),
-                              ("mazak-m", (0.0, 10.0))):
-            with self.subTest(dialect=dialect):
-                self.assertEqual([xy(m) for m in self.run_both(prog, "--dialect", dialect)],
+    def test_mazak_turns_before_mirroring(self):
+        # Mazak §13-8 1.3: rotation before the mirror. Mirror X about 0, R90 about (0, 0):
+        # (10, 0) -> (0, 10) -> (0, 10); about (5, 0): (10, 0) -> (5, 5) -> (-5, 5). (Mirroring
+        # first would give (0, -10) and (5, -15).)
+        for text, want in ((MIRROR_THEN_ROTATION, (0.0, 10.0)),
+                           (MIRROR_THEN_ROTATION.replace("G68 X0", "G68 X5."), (-5.0, 5.0))):
+            with self.subTest(text=text):
+                prog = self.write("order.nc", text)
+                self.assertEqual([xy(m) for m in self.run_both(prog, "--dialect", "mazak-m")],
                                  [want])
 
     def test_mazak_rescale_and_g50_moving_back(self):

@@ -424,14 +424,41 @@ TEST(Transforms, SiemensMirrorNotWhileScalingOrRotation) {
 
 // ---- the order of composition -------------------------------------------------------------
 
-TEST(Transforms, OrderMirrorThenRotationOrRotationThenMirror) {
-  // Mirror X about 0 and R90 about (0, 0); the point (10, 0):
-  //   FANUC, Siemens §3.2.4 (mirror -> scaling -> rotation): (-10, 0) then turned: (0, -10);
-  //   Mazak §13-8 1.3 (rotation before mirror): (0, 10) then mirrored in X: (0, 10).
-  const std::string program = "G51.1 X0\nG68 X0 Y0 R90.\nG00 X10. Y0\nM30\n";
-  expectMoves(run(Dialect::FanucM, program), kXYZ, {{"rapid", {{"X", 0}, {"Y", -10}}}});
-  expectMoves(run(Dialect::SiemensIsoM, program), kXYZ, {{"rapid", {{"X", 0}, {"Y", -10}}}});
-  expectMoves(run(Dialect::MazakM, program), kXYZ, {{"rapid", {{"X", 0}, {"Y", 10}}}});
+TEST(Transforms, MazakRotatesBeforeMirroring) {
+  // §13-8 1.3: "rotation is processed before the mirror image". Mirror X about 0, R90 about
+  // (0, 0); (10, 0) -> turned (0, 10) -> mirrored (0, 10). Mirroring first would give (-10, 0)
+  // turned = (0, -10).
+  expectMoves(run(Dialect::MazakM, "G51.1 X0\nG68 X0 Y0 R90.\nG00 X10. Y0\nM30\n"), kXYZ,
+              {{"rapid", {{"X", 0}, {"Y", 10}}}});
+  // A centre off the mirror axis: R90 about (5, 0): (10, 0) -> (5, 5) -> mirrored (-5, 5)
+  // (mirror first: (-10, 0) about (5, 0) -> (5, -15)). The same with G68 given first.
+  for (const char* program : {"G51.1 X0\nG68 X5. Y0 R90.\nG00 X10. Y0\nM30\n",
+                              "G68 X5. Y0 R90.\nG51.1 X0\nG00 X10. Y0\nM30\n"}) {
+    SCOPED_TRACE(program);
+    expectMoves(run(Dialect::MazakM, program), kXYZ, {{"rapid", {{"X", -5}, {"Y", 5}}}});
+  }
+  // §13-11: one mirrored plane axis reverses the arc under the rotation too: the G02 (10, 0)
+  // -> (20, 0) about (15, 0) is turned about (0, 0) to (0, 10) -> (0, 20) about (0, 15), then
+  // mirrored in X (x = 0 stays): counter-clockwise.
+  expectMoves(run(Dialect::MazakM,
+                  "G51.1 X0\nG68 X0 Y0 R90.\nG01 X10. Y0 F100.\nG02 X20. Y0 I5. J0\nM30\n"),
+              kXYZ,
+              {{"line", {{"X", 0}, {"Y", 10}}},
+               {"arc", {{"X", 0}, {"Y", 20}}, {{"X", 0}, {"Y", 15}}, false}});
+}
+
+TEST(Transforms, SiemensSingleAxisMirrorReversesTheRotation) {
+  // BUG: §3.2.4 table 3.6: with a mirror on one plane axis "座標回転: CW と CCW (回転方向) が入れ
+  // 替わります" (the coordinate rotation's direction is reversed), as G02/G03 and G41/G42 are;
+  // and G51.1 sits in base frame [1] (MM_NUM_BASE_FRAMES >= 2) while G68 needs >= 3 (§3.1.9):
+  // the rotation is the later frame, applied to the programmed point first, the mirror after it.
+  // Mirror X about 0 then R90 about (0, 0): (10, 0) -> R -> (0, 10) -> M -> (0, 10), i.e. R90
+  // seen turning clockwise on the mirrored part. ncc mirrors first and turns counter-clockwise
+  // in machine terms: (-10, 0) -> (0, -10) (the rotation NOT reversed). (FANUC's programmable
+  // mirror table, which Siemens ISO mode follows, says the same; no FANUC milling manual is in
+  // /work/shared, so only Siemens is asserted.)
+  expectMoves(run(Dialect::SiemensIsoM, "G51.1 X0\nG68 X0 Y0 R90.\nG00 X10. Y0\nM30\n"), kXYZ,
+              {{"rapid", {{"X", 0}, {"Y", 10}}}});
 }
 
 TEST(Transforms, ScalingCentreTurnsWithTheRotation) {
