@@ -187,6 +187,58 @@ TEST(Transforms, RotationAxisOffThePlaneIsNoCentre) {
             "1:15: error[NCC2014]");
 }
 
+TEST(Transforms, RotationCentreIsAbsoluteEvenInG91) {
+  // All three manuals: the centre is absolute whatever G90/G91. From (10, 10), `G91 G68 X5. Y5.
+  // R90.` turns about (5, 5) (not (15, 15)): (15, 5) is (10, 0) from it -> (0, 10): (5, 15).
+  // (About (15, 15) it would be (25, 15).) Siemens: G91 in its own block (the alone-rule).
+  expectMoves(run(Dialect::FanucM, "G00 X10. Y10.\nG91 G68 X5. Y5. R90.\nG90 G00 X15. Y5.\nM30\n"),
+              kXYZ, {{"rapid", {{"X", 10}, {"Y", 10}}}, {"rapid", {{"X", 5}, {"Y", 15}}}});
+  expectMoves(run(Dialect::MazakM, "G00 X10. Y10.\nG91 G68 X5. Y5. R90.\nG90 G00 X15. Y5.\nM30\n"),
+              kXYZ, {{"rapid", {{"X", 10}, {"Y", 10}}}, {"rapid", {{"X", 5}, {"Y", 15}}}});
+  expectMoves(run(Dialect::SiemensIsoM,
+                  "G00 X10. Y10.\nG91\nG68 X5. Y5. R90.\nG90\nG00 X15. Y5.\nM30\n"),
+              kXYZ, {{"rapid", {{"X", 10}, {"Y", 10}}}, {"rapid", {{"X", 5}, {"Y", 15}}}});
+}
+
+TEST(Transforms, IncrementalMovesRunInTheRotatedSystem) {
+  // R90 about (0, 0): `G91 X10.` twice goes along the turned X axis, i.e. +Y: (0, 10), (0, 20).
+  for (Dialect d : kAll) {
+    SCOPED_TRACE(name(d));
+    expectMoves(run(d, "G68 X0 Y0 R90.\nG91 G01 X10. F100.\nX10.\nM30\n"), kXYZ,
+                {{"line", {{"X", 0}, {"Y", 10}}}, {"line", {{"X", 0}, {"Y", 20}}}});
+  }
+}
+
+TEST(Transforms, RotationRefusals) {
+  // An angle beyond +-360 (Mazak §13-8 2.: -360.000 to 360.000; 809 "number not allowed").
+  EXPECT_EQ(firstDiag(run(Dialect::FanucM, "G68 X0 Y0 R400.\nM30\n")), "1:11: error[NCC2116]");
+  EXPECT_EQ(firstDiag(run(Dialect::MazakM, "G68 X0 Y0 R400.\nM30\n")), "1:11: error[809]");
+  EXPECT_EQ(firstDiag(run(Dialect::SiemensIsoM, "G68 X0 Y0 R-361.\nM30\n")),
+            "1:11: error[NCC2116]");
+  // G68 and G51 both take the axis words: one block cannot hold both.
+  for (Dialect d : {Dialect::FanucM, Dialect::MazakM}) {
+    SCOPED_TRACE(name(d));
+    EXPECT_EQ(firstDiag(run(d, "G51 G68 X0 Y0 R10. P2.\nM30\n")), "1:1: error[NCC2021]");
+  }
+}
+
+TEST(Transforms, MachineCoordinateMovesAreNotTurned) {
+  // Mazak §14 "G53 ... unaffected by G68"; FANUC alike: G53 X10. Y0 goes to machine (10, 0)
+  // under R90, where a work move to (10, 0) goes to (0, 10).
+  for (Dialect d : {Dialect::FanucM, Dialect::MazakM}) {
+    SCOPED_TRACE(name(d));
+    expectMoves(run(d, "G68 X0 Y0 R90.\nG53 X10. Y0\nG00 X10. Y0\nM30\n"), kXYZ,
+                {{"rapid", {{"X", 10}, {"Y", 0}}}, {"rapid", {{"X", 0}, {"Y", 10}}}});
+  }
+}
+
+TEST(Transforms, MazakNestedThreeDimensionalRotationsCompose) {
+  // Ch. 22: nested 3-D G68 compose: 45 + 45 about Z: (10, 0) -> (0, 10).
+  expectMoves(run(Dialect::MazakM,
+                  "G68 X0 Y0 Z0 K1. R45.\nG68 X0 Y0 Z0 K1. R45.\nG00 X10. Y0\nM30\n"),
+              kXYZ, {{"rapid", {{"X", 0}, {"Y", 10}}}});
+}
+
 // ---- G68 3-D ------------------------------------------------------------------------------
 
 TEST(Transforms, ThreeDimensionalAnyVectorFanucAndSiemens) {
@@ -293,6 +345,34 @@ TEST(Transforms, PerAxisFactorsAndANegativeOneMirrors) {
                             "scale_per_axis = true")),
               "3:1: error[NCC2110]");
   }
+}
+
+TEST(Transforms, ArcsAndIncrementalMovesUnderUniformScaling) {
+  // x2 about (0, 0): the line to (10, 0) -> (20, 0); the G02 to (20, 0) by R5 (centre (15, 0))
+  // -> (40, 0) about (30, 0), radius 10, still clockwise.
+  for (Dialect d : kAll) {
+    SCOPED_TRACE(name(d));
+    expectMoves(run(d, "G51 X0 Y0 P2.\nG01 X10. Y0 F100.\nG02 X20. Y0 R5.\nM30\n"), kXYZ,
+                {{"line", {{"X", 20}, {"Y", 0}}},
+                 {"arc", {{"X", 40}, {"Y", 0}}, {{"X", 30}, {"Y", 0}}, true}});
+  }
+  // Incremental moves are scaled too: x0.5, G91 X10. twice: (5, 0), (10, 0).
+  expectMoves(run(Dialect::MazakM, "G51 X0 Y0 P0.5\nG91 G01 X10. F100.\nX10.\nM30\n"), kXYZ,
+              {{"line", {{"X", 5}, {"Y", 0}}}, {"line", {{"X", 10}, {"Y", 0}}}});
+}
+
+TEST(Transforms, TheFactorWordTheParameterDoesNotReadIsIgnoredWithAWarning) {
+  // MD22914 = 1 (scale_per_axis): "P is ignored"; = 0: "IJK are ignored" (§3.2.3 note).
+  // I2000 J2000 -> x2: (10, 5) -> (20, 10); P500 -> x0.5: (5, 2.5).
+  expectMoves(run(Dialect::SiemensIsoM, "G51 X0 Y0 I2000 J2000 P500\nG00 X10. Y5.\nM30\n",
+                  "scale_per_axis = true"),
+              kXYZ, {{"rapid", {{"X", 20}, {"Y", 10}}}}, 0.001,
+              "1:23: warning[NCC2014]: G51 P is ignored: the factors are I, J, K "
+              "(scale_per_axis = true)\n");
+  expectMoves(run(Dialect::SiemensIsoM, "G51 X0 Y0 I2000 J2000 P500\nG00 X10. Y5.\nM30\n"), kXYZ,
+              {{"rapid", {{"X", 5}, {"Y", 2.5}}}}, 0.001,
+              "1:11: warning[NCC2014]: G51 I is ignored: the factor is P (scale_per_axis = false)\n"
+              "1:17: warning[NCC2014]: G51 J is ignored: the factor is P (scale_per_axis = false)\n");
 }
 
 TEST(Transforms, MazakScalesOnlyTheAxesWhoseCentreIsGiven) {
@@ -405,6 +485,19 @@ TEST(Transforms, MirrorCancel) {
                 {{"rapid", {{"X", 20}, {"Y", 5}}}});
     expectMoves(run(d, "G51.1 X10. Y10.\nG50.1 X0\nG00 X20. Y5.\nM30\n"), kXYZ,
                 {{"rapid", {{"X", 20}, {"Y", 15}}}});
+  }
+}
+
+TEST(Transforms, MirrorWithoutAxisAndIncrementalArcs) {
+  // G51.1 names the axis by its centre word: none is a format error (Mazak 807).
+  EXPECT_EQ(firstDiag(run(Dialect::FanucM, "G51.1\nM30\n")), "1:1: error[NCC2111]");
+  EXPECT_EQ(firstDiag(run(Dialect::MazakM, "G51.1\nM30\n")), "1:1: error[807]");
+  // Mirror X about 0: an incremental G02 X10. I5. from (0, 0) goes to (-10, 0) about (-5, 0),
+  // counter-clockwise.
+  for (Dialect d : kAll) {
+    SCOPED_TRACE(name(d));
+    expectMoves(run(d, "G51.1 X0\nG91 G02 X10. Y0 I5. F100.\nM30\n"), kXYZ,
+                {{"arc", {{"X", -10}, {"Y", 0}}, {{"X", -5}, {"Y", 0}}, false}});
   }
 }
 
