@@ -386,6 +386,53 @@ TEST(Transforms, MazakScalesOnlyTheAxesWhoseCentreIsGiven) {
               kXYZ, {{"rapid", {{"X", 10}, {"Y", 10}}}, {"rapid", {{"X", 20}, {"Y", 20}}}});
 }
 
+// §13-10 5.3 "Mouvement fondamental III" (N01 G92 X0 Y0 ... N12 M02), N02 in its variants.
+std::string mazakExampleIII(const std::string& g51) {
+  return "N01 G92 X0 Y0\nN02 G90 " + g51 +
+         "\nN03 G00 X-50. Y-50.\nN04 G01 Y-150. F1000\nN05 G02 X-100. I-25.\nN06 G01 X-150.\n"
+         "N07 G02 X-200. I-25.\nN08 G01 X-250. Y-100.\nN09 Y-50.\nN10 X-50.\nN11 G00 G50\n"
+         "N12 M02\n";
+}
+
+TEST(Transforms, MazakManualExampleIIIScaledInXAndY) {
+  // (2) `G51 X-125. Y-100. P0.5`: x -> -125 + 0.5 (x + 125), y -> -100 + 0.5 (y + 100).
+  // N03 (-50, -50) -> (-87.5, -75); N04 Y-150 -> -125; N05 the half circle to X-100 about X-75
+  // -> to -112.5 about -100 (radius 12.5), clockwise; N06 X-150 -> -137.5; N07 to X-200 about
+  // -175 -> to -162.5 about -150; N08 (-250, -100) -> (-187.5, -100); N09 Y-50 -> -75;
+  // N10 X-50 -> -87.5; N11 G00 G50: back to the programmed (-50, -50) (§13-10 3.B).
+  expectMoves(run(Dialect::MazakM, mazakExampleIII("G51 X-125. Y-100. P0.5")), kXYZ,
+              {{"rapid", {{"X", -87.5}, {"Y", -75}}},
+               {"line", {{"X", -87.5}, {"Y", -125}}},
+               {"arc", {{"X", -112.5}, {"Y", -125}}, {{"X", -100}, {"Y", -125}}, true},
+               {"line", {{"X", -137.5}, {"Y", -125}}},
+               {"arc", {{"X", -162.5}, {"Y", -125}}, {{"X", -150}, {"Y", -125}}, true},
+               {"line", {{"X", -187.5}, {"Y", -100}}},
+               {"line", {{"X", -187.5}, {"Y", -75}}},
+               {"line", {{"X", -87.5}, {"Y", -75}}},
+               {"rapid", {{"X", -50}, {"Y", -50}}}});
+}
+
+TEST(Transforms, MazakManualExampleIIIScaledInXOnly) {
+  // BUG: §13-10 5.3 (3) "Avec cadrage appliqué seulement en X": `G51 X-125. P0.5` on the same
+  // program with its two G02 half circles is one of the manual's own worked examples, and
+  // §13-10 4.5 says how: "in circular interpolation, scaling applies only to the axis (of the
+  // plane's two) that is scaled" -- the end point and centre are scaled in X, the arc is still
+  // cut as a circle. ncc refuses both arcs with NCC2110 (the affine image is an ellipse).
+  // x -> -125 + 0.5 (x + 125), y unscaled: N05 (-87.5, -150) -> (-112.5, -150) about
+  // (-100, -150), radius 12.5 at both ends; N07 (-137.5, -150) -> (-162.5, -150) about
+  // (-150, -150).
+  expectMoves(run(Dialect::MazakM, mazakExampleIII("G51 X-125. P0.5")), kXYZ,
+              {{"rapid", {{"X", -87.5}, {"Y", -50}}},
+               {"line", {{"X", -87.5}, {"Y", -150}}},
+               {"arc", {{"X", -112.5}, {"Y", -150}}, {{"X", -100}, {"Y", -150}}, true},
+               {"line", {{"X", -137.5}, {"Y", -150}}},
+               {"arc", {{"X", -162.5}, {"Y", -150}}, {{"X", -150}, {"Y", -150}}, true},
+               {"line", {{"X", -187.5}, {"Y", -100}}},
+               {"line", {{"X", -187.5}, {"Y", -50}}},
+               {"line", {{"X", -87.5}, {"Y", -50}}},
+               {"rapid", {{"X", -50}, {"Y", -50}}}});
+}
+
 TEST(Transforms, MazakG51InG51AddsAxesManualExample11) {
   // §13-10 5.11: N02 X about -150 by 0.75 (Y unscaled): X-50 -> -150 + 0.75 x 100 = -75,
   // X-250 -> -150 - 75 = -225. N08 adds Y about -125 and P0.5 applies to both: X-100 -> -125,
