@@ -755,6 +755,21 @@ TEST(Transforms, CornersUnderScalingAreScaled) {
   }
 }
 
+TEST(Transforms, MazakHoleCycleShiftAndLevelsAreScaled) {
+  // §13-10 4.4: the G76/G87 shift and the cycle's levels are scaled with the axes. x0.5 about
+  // (0, 0, 0): the hole (10, 10) -> (5, 5); R-4 -> -2; Z-20 -> -10; the shift Q2 (along +X,
+  // ncc's default shift direction) -> 1: (6, 5); back up to the initial level 0 and the hole.
+  Lowered r = run(Dialect::MazakM,
+                  "M03 S100\nG51 X0 Y0 Z0 P0.5\nG76 X10. Y10. Z-20. R-4. Q2. F100.\nG80\nM30\n");
+  expectMoves(r, kXYZ,
+              {{"rapid", {{"X", 5}, {"Y", 5}, {"Z", 0}}},
+               {"rapid", {{"X", 5}, {"Y", 5}, {"Z", -2}}},
+               {"line", {{"X", 5}, {"Y", 5}, {"Z", -10}}},
+               {"rapid", {{"X", 6}, {"Y", 5}, {"Z", -10}}},
+               {"rapid", {{"X", 6}, {"Y", 5}, {"Z", 0}}},
+               {"rapid", {{"X", 5}, {"Y", 5}, {"Z", 0}}}});
+}
+
 TEST(Transforms, ReferenceReturnUnderRotation) {
   // Mazak ch. 22 "G28/G30: only the intermediate point is rotated"; FANUC the same. R90 about
   // (5, 5): the intermediate (10, 0) is (5, -5) from it -> (5, 5) from it = (10, 10); the
