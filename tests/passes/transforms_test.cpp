@@ -713,6 +713,57 @@ TEST(Transforms, MazakArcRightAfterWorkRotationIs817) {
                {"arc", {{"X", -10}, {"Y", 0}}, {{"X", 0}, {"Y", 0}}, false}});
 }
 
+TEST(Transforms, MazakWorkRotationCancelManualExamples) {
+  // §14-13 5.1 examples 1 (G91) and 2 (G90): R20 about the machine zero; Y50 -> (-50 sin20,
+  // 50 cos20) = (-17.1010, 46.9846); X100 -> (100 cos20 - 50 sin20, 100 sin20 + 50 cos20) =
+  // (76.8683, 81.1866); `G92.5 R0` cancels and the next move is not turned: "Déplacement au
+  // point (100,0)"; then (0, 0).
+  for (const char* program :
+       {"N1 G28 X0 Y0\nN2 G17 G92.5 X0 Y0 R20.\nN3 G91 G01 Y50. F1000.\nN4 X100.\n"
+        "N5 G92.5 R0\nN6 Y-50.\nN7 X-100.\nN8 M30\n",
+        "N1 G28 X0 Y0\nN2 G17 G92.5 X0 Y0 R20.\nN3 G90 G01 Y50. F1000.\nN4 X100.\n"
+        "N5 G92.5 R0\nN6 Y0\nN7 X0\nN8 M30\n"}) {
+    SCOPED_TRACE(program);
+    Lowered r = run(Dialect::MazakM, program);
+    ASSERT_EQ(r.diagText(), "");
+    std::vector<Move> lines;
+    for (const Move& m : r.moves)
+      if (m.kind == "line") lines.push_back(m);
+    ASSERT_EQ(lines.size(), 4u);
+    const double want[4][2] = {{-17.1010, 46.9846}, {76.8683, 81.1866}, {100, 0}, {0, 0}};
+    for (size_t i = 0; i < 4; ++i) {
+      EXPECT_NEAR(lines[i].to[0], want[i][0], 1e-3) << i;
+      EXPECT_NEAR(lines[i].to[1], want[i][1], 1e-3) << i;
+    }
+  }
+  // §14-13 5.1: the manual's own 817 example (an arc as the first move after G92.5).
+  EXPECT_EQ(firstDiag(run(Dialect::MazakM, "N1 G28 X0 Y0\nN2 G91 G01 X50. F1000.\n"
+                                           "N3 G17 G92.5 X0 Y0 R20.\nN4 G02 X40. Y40. I40.\n"
+                                           "N5 M30\n")),
+            "4:4: error[817]");
+}
+
+TEST(Transforms, ArcRightAfterACancelStartsOffItsCircle) {
+  // BUG: after a move under a transform the tool stands at the mapped point; cancelling
+  // (G69, G50.1, G92.5 R0) and going on with an arc starts it there, off its circle. Each
+  // dialect's arc check must refuse it when compiling (FANUC PS0020, Mazak 817 -- §14-13 5.1
+  // gives 817 for "the radius at the end point no longer equals the radius at the start point"
+  // after G92.5 -- Siemens 14040). ncc compiles all three; the VM then stops with NCC7211 "was
+  // the file edited?". R90 about (0, 0): the line to (10, 0) ends at (0, 10); the G02 to
+  // (20, 0) about (15, 0) (I5 from the programmed start (10, 0)) starts 18.028 from its centre
+  // and ends 5 from it (or, I5 taken from the real start, about (5, 10): 5 and 18.028).
+  EXPECT_EQ(firstDiag(run(Dialect::FanucM, "G68 X0 Y0 R90.\nG01 X10. Y0 F100.\nG69\n"
+                                           "G02 X20. Y0 I5.\nM30\n")),
+            "4:1: error[PS0020]");
+  EXPECT_EQ(firstDiag(run(Dialect::MazakM, "G92.5 X0 Y0 R90.\nG01 X10. Y0 F100.\nG92.5 R0\n"
+                                           "G02 X20. Y0 I5.\nM30\n")),
+            "4:1: error[817]");
+  // Mirror X about 0: the line to (10, 0) ends at (-10, 0): 25 and 5 from (15, 0).
+  EXPECT_EQ(firstDiag(run(Dialect::SiemensIsoM, "G51.1 X0\nG01 X10. Y0 F100.\nG50.1\n"
+                                                "G02 X20. Y0 I5.\nM30\n")),
+            "4:1: error[14040]");
+}
+
 // ---- interactions -------------------------------------------------------------------------
 
 TEST(Transforms, HoleCycleUnderRotation) {
