@@ -843,6 +843,18 @@ TEST(Transforms, MazakWorkOffsetChangeMovesTheScalingCentre) {
               {{"rapid", {{"X", -75}, {"Y", -75}}}, {"rapid", {{"X", 25}, {"Y", 25}}}});
 }
 
+TEST(Transforms, MazakLocalShiftMovesTheScalingAndMirrorCentres) {
+  // §13-10 4.8: "if the coordinate system is shifted by G92 or G52 during scaling, the scaling
+  // centre is shifted by the difference": G52 X100. moves the centre (0, 0) to work (100, 0):
+  // local (0, 0) = (100, 0) stays; local X10 -> 100 + 0.5 x 10 = 105.
+  expectMoves(run(Dialect::MazakM, "G51 X0 Y0 P0.5\nG52 X100. Y0\nG00 X0 Y0\nX10.\nM30\n"), kXYZ,
+              {{"rapid", {{"X", 100}, {"Y", 0}}}, {"rapid", {{"X", 105}, {"Y", 0}}}});
+  // §13-11: the mirror centre moves with the system too: local X10 mirrored about local 0 ->
+  // local -10 = work 90.
+  expectMoves(run(Dialect::MazakM, "G51.1 X0\nG52 X100. Y0\nG00 X10. Y0\nM30\n"), kXYZ,
+              {{"rapid", {{"X", 90}, {"Y", 0}}}});
+}
+
 TEST(Transforms, MazakReferenceReturnEndsScaling) {
   // §13-10 5.5: G28 in G51 cancels scaling "at the intermediate point" (whether the move there
   // is still scaled the text leaves open, so it is not compared); then machine zero; the next
