@@ -223,7 +223,7 @@ TEST(Transforms, RotationRefusals) {
 }
 
 TEST(Transforms, MachineCoordinateMovesAreNotTurned) {
-  // Mazak §14 "G53 ... unaffected by G68"; FANUC alike: G53 X10. Y0 goes to machine (10, 0)
+  // Mazak ch. 22 §5.3 "le mode G68 n'affecte aucunement la commande G53"; FANUC alike: G53 X10. Y0 goes to machine (10, 0)
   // under R90, where a work move to (10, 0) goes to (0, 10).
   for (Dialect d : {Dialect::FanucM, Dialect::MazakM}) {
     SCOPED_TRACE(name(d));
@@ -233,9 +233,9 @@ TEST(Transforms, MachineCoordinateMovesAreNotTurned) {
 }
 
 TEST(Transforms, MazakNestedThreeDimensionalRotationsCompose) {
-  // Ch. 22: nested 3-D G68 compose: 45 + 45 about Z: (10, 0) -> (0, 10).
+  // Ch. 22 §4: nested 3-D G68 compose: 45 + 45 about Z: (10, 0) -> (0, 10).
   expectMoves(run(Dialect::MazakM,
-                  "G68 X0 Y0 Z0 K1. R45.\nG68 X0 Y0 Z0 K1. R45.\nG00 X10. Y0\nM30\n"),
+                  "G68 X0 Y0 Z0 I0 J0 K1. R45.\nG68 X0 Y0 Z0 I0 J0 K1. R45.\nG00 X10. Y0\nM30\n"),
               kXYZ, {{"rapid", {{"X", 0}, {"Y", 10}}}});
 }
 
@@ -265,16 +265,83 @@ TEST(Transforms, SiemensZeroVectorIsThePlaneNormalAndTheCentreTheWorkOrigin) {
 }
 
 TEST(Transforms, MazakThreeDimensionalNeedsOneUnitAxis) {
-  // Ch. 22: exactly one of I J K is 1. I1: about X by 90: (Y10, Z0) -> (Y0, Z10).
-  expectMoves(run(Dialect::MazakM, "G68 X0 Y0 Z0 I1. R90.\nG00 X0 Y10. Z0\nM30\n"), kXYZ,
+  // Ch. 22 §2 "Précaution": I J K all given, exactly one of them 1. I1: about X by 90:
+  // (Y10, Z0) -> (Y0, Z10).
+  expectMoves(run(Dialect::MazakM, "G68 X0 Y0 Z0 I1. J0 K0 R90.\nG00 X0 Y10. Z0\nM30\n"), kXYZ,
               {{"rapid", {{"X", 0}, {"Y", 0}, {"Z", 10}}}});
-  // Two components, or one that is not 1: alarm 807 at the G68.
-  EXPECT_EQ(firstDiag(run(Dialect::MazakM, "G68 X0 Y0 Z0 I1. J1. R90.\nM30\n")),
+  // "1 at two or more of I, J, K" (the manual's `I1 J1 K0`), all three 0, or a component that
+  // is neither 0 nor 1: alarm 807 at the G68.
+  EXPECT_EQ(firstDiag(run(Dialect::MazakM, "G68 X0 Y0 Z0 I1. J1. K0 R-90.\nM30\n")),
             "1:1: error[807]");
-  EXPECT_EQ(firstDiag(run(Dialect::MazakM, "G00 X1.\nG68 X0 Y0 Z0 K0.5 R90.\nM30\n")),
+  EXPECT_EQ(firstDiag(run(Dialect::MazakM, "G68 X0 Y0 Z0 I0 J0 K0 R-90.\nM30\n")),
+            "1:1: error[807]");
+  EXPECT_EQ(firstDiag(run(Dialect::MazakM, "G00 X1.\nG68 X0 Y0 Z0 I0 J0 K0.5 R90.\nM30\n")),
             "2:1: error[807]");
-  // FANUC and Siemens take the same vectors.
+  // FANUC and Siemens take any vector.
   EXPECT_EQ(run(Dialect::FanucM, "G68 X0 Y0 Z0 I1. J1. R90.\nM30\n").diagText(), "");
+}
+
+TEST(Transforms, MazakThreeDimensionalNeedsAllOfIJK) {
+  // BUG: ch. 22 §2 "Précaution": "I, J and K are required. If one or two of them are omitted,
+  // alarm 807"; the manual's own example `G68 X0 Y0 Z0 I1 K0 R-45.` is a "format error".
+  // ncc accepts it (and `G68 ... I1. R90.`) as a rotation about X.
+  EXPECT_EQ(firstDiag(run(Dialect::MazakM, "G68 X0 Y0 Z0 I1. K0 R-45.\nM30\n")),
+            "1:1: error[807]");
+  EXPECT_EQ(firstDiag(run(Dialect::MazakM, "G68 X0 Y0 Z0 I1. R90.\nM30\n")), "1:1: error[807]");
+}
+
+TEST(Transforms, MazakThreeDimensionalG68StandsAlone) {
+  // BUG: ch. 22 §5.2: "if a G code other than G17, G18 and G19 is given with G68 or G69 in the
+  // same block, alarm 807". ncc accepts `G90 G68 ... I J K`.
+  EXPECT_EQ(firstDiag(run(Dialect::MazakM, "G90 G68 X0 Y0 Z0 I0 J0 K1. R45.\nM30\n")),
+            "1:1: error[807]");
+  EXPECT_EQ(run(Dialect::MazakM, "G17 G68 X0 Y0 Z0 I0 J0 K1. R45.\nM30\n").diagText(), "");
+}
+
+TEST(Transforms, ThreeDimensionalCentreIsTheNewProgramZero) {
+  // BUG: the 3-D G68's X Y Z move the program zero there, then the system turns about I J K:
+  // Mazak ch. 22 §4 "on établit un nouveau système de coordonnées de programme en déplaçant le
+  // point zéro de pièce actuel jusqu'à la position désignée par X, Y et Z et en tournant ...";
+  // Siemens §3.1.10 "回転中心点の座標は原点オフセットのように作用します" (the centre acts like
+  // a zero offset). So a programmed point p goes to c + R p, not c + R (p - c).
+  // `G68 X10. Y0 Z0 I0 J0 K1. R90.`: X0 Y0 Z0 -> (10, 0, 0); X5. -> (10, 0, 0) + (0, 5, 0).
+  // ncc turns about (10, 0, 0) without moving the zero: (10, -10, 0) and (10, -5, 0).
+  for (Dialect d : {Dialect::MazakM, Dialect::SiemensIsoM}) {
+    SCOPED_TRACE(name(d));
+    expectMoves(run(d, "G68 X10. Y0 Z0 I0 J0 K1. R90.\nG00 X0 Y0 Z0\nX5.\nM30\n"), kXYZ,
+                {{"rapid", {{"X", 10}, {"Y", 0}, {"Z", 0}}},
+                 {"rapid", {{"X", 10}, {"Y", 5}, {"Z", 0}}}});
+  }
+}
+
+TEST(Transforms, MazakThreeDimensionalManualExampleNested) {
+  // BUG (as ThreeDimensionalCentreIsTheNewProgramZero): ch. 22 §4's example: (2) `G68 X10. Y0
+  // Z0 I0 J1 K0 R-30.` is system A, zero at (10, 0, 0), turned 30 deg clockwise about Y;
+  // (3) `G68 X0 Y10. Z0 I1 J0 K0 R45.` is system B, zero at A's (0, 10, 0), turned 45 deg
+  // counter-clockwise about X; (4) G69 restores the work system. Work = cA + RA (cB + RB p),
+  // RA = Ry(-30): (x, y, z) -> (x cos30 - z sin30, y, x sin30 + z cos30).
+  //   B (0, 0, 0): cA + RA (0, 10, 0) = (10, 10, 0).
+  //   B (10, 0, 0): RB keeps it; + cB = (10, 10, 0); RA -> (8.6603, 10, 5); + cA:
+  //   (18.6603, 10, 5).
+  //   B (0, 10, 0): RB -> (0, 7.0711, 7.0711); + cB = (0, 17.0711, 7.0711); RA ->
+  //   (-3.5355, 17.0711, 6.1237); + cA: (6.4645, 17.0711, 6.1237).
+  //   After G69 (0, 0, 0) is the work zero again.
+  Lowered r = run(Dialect::MazakM,
+                  "G68 X10. Y0 Z0 I0 J1. K0 R-30.\nG68 X0 Y10. Z0 I1. J0 K0 R45.\nG00 X0 Y0 Z0\n"
+                  "X10.\nX0 Y10.\nG69\nG00 X0 Y0 Z0\nM30\n");
+  expectMoves(r, kXYZ,
+              {{"rapid", {{"X", 10}, {"Y", 10}, {"Z", 0}}},
+               {"rapid", {{"X", 18.6603}, {"Y", 10}, {"Z", 5}}},
+               {"rapid", {{"X", 6.4645}, {"Y", 17.0711}, {"Z", 6.1237}}},
+               {"rapid", {{"X", 0}, {"Y", 0}, {"Z", 0}}}});
+}
+
+TEST(Transforms, MazakThreeDimensionalCentreOmittedIsTheWorkZero) {
+  // BUG: ch. 22 §2: "if X, Y and Z are omitted, the current work zero is taken as the new
+  // program zero" (not the current position). From (5, 5): `G68 I0 J0 K1. R90.` turns about
+  // (0, 0): (10, 0) -> (0, 10). ncc turns about (5, 5): (10, 10).
+  expectMoves(run(Dialect::MazakM, "G00 X5. Y5.\nG68 I0 J0 K1. R90.\nG00 X10. Y0\nM30\n"), kXYZ,
+              {{"rapid", {{"X", 5}, {"Y", 5}}}, {"rapid", {{"X", 0}, {"Y", 10}}}});
 }
 
 TEST(Transforms, ATiltedArcIsRefused) {
@@ -822,7 +889,8 @@ TEST(Transforms, MazakHoleCycleShiftAndLevelsAreScaled) {
 }
 
 TEST(Transforms, ReferenceReturnUnderRotation) {
-  // Mazak ch. 22 "G28/G30: only the intermediate point is rotated"; FANUC the same. R90 about
+  // Mazak §13-8 1.1 (reference returns are not rotated) and ch. 22 §5.3 (G28/G30: only the
+  // intermediate point is); FANUC the same. R90 about
   // (5, 5): the intermediate (10, 0) is (5, -5) from it -> (5, 5) from it = (10, 10); the
   // reference point (machine zero) is not turned (turned it would be (10, 0)).
   for (Dialect d : {Dialect::FanucM, Dialect::MazakM}) {
