@@ -298,6 +298,18 @@ TEST(Transforms, MazakThreeDimensionalG68StandsAlone) {
   EXPECT_EQ(run(Dialect::MazakM, "G17 G68 X0 Y0 Z0 I0 J0 K1. R45.\nM30\n").diagText(), "");
 }
 
+TEST(Transforms, MazakThreeDimensionalModeRefusesScalingAndWorkOffsets) {
+  // BUG: ch. 22 §2: "an incompatible G code in 3-D coordinate conversion mode: alarm 943"; the
+  // §5.1 table marks G50/G51 and G54-G59 "x" in G68 mode. ncc accepts both. (In a 2-D G68,
+  // G51 is fine: §13-10 5.10.)
+  EXPECT_EQ(firstDiag(run(Dialect::MazakM,
+                          "G68 X0 Y0 Z0 I0 J0 K1. R45.\nG51 X0 Y0 P2.\nM30\n")),
+            "2:1: error[943]");
+  EXPECT_EQ(firstDiag(run(Dialect::MazakM, "G68 X0 Y0 Z0 I0 J0 K1. R45.\nG55\nM30\n")),
+            "2:1: error[943]");
+  EXPECT_EQ(run(Dialect::MazakM, "G68 X0 Y0 R45.\nG51 X0 Y0 P2.\nM30\n").diagText(), "");
+}
+
 TEST(Transforms, ThreeDimensionalCentreIsTheNewProgramZero) {
   // BUG: the 3-D G68's X Y Z move the program zero there, then the system turns about I J K:
   // Mazak ch. 22 §4 "on établit un nouveau système de coordonnées de programme en déplaçant le
