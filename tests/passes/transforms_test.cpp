@@ -223,8 +223,8 @@ TEST(Transforms, RotationRefusals) {
 }
 
 TEST(Transforms, MachineCoordinateMovesAreNotTurned) {
-  // Mazak ch. 22 §5.3 "le mode G68 n'affecte aucunement la commande G53"; FANUC alike: G53 X10. Y0 goes to machine (10, 0)
-  // under R90, where a work move to (10, 0) goes to (0, 10).
+  // Mazak ch. 22 §5.3 "le mode G68 n'affecte aucunement la commande G53"; FANUC alike:
+  // G53 X10. Y0 goes to machine (10, 0) under R90, where a work move to (10, 0) goes to (0, 10).
   for (Dialect d : {Dialect::FanucM, Dialect::MazakM}) {
     SCOPED_TRACE(name(d));
     expectMoves(run(d, "G68 X0 Y0 R90.\nG53 X10. Y0\nG00 X10. Y0\nM30\n"), kXYZ,
@@ -451,7 +451,8 @@ TEST(Transforms, TheFactorWordTheParameterDoesNotReadIsIgnoredWithAWarning) {
   expectMoves(run(Dialect::SiemensIsoM, "G51 X0 Y0 I2000 J2000 P500\nG00 X10. Y5.\nM30\n"), kXYZ,
               {{"rapid", {{"X", 5}, {"Y", 2.5}}}}, 0.001,
               "1:11: warning[NCC2014]: G51 I is ignored: the factor is P (scale_per_axis = false)\n"
-              "1:17: warning[NCC2014]: G51 J is ignored: the factor is P (scale_per_axis = false)\n");
+              "1:17: warning[NCC2014]: G51 J is ignored: the factor is P (scale_per_axis = "
+              "false)\n");
 }
 
 TEST(Transforms, MazakScalesOnlyTheAxesWhoseCentreIsGiven) {
@@ -916,8 +917,8 @@ TEST(Transforms, MazakWorkOffsetChangeMovesTheScalingCentre) {
   // §13-10 5.7: G51 X-100. Y-100. P0.5 in G54 (zero); in G55 (100, 100) the centre moves with
   // the work system: work (-50, -50) -> (-75, -75), machine (25, 25).
   Lowered r = lower(Dialect::MazakM,
-                    "G90 G54 G00 X0 Y0\nG51 X-100. Y-100. P0.5\nG00 X-50. Y-50.\nG55 G00 X-50. Y-50.\n"
-                    "M30\n",
+                    "G90 G54 G00 X0 Y0\nG51 X-100. Y-100. P0.5\nG00 X-50. Y-50.\n"
+                    "G55 G00 X-50. Y-50.\nM30\n",
                     g55Machine());
   expectMoves(r, kXYZ,
               {{"rapid", {{"X", -75}, {"Y", -75}}}, {"rapid", {{"X", 25}, {"Y", 25}}}});
@@ -946,7 +947,8 @@ TEST(Transforms, MazakReferenceReturnEndsScaling) {
   EXPECT_NEAR(r.moves[1].to[1], 0, 1e-3);
   EXPECT_NEAR(r.moves[2].to[0], 20, 1e-3);
   EXPECT_NEAR(r.moves[2].to[1], 0, 1e-3);
-  // FANUC keeps scaling after G28: (20, 0) -> (10, 0).
+  // FANUC (its table: reference_return_cancels_scaling = false) keeps scaling after G28:
+  // (20, 0) -> (10, 0).
   Lowered f = run(Dialect::FanucM, "G51 X0 Y0 P0.5\nG28 X20. Y20.\nG00 X20. Y0\nM30\n");
   ASSERT_EQ(f.diagText(), "");
   ASSERT_FALSE(f.moves.empty());
