@@ -128,15 +128,17 @@ std::array<int, 3> planeSlots(ir::Plane plane) {
 }
 
 std::optional<ArcImage> arcImage(const ir::Affine& a, ir::Plane plane, bool clockwise,
-                                 bool helical) {
+                                 bool helical, bool similarity) {
   const M3 m = matrix(a);
   const auto [sa, sb, sn] = planeSlots(plane);
   const V3 ea = m.col(sa), eb = m.col(sb);
   const double la = ea.norm(), lb = eb.norm();
+  if (la < 1e-12 || lb < 1e-12) return std::nullopt;
   // A circle stays a circle only under a similarity of its plane: equal lengths, right angle.
-  if (la < 1e-12 || std::fabs(la - lb) > 1e-9 * std::max(1.0, la) ||
-      std::fabs(ea.dot(eb)) > 1e-9 * la * lb)
+  if (similarity && (std::fabs(la - lb) > 1e-9 * std::max(1.0, la) ||
+                     std::fabs(ea.dot(eb)) > 1e-9 * la * lb))
     return std::nullopt;
+  if (ea.cross(eb).norm() < 1e-12) return std::nullopt;
   const V3 normal = ea.cross(eb).normalized();
   int axis = -1;
   for (int s = 0; s < 3; ++s)

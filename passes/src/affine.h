@@ -42,8 +42,10 @@ struct ArcImage {
   ir::Plane plane;
   bool clockwise;
 };
+// `similarity`: also nullopt when the plane is not mapped by a similarity (its circle would
+// become an ellipse); without it the image of the end point and centre is what the caller uses.
 std::optional<ArcImage> arcImage(const ir::Affine& a, ir::Plane plane, bool clockwise,
-                                 bool helical);
+                                 bool helical, bool similarity = false);
 
 // The slots (0 X, 1 Y, 2 Z) of a plane: first axis, second axis, normal.
 std::array<int, 3> planeSlots(ir::Plane plane);

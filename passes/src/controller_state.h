@@ -55,6 +55,7 @@ struct TransformState {
   // acts in the first's coordinates). The last 2-D angle, for an incremental R.
   std::vector<ir::Affine> rotations;
   double angle_2d = 0.0;
+  bool rotation_3d = false;  // a G68 with I J K is among them
   // G51: the scaled X/Y/Z slots, their centres and factors.
   std::array<bool, 3> scaled{};
   std::array<double, 3> scale_centre{};

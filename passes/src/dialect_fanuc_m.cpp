@@ -302,11 +302,12 @@ constexpr SystemVariableRange kSystemVariables[] = {
 // Coordinate rotation, scaling and mirror (docs/transforms.md). There is no FANUC mill manual
 // here: these are the FANUC-family rules the lathe manual states for G68.1 (§5.9: centre
 // absolute, the position when omitted, R absolute unless RIN) and the common FANUC mill ones
-// (the order mirror, scaling, rotation; G51 centre absolute, the position when omitted; P in
+// (scaling before rotation; "a mirror on one axis reverses the rotation", so the mirror acts
+// last; G51 centre absolute, the position when omitted; P in
 // scale_factor_unit; 3-D conversion with I J K nests twice).
 constexpr TransformRules kTransforms{
-    .order = {TransformRules::Stage::FigureRotation, TransformRules::Stage::Mirror,
-              TransformRules::Stage::Scaling, TransformRules::Stage::Rotation},
+    .order = {TransformRules::Stage::FigureRotation, TransformRules::Stage::Scaling,
+              TransformRules::Stage::Rotation, TransformRules::Stage::Mirror},
     .rotation_angle_required = false,  // R omitted: the parameter's angle (No.5410)
     .rotation_angle_follows_distance = false,
     .rotation_stacks_2d = false,
@@ -315,6 +316,8 @@ constexpr TransformRules kTransforms{
     .extra_rotation_replaces_last = false,
     .rotation_3d_unit_axis_only = false,
     .rotation_3d_centre_is_origin = false,
+    .rotation_3d_centre_is_new_zero = false,
+    .rotation_3d_restricted = false,
     .rotation_3d_angle_absolute = true,
     .transform_block_alone = false,
     .scale_centre_omitted = TransformRules::ScaleCentre::CurrentPosition,

@@ -183,8 +183,8 @@ constexpr std::string_view kAlarms[] = {
     "NCC2099",  // CycleReferencePlane (not raised)
     "NCC2110",  // TransformArcNotCircle
     "807",      // TransformWordMissing: format error
-    "NCC2112",  // TransformNotAlone (not raised)
-    "NCC2113",  // TransformOrder (not raised)
+    "807",      // TransformNotAlone: a 3-D G68/G69 with another G code (ch. 22 §5.2)
+    "943",      // TransformOrder: G51 / G54-G59 in 3-D G68 mode (ch. 22 §2)
     "807",      // RotationVector: 3-D G68 I J K not one axis (ch. 22)
     "NCC2115",  // RotationNesting (not raised: nested 3-D G68 compose)
     "809",      // ScaleFactorRange: G51 P too large (§13-10 3.A)
@@ -303,7 +303,9 @@ constexpr TransformRules kTransforms{
     .max_rotations = 0,
     .extra_rotation_replaces_last = false,
     .rotation_3d_unit_axis_only = true,
-    .rotation_3d_centre_is_origin = false,
+    .rotation_3d_centre_is_origin = true,   // ch. 22 §2: the current work zero
+    .rotation_3d_centre_is_new_zero = true,
+    .rotation_3d_restricted = true,
     .rotation_3d_angle_absolute = true,
     .transform_block_alone = false,
     .scale_centre_omitted = TransformRules::ScaleCentre::AxisNotScaled,  // §13-10 3.A

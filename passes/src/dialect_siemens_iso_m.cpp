@@ -240,10 +240,13 @@ constexpr DialectBehaviour kBehaviour{
 constexpr std::span<const SystemVariableRange> kSystemVariables{};
 
 // Coordinate rotation, scaling and mirror (docs/transforms.md): §3.1.9-§3.1.10 (G68 2-D and
-// 3-D, two base frames), §3.2.3 (G51), §3.2.4 (G51.1; the order mirror, scaling, rotation).
+// 3-D, two base frames), §3.2.3 (G51), §3.2.4 (G51.1). The order: G51.1 is base frame [1] and
+// G68 needs three (frame [2] acts first on the point), and table 3.6 says a single-axis mirror
+// reverses the rotation, i.e. the mirror acts after it. "Mirror, scaling, rotation" in §3.2.4 is
+// the order they are switched on in.
 constexpr TransformRules kTransforms{
-    .order = {TransformRules::Stage::FigureRotation, TransformRules::Stage::Mirror,
-              TransformRules::Stage::Scaling, TransformRules::Stage::Rotation},
+    .order = {TransformRules::Stage::FigureRotation, TransformRules::Stage::Scaling,
+              TransformRules::Stage::Rotation, TransformRules::Stage::Mirror},
     .rotation_angle_required = false,  // R omitted: SD42150 DEFAULT_ROT_FACTOR_R
     .rotation_angle_follows_distance = true,
     .rotation_stacks_2d = true,        // §3.1.10 "座標回転の重ね合わせ": base frames 1 and 2
@@ -252,6 +255,8 @@ constexpr TransformRules kTransforms{
     .extra_rotation_replaces_last = true,  // a third G68 replaces the second
     .rotation_3d_unit_axis_only = false,
     .rotation_3d_centre_is_origin = true,
+    .rotation_3d_centre_is_new_zero = true,
+    .rotation_3d_restricted = false,
     .rotation_3d_angle_absolute = true,
     .transform_block_alone = true,
     .scale_centre_omitted = TransformRules::ScaleCentre::WorkOrigin,  // "always the work origin"

@@ -277,6 +277,12 @@ AxisValues imageOf(const LoweringCore& core, const ControllerState& cs, const Ax
 // Whether the tool moves on the way to the work-space `target`: `moves` (the programmed point
 // changes) unless a transform is or was in force, then whether the point it maps to changes.
 bool movesUnderTransforms(const BlockContext& ctx, const AxisValues& target, bool moves);
+// An arc (work space, as programmed) under the transforms in force: false after reporting
+// when its image is no circle from where the tool is (unequal scaling in its plane, a plane
+// tilted out of the principal ones, or a start off the circle because a transform changed
+// since the last move). The controls scale and turn the end point and the centre and cut a
+// circle: it is one only when the radii at both ends agree (arc_radius_tolerance).
+bool arcUnderTransforms(BlockContext& ctx, const ir::Arc& arc);
 // After a block that moved: where the tool now is, if not at the commanded point.
 void trackTool(BlockContext& ctx);
 // Mazak figure rotation (Lowering::figureRotationBegin/Run/End).

@@ -288,6 +288,7 @@ bool arc(BlockContext& ctx, const AxisValues& start, const AxisValues& target,
   } else {
     a.feed = ctx.next.modal.feed;
   }
+  if (!arcUnderTransforms(ctx, a)) return false;
   ctx.ops.push_back(a);
   return true;
 }

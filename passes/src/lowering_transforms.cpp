@@ -96,11 +96,13 @@ void rotation3d(BlockContext& ctx, const GWord& g) {
     if (*ijk[s]) v[s] = ctx.lengthValue(**ijk[s]);
   const int nonzero = (v[0] != 0) + (v[1] != 0) + (v[2] != 0);
   if (r.rotation_3d_unit_axis_only) {
-    bool unit = nonzero == 1;
+    // Mazak ch. 22 §2: I, J and K are all required, exactly one of them 1.
+    bool unit = nonzero == 1 && *ijk[0] && *ijk[1] && *ijk[2];
     for (double c : v) unit = unit && (c == 0 || std::fabs(std::fabs(c) - 1.0) < 1e-9);
     if (!unit) {
       ctx.fail(Alarm::RotationVector, g.loc,
-               "G68 I J K: exactly one of I, J, K must be 1 (the axis of the rotation)");
+               "G68 I J K: all three are needed and exactly one of them is 1 (the axis of the "
+               "rotation)");
       return;
     }
   }
@@ -127,7 +129,14 @@ void rotation3d(BlockContext& ctx, const GWord& g) {
     ctx.fail(Alarm::TransformWordMissing, g.loc, "G68 needs the angle R");
     return;
   }
-  pushRotation(ctx, g, rotation(xyz(ctx), centre, v, deg), r.rotation_stacks_3d);
+  ir::Affine turn = rotation(xyz(ctx), centre, v, deg);
+  if (r.rotation_3d_centre_is_new_zero) {
+    // The program zero moves to the centre, then the system turns there: p -> c + R p.
+    turn = rotation(xyz(ctx), {}, v, deg);
+    turn.t = {centre[0], centre[1], centre[2]};
+  }
+  ctx.next.transforms.rotation_3d = true;
+  pushRotation(ctx, g, turn, r.rotation_stacks_3d);
 }
 
 void rotation2d(BlockContext& ctx, const GWord& g) {
@@ -156,7 +165,8 @@ void rotation2d(BlockContext& ctx, const GWord& g) {
     const bool incremental = (r.rotation_angle_follows_distance ||
                               ctx.settings.rotation_angle_incremental) &&
                              ctx.words.r->mode == ir::DistanceMode::Incremental;
-    if (incremental && !t.rotations.empty()) deg += t.angle_2d;
+    // Stacked (Siemens): the new frame turns relative to the one in force already.
+    if (incremental && !t.rotations.empty() && !r.rotation_stacks_2d) deg += t.angle_2d;
     if (!angleInRange(ctx, *ctx.words.r, deg, "G68")) return;
   } else if (r.rotation_angle_required) {
     ctx.fail(Alarm::TransformWordMissing, g.loc, "G68 needs the angle R");
@@ -313,8 +323,8 @@ void mirrorCancel(BlockContext& ctx, const GWord& g) {
 
 // The plane's alone-rule (Siemens §3.1.9, §3.2.3): G68/G69/G51/G50 blocks hold no other G code
 // than the plane (the manual's own format is `G17 G68 X Y R`).
-bool alone(BlockContext& ctx, const GWord& g) {
-  if (!rules(ctx).transform_block_alone) return true;
+bool alone(BlockContext& ctx, const GWord& g, bool always = false) {
+  if (!always && !rules(ctx).transform_block_alone) return true;
   for (size_t i = 0; i < ctx.words.modal.size(); ++i) {
     const auto& other = ctx.words.modal[i];
     if (!other || other->entry == g.entry || other->entry->group == GGroup::Plane) continue;
@@ -348,6 +358,19 @@ bool transformTakesAxisWords(const BlockContext& ctx) {
 void applyTransformCodes(BlockContext& ctx) {
   if (!ctx.table.transforms) return;
   TransformState& t = ctx.next.transforms;
+  // Mazak ch. 22 §2 and the §5.1 table: scaling and the work systems G54-G59 are refused while
+  // a 3-D G68 is in force (943).
+  if (t.rotation_3d && rules(ctx).rotation_3d_restricted) {
+    for (GGroup group : {GGroup::Scaling, GGroup::WorkOffset}) {
+      const auto& w = ctx.words.group(group);
+      if (!w) continue;
+      ctx.fail(Alarm::TransformOrder, w->loc,
+               absl::StrCat(gCodeName(w->entry->code10),
+                            " cannot be given while a 3-D coordinate conversion (G68 with I J K) "
+                            "is in force"));
+      return;
+    }
+  }
   const GWord* taker = nullptr;  // the code whose words the axis words are
   for (GGroup group : {GGroup::Rotation, GGroup::Scaling, GGroup::Mirror}) {
     const auto& w = ctx.words.group(group);
@@ -368,6 +391,10 @@ void applyTransformCodes(BlockContext& ctx) {
          a == GAction::ScalingCancel) &&
         !alone(ctx, *w))
       return;
+    // Mazak ch. 22 §5.2: a 3-D G68 (or the G69 of one) holds no other G code than the plane.
+    const bool three_d = (a == GAction::Rotation && (ctx.words.i || ctx.words.j || ctx.words.k)) ||
+                         (a == GAction::RotationCancel && t.rotation_3d);
+    if (three_d && rules(ctx).rotation_3d_restricted && !alone(ctx, *w, true)) return;
     switch (a) {
       case GAction::Rotation:
         if (ctx.words.i || ctx.words.j || ctx.words.k)
@@ -378,6 +405,7 @@ void applyTransformCodes(BlockContext& ctx) {
       case GAction::RotationCancel:
         t.rotations.clear();
         t.angle_2d = 0.0;
+        t.rotation_3d = false;
         break;
       case GAction::Scaling: scale(ctx, *w); break;
       case GAction::ScalingCancel:
@@ -429,34 +457,25 @@ void workRotation(BlockContext& ctx, const GWord& g) {
   if (!onlyXyzWords(ctx, "G92.5")) return;
   TransformState& t = ctx.next.transforms;
   const auto sl = planeSlots(ctx.next.modal.plane);
-  for (int s : {sl[0], sl[1]}) {  // the centre: machine coordinates, kept when omitted
+  // The centre: machine coordinates, each kept when omitted; the one off the plane is kept for
+  // a later G92.5 in another plane (§14-13 3. (9): `G19 G92.5 J2. K3.` turns about Y20 Z30).
+  for (int s = 0; s < 3; ++s) {
     const auto* w = slotWord(ctx, s);
     if (w && *w) t.work_rotation_centre[s] = ctx.axisValue(xyz(ctx)[s], **w);
   }
-  if (const auto* w = slotWord(ctx, sl[2]); w && *w) {
-    ctx.fail(Alarm::AddressWithoutMeaning, (*w)->loc,
-             absl::StrCat("address ", (*w)->address, " has no meaning in G92.5 in the ",
-                          kSlotName[sl[0]], kSlotName[sl[1]], " plane"));
-    return;
-  }
-  // The angle: R, else the direction of the plane's I J K vector; none, or R0, cancels.
+  // The angle: R, else the direction of the plane's vector (I J in G17, K I in G18, J K in
+  // G19; the third is ignored); R beats the vector (§14-13 3.); none, or R0, cancels.
+  const std::optional<WordValue>* ijk[] = {&ctx.words.i, &ctx.words.j, &ctx.words.k};
+  if (*ijk[0] || *ijk[1] || *ijk[2]) ctx.used_ijk = true;
   std::optional<double> deg;
   if (ctx.words.r) {
     ctx.used_r = true;
     deg = angle(ctx, *ctx.words.r);
     if (!angleInRange(ctx, *ctx.words.r, *deg, "G92.5")) return;
   } else {
-    const std::optional<WordValue>* ijk[] = {&ctx.words.i, &ctx.words.j, &ctx.words.k};
     double a = 0.0, b = 0.0;
     if (*ijk[sl[0]]) a = ctx.lengthValue(**ijk[sl[0]]);
     if (*ijk[sl[1]]) b = ctx.lengthValue(**ijk[sl[1]]);
-    if (*ijk[sl[2]]) {
-      ctx.fail(Alarm::AddressWithoutMeaning, (**ijk[sl[2]]).loc,
-               absl::StrCat("address ", (**ijk[sl[2]]).address, " has no meaning in G92.5 in the ",
-                            kSlotName[sl[0]], kSlotName[sl[1]], " plane"));
-      return;
-    }
-    if (*ijk[sl[0]] || *ijk[sl[1]]) ctx.used_ijk = true;
     if (a != 0.0 || b != 0.0) deg = std::atan2(b, a) * 180.0 / std::numbers::pi;
   }
   if (!deg || *deg == 0.0) {
@@ -540,6 +559,43 @@ bool movesUnderTransforms(const BlockContext& ctx, const AxisValues& target, boo
   AxisValues to = target;
   for (int i = 0; i < ctx.axisCount(); ++i) to[i] += total[i];
   return !ctx.samePosition(tool_at ? *tool_at : ctx.core.cs.position, imageOf(ctx.core, ctx.next, to));
+}
+
+bool arcUnderTransforms(BlockContext& ctx, const ir::Arc& arc) {
+  const std::optional<AxisValues>& tool_at = ctx.core.cs.transforms.tool_at;
+  const ir::Transform after = transformOf(ctx);
+  if (!tool_at && !after.any()) return true;
+  const AxisValues total = frameOf(ctx.next, ctx.behaviour).total();
+  const ir::Affine map = workSpaceMap(after, total);
+  const auto image = arcImage(map, arc.plane, arc.clockwise, /*helical=*/true);
+  if (!image) {
+    ctx.fail(Alarm::TransformArcNotCircle, ctx.motionLoc(),
+             "the arc would leave the principal planes under the coordinate transform in force "
+             "(a 3-D rotation tilts its plane)");
+    return false;
+  }
+  AxisValues start = tool_at ? *tool_at : ctx.core.cs.position, end = arc.to, centre = arc.center;
+  for (int i = 0; i < ctx.axisCount(); ++i) start[i] -= total[i];
+  applyPoint(map, end);
+  applyPoint(map, centre);
+  const auto sl = planeSlots(image->plane);
+  auto radius = [&](const AxisValues& p) {
+    const int a = map.axes[sl[0]], b = map.axes[sl[1]];
+    return std::hypot(p[a] - centre[a], p[b] - centre[b]);
+  };
+  const double r0 = radius(start), r1 = radius(end);
+  if (std::fabs(r0 - r1) <= ctx.settings.arc_tolerance) return true;
+  const bool similar = arcImage(map, arc.plane, arc.clockwise, false, /*similarity=*/true).has_value();
+  if (!similar)
+    ctx.fail(Alarm::TransformArcNotCircle, ctx.motionLoc(),
+             absl::StrCat("under unequal scaling in its plane the arc is no circle: radius ",
+                          mm(r0), " at the start, ", mm(r1), " at the end"));
+  else
+    ctx.fail(Alarm::ArcRadiusMismatch, ctx.motionLoc(),
+             absl::StrCat("the arc starts off its circle (radius ", mm(r0), " at the start, ",
+                          mm(r1), " at the end): a coordinate transform changed since the last "
+                          "move; give an absolute G00/G01 move first"));
+  return false;
 }
 
 void trackTool(BlockContext& ctx) {

@@ -1,5 +1,7 @@
 #include "transform_pass.h"
 
+#include <algorithm>
+#include <cmath>
 #include <type_traits>
 #include <variant>
 
@@ -20,8 +22,15 @@ TransformPass::TransformPass(ir::BlockSink& next, Dialect dialect, DiagnosticEng
     : next_(next), table_(dialectTable(dialect)), diags_(diags) {}
 
 void TransformPass::accept(ir::Block block) {
-  if (!block.transform.any()) return next_.accept(std::move(block));
-  const ir::Affine map = workSpaceMap(block.transform, block.frame.total());
+  const AxisValues total = block.frame.total();
+  // Where the tool ends (machine coordinates): an arc's start, for the check below.
+  auto track = [&](const AxisValues& to, ir::Space space) {
+    last_ = to;
+    if (space == ir::Space::Work)
+      for (int i = 0; i < kMaxAxes; ++i) (*last_)[i] += total[i];
+  };
+  const bool any = block.transform.any();
+  const ir::Affine map = any ? workSpaceMap(block.transform, total) : ir::Affine{};
   block.transform = {};
   for (ir::Operation& op : block.ops) {
     bool ok = true;
@@ -30,30 +39,50 @@ void TransformPass::accept(ir::Block block) {
           using T = std::decay_t<decltype(o)>;
           if constexpr (std::is_same_v<T, ir::Rapid> || std::is_same_v<T, ir::Linear> ||
                         std::is_same_v<T, ir::Skip>) {
-            if (o.space == ir::Space::Work) applyPoint(map, o.to);
+            if (any && o.space == ir::Space::Work) applyPoint(map, o.to);
+            track(o.to, o.space);
           } else if constexpr (std::is_same_v<T, ir::Arc>) {
-            if (o.space != ir::Space::Work) return;
-            const auto image = arcImage(map, o.plane, o.clockwise, /*helical=*/true);
-            if (!image) {
-              ok = false;
-              diags_.error(std::string(table_->alarm(Alarm::TransformArcNotCircle)), block.loc,
-                           absl::StrCat("the ", planeCode(o.plane),
-                                        " arc is no circle in a principal plane under the "
-                                        "coordinate transform in force (unequal scaling in its "
-                                        "plane, or a 3-D rotation that tilts it)"));
-              return;
-            }
-            applyPoint(map, o.to);
-            applyPoint(map, o.center);
-            o.plane = image->plane;
-            o.clockwise = image->clockwise;
+            if (any && o.space == ir::Space::Work) ok = mapArc(block, map, o);
+            track(o.to, o.space);
           }
-          // Machine-space moves (G53, reference returns) and non-motion operations stay.
+          // Non-motion operations stay; a hole cycle was expanded by the cycles pass before.
         },
         op);
     if (!ok) return;  // the block is refused: nothing of it goes on
   }
   next_.accept(std::move(block));
+}
+
+// The lowering checked the arcs it made (arcUnderTransforms); an arc the corners pass inserted
+// is checked here: it must stay a circle from where the tool is.
+bool TransformPass::mapArc(const ir::Block& block, const ir::Affine& map, ir::Arc& arc) {
+  const auto image = arcImage(map, arc.plane, arc.clockwise, /*helical=*/true);
+  const bool similar = arcImage(map, arc.plane, arc.clockwise, true, true).has_value();
+  AxisValues end = arc.to, centre = arc.center;
+  applyPoint(map, end);
+  applyPoint(map, centre);
+  bool circle = image.has_value();
+  if (circle && !similar && last_) {
+    const auto sl = planeSlots(image->plane);
+    const int a = map.axes[sl[0]], b = map.axes[sl[1]];
+    const AxisValues total = block.frame.total();
+    const double r0 = std::hypot((*last_)[a] - total[a] - centre[a], (*last_)[b] - total[b] - centre[b]);
+    const double r1 = std::hypot(end[a] - centre[a], end[b] - centre[b]);
+    circle = std::fabs(r0 - r1) <= 1e-6 * std::max(1.0, r1);
+  }
+  if (!circle) {
+    diags_.error(std::string(table_->alarm(Alarm::TransformArcNotCircle)), block.loc,
+                 absl::StrCat("the ", planeCode(arc.plane),
+                              " arc is no circle in a principal plane under the coordinate "
+                              "transform in force (unequal scaling in its plane, or a 3-D "
+                              "rotation that tilts it)"));
+    return false;
+  }
+  arc.to = end;
+  arc.center = centre;
+  arc.plane = image->plane;
+  arc.clockwise = image->clockwise;
+  return true;
 }
 
 }  // namespace ncc::passes

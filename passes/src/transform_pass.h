@@ -7,6 +7,8 @@
 // keeps its circle, moves to the plane its image lies in and reverses under a mirror; an arc
 // whose image is no circle in a principal plane (unequal scaling in its plane, a 3-D rotation
 // that tilts it) is refused with a diagnostic, never approximated.
+#include <optional>
+
 #include "ncc/ir/ir.h"
 #include "ncc/machine/dialect.h"
 #include "ncc/passes/dialect_table.h"
@@ -21,9 +23,12 @@ class TransformPass : public ir::BlockSink {
   void finish() override { next_.finish(); }
 
  private:
+  bool mapArc(const ir::Block& block, const ir::Affine& map, ir::Arc& arc);
+
   ir::BlockSink& next_;
   const DialectTable* table_;
   DiagnosticEngine& diags_;
+  std::optional<AxisValues> last_;  // where the tool ends, machine coordinates (unknown at first)
 };
 
 }  // namespace ncc::passes

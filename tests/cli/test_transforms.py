@@ -144,7 +144,7 @@ class TransformsCli(ScratchDirTest):
                 self.assertIn(f"bad.nc:{line}:{col}: error[{code}]", ran.stderr)
 
     def test_an_arc_starting_off_its_circle_after_g69_is_refused_when_compiling(self):
-        # BUG: R90 leaves the tool at (0, 10) for the programmed (10, 0); after G69 the G02 to
+        # R90 leaves the tool at (0, 10) for the programmed (10, 0); after G69 the G02 to
         # (20, 0) with I5 starts off its circle (18.028 from its centre, 5 at the end). Today
         # `ncc compile` writes the file and only the VM stops, with NCC7211 "was the file
         # edited?"; the compiler's arc check (PS0020 on fanuc-m) must refuse it at 4:1.

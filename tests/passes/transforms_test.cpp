@@ -5,7 +5,6 @@
 //   (cx + (x-cx) cos a - (y-cy) sin a,  cy + (x-cx) sin a + (y-cy) cos a),
 // counter-clockwise seen from the plane's third axis (G17: from +Z, G18: from +Y with Z the first
 // axis, G19: from +X with Y the first axis). A scaling by f about c takes x to c + f (x - c).
-// Tests marked `// BUG:` disagree with ncc today; they stay enabled (see the lead's report).
 #include <string>
 #include <vector>
 
@@ -127,7 +126,7 @@ TEST(Transforms, IncrementalAngleFanucAbsoluteUnlessRinMazakAddsToTheAngleInForc
 }
 
 TEST(Transforms, SiemensIncrementalAngleInASecondG68) {
-  // BUG: Siemens §3.1.9: R is "absolute or incremental per G90/G91"; with R30 in force an
+  // Siemens §3.1.9: R is "absolute or incremental per G90/G91"; with R30 in force an
   // incremental R60 adds 60 to the angle in force, 30 + 60 = 90 deg in all: (10, 0) -> (0, 10).
   // (Read as base frame 2 composed on frame 1 (§3.1.10), an incremental R in the empty frame 2
   // is also 60, again 90 in all.) ncc adds the 30 to the second G68's angle (90) AND stacks it
@@ -282,7 +281,7 @@ TEST(Transforms, MazakThreeDimensionalNeedsOneUnitAxis) {
 }
 
 TEST(Transforms, MazakThreeDimensionalNeedsAllOfIJK) {
-  // BUG: ch. 22 §2 "Précaution": "I, J and K are required. If one or two of them are omitted,
+  // ch. 22 §2 "Précaution": "I, J and K are required. If one or two of them are omitted,
   // alarm 807"; the manual's own example `G68 X0 Y0 Z0 I1 K0 R-45.` is a "format error".
   // ncc accepts it (and `G68 ... I1. R90.`) as a rotation about X.
   EXPECT_EQ(firstDiag(run(Dialect::MazakM, "G68 X0 Y0 Z0 I1. K0 R-45.\nM30\n")),
@@ -291,7 +290,7 @@ TEST(Transforms, MazakThreeDimensionalNeedsAllOfIJK) {
 }
 
 TEST(Transforms, MazakThreeDimensionalG68StandsAlone) {
-  // BUG: ch. 22 §5.2: "if a G code other than G17, G18 and G19 is given with G68 or G69 in the
+  // ch. 22 §5.2: "if a G code other than G17, G18 and G19 is given with G68 or G69 in the
   // same block, alarm 807". ncc accepts `G90 G68 ... I J K`.
   EXPECT_EQ(firstDiag(run(Dialect::MazakM, "G90 G68 X0 Y0 Z0 I0 J0 K1. R45.\nM30\n")),
             "1:1: error[807]");
@@ -299,7 +298,7 @@ TEST(Transforms, MazakThreeDimensionalG68StandsAlone) {
 }
 
 TEST(Transforms, MazakThreeDimensionalModeRefusesScalingAndWorkOffsets) {
-  // BUG: ch. 22 §2: "an incompatible G code in 3-D coordinate conversion mode: alarm 943"; the
+  // ch. 22 §2: "an incompatible G code in 3-D coordinate conversion mode: alarm 943"; the
   // §5.1 table marks G50/G51 and G54-G59 "x" in G68 mode. ncc accepts both. (In a 2-D G68,
   // G51 is fine: §13-10 5.10.)
   EXPECT_EQ(firstDiag(run(Dialect::MazakM,
@@ -311,7 +310,7 @@ TEST(Transforms, MazakThreeDimensionalModeRefusesScalingAndWorkOffsets) {
 }
 
 TEST(Transforms, ThreeDimensionalCentreIsTheNewProgramZero) {
-  // BUG: the 3-D G68's X Y Z move the program zero there, then the system turns about I J K:
+  // the 3-D G68's X Y Z move the program zero there, then the system turns about I J K:
   // Mazak ch. 22 §4 "on établit un nouveau système de coordonnées de programme en déplaçant le
   // point zéro de pièce actuel jusqu'à la position désignée par X, Y et Z et en tournant ...";
   // Siemens §3.1.10 "回転中心点の座標は原点オフセットのように作用します" (the centre acts like
@@ -327,7 +326,7 @@ TEST(Transforms, ThreeDimensionalCentreIsTheNewProgramZero) {
 }
 
 TEST(Transforms, MazakThreeDimensionalManualExampleNested) {
-  // BUG (as ThreeDimensionalCentreIsTheNewProgramZero): ch. 22 §4's example: (2) `G68 X10. Y0
+  // As ThreeDimensionalCentreIsTheNewProgramZero: ch. 22 §4's example: (2) `G68 X10. Y0
   // Z0 I0 J1 K0 R-30.` is system A, zero at (10, 0, 0), turned 30 deg clockwise about Y;
   // (3) `G68 X0 Y10. Z0 I1 J0 K0 R45.` is system B, zero at A's (0, 10, 0), turned 45 deg
   // counter-clockwise about X; (4) G69 restores the work system. Work = cA + RA (cB + RB p),
@@ -349,7 +348,7 @@ TEST(Transforms, MazakThreeDimensionalManualExampleNested) {
 }
 
 TEST(Transforms, MazakThreeDimensionalCentreOmittedIsTheWorkZero) {
-  // BUG: ch. 22 §2: "if X, Y and Z are omitted, the current work zero is taken as the new
+  // ch. 22 §2: "if X, Y and Z are omitted, the current work zero is taken as the new
   // program zero" (not the current position). From (5, 5): `G68 I0 J0 K1. R90.` turns about
   // (0, 0): (10, 0) -> (0, 10). ncc turns about (5, 5): (10, 10).
   expectMoves(run(Dialect::MazakM, "G00 X5. Y5.\nG68 I0 J0 K1. R90.\nG00 X10. Y0\nM30\n"), kXYZ,
@@ -493,7 +492,7 @@ TEST(Transforms, MazakManualExampleIIIScaledInXAndY) {
 }
 
 TEST(Transforms, MazakManualExampleIIIScaledInXOnly) {
-  // BUG: §13-10 5.3 (3) "Avec cadrage appliqué seulement en X": `G51 X-125. P0.5` on the same
+  // §13-10 5.3 (3) "Avec cadrage appliqué seulement en X": `G51 X-125. P0.5` on the same
   // program with its two G02 half circles is one of the manual's own worked examples, and
   // §13-10 4.5 says how: "in circular interpolation, scaling applies only to the axis (of the
   // plane's two) that is scaled" -- the end point and centre are scaled in X, the arc is still
@@ -668,7 +667,7 @@ TEST(Transforms, MazakRotatesBeforeMirroring) {
 }
 
 TEST(Transforms, SiemensSingleAxisMirrorReversesTheRotation) {
-  // BUG: §3.2.4 table 3.6: with a mirror on one plane axis "座標回転: CW と CCW (回転方向) が入れ
+  // §3.2.4 table 3.6: with a mirror on one plane axis "座標回転: CW と CCW (回転方向) が入れ
   // 替わります" (the coordinate rotation's direction is reversed), as G02/G03 and G41/G42 are;
   // and G51.1 sits in base frame [1] (MM_NUM_BASE_FRAMES >= 2) while G68 needs >= 3 (§3.1.9):
   // the rotation is the later frame, applied to the programmed point first, the mirror after it.
@@ -708,7 +707,7 @@ TEST(Transforms, MazakWorkRotationByVector) {
 }
 
 TEST(Transforms, MazakWorkRotationRBeatsTheVector) {
-  // BUG: §14-13 3.: "if the angle and the axis vectors are given in one block, the first
+  // §14-13 3.: "if the angle and the axis vectors are given in one block, the first
   // (the angle R) has priority": R90 -> (11, 20) is (1, 0) from (10, 20) -> (10, 21). ncc
   // refuses the block: "1:17: error[NCC2014]: address I has no meaning in G92.5".
   expectMoves(run(Dialect::MazakM, "G92.5 X10. Y20. I1. J2. R90.\nG00 X11. Y20.\nM30\n"), kXYZ,
@@ -716,7 +715,7 @@ TEST(Transforms, MazakWorkRotationRBeatsTheVector) {
 }
 
 TEST(Transforms, MazakWorkRotationIgnoresTheAxisOffThePlane) {
-  // BUG: §14-13 3. (9): "the axis not in the selected plane is ignored": the manual's own
+  // §14-13 3. (9): "the axis not in the selected plane is ignored": the manual's own
   // `G17 G92.5 X10. Y20. Z30. I1. J2. K3.` turns by 63.435 deg about (10, 20), Z and K
   // ignored; and since X, Y, Z once given stay in force, the following `G19 G92.5 J2. K3.`
   // turns by atan(3/2) = 56.301 deg about (Y20, Z30). ncc refuses Z30 with NCC2014.
@@ -824,7 +823,7 @@ TEST(Transforms, MazakWorkRotationCancelManualExamples) {
 }
 
 TEST(Transforms, ArcRightAfterACancelStartsOffItsCircle) {
-  // BUG: after a move under a transform the tool stands at the mapped point; cancelling
+  // after a move under a transform the tool stands at the mapped point; cancelling
   // (G69, G50.1, G92.5 R0) and going on with an arc starts it there, off its circle. Each
   // dialect's arc check must refuse it when compiling (FANUC PS0020, Mazak 817 -- §14-13 5.1
   // gives 817 for "the radius at the end point no longer equals the radius at the start point"

@@ -276,8 +276,14 @@ struct TransformRules {
   bool rotation_stacks_3d;
   int max_rotations;                   // stacked rotations at most (0: no limit)
   bool extra_rotation_replaces_last;   // beyond the limit: replaces the last (Siemens) or alarm
-  bool rotation_3d_unit_axis_only;     // 3-D: exactly one of I J K is 1 (Mazak ch. 22, 807)
+  bool rotation_3d_unit_axis_only;     // 3-D: I J K all given, exactly one is 1 (Mazak ch. 22, 807)
   bool rotation_3d_centre_is_origin;   // 3-D centre omitted: the work origin (else the position)
+  // 3-D X Y Z are the new program zero (Mazak ch. 22 §4, Siemens §3.1.10 "acts like an origin
+  // offset": p -> c + R p); else the centre the system turns about (p -> c + R (p - c)).
+  bool rotation_3d_centre_is_new_zero;
+  // 3-D mode: G68/G69 hold no other G code than the plane; G51 and G54-G59 are refused in it
+  // (Mazak ch. 22 §5.2, §2: 807, 943).
+  bool rotation_3d_restricted;
   bool rotation_3d_angle_absolute;     // 3-D R always absolute (Siemens §3.1.10)
   bool transform_block_alone;          // G68/G69/G51/G50 blocks hold no other G code (Siemens)
   // ---- G51 / G50 ----
