@@ -59,9 +59,10 @@ class Sequence {
 
 using K = ir::MachineFunction::Kind;
 
-// G73: feed Q, back off d (rapid, or Mazak's fixed retract feed), feed d + Q, ... to Z.
-// G83: feed Q, rapid to R, rapid to d above the last depth, feed d + Q, ... to Z.
-void pecks(Sequence& s, const ir::HoleCycle& c) {
+// Infeeds of Q from R to Z: after each one but the last, `retreat(depth, above)` takes the tool
+// back (above: d above the depth just reached) so that the next infeed starts there.
+template <typename Retreat>
+void infeeds(Sequence& s, const ir::HoleCycle& c, Retreat retreat) {
   const double dir = c.bottom < c.r_level ? -1.0 : 1.0;  // into the hole
   double depth = c.r_level;
   for (;;) {
@@ -70,7 +71,14 @@ void pecks(Sequence& s, const ir::HoleCycle& c) {
     s.feedTo(next, c.feed);
     depth = next;
     if (next == c.bottom) return;
-    const double above = depth - dir * c.peck_distance;
+    retreat(depth - dir * c.peck_distance);
+  }
+}
+
+// G73: feed Q, back off d (rapid, or Mazak's fixed retract feed), feed d + Q, ... to Z.
+// G83: feed Q, rapid to R, rapid to d above the last depth, feed d + Q, ... to Z.
+void pecks(Sequence& s, const ir::HoleCycle& c) {
+  infeeds(s, c, [&](double above) {
     if (c.kind == ir::HoleCycle::Kind::HighSpeedPeck) {
       if (c.peck_retract_feed > 0)
         s.feedTo(above, c.peck_retract_feed);
@@ -80,7 +88,7 @@ void pecks(Sequence& s, const ir::HoleCycle& c) {
       s.rapidTo(c.r_level);
       s.rapidTo(above);
     }
-  }
+  });
 }
 
 // Peck tapping (FANUC deep-hole rigid tapping, Siemens §4.1.13): tap Q at F; then back off d
@@ -88,22 +96,10 @@ void pecks(Sequence& s, const ir::HoleCycle& c) {
 // to d above the last depth (Siemens at F, FANUC at the retract speed) and tap d + Q; to Z. The
 // spindle follows the axis (rigid): the back-offs reverse it without an M code.
 void tapPecks(Sequence& s, const ir::HoleCycle& c) {
-  const double dir = c.bottom < c.r_level ? -1.0 : 1.0;
-  double depth = c.r_level;
-  for (;;) {
-    double next = depth + dir * c.peck;
-    if ((next - c.bottom) * dir >= -kSame) next = c.bottom;
-    s.feedTo(next, c.feed);
-    depth = next;
-    if (next == c.bottom) return;
-    const double above = depth - dir * c.peck_distance;
-    if (c.peck_tap_to_r) {
-      s.feedTo(c.r_level, c.retract_feed);
-      s.feedTo(above, c.peck_approach_feed);
-    } else {
-      s.feedTo(above, c.retract_feed);
-    }
-  }
+  infeeds(s, c, [&](double above) {
+    if (c.peck_tap_to_r) s.feedTo(c.r_level, c.retract_feed);
+    s.feedTo(above, c.peck_tap_to_r ? c.peck_approach_feed : c.retract_feed);
+  });
 }
 
 K direction(int d) { return d < 0 ? K::SpindleCCW : K::SpindleCW; }
