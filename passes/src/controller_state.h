@@ -45,6 +45,9 @@ struct CycleState {
   double d = 0.0;               // Mazak G73/G83 D (mm); 0: the parameter
   bool has_d = false;
   bool rigid = false;           // FANUC M29: rigid tapping until G80 (deep-hole tapping with Q)
+  double feed_start = 0.0;      // Mazak K (G73/G83) / D (G82): from R to the feed start (mm)
+  double slow_zone = 0.0;       // Mazak I: the zone above the bottom at the slowed feed (mm)
+  double slow_percent = 0.0;    // Mazak J: that feed, % of F; 0: none
 };
 
 // The coordinate transforms in force (lowering_transforms.cpp, docs/transforms.md). Centres are

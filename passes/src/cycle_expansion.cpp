@@ -59,19 +59,37 @@ class Sequence {
 
 using K = ir::MachineFunction::Kind;
 
-// Infeeds of Q from R to Z: after each one but the last, `retreat(depth, above)` takes the tool
+// Mazak §13-1 K (G73/G83) / D (G82): a rapid from R down to where the feed starts. Returns that
+// level (R without it).
+double feedStart(Sequence& s, const ir::HoleCycle& c) {
+  if (!(c.feed_start > 0)) return c.r_level;
+  const double dir = c.bottom < c.r_level ? -1.0 : 1.0;
+  const double start = c.r_level + dir * c.feed_start;
+  s.rapidTo(start);
+  return start;
+}
+
+// The feed of an infeed that starts at `from`: Mazak's I J slow it when it starts within I of
+// the bottom ("the feed is f1 only if the cut starts within the range i0", §13-1-15).
+double feedFrom(const ir::HoleCycle& c, double from) {
+  return c.slow_zone > 0 && std::fabs(from - c.bottom) <= c.slow_zone + kSame ? c.slow_feed : c.feed;
+}
+
+// Infeeds of Q from R (or the feed start) to Z: after each one but the last, `retreat(depth, above)` takes the tool
 // back (above: d above the depth just reached) so that the next infeed starts there.
 template <typename Retreat>
 void infeeds(Sequence& s, const ir::HoleCycle& c, Retreat retreat) {
   const double dir = c.bottom < c.r_level ? -1.0 : 1.0;  // into the hole
-  double depth = c.r_level;
+  double depth = feedStart(s, c);
+  double from = depth;  // where this infeed starts (after the retreat)
   for (;;) {
     double next = depth + dir * c.peck;
     if ((next - c.bottom) * dir >= -kSame) next = c.bottom;
-    s.feedTo(next, c.feed);
+    s.feedTo(next, feedFrom(c, from));
     depth = next;
     if (next == c.bottom) return;
-    retreat(depth - dir * c.peck_distance);
+    from = depth - dir * c.peck_distance;
+    retreat(from);
   }
 }
 
@@ -177,7 +195,7 @@ std::vector<ir::Operation> expandHoleCycle(const ir::HoleCycle& c, int axis_coun
       break;
     case Kind::BackBore: break;  // above
     case Kind::Drill:
-      s.feedTo(c.bottom, c.feed);
+      s.feedTo(c.bottom, feedFrom(c, feedStart(s, c)));
       s.dwell();
       if (c.stop_spindle_at_bottom) s.spindle(K::SpindleStop);
       if (c.program_stop_at_bottom) s.spindle(K::ProgramStop);  // G88: the manual moves

@@ -200,12 +200,13 @@ static_assert(std::size(kAlarms) == static_cast<size_t>(Alarm::kCount));
 using CK = ir::HoleCycle::Kind;
 constexpr CycleEntry kCycleEntries[] = {
     // code kind              dwell  feed_out stop   tap  P in s shift  M00   dwell R pitch
-    {730, CK::HighSpeedPeck, true, false, false, 0, false, false, false, false, false},
+    // §13-1-6, -14, -15: K (G73/G83) or D (G82) from R to the feed start; I J the slow zone.
+    {730, CK::HighSpeedPeck, true, false, false, 0, false, false, false, false, false, 'K', true},
     {740, CK::Tap, true, false, false, -1, true, false, false, false, false},
     {760, CK::FineBore, true, false, false, 0, false, true, false, false, false},
     {810, CK::Drill, false, false, false, 0, false, false, false, false, false},
-    {820, CK::Drill, true, false, false, 0, false, false, false, false, false},
-    {830, CK::Peck, true, false, false, 0, false, false, false, false, false},
+    {820, CK::Drill, true, false, false, 0, false, false, false, false, false, 'D', true},
+    {830, CK::Peck, true, false, false, 0, false, false, false, false, false, 'K', true},
     {840, CK::Tap, true, false, false, 1, true, false, false, false, false},
     // §13-1-22: synchronous tapping, F the pitch; P at Z and at R (in seconds, as G84's);
     // the way out at K90 % (tap_retract_percent).

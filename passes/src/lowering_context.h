@@ -11,7 +11,12 @@
 //   lowering_reference.cpp         G27, G28, G30
 //   lowering_skip.cpp              G31 skip, and the blocks after it that need where it stopped
 //   lowering_machine_functions.cpp G04 dwell, S, T, M
+//   lowering_cycles.cpp            G73-G89 hole cycles, G80, G98/G99, M29
+//   lowering_position_offset.cpp   Mazak G45-G48
 //   lowering_polar.cpp             G15/G16: radius and angle words into Cartesian ones
+//   lowering_transforms.cpp        G68/G69, G51/G50, G51.1/G50.1, G92.5 into TransformState
+//   lowering_transform_map.cpp     the transforms as one map; the tool under it
+//   lowering_figure_rotation.cpp   Mazak's figure rotation (M98 I J K L)
 //   lowering_recovery.cpp          after a rejected block: what is unknown, which later
 //                                  blocks depend on it (skipped without a diagnostic)
 //   lowering_context.cpp           the helpers below, shared by all of them
@@ -256,7 +261,7 @@ bool repeatCountIsK(const BlockContext& ctx);
 // (repeats K/L), the position at the end of the last one.
 void lowerCycle(BlockContext& ctx);
 
-// ---- lowering_transforms.cpp ----
+// ---- lowering_transforms.cpp, lowering_transform_map.cpp, lowering_figure_rotation.cpp ----
 // Whether the block's axis words belong to G68, G51, G51.1 or G50.1 (centres, mirrored axes)
 // rather than to a move: the block then moves nothing.
 bool transformTakesAxisWords(const BlockContext& ctx);

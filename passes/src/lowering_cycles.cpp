@@ -12,6 +12,7 @@
 //  - a block with a positioning word (an axis, Z or R) drills; others only store data;
 //  - K (L) repeats the hole: in G91 each repeat moves by the increments again; 0 stores only;
 //  - the drilling axis is the normal of the plane (G17 Z, G18 Y, G19 X).
+#include <algorithm>
 #include <cmath>
 
 #include "absl/strings/str_cat.h"
@@ -86,16 +87,22 @@ void applyCodes(BlockContext& ctx) {
   c.code10 = cycle->entry->code10;
 }
 
-// Mazak G73/G83: D is the cycle's d, taken out of the block before the radius offset number
-// reads D (CycleRules::d_is_peck_distance). Modal like the other cycle data.
+// Mazak G73/G83: D is the cycle's d; G82: D is where the feed starts below R. Taken out of the
+// block before the radius offset number reads D (CycleRules::d_is_peck_distance). Modal like
+// the other cycle data.
 void takePeckDistance(BlockContext& ctx) {
   const CycleRules* rules = ctx.table.cycles;
   if (!ctx.words.d || !rules || !rules->d_is_peck_distance || !inCycle(ctx)) return;
   const CycleEntry* e = rules->find(ctx.next.cycle.code10);
-  if (e->kind != ir::HoleCycle::Kind::Peck && e->kind != ir::HoleCycle::Kind::HighSpeedPeck) return;
-  double d = ctx.lengthValue(*ctx.words.d);
-  ctx.next.cycle.d = d;
-  ctx.next.cycle.has_d = d > 0;
+  const double d = ctx.lengthValue(*ctx.words.d);
+  if (e->feed_start_address == 'D') {
+    ctx.next.cycle.feed_start = std::fabs(d);
+  } else if (e->kind == ir::HoleCycle::Kind::Peck || e->kind == ir::HoleCycle::Kind::HighSpeedPeck) {
+    ctx.next.cycle.d = d;
+    ctx.next.cycle.has_d = d > 0;
+  } else {
+    return;
+  }
   ctx.words.d.reset();
 }
 
@@ -160,6 +167,22 @@ void lowerCycle(BlockContext& ctx) {
       c.p = ctx.words.p->value;
     }
     c.has_p = true;
+  }
+  // Mazak §13-1: K from R to the feed start (G73/G83), I J the slow zone above the bottom.
+  if (entry.feed_start_address == 'K' && ctx.words.k) {
+    ctx.used_k = true;
+    c.feed_start = std::fabs(ctx.lengthValue(*ctx.words.k));
+  }
+  if (entry.slow_zone && (ctx.words.i || ctx.words.j)) {
+    ctx.used_ijk = true;
+    if (ctx.words.i) c.slow_zone = std::fabs(ctx.lengthValue(*ctx.words.i));
+    if (ctx.words.j) c.slow_percent = ctx.words.j->value;  // a percentage, as written
+    if (ctx.words.j && !(c.slow_percent > 0 && c.slow_percent <= 1000)) {
+      ctx.fail(Alarm::ValueOutOfRange, ctx.words.j->loc,
+               absl::StrCat(name, " J", ctx.words.j->value,
+                            ": the slowed feed must be a percentage above 0"));
+      return;
+    }
   }
   int64_t repeats = 1;
   const std::optional<WordValue>& kw = rules.repeat_address == 'L' ? ctx.words.l : ctx.words.k;
@@ -268,6 +291,12 @@ void lowerCycle(BlockContext& ctx) {
   if (entry.feed_out) {
     h.feed_out = true;
     h.retract_feed = h.feed;
+  }
+  h.feed_start = std::min(c.feed_start, std::fabs(r_level - c.z));
+  // "When I or J is omitted, the feed is not changed" (§13-1-6).
+  if (c.slow_zone > 0 && c.slow_percent > 0) {
+    h.slow_zone = c.slow_zone;
+    h.slow_feed = h.feed * c.slow_percent / 100.0;
   }
   h.stop_spindle_at_bottom = entry.spindle_stop;
   h.program_stop_at_bottom = entry.manual_stop;

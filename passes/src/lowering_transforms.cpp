@@ -1,8 +1,9 @@
-// Coordinate transforms: G68/G69 rotation (2-D in the plane, 3-D about I J K), G51/G50
+// The coordinate transform codes: G68/G69 rotation (2-D in the plane, 3-D about I J K), G51/G50
 // scaling, G51.1/G50.1 mirror and Mazak's G92.5 work coordinate rotation, read into
-// TransformState; transformOf composes them, in the order the dialect's manual states, into the
-// map the `transform` pass applies to the block's targets. What differs between the controls
-// is TransformRules (dialect_table.h); docs/transforms.md gives each rule with its manual.
+// TransformState. lowering_transform_map.cpp composes them into the map the `transform` pass
+// applies; lowering_figure_rotation.cpp is Mazak's figure rotation. What differs between the
+// controls is TransformRules (dialect_table.h); docs/transforms.md gives each rule with its
+// manual.
 #include <cmath>
 #include <numbers>
 
@@ -14,7 +15,6 @@ namespace ncc::passes {
 
 namespace {
 
-using Stage = TransformRules::Stage;
 constexpr const char* kSlotName[] = {"X", "Y", "Z"};
 
 const TransformRules& rules(const BlockContext& ctx) { return *ctx.table.transforms; }
@@ -487,205 +487,6 @@ void workRotation(BlockContext& ctx, const GWord& g) {
     t.work_rotation_just_set = true;
   }
   (void)g;
-}
-
-ir::Transform transformOf(const BlockContext& ctx) { return transformOf(ctx.core, ctx.next); }
-
-ir::Transform transformOf(const BlockContext& ctx, const ControllerState& cs) {
-  return transformOf(ctx.core, cs);
-}
-
-ir::Transform transformOf(const LoweringCore& core, const ControllerState& cs) {
-  ir::Transform out;
-  const TransformRules* rules = core.table->transforms;
-  if (!rules) return out;
-  const std::array<int8_t, 3>& xyz = core.xyz;
-  const TransformState& t = cs.transforms;
-  ir::Affine map = identityAffine(xyz);
-  for (Stage stage : rules->order) {
-    switch (stage) {
-      case Stage::FigureRotation:
-        if (t.figure) map = compose(*t.figure, map);
-        break;
-      case Stage::Mirror:
-        if (t.mirrorsAny()) {
-          Vec3 f{1, 1, 1};
-          for (int s = 0; s < 3; ++s)
-            if (t.mirrored[s]) f[s] = -1.0;
-          map = compose(scaling(xyz, t.mirror_centre, f), map);
-        }
-        break;
-      case Stage::Scaling:
-        if (t.scaling) {
-          Vec3 f{1, 1, 1};
-          for (int s = 0; s < 3; ++s)
-            if (t.scaled[s]) f[s] = t.scale_factor[s];
-          map = compose(scaling(xyz, t.scale_centre, f), map);
-        }
-        break;
-      case Stage::Rotation: {
-        // The first rotation acts last: the second is given in the first's coordinates.
-        ir::Affine r = identityAffine(xyz);
-        for (const ir::Affine& each : t.rotations) r = compose(r, each);
-        map = compose(r, map);
-        break;
-      }
-    }
-  }
-  if (!isIdentity(map)) out.work = map;
-  if (t.work_rotation) out.machine = *t.work_rotation;
-  return out;
-}
-
-// The machine point the tool goes to for the programmed point `position` (machine coordinates
-// of the programmed point, ControllerState::position) under the state's transforms.
-AxisValues imageOf(const LoweringCore& core, const ControllerState& cs, const AxisValues& position) {
-  const ir::Transform t = transformOf(core, cs);
-  if (!t.any()) return position;
-  const int n = std::min(core.machine->axisCount(), kMaxAxes);
-  const AxisValues total = frameOf(cs, core.table->behaviour).total();
-  AxisValues work = position;
-  for (int i = 0; i < n; ++i) work[i] -= total[i];
-  applyPoint(workSpaceMap(t, total), work);
-  for (int i = 0; i < n; ++i) work[i] += total[i];
-  return work;
-}
-
-bool movesUnderTransforms(const BlockContext& ctx, const AxisValues& target, bool moves) {
-  const std::optional<AxisValues>& tool_at = ctx.core.cs.transforms.tool_at;
-  // A block without axis words moves nothing, whatever changed (G69 or G50 alone).
-  if (!ctx.words.anyAxis() || (!tool_at && !transformOf(ctx).any())) return moves;
-  const AxisValues total = frameOf(ctx.next, ctx.behaviour).total();
-  AxisValues to = target;
-  for (int i = 0; i < ctx.axisCount(); ++i) to[i] += total[i];
-  return !ctx.samePosition(tool_at ? *tool_at : ctx.core.cs.position, imageOf(ctx.core, ctx.next, to));
-}
-
-bool arcUnderTransforms(BlockContext& ctx, const ir::Arc& arc) {
-  const std::optional<AxisValues>& tool_at = ctx.core.cs.transforms.tool_at;
-  const ir::Transform after = transformOf(ctx);
-  if (!tool_at && !after.any()) return true;
-  const AxisValues total = frameOf(ctx.next, ctx.behaviour).total();
-  const ir::Affine map = workSpaceMap(after, total);
-  const auto image = arcImage(map, arc.plane, arc.clockwise, /*helical=*/true);
-  if (!image) {
-    ctx.fail(Alarm::TransformArcNotCircle, ctx.motionLoc(),
-             "the arc would leave the principal planes under the coordinate transform in force "
-             "(a 3-D rotation tilts its plane)");
-    return false;
-  }
-  AxisValues start = tool_at ? *tool_at : ctx.core.cs.position, end = arc.to, centre = arc.center;
-  for (int i = 0; i < ctx.axisCount(); ++i) start[i] -= total[i];
-  applyPoint(map, end);
-  applyPoint(map, centre);
-  const auto sl = planeSlots(image->plane);
-  auto radius = [&](const AxisValues& p) {
-    const int a = map.axes[sl[0]], b = map.axes[sl[1]];
-    return std::hypot(p[a] - centre[a], p[b] - centre[b]);
-  };
-  const double r0 = radius(start), r1 = radius(end);
-  if (std::fabs(r0 - r1) <= ctx.settings.arc_tolerance) return true;
-  const bool similar = arcImage(map, arc.plane, arc.clockwise, false, /*similarity=*/true).has_value();
-  if (!similar)
-    ctx.fail(Alarm::TransformArcNotCircle, ctx.motionLoc(),
-             absl::StrCat("under unequal scaling in its plane the arc is no circle: radius ",
-                          mm(r0), " at the start, ", mm(r1), " at the end"));
-  else
-    ctx.fail(Alarm::ArcRadiusMismatch, ctx.motionLoc(),
-             absl::StrCat("the arc starts off its circle (radius ", mm(r0), " at the start, ",
-                          mm(r1), " at the end): a coordinate transform changed since the last "
-                          "move; give an absolute G00/G01 move first"));
-  return false;
-}
-
-void trackTool(BlockContext& ctx) {
-  if (!ctx.table.transforms) return;
-  bool moved = false;
-  for (const ir::Operation& op : ctx.ops)
-    moved = moved || std::holds_alternative<ir::Rapid>(op) ||
-            std::holds_alternative<ir::Linear>(op) || std::holds_alternative<ir::Arc>(op) ||
-            std::holds_alternative<ir::Skip>(op) || std::holds_alternative<ir::HoleCycle>(op);
-  if (!moved) return;
-  const AxisValues at = imageOf(ctx.core, ctx.next, ctx.next.position);
-  std::optional<AxisValues>& tool_at = ctx.next.transforms.tool_at;
-  if (ctx.samePosition(at, ctx.next.position))
-    tool_at.reset();
-  else
-    tool_at = at;
-}
-
-// ---- Mazak figure rotation (§13-7) ----------------------------------------------------------
-bool figureRotationBegin(LoweringCore& core, const std::array<std::optional<double>, 3>& ijk) {
-  ControllerState& cs = core.cs;
-  TransformState& t = cs.transforms;
-  if (!t.rotations.empty()) return false;  // 850: "COMMANDE G68 AVEC M98"
-  TransformState::FigureCall call;
-  call.plane = cs.modal.plane;
-  call.start_position = cs.position;
-  const AxisValues total = frameOf(cs, core.table->behaviour).total();
-  const auto sl = planeSlots(call.plane);
-  for (int s = 0; s < 3; ++s) {
-    const int i = core.xyz[s];
-    if (i >= 0) call.start[s] = cs.position[i] - total[i];
-  }
-  call.centre = call.start;
-  // I J in G17, K I in G18, J K in G19: the centre's offset from the start in the plane.
-  for (int s : {sl[0], sl[1]})
-    if (ijk[s]) call.centre[s] += *ijk[s];
-  t.figure_call = call;
-  t.figure.reset();
-  return true;
-}
-
-void figureRotationRun(LoweringCore& core, int64_t run) {
-  ControllerState& cs = core.cs;
-  TransformState& t = cs.transforms;
-  if (!t.figure_call) return;
-  TransformState::FigureCall& call = *t.figure_call;
-  const auto sl = planeSlots(call.plane);
-  if (run == 1) {
-    // The angle start - centre - end of the first run, counterclockwise positive.
-    const AxisValues total = frameOf(cs, core.table->behaviour).total();
-    double end[3] = {};
-    for (int s = 0; s < 3; ++s)
-      if (core.xyz[s] >= 0) end[s] = cs.position[core.xyz[s]] - total[core.xyz[s]];
-    const double a0 = call.start[sl[0]] - call.centre[sl[0]], b0 = call.start[sl[1]] - call.centre[sl[1]];
-    const double a1 = end[sl[0]] - call.centre[sl[0]], b1 = end[sl[1]] - call.centre[sl[1]];
-    call.angle = std::atan2(a0 * b1 - b0 * a1, a0 * a1 + b0 * b1) * 180.0 / std::numbers::pi;
-  }
-  // The tool stays where the last run left it; the next run is programmed from the start again
-  // (absolute programs repeat as written, incremental ones from the same point).
-  const AxisValues at = imageOf(core, cs, cs.position);
-  cs.position = call.start_position;
-  Vec3 axis{};
-  axis[sl[2]] = 1.0;
-  t.figure = rotation(core.xyz, call.centre, axis, call.angle * static_cast<double>(run));
-  t.tool_at = at;
-}
-
-void figureRotationEnd(LoweringCore& core) {
-  ControllerState& cs = core.cs;
-  TransformState& t = cs.transforms;
-  if (!t.figure_call) return;
-  // The programmed point becomes where the tool is: the next call or move starts there.
-  cs.position = imageOf(core, cs, cs.position);
-  t.figure_call.reset();
-  t.figure.reset();
-  t.tool_at.reset();
-}
-
-AxisValues programmedAt(const BlockContext& ctx, const AxisValues& machine) {
-  const ir::Transform tr = transformOf(ctx);
-  if (!tr.any()) return machine;
-  const AxisValues total = frameOf(ctx.next, ctx.behaviour).total();
-  AxisValues work{};
-  for (int i = 0; i < ctx.axisCount(); ++i) work[i] = machine[i] - total[i];
-  const auto inv = inverse(workSpaceMap(tr, total));
-  if (!inv) return machine;
-  applyPoint(*inv, work);
-  AxisValues out = machine;
-  for (int i = 0; i < ctx.axisCount(); ++i) out[i] = work[i] + total[i];
-  return out;
 }
 
 }  // namespace ncc::passes

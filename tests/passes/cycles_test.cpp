@@ -242,6 +242,47 @@ TEST(Cycles, MazakSynchronousTappingFeedsThePitchPerRevolution) {
   EXPECT_EQ(per_rev, 2);
 }
 
+TEST(Cycles, MazakFeedStartAndSlowZone) {
+  // §13-1-15 G83: K3 = the feed starts 3 below R (R 2: at -1, reached by rapid); I3 J50 = an
+  // infeed that starts within 3 of the bottom (-10) runs at 50 % of F. Q4, d = peck_clearance 1:
+  // -1 -> -5 (starts 9 above the bottom: F200); R; -4 -> -9 (6 above: F200); R; -8 -> -10 (2
+  // above: F100); out to R (G99).
+  Lowered r = lower(Dialect::MazakM,
+                    "M03 S500\nG00 Z10.\nG99 G83 R2. Z-10. Q4. K3. I3. J50 F200.\nG80\n",
+                    xyzMachine("decimal_point = \"calculator\""));
+  expectMoves(r, kXYZ,
+              {{"rapid", {{"Z", 10}}},
+               {"rapid", {{"Z", 2}}},
+               {"rapid", {{"Z", -1}}},
+               {"line", {{"Z", -5}}, {}, false, 200},
+               {"rapid", {{"Z", 2}}},
+               {"rapid", {{"Z", -4}}},
+               {"line", {{"Z", -9}}, {}, false, 200},
+               {"rapid", {{"Z", 2}}},
+               {"rapid", {{"Z", -8}}},
+               {"line", {{"Z", -10}}, {}, false, 100},
+               {"rapid", {{"Z", 2}}}});
+  // §13-1-14 G82: D is where the feed starts (not a radius offset number). D4: from -2, 8 above
+  // the bottom, F200; D9: from -7, 3 above, within I3: F100. Back to the initial level (G98).
+  Lowered g82 = lower(Dialect::MazakM,
+                      "M03 S500\nG00 Z10.\nG98 G82 R2. Z-10. D4. I3. J50 F200.\nD9. X5.\nG80\n",
+                      xyzMachine("decimal_point = \"calculator\""));
+  expectMoves(g82, kXYZ,
+              {{"rapid", {{"Z", 10}}},
+               {"rapid", {{"Z", 2}}},
+               {"rapid", {{"Z", -2}}},
+               {"line", {{"Z", -10}}, {}, false, 200},
+               {"rapid", {{"Z", 10}}},
+               {"rapid", {{"X", 5}, {"Z", 10}}},
+               {"rapid", {{"X", 5}, {"Z", 2}}},
+               {"rapid", {{"X", 5}, {"Z", -7}}},
+               {"line", {{"X", 5}, {"Z", -10}}, {}, false, 100},
+               {"rapid", {{"X", 5}, {"Z", 10}}}});
+  // FANUC reads no such words: K is the repeat count there, I J have no meaning in G83.
+  Lowered fanuc = lower(Dialect::FanucM, "G00 Z10.\nG83 R2. Z-10. Q4. I3. F200.\n");
+  EXPECT_NE(fanuc.diagText().find("2:19: error[NCC2014]"), std::string::npos) << fanuc.diagText();
+}
+
 TEST(Cycles, FanucDeepHoleRigidTappingPecksOnlyAfterM29) {
   // Lathe manual §4.4 (notes §4.5), PCP = 0: tap q, back off d (peck_return 1), tap d + q, ...;
   // the back-offs and the way out at the retract speed (100 % here). From R 2 to Z-7, Q3:

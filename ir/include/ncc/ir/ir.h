@@ -217,6 +217,11 @@ struct HoleCycle {
   // back to `peck_distance` above the last depth (`peck_tap_to_r`), at `peck_approach_feed`.
   bool peck_tap_to_r = false;
   double peck_approach_feed = 0.0;
+  // Mazak §13-1: the feed starts `feed_start` below R (a rapid down to there first); an infeed
+  // that starts within `slow_zone` of the bottom runs at `slow_feed` (I, J).
+  double feed_start = 0.0;
+  double slow_zone = 0.0;
+  double slow_feed = 0.0;
   AxisValues shift{};          // G76: the shift off the wall at the bottom (a work-space vector)
 };
 

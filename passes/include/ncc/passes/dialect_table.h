@@ -226,6 +226,11 @@ struct CycleEntry {
   bool manual_stop;      // M00 after the spindle stop at the bottom (G88)
   bool dwell_at_r;       // tapping: the dwell P also at R after the way out
   bool pitch_feed;       // F is the thread pitch, per revolution (Mazak G84.2/G84.3)
+  // Mazak §13-1 optional words: the address of the distance from R down to where the cutting
+  // feed starts (K in G73/G83, D in G82; 0: none), and I J as the slow zone above the bottom
+  // (I its length, J the feed in %; G73 G82 G83).
+  char feed_start_address = 0;
+  bool slow_zone = false;
 };
 
 // How the dialect's cycles read their words and where they differ; each field names its manual.
