@@ -33,14 +33,6 @@ bool allZero(const AxisValues& values) {
   return true;
 }
 
-const char* planeCode(Plane p) {
-  switch (p) {
-    case Plane::XY: return "G17";
-    case Plane::ZX: return "G18";
-    case Plane::YZ: return "G19";
-  }
-  return "G17";
-}
 
 // The names of a plane's two axes, in the order their centre coordinates are given (I J / K I / J K).
 std::pair<const char*, const char*> planeAxes(Plane p) {
@@ -162,6 +154,15 @@ struct OperationPrinter {
 };
 
 }  // namespace
+
+const char* planeCode(Plane p) {
+  switch (p) {
+    case Plane::XY: return "G17";
+    case Plane::ZX: return "G18";
+    case Plane::YZ: return "G19";
+  }
+  return "G17";
+}
 
 void printBlock(std::ostream& out, const Block& block, const AxisNames& axes) {
   out << "block " << block.loc.file << ":" << block.loc.line << ":" << block.loc.column;

@@ -104,18 +104,39 @@ void applyPoint(const ir::Affine& a, AxisValues& v) {
     if (a.axes[s] >= 0 && a.axes[s] < kMaxAxes) v[a.axes[s]] = q[s];
 }
 
+namespace {
+
+// `map` seen from coordinates shifted by `o` (on the slots): p -> map(p + o) - o.
+ir::Affine conjugated(const ir::Affine& map, const Vec3& o) {
+  ir::Affine shift = identityAffine(map.axes), back = identityAffine(map.axes);
+  shift.t = o;
+  back.t = {-o[0], -o[1], -o[2]};
+  return compose(back, compose(map, shift));
+}
+
+Vec3 negated(const Vec3& v) { return {-v[0], -v[1], -v[2]}; }
+
+}  // namespace
+
 ir::Affine workSpaceMap(const ir::Transform& t, const AxisValues& frame_total) {
   const std::array<int8_t, 3> axes = t.work ? t.work->axes : t.machine ? t.machine->axes
                                                                        : std::array<int8_t, 3>{0, 1, 2};
   ir::Affine map = t.work ? *t.work : identityAffine(axes);
-  if (t.machine) {
-    const Vec3 o = slots(*t.machine, frame_total);
-    ir::Affine shift = identityAffine(axes), back = identityAffine(axes);
-    shift.t = o;
-    back.t = {-o[0], -o[1], -o[2]};
-    map = compose(back, compose(*t.machine, compose(shift, map)));
-  }
+  if (t.machine) map = compose(conjugated(*t.machine, slots(*t.machine, frame_total)), map);
   return map;
+}
+
+ir::Affine machineSpaceMap(const ir::Transform& t, const AxisValues& frame_total) {
+  const ir::Affine work = workSpaceMap(t, frame_total);
+  return conjugated(work, negated(slots(work, frame_total)));
+}
+
+double planeDistance(const ir::Affine& a, ir::Plane plane, const AxisValues& p,
+                     const AxisValues& q) {
+  const auto sl = planeSlots(plane);
+  const int i = a.axes[sl[0]], j = a.axes[sl[1]];
+  if (i < 0 || j < 0) return 0.0;
+  return std::hypot(p[i] - q[i], p[j] - q[j]);
 }
 
 std::array<int, 3> planeSlots(ir::Plane plane) {

@@ -34,6 +34,11 @@ void applyPoint(const ir::Affine& a, AxisValues& v);
 // The whole map of a block's transforms in work space, `frame_total` its frame (Frame::total):
 // G92.5 turns about a machine point, i.e. shift by the frame, turn, shift back.
 ir::Affine workSpaceMap(const ir::Transform& t, const AxisValues& frame_total);
+// The same map acting on machine coordinates: p -> workSpaceMap(p - frame) + frame.
+ir::Affine machineSpaceMap(const ir::Transform& t, const AxisValues& frame_total);
+// The distance of two machine-indexed points in `plane` (its two axes among a's X, Y, Z).
+double planeDistance(const ir::Affine& a, ir::Plane plane, const AxisValues& p,
+                     const AxisValues& q);
 
 // Where an arc in `plane` goes under `a`: its new plane and direction, or nullopt when the image
 // is no circle in a principal plane (unequal scaling in the plane, a 3-D rotation tilting it) or

@@ -134,9 +134,7 @@ struct Planar {
 // The move of a block (its first motion operation), or null.
 ir::Operation* motionOf(ir::Block& block) {
   for (ir::Operation& op : block.ops)
-    if (std::holds_alternative<ir::Rapid>(op) || std::holds_alternative<ir::Linear>(op) ||
-        std::holds_alternative<ir::Arc>(op) || std::holds_alternative<ir::Skip>(op))
-      return &op;
+    if (ir::isMove(op)) return &op;
   return nullptr;
 }
 

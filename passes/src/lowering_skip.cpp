@@ -37,9 +37,7 @@ bool wordsArePositions(const DecodedBlock& w) {
 
 bool moves(const std::vector<ir::Operation>& ops) {
   for (const ir::Operation& op : ops)
-    if (std::holds_alternative<ir::Rapid>(op) || std::holds_alternative<ir::Linear>(op) ||
-        std::holds_alternative<ir::Arc>(op) || std::holds_alternative<ir::Skip>(op))
-      return true;
+    if (ir::isMove(op)) return true;
   return false;
 }
 

@@ -66,13 +66,9 @@ ir::Transform transformOf(const LoweringCore& core, const ControllerState& cs) {
 AxisValues imageOf(const LoweringCore& core, const ControllerState& cs, const AxisValues& position) {
   const ir::Transform t = transformOf(core, cs);
   if (!t.any()) return position;
-  const int n = std::min(core.machine->axisCount(), kMaxAxes);
-  const AxisValues total = frameOf(cs, core.table->behaviour).total();
-  AxisValues work = position;
-  for (int i = 0; i < n; ++i) work[i] -= total[i];
-  applyPoint(workSpaceMap(t, total), work);
-  for (int i = 0; i < n; ++i) work[i] += total[i];
-  return work;
+  AxisValues image = position;
+  applyPoint(machineSpaceMap(t, frameOf(cs, core.table->behaviour).total()), image);
+  return image;
 }
 
 bool movesUnderTransforms(const BlockContext& ctx, const AxisValues& target, bool moves) {
@@ -102,12 +98,8 @@ bool arcUnderTransforms(BlockContext& ctx, const ir::Arc& arc) {
   for (int i = 0; i < ctx.axisCount(); ++i) start[i] -= total[i];
   applyPoint(map, end);
   applyPoint(map, centre);
-  const auto sl = planeSlots(image->plane);
-  auto radius = [&](const AxisValues& p) {
-    const int a = map.axes[sl[0]], b = map.axes[sl[1]];
-    return std::hypot(p[a] - centre[a], p[b] - centre[b]);
-  };
-  const double r0 = radius(start), r1 = radius(end);
+  const double r0 = planeDistance(map, image->plane, start, centre);
+  const double r1 = planeDistance(map, image->plane, end, centre);
   if (std::fabs(r0 - r1) <= ctx.settings.arc_tolerance) return true;
   const bool similar = arcImage(map, arc.plane, arc.clockwise, false, /*similarity=*/true).has_value();
   if (!similar)
@@ -126,9 +118,7 @@ void trackTool(BlockContext& ctx) {
   if (!ctx.table.transforms) return;
   bool moved = false;
   for (const ir::Operation& op : ctx.ops)
-    moved = moved || std::holds_alternative<ir::Rapid>(op) ||
-            std::holds_alternative<ir::Linear>(op) || std::holds_alternative<ir::Arc>(op) ||
-            std::holds_alternative<ir::Skip>(op) || std::holds_alternative<ir::HoleCycle>(op);
+    moved = moved || ir::isMove(op) || std::holds_alternative<ir::HoleCycle>(op);
   if (!moved) return;
   const AxisValues at = imageOf(ctx.core, ctx.next, ctx.next.position);
   std::optional<AxisValues>& tool_at = ctx.next.transforms.tool_at;
@@ -141,15 +131,11 @@ void trackTool(BlockContext& ctx) {
 AxisValues programmedAt(const BlockContext& ctx, const AxisValues& machine) {
   const ir::Transform tr = transformOf(ctx);
   if (!tr.any()) return machine;
-  const AxisValues total = frameOf(ctx.next, ctx.behaviour).total();
-  AxisValues work{};
-  for (int i = 0; i < ctx.axisCount(); ++i) work[i] = machine[i] - total[i];
-  const auto inv = inverse(workSpaceMap(tr, total));
+  const auto inv = inverse(machineSpaceMap(tr, frameOf(ctx.next, ctx.behaviour).total()));
   if (!inv) return machine;
-  applyPoint(*inv, work);
-  AxisValues out = machine;
-  for (int i = 0; i < ctx.axisCount(); ++i) out[i] = work[i] + total[i];
-  return out;
+  AxisValues programmed = machine;
+  applyPoint(*inv, programmed);
+  return programmed;
 }
 
 }  // namespace ncc::passes

@@ -7,16 +7,9 @@
 
 #include "absl/strings/str_cat.h"
 #include "affine.h"
+#include "ncc/ir/printer.h"
 
 namespace ncc::passes {
-
-namespace {
-
-const char* planeCode(ir::Plane p) {
-  return p == ir::Plane::XY ? "G17" : p == ir::Plane::ZX ? "G18" : "G19";
-}
-
-}  // namespace
 
 TransformPass::TransformPass(ir::BlockSink& next, Dialect dialect, DiagnosticEngine& diags)
     : next_(next), table_(dialectTable(dialect)), diags_(diags) {}
@@ -63,16 +56,16 @@ bool TransformPass::mapArc(const ir::Block& block, const ir::Affine& map, ir::Ar
   applyPoint(map, centre);
   bool circle = image.has_value();
   if (circle && !similar && last_) {
-    const auto sl = planeSlots(image->plane);
-    const int a = map.axes[sl[0]], b = map.axes[sl[1]];
+    AxisValues start = *last_;  // machine coordinates: into work space, as `end` and `centre`
     const AxisValues total = block.frame.total();
-    const double r0 = std::hypot((*last_)[a] - total[a] - centre[a], (*last_)[b] - total[b] - centre[b]);
-    const double r1 = std::hypot(end[a] - centre[a], end[b] - centre[b]);
+    for (int i = 0; i < kMaxAxes; ++i) start[i] -= total[i];
+    const double r0 = planeDistance(map, image->plane, start, centre);
+    const double r1 = planeDistance(map, image->plane, end, centre);
     circle = std::fabs(r0 - r1) <= 1e-6 * std::max(1.0, r1);
   }
   if (!circle) {
     diags_.error(std::string(table_->alarm(Alarm::TransformArcNotCircle)), block.loc,
-                 absl::StrCat("the ", planeCode(arc.plane),
+                 absl::StrCat("the ", ir::planeCode(arc.plane),
                               " arc is no circle in a principal plane under the coordinate "
                               "transform in force (unequal scaling in its plane, or a 3-D "
                               "rotation that tilts it)"));

@@ -228,6 +228,12 @@ struct HoleCycle {
 using Operation = std::variant<Rapid, Linear, Arc, Skip, Dwell, MachineFunction, ReferenceCheck,
                                SetVariable, Prepare, HoleCycle>;
 
+// A move of the tool to a target: G00, G01, G02/G03, G31 (a hole cycle is expanded into them).
+inline bool isMove(const Operation& op) {
+  return std::holds_alternative<Rapid>(op) || std::holds_alternative<Linear>(op) ||
+         std::holds_alternative<Arc>(op) || std::holds_alternative<Skip>(op);
+}
+
 // `,C` / `,R` at the end of a G01/G02/G03 block: a chamfer (legs of `amount`) or a rounding
 // arc (radius `amount`) between the block's move and the next block's. The corners pass
 // inserts it and clears the request (docs/semantics.md, Corner chamfer and rounding).

@@ -13,6 +13,9 @@ namespace ncc::ir {
 // Axis names used when printing (MachineConfig::axes order).
 using AxisNames = std::vector<std::string>;
 
+// "G17", "G18", "G19": the code of a plane, as diagnostics and the printer write it.
+const char* planeCode(Plane p);
+
 void printBlock(std::ostream& out, const Block& block, const AxisNames& axes);
 std::string printBlock(const Block& block, const AxisNames& axes);
 
