@@ -4,6 +4,7 @@ a command both ways, ahead of time and with --defer (`run_ncc`, NCC_TEST_DEFER=1
 Each test script is run by ctest as `test_x.py NCC_BINARY [...]` and keeps its own `ncc()`
 (timeouts and text mode differ); the macro and subprogram tests' `ncc()` call `run_ncc`.
 """
+import json
 import os
 import re
 import subprocess
@@ -112,6 +113,11 @@ def _mismatch(what, args, plain, deferred, extra=""):
         f"--- plain: exit {plain.returncode}\nstdout:\n{plain.stdout}\nstderr:\n{plain.stderr}\n"
         f"--- with --defer: exit {deferred.returncode}\nstdout:\n{deferred.stdout}\n"
         f"stderr:\n{deferred.stderr}")
+
+
+def move_list(stdout):
+    """The moves of `ncc run --emit=moves` output (one JSON object per line)."""
+    return [json.loads(line) for line in stdout.splitlines() if line.strip()]
 
 
 def run_ncc(ncc_path, args, cwd=None, timeout=120, stdin=None):

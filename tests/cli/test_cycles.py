@@ -6,7 +6,6 @@ its line and column with no output file written.
 
 Run by ctest as: test_cycles.py NCC_BINARY
 """
-import json
 import os
 import subprocess
 import sys
@@ -14,17 +13,13 @@ import unittest
 
 sys.dont_write_bytecode = True
 
-from cli_harness import ScratchDirTest  # noqa: E402
+from cli_harness import ScratchDirTest, move_list as moves  # noqa: E402
 
 NCC = None
 
 
 def ncc(*args, cwd=None):
     return subprocess.run([NCC, *args], capture_output=True, text=True, cwd=cwd, timeout=120)
-
-
-def moves(stdout):
-    return [json.loads(line) for line in stdout.splitlines() if line.strip()]
 
 
 # G83 peck drilling, G99, K2 in G91: two holes, pecks of 4 with d = 1 mm (peck_clearance).

@@ -14,17 +14,13 @@ import unittest
 
 sys.dont_write_bytecode = True
 
-from cli_harness import ScratchDirTest  # noqa: E402
+from cli_harness import ScratchDirTest, move_list as moves  # noqa: E402
 
 NCC = None
 
 
 def ncc(*args, cwd=None):
     return subprocess.run([NCC, *args], capture_output=True, text=True, cwd=cwd, timeout=120)
-
-
-def moves(stdout):
-    return [json.loads(line) for line in stdout.splitlines() if line.strip()]
 
 
 def xy(move):
