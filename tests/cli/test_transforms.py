@@ -141,9 +141,9 @@ class TransformsCli(ScratchDirTest):
 
     def test_an_arc_starting_off_its_circle_after_g69_is_refused_when_compiling(self):
         # R90 leaves the tool at (0, 10) for the programmed (10, 0); after G69 the G02 to
-        # (20, 0) with I5 starts off its circle (18.028 from its centre, 5 at the end). Today
-        # `ncc compile` writes the file and only the VM stops, with NCC7211 "was the file
-        # edited?"; the compiler's arc check (PS0020 on fanuc-m) must refuse it at 4:1.
+        # (20, 0) with I5 starts off its circle (18.028 from its centre, 5 at the end). The
+        # compiler's arc check (PS0020 on fanuc-m) refuses it at 4:1, rather than the VM stopping
+        # on a bytecode file that was written (NCC7211 "was the file edited?").
         prog = self.write("g.nc", "G68 X0 Y0 R90.\nG01 X10. Y0 F100.\nG69\nG02 X20. Y0 I5.\nM30\n")
         out = self.path("g.ncb")
         proc = ncc("compile", prog, "--dialect", "fanuc-m", "-o", out)

@@ -283,7 +283,6 @@ TEST(Transforms, MazakThreeDimensionalNeedsOneUnitAxis) {
 TEST(Transforms, MazakThreeDimensionalNeedsAllOfIJK) {
   // ch. 22 §2 "Précaution": "I, J and K are required. If one or two of them are omitted,
   // alarm 807"; the manual's own example `G68 X0 Y0 Z0 I1 K0 R-45.` is a "format error".
-  // ncc accepts it (and `G68 ... I1. R90.`) as a rotation about X.
   EXPECT_EQ(firstDiag(run(Dialect::MazakM, "G68 X0 Y0 Z0 I1. K0 R-45.\nM30\n")),
             "1:1: error[807]");
   EXPECT_EQ(firstDiag(run(Dialect::MazakM, "G68 X0 Y0 Z0 I1. R90.\nM30\n")), "1:1: error[807]");
@@ -291,7 +290,7 @@ TEST(Transforms, MazakThreeDimensionalNeedsAllOfIJK) {
 
 TEST(Transforms, MazakThreeDimensionalG68StandsAlone) {
   // ch. 22 §5.2: "if a G code other than G17, G18 and G19 is given with G68 or G69 in the
-  // same block, alarm 807". ncc accepts `G90 G68 ... I J K`.
+  // same block, alarm 807".
   EXPECT_EQ(firstDiag(run(Dialect::MazakM, "G90 G68 X0 Y0 Z0 I0 J0 K1. R45.\nM30\n")),
             "1:1: error[807]");
   EXPECT_EQ(run(Dialect::MazakM, "G17 G68 X0 Y0 Z0 I0 J0 K1. R45.\nM30\n").diagText(), "");
@@ -299,7 +298,7 @@ TEST(Transforms, MazakThreeDimensionalG68StandsAlone) {
 
 TEST(Transforms, MazakThreeDimensionalModeRefusesScalingAndWorkOffsets) {
   // ch. 22 §2: "an incompatible G code in 3-D coordinate conversion mode: alarm 943"; the
-  // §5.1 table marks G50/G51 and G54-G59 "x" in G68 mode. ncc accepts both. (In a 2-D G68,
+  // §5.1 table marks G50/G51 and G54-G59 "x" in G68 mode. (In a 2-D G68,
   // G51 is fine: §13-10 5.10.)
   EXPECT_EQ(firstDiag(run(Dialect::MazakM,
                           "G68 X0 Y0 Z0 I0 J0 K1. R45.\nG51 X0 Y0 P2.\nM30\n")),
@@ -496,7 +495,7 @@ TEST(Transforms, MazakManualExampleIIIScaledInXOnly) {
   // program with its two G02 half circles is one of the manual's own worked examples, and
   // §13-10 4.5 says how: "in circular interpolation, scaling applies only to the axis (of the
   // plane's two) that is scaled" -- the end point and centre are scaled in X, the arc is still
-  // cut as a circle. ncc refuses both arcs with NCC2110 (the affine image is an ellipse).
+  // cut as a circle (the radii at both ends agree; the affine image would be an ellipse).
   // x -> -125 + 0.5 (x + 125), y unscaled: N05 (-87.5, -150) -> (-112.5, -150) about
   // (-100, -150), radius 12.5 at both ends; N07 (-137.5, -150) -> (-162.5, -150) about
   // (-150, -150).
@@ -672,8 +671,8 @@ TEST(Transforms, SiemensSingleAxisMirrorReversesTheRotation) {
   // and G51.1 sits in base frame [1] (MM_NUM_BASE_FRAMES >= 2) while G68 needs >= 3 (§3.1.9):
   // the rotation is the later frame, applied to the programmed point first, the mirror after it.
   // Mirror X about 0 then R90 about (0, 0): (10, 0) -> R -> (0, 10) -> M -> (0, 10), i.e. R90
-  // seen turning clockwise on the mirrored part. ncc mirrors first and turns counter-clockwise
-  // in machine terms: (-10, 0) -> (0, -10) (the rotation NOT reversed). (FANUC's programmable
+  // seen turning clockwise on the mirrored part. Mirroring first would give (-10, 0) -> (0, -10),
+  // the rotation not reversed. (FANUC's programmable
   // mirror table, which Siemens ISO mode follows, says the same; no FANUC milling manual is in
   // /work/shared, so only Siemens is asserted.)
   expectMoves(run(Dialect::SiemensIsoM, "G51.1 X0\nG68 X0 Y0 R90.\nG00 X10. Y0\nM30\n"), kXYZ,
@@ -718,7 +717,7 @@ TEST(Transforms, MazakWorkRotationIgnoresTheAxisOffThePlane) {
   // §14-13 3. (9): "the axis not in the selected plane is ignored": the manual's own
   // `G17 G92.5 X10. Y20. Z30. I1. J2. K3.` turns by 63.435 deg about (10, 20), Z and K
   // ignored; and since X, Y, Z once given stay in force, the following `G19 G92.5 J2. K3.`
-  // turns by atan(3/2) = 56.301 deg about (Y20, Z30). ncc refuses Z30 with NCC2014.
+  // turns by atan(3/2) = 56.301 deg about (Y20, Z30).
   // (Y21, Z30) is (1, 0) from (20, 30) in the YZ plane -> (0.5547, 0.8321): (Y20.5547, Z30.8321).
   Lowered r = run(Dialect::MazakM,
                   "G17 G92.5 X10. Y20. Z30. I1. J2. K3.\nG00 X11. Y20.\nG19 G92.5 J2. K3.\n"
