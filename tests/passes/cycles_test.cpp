@@ -278,6 +278,13 @@ TEST(Cycles, MazakFeedStartAndSlowZone) {
                {"rapid", {{"X", 5}, {"Z", -7}}},
                {"line", {{"X", 5}, {"Z", -10}}, {}, false, 100},
                {"rapid", {{"X", 5}, {"Z", 10}}}});
+  // J is a percentage above 0.
+  Lowered j0 = lower(Dialect::MazakM, "G00 Z10.\nG83 R2. Z-10. Q4. I3. J0 F200.\n",
+                     xyzMachine("decimal_point = \"calculator\""));
+  EXPECT_NE(j0.diagText().find("2:23: error[NCC2031]: G83 J0: the slowed feed must be a percentage "
+                               "above 0"),
+            std::string::npos)
+      << j0.diagText();
   // FANUC reads no such words: K is the repeat count there, I J have no meaning in G83.
   Lowered fanuc = lower(Dialect::FanucM, "G00 Z10.\nG83 R2. Z-10. Q4. I3. F200.\n");
   EXPECT_NE(fanuc.diagText().find("2:19: error[NCC2014]"), std::string::npos) << fanuc.diagText();
