@@ -187,6 +187,22 @@ void printBlock(std::ostream& out, const Block& block, const AxisNames& axes) {
   if (block.corner)  // ,C / ,R not yet inserted (before the corners pass)
     out << (block.corner->kind == CornerRequest::Kind::Chamfer ? " chamfer(" : " round(")
         << num(block.corner->amount) << ")";
+  if (block.comp) {  // before the compensation pass: the side, the radius and the specials
+    const CutterComp& c = *block.comp;
+    static constexpr const char* kSide[] = {"off", "left", "right"};
+    out << " comp(" << kSide[static_cast<int>(c.side)] << " D" << c.d_number << "="
+        << num(c.radius);
+    if (c.side_commanded) out << " commanded";
+    if (c.special == CutterComp::Special::VectorHold) out << " hold";
+    if (c.special == CutterComp::Special::CornerArc) out << " corner-arc";
+    if (c.vector)
+      out << " vector " << num((*c.vector)[0]) << " " << num((*c.vector)[1]) << " "
+          << num((*c.vector)[2]);
+    if (c.offset_3d)
+      out << " 3d " << num((*c.offset_3d)[0]) << " " << num((*c.offset_3d)[1]) << " "
+          << num((*c.offset_3d)[2]);
+    out << ")";
+  }
   out << "\n";
   for (const Operation& op : block.ops) out << "  " << std::visit(OperationPrinter{axes}, op) << "\n";
 }

@@ -96,6 +96,17 @@ class BlockChecker {
         if (i < -1 || i >= options_.axis_count) add(absl::StrCat("transform axis index ", i));
     }
   }
+  void comp(const std::optional<CutterComp>& c) {
+    // Only before the `compensation` pass turns it into the tool centre's path.
+    if (!c) return;
+    if (options_.require_machine_space)
+      add("a cutter compensation request reached the backend (the compensation pass did not run)");
+    if (!std::isfinite(c->radius)) add("compensation radius is not finite");
+    for (const auto& v : {c->vector, c->offset_3d})
+      if (v)
+        for (double x : *v)
+          if (!std::isfinite(x)) add("compensation vector is not finite");
+  }
   void modal(const Modal& m) {
     if (!std::isfinite(m.feed) || m.feed < 0.0) add(absl::StrCat("modal feed ", m.feed));
     if (!std::isfinite(m.spindle_speed) || m.spindle_speed < 0.0)
@@ -134,6 +145,7 @@ std::vector<std::string> verify(const Block& block, const VerifyOptions& options
   checker.modal(block.modal);
   checker.frame(block.frame);
   checker.transform(block.transform);
+  checker.comp(block.comp);
   for (size_t i = 0; i < block.ops.size(); ++i) {
     checker.setOperation(i);
     std::visit(checker, block.ops[i]);

@@ -202,6 +202,16 @@ constexpr std::string_view kAlarms[] = {
     "NCC2118",  // FigureRotationWithRotation (not raised)
     "NCC2119",  // ArcAfterWorkRotation (not raised)
     "NCC2088",  // PolarNotAllowed (the FANUC alarm number is not in the project's manuals)
+    "PS0034",   // CompStartInArc: start-up/cancel in G02/G03 (§5.4)
+    "PS0037",   // CompPlaneChange: offset plane changed (§5.3)
+    "PS0035",   // CompSkip: G31 in compensation mode
+    "NCC2123",  // CompReferenceReturn (not raised: G28/G30 cancel the vector for the move, §5.4)
+    "NCC2124",  // CompSideChangeEarly (the manual names no alarm)
+    "NCC2125",  // CompCornerArcMove: a move in the G39 block (no number given)
+    "PS0033",   // CompNoIntersection: no intersection in compensation (§5.4)
+    "PS0041",   // CompInterference: interference in compensation (§5.4.6)
+    "NCC2128",  // CompWithoutMotion (the controller overcuts silently)
+    "NCC2129",  // CompInCycle (not raised: the cycle runs on the programmed points)
 };
 static_assert(std::size(kAlarms) == static_cast<size_t>(Alarm::kCount));
 

@@ -192,6 +192,16 @@ constexpr std::string_view kAlarms[] = {
     "850",      // FigureRotationWithRotation: G68 with M98 (§13-7 note 4)
     "817",      // ArcAfterWorkRotation: an arc after G92.5 (§14-13)
     "NCC2088",  // PolarNotAllowed (not raised: the manual has no G16)
+    "835",      // CompStartInArc: G40/D00 or a start-up in an arc block (§12-4)
+    "NCC2121",  // CompPlaneChange (the manual names no alarm)
+    "NCC2122",  // CompSkip: G31 in compensation is an error (no number given)
+    "NCC2123",  // CompReferenceReturn (not raised: the vector is cleared for that block)
+    "NCC2124",  // CompSideChangeEarly: no flip in the 1st or 2nd compensated block
+    "NCC2125",  // CompCornerArcMove (no number given)
+    "836",      // CompNoIntersection: no intersection (§12-4)
+    "837",      // CompInterference: interference (§12-4)
+    "NCC2128",  // CompWithoutMotion (more than 4 in a row: the controller over- or under-cuts)
+    "901",      // CompInCycle: a cycle in 3-D compensation
 };
 static_assert(std::size(kAlarms) == static_cast<size_t>(Alarm::kCount));
 

@@ -167,6 +167,16 @@ constexpr std::string_view kAlarms[] = {
     "NCC2118",  // FigureRotationWithRotation (not raised)
     "NCC2119",  // ArcAfterWorkRotation (not raised)
     "NCC2088",  // PolarNotAllowed (§4.5 names no alarm)
+    "NCC2120",  // CompStartInArc: start-up in G02/G03 is an error (§3.5.3, no number)
+    "NCC2121",  // CompPlaneChange: an error (§3.5.3, no number)
+    "NCC2122",  // CompSkip: G31 with compensation (§3.5.3, no number)
+    "NCC2123",  // CompReferenceReturn: G28/G30 in G41/G42 (§2.2, no number)
+    "NCC2124",  // CompSideChangeEarly (not raised: the side changes in that block, §3.5.3)
+    "NCC2125",  // CompCornerArcMove (not raised: no G39)
+    "NCC2126",  // CompNoIntersection: CDOF finds no intersection (§3.5.4, no number)
+    "NCC2127",  // CompInterference: CDON bottleneck (§3.5.4, no number)
+    "NCC2128",  // CompWithoutMotion (3 or more: the tool stops at the previous offset point)
+    "NCC2129",  // CompInCycle (not raised: compensation is ignored in cycles, §3.5.3)
 };
 static_assert(std::size(kAlarms) == static_cast<size_t>(Alarm::kCount));
 

@@ -245,6 +245,37 @@ struct CornerRequest {
   SourceLocation loc;   // the ,C / ,R word
 };
 
+// Cutter radius compensation (G40/G41/G42 with D, G38, G39, and the I J K vectors), as the
+// lowering decoded it for a block while compensation is in force or being cancelled: the
+// `compensation` pass turns the block's moves into the tool centre's path and clears it
+// (passes/src/compensation/, docs/compensation.md). Lowering knows nothing else of it.
+struct CutterComp {
+  enum class Side : uint8_t { Off, Left, Right };  // G40, G41, G42 in force after the block
+  enum class Startup : uint8_t { A, B, C };        // start-up and cancel type (a parameter)
+  enum class Special : uint8_t { None, VectorHold, CornerArc };  // G38, G39 (one-shot)
+  Side side = Side::Off;
+  double radius = 0.0;   // the D register in force, mm; a negative value swaps the side
+  int d_number = 0;      // for messages; Mazak/Siemens D00 is radius 0
+  bool side_commanded = false;  // G41/G42 written in this block (FANUC: same side again)
+  Special special = Special::None;
+  bool suspended = false;  // a hole cycle's block: its moves run on the programmed points
+  // I J K written with G00/G01 (the end vector is perpendicular to it: FANUC IJ-type vector),
+  // with G40 (the direction of a virtual next move), with G39 (the corner arc's end) or with
+  // Mazak G38 (a new vector direction): work-space components on X, Y, Z, the plane's two used.
+  std::optional<std::array<double, 3>> vector;
+  // Mazak 3-D compensation (G41/G42 with I J K): the tool is offset by this work-space vector,
+  // r (I,J,K)/|I,J,K| (G41) or its negative (G42), instead of the plane's 2-D offset.
+  std::optional<std::array<double, 3>> offset_3d;
+  // The dialect's rules and the machine's parameters, recorded so the pass needs nothing else.
+  Startup startup = Startup::A;
+  bool arc_corners = false;      // outer corners joined by an arc about the corner (FANUC CCC=1)
+  int lookahead = 3;             // blocks read ahead (FANUC No.19625, Mazak 5, Siemens 2)
+  int max_without_motion = 1;    // blocks without motion in the plane that keep the corner
+  bool interference_check = true;
+  SourceLocation loc;            // the G41/G42/G40 (or D) word, for messages
+  friend bool operator==(const CutterComp&, const CutterComp&) = default;
+};
+
 struct Block {
   SourceLocation loc;
   int64_t sequence = -1;  // N number, -1 if none
@@ -254,6 +285,7 @@ struct Block {
   bool exact_stop = false;   // G09 in this block, or G61 in force
   std::vector<Operation> ops;
   std::optional<CornerRequest> corner;  // lowering -> corners pass only
+  std::optional<CutterComp> comp;       // lowering -> compensation pass only
 };
 
 // A pass or the backend: receives blocks one at a time. finish() is called once at the end

@@ -126,6 +126,17 @@ enum class Alarm : uint8_t {
   FigureRotationWithRotation,  // figure rotation and G68 together (Mazak 850)
   ArcAfterWorkRotation,     // the move after G92.5 is an arc (Mazak 817)
   PolarNotAllowed,          // in G16: a code, an arc or a corner the dialect's rules refuse
+  // Cutter radius compensation (lowering_cutter_comp.cpp, the compensation pass).
+  CompStartInArc,           // start-up or cancel in a G02/G03 block
+  CompPlaneChange,          // G17/G18/G19 changes the plane while compensating
+  CompSkip,                 // G31 while compensating
+  CompReferenceReturn,      // G28/G30 while compensating (Siemens)
+  CompSideChangeEarly,      // G41<->G42 in the start-up block or the one after it
+  CompCornerArcMove,        // G39 with a move
+  CompNoIntersection,       // an inner corner whose offset paths do not meet
+  CompInterference,         // the compensated path runs against the programmed one: a gouge
+  CompWithoutMotion,        // too many blocks without motion in the plane before an inner corner
+  CompInCycle,              // a hole cycle while compensating, where that is an alarm
   kCount,
 };
 
