@@ -257,6 +257,7 @@ struct CutterComp {
   double radius = 0.0;   // the D register in force, mm; a negative value swaps the side
   int d_number = 0;      // for messages; Mazak/Siemens D00 is radius 0
   int plane_a = 0, plane_b = 1;  // the machine axes of the plane in force (first, second)
+  int plane_normal = 2;          // and of its normal (-1: the machine has none)
   bool side_commanded = false;  // G41/G42 written in this block (FANUC: same side again)
   Special special = Special::None;
   bool suspended = false;  // a hole cycle's block: its moves run on the programmed points
