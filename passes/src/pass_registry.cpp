@@ -37,7 +37,7 @@ std::unique_ptr<ir::BlockSink> transform(ir::BlockSink& next, const PipelineOpti
 
 std::unique_ptr<ir::BlockSink> compensation(ir::BlockSink& next, const PipelineOptions& o,
                                             DiagnosticEngine& diags) {
-  return std::make_unique<CompensationPass>(next, o.dialect, diags);
+  return std::make_unique<CompensationPass>(next, o.dialect, diags, o.compensate);
 }
 
 std::unique_ptr<ir::BlockSink> travelCheck(ir::BlockSink& next, const PipelineOptions& o,

@@ -123,8 +123,9 @@ Vec2 planeVector(const std::array<double, 3>& v, ir::Plane plane) {
 
 }  // namespace
 
-CompensationPass::CompensationPass(ir::BlockSink& next, Dialect dialect, DiagnosticEngine& diags)
-    : next_(next), table_(dialectTable(dialect)), diags_(diags) {}
+CompensationPass::CompensationPass(ir::BlockSink& next, Dialect dialect, DiagnosticEngine& diags,
+                                   bool compensate)
+    : next_(next), table_(dialectTable(dialect)), diags_(diags), compensate_(compensate) {}
 
 void CompensationPass::fail(Alarm alarm, SourceLocation loc, std::string message) {
   diags_.error(std::string(table_ ? table_->alarm(alarm) : "NCC2127"), loc, std::move(message));
@@ -151,7 +152,7 @@ void CompensationPass::accept(ir::Block block) {
     next_.accept(std::move(block));
     return;
   }
-  if (failed_ || (!block.comp && state_ == State::Off && window_.empty())) {
+  if (failed_ || !compensate_ || (!block.comp && state_ == State::Off && window_.empty())) {
     // Nothing of compensation: only the programmed position is followed.
     for (ir::Operation& op : block.ops) {
       ir::Space space{};

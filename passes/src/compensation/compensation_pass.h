@@ -29,7 +29,9 @@ namespace ncc::passes {
 
 class CompensationPass : public ir::BlockSink {
  public:
-  CompensationPass(ir::BlockSink& next, Dialect dialect, DiagnosticEngine& diags);
+  // compensate = false: every request is dropped, the programmed path goes on (ncc plot).
+  CompensationPass(ir::BlockSink& next, Dialect dialect, DiagnosticEngine& diags,
+                   bool compensate = true);
   void accept(ir::Block block) override;
   void finish() override;
 
@@ -87,6 +89,7 @@ class CompensationPass : public ir::BlockSink {
   std::optional<uint64_t> corner_arc_;      // a G39 block since open_
   std::optional<comp::Vec2> corner_arc_vector_;
   std::optional<uint64_t> shift_block_;     // type C: the start-up block without motion
+  bool compensate_ = true;
   bool failed_ = false;           // after an alarm every block passes as it is
 };
 
