@@ -89,6 +89,7 @@ class CompensationPass : public ir::BlockSink {
   std::optional<uint64_t> corner_arc_;      // a G39 block since open_
   std::optional<comp::Vec2> corner_arc_vector_;
   std::optional<uint64_t> shift_block_;     // type C: the start-up block without motion
+  bool recommanded_ = false;                // G41 again in G41 mode (FANUC): perpendicular
   bool compensate_ = true;
   bool failed_ = false;           // after an alarm every block passes as it is
 };
