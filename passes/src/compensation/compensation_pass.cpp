@@ -203,6 +203,13 @@ void CompensationPass::process(uint64_t n) {
     }
     return;
   }
+  if (c) {
+    last_comp_ = *c;
+  } else {  // no request: compensation ends here, with nothing of the last block's specials
+    last_comp_.side = Side::Off;
+    last_comp_.vector.reset();
+    last_comp_.special = ir::CutterComp::Special::None;
+  }
   if (state_ == State::Off && comp_after) state_ = State::Starting;
   const bool cancelling = state_ != State::Off && !comp_after;
   // G41 again in G41 mode (FANUC): the corner before this block's move is perpendicular.
@@ -225,7 +232,7 @@ void CompensationPass::process(uint64_t n) {
     const AxisValues end = common(block, *to, space);
     last_ = end;
     if (state_ == State::Off) continue;
-    const ir::CutterComp& cc = *c;
+    const ir::CutterComp& cc = last_comp_;  // a block without a request ends compensation
     const bool arc = std::holds_alternative<ir::Arc>(block.ops[i]);
     const bool in_plane = arc || (planeOf(end, cc) - planeOf(start, cc)).norm() > kLengthTolerance;
     if (temporary) {
@@ -590,7 +597,7 @@ void CompensationPass::cancel(uint64_t n, size_t i, const AxisValues& start,
   if (!open_) return;  // after a temporary cancel: nothing is held
   Open& a = *open_;
   const ir::Block& block = at(n).block;
-  const ir::CutterComp& c = *block.comp;
+  const ir::CutterComp& c = last_comp_;
   Open b;
   b.ref = {n, i};
   b.start = start;

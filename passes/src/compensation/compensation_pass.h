@@ -83,6 +83,7 @@ class CompensationPass : public ir::BlockSink {
   AxisValues last_{};   // the programmed position (the pass's frame)
   State state_ = State::Off;
   std::optional<Open> open_;
+  ir::CutterComp last_comp_;      // the last request seen (its plane, for a block without one)
   std::vector<Ref> between_;      // moves off the plane after open_: placed at the corner
   int without_motion_ = 0;        // blocks without motion in the plane since open_
   std::optional<comp::Vec2> given_vector_;  // I J in a block without motion (FANUC IJ type)
