@@ -83,12 +83,22 @@ std::optional<std::array<double, 3>> vectorOf(BlockContext& ctx, std::array<bool
   const std::optional<WordValue>* words[3] = {&ctx.words.i, &ctx.words.j, &ctx.words.k};
   std::array<double, 3> v{};
   std::optional<SourceLocation> loc;
+  ctx.used_ijk = true;
+  for (int n = 0; n < 3; ++n) {
+    if (use[n] || !*words[n]) continue;
+    const char* kPlaneWords[] = {"J K", "I K", "I J"};  // by the slot left out
+    const int out = !use[0] ? 0 : !use[1] ? 1 : 2;
+    ctx.fail(Alarm::AddressWithoutMeaning, (*words[n])->loc,
+             absl::StrCat("address ", (*words[n])->address, " has no meaning in ",
+                          planeCode(ctx.next.modal.plane), ": the vector of ", what, " is ",
+                          kPlaneWords[out]));
+    return std::nullopt;
+  }
   for (int n = 0; n < 3; ++n) {
     if (!use[n] || !*words[n]) continue;
     v[n] = ctx.lengthValue(**words[n]);
     if (!loc) loc = (*words[n])->loc;
   }
-  ctx.used_ijk = true;
   if (std::hypot(v[0], v[1], v[2]) <= kSamePoint) {
     ctx.fail(Alarm::ValueOutOfRange, *loc,
              absl::StrCat("the I J K vector of ", what, " is zero: it gives no direction"));
