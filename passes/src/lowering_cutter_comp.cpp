@@ -171,8 +171,9 @@ void checkBlock(BlockContext& ctx, const CompRules& rules, Side was, Side now,
   }
 }
 
-// G38 / G39: the one-shot special and, where the dialect reads one, its vector.
-void special(BlockContext& ctx, const CompRules& rules, ir::CutterComp& c) {
+// G38 / G39: the one-shot special and, where the dialect reads one, its vector. In an arc
+// block (`arc`: G38 X Y in G02/G03 mode) I J K stay the arc's centre.
+void special(BlockContext& ctx, const CompRules& rules, bool arc, ir::CutterComp& c) {
   const GWord& g = *ctx.words.comp_special;
   const std::array<bool, 3> plane = planeSlots(ctx.next.modal.plane);
   if (g.entry->action == GAction::CompCornerArc) {
@@ -188,7 +189,8 @@ void special(BlockContext& ctx, const CompRules& rules, ir::CutterComp& c) {
     return;
   }
   c.special = Special::VectorHold;
-  if (rules.vector_with_hold && hasPlaneVector(ctx, plane)) c.vector = vectorOf(ctx, plane, "G38");
+  if (rules.vector_with_hold && !arc && hasPlaneVector(ctx, plane))
+    c.vector = vectorOf(ctx, plane, "G38");
 }
 
 }  // namespace
@@ -250,7 +252,7 @@ void applyCutterComp(BlockContext& ctx) {
     for (double& x : *state.direction_3d) x = -x;  // a side change in 3-D: the other way
   }
   if (ctx.words.comp_special) {
-    special(ctx, *rules, c);
+    special(ctx, *rules, arc, c);
     if (ctx.failed) return;
   } else if (!arc && !cycle && !ctx.used_ijk && hasPlaneVector(ctx, plane)) {
     const bool vector = now == Side::Off ? rules->vector_with_cancel
