@@ -96,6 +96,14 @@ class CutterCompLoweringTest(ScratchDirTest):
         self.assertEqual(proc.returncode, 0, proc.stderr)
         self.assertEqual(self.comps(proc.stdout)[0], (1, "comp(right D1=5.000 commanded 3d -2.000 0.000 0.000)"))
 
+    def test_macro_variable_4007_reads_the_side_in_force(self):
+        # #4007: the group 07 code in force (FANUC system variables), 41 while G41, 40 after G40.
+        program = "G17 G01 G41 X10. D1 F100.\n#100=#4007\nG01 X#100\nG40 X0\n#101=#4007\nG01 Y#101\nM30\n"
+        proc = self.lower(program, "fanuc-m")
+        self.assertEqual(proc.returncode, 0, proc.stderr)
+        self.assertIn("line work X41.000 Y0.000", proc.stdout)
+        self.assertIn("line work X0.000 Y40.000", proc.stdout)
+
     def test_the_corpus_step_block_lowers_with_its_d_register(self):
         # As corpus enier-mill_240806_step_block_1.nc: G41 D02 never cancelled before M30;
         # every block to the end is recorded.
