@@ -280,6 +280,7 @@ struct CutterComp {
   // A change of side runs over its block from perpendicular (old side) to perpendicular (new
   // side) (Siemens §3.5.3); false: the corner is where the old and new offset paths meet (FANUC).
   bool side_change_perpendicular = false;
+  double corner_move_limit = 0.0;  // corner moves no longer than this are dropped (FANUC No.5010), mm
   SourceLocation loc;            // the G41/G42/G40 (or D) word, for messages
   friend bool operator==(const CutterComp&, const CutterComp&) = default;
 };
