@@ -288,6 +288,13 @@ void finishCutterComp(BlockContext& ctx, bool program_end) {
   c.max_without_motion = in_force.max_without_motion;
   c.interference_check = in_force.interference_check;
   c.corner_move_limit = in_force.corner_move_limit;
+  c.recommand_perpendicular = rules.same_side_recommand_counts;
+  // The plane's machine axes (first, second, normal), as an arc in it takes them.
+  static constexpr const char* kAxes[][3] = {{"X", "Y", "Z"}, {"Z", "X", "Y"}, {"Y", "Z", "X"}};
+  const auto& names = kAxes[static_cast<int>(ctx.next.modal.plane)];
+  c.plane_a = ctx.axisNamed(names[0]);
+  c.plane_b = ctx.axisNamed(names[1]);
+  c.plane_normal = ctx.axisNamed(names[2]);
   for (const ir::Operation& op : ctx.ops) {
     if (!std::holds_alternative<ir::HoleCycle>(op)) continue;
     // A hole cycle runs on the programmed points (FANUC, Siemens "compensation is ignored in

@@ -185,6 +185,8 @@ void CompensationPass::accept(ir::Block block) {
 void CompensationPass::process(uint64_t n) {
   ir::Block& block = at(n).block;
   const ir::CutterComp* c = block.comp ? &*block.comp : nullptr;
+  // A plane the machine lacks an axis of: the lowering has refused its moves already.
+  if (c && (c->plane_a < 0 || c->plane_b < 0)) c = nullptr;
   const bool comp_after = c && c->side != Side::Off;
   if (c && c->offset_3d) {
     // Mazak 3-D compensation: every target moves by the vector (§12-4-10).
