@@ -18,7 +18,7 @@ NCC = None
 # A work offset, a tool length and a G52 shift: lower keeps the targets in work space with the
 # frame beside them, work-to-machine adds the frame.
 PROGRAM = "G90 G10 L2 P1 X100. Y50.\nG10 L10 P1 R20.\nG54 G43 H1 G00 X10. Y10. Z5.\nG52 X5.\nG01 X0 F300.\nM30\n"
-COMPILE_PASSES = ["lower", "cycles", "corners", "transform", "work-to-machine"]
+COMPILE_PASSES = ["lower", "cycles", "corners", "transform", "compensation", "work-to-machine"]
 
 
 def ncc(*args, stdin=None):
@@ -153,7 +153,7 @@ class PassesTest(ScratchDirTest):
         self.assertIn("  set #1 = 2.000", both.stdout)
 
     def test_unknown_pass_lists_the_valid_names(self):
-        listed = "; the passes of ncc compile: evaluate, lower, cycles, corners, transform, work-to-machine"
+        listed = "; the passes of ncc compile: evaluate, lower, cycles, corners, transform, compensation, work-to-machine"
         self.assert_usage_error(["--emit=ir", "--print-after=bogus"], "NCC0015",
                                 "--print-after: no pass is named 'bogus'" + listed)
         self.assert_usage_error(["--emit=ir", "--print-after=lower,Lower"], "NCC0015",
@@ -164,7 +164,7 @@ class PassesTest(ScratchDirTest):
                                 "--print-after: pass 'travel-check' does not run in ncc compile (only in ncc check)" + listed)
         self.assert_usage_error(["--print-after=bogus"], "NCC0015",
                                 "--print-after: no pass is named 'bogus'; the passes of ncc check: evaluate, lower, "
-                                "cycles, corners, transform, work-to-machine, travel-check", command="check")
+                                "cycles, corners, transform, compensation, work-to-machine, travel-check", command="check")
 
     def test_a_print_after_the_stop_is_refused(self):
         self.assert_usage_error(["--emit=ir", "--stop-after=lower", "--print-after=work-to-machine"], "NCC0015",

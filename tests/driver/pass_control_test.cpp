@@ -12,9 +12,9 @@ namespace {
 
 TEST(PipelineStages, EachCommandsPassesInOrder) {
   EXPECT_EQ(pipelineStages(Pipeline::Compile),
-            (std::vector<std::string>{"evaluate", "lower", "cycles", "corners", "transform", "work-to-machine"}));
+            (std::vector<std::string>{"evaluate", "lower", "cycles", "corners", "transform", "compensation", "work-to-machine"}));
   EXPECT_EQ(pipelineStages(Pipeline::Check),
-            (std::vector<std::string>{"evaluate", "lower", "cycles", "corners", "transform", "work-to-machine", "travel-check"}));
+            (std::vector<std::string>{"evaluate", "lower", "cycles", "corners", "transform", "compensation", "work-to-machine", "travel-check"}));
 }
 
 TEST(CheckPassControl, AcceptsThePipelinesNamesOnly) {
@@ -27,7 +27,7 @@ TEST(CheckPassControl, AcceptsThePipelinesNamesOnly) {
   EXPECT_EQ(checkPassControl(travel, Pipeline::Check), std::nullopt);
   EXPECT_EQ(checkPassControl(travel, Pipeline::Compile),
             "--stop-after: pass 'travel-check' does not run in ncc compile (only in ncc check); "
-            "the passes of ncc compile: evaluate, lower, cycles, corners, transform, work-to-machine");
+            "the passes of ncc compile: evaluate, lower, cycles, corners, transform, compensation, work-to-machine");
   PassControl late;
   late.stop_after = "lower";
   late.print_after = {"lower", "travel-check"};

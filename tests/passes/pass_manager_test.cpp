@@ -30,7 +30,7 @@ TEST(PassRegistry, NamesInPipelineOrder) {
   std::vector<std::string_view> names;
   for (const PassInfo& pass : passRegistry()) names.push_back(pass.name);
   EXPECT_EQ(names,
-            (std::vector<std::string_view>{"lower", "cycles", "corners", "transform", "work-to-machine", "travel-check"}));
+            (std::vector<std::string_view>{"lower", "cycles", "corners", "transform", "compensation", "work-to-machine", "travel-check"}));
   ASSERT_NE(findPass("work-to-machine"), nullptr);
   EXPECT_TRUE(findPass("work-to-machine")->machine_space_after);
   EXPECT_EQ(findPass("lower")->create, nullptr);  // the producer: the driver runs it
@@ -41,15 +41,15 @@ TEST(PassRegistry, NamesInPipelineOrder) {
 TEST(PassManager, PassNamesDependOnTheOptions) {
   PipelineOptions compile;
   EXPECT_EQ(PassManager::passNames(compile),
-            (std::vector<std::string_view>{"lower", "cycles", "corners", "transform", "work-to-machine"}));
+            (std::vector<std::string_view>{"lower", "cycles", "corners", "transform", "compensation", "work-to-machine"}));
   MachineConfig machine = defaultMachine();
   PipelineOptions check;
   check.travel_limits = &machine;
   EXPECT_EQ(PassManager::passNames(check),
-            (std::vector<std::string_view>{"lower", "cycles", "corners", "transform", "work-to-machine", "travel-check"}));
+            (std::vector<std::string_view>{"lower", "cycles", "corners", "transform", "compensation", "work-to-machine", "travel-check"}));
   PipelineOptions work;
   work.to_machine_space = false;
-  EXPECT_EQ(PassManager::passNames(work), (std::vector<std::string_view>{"lower", "cycles", "corners", "transform"}));
+  EXPECT_EQ(PassManager::passNames(work), (std::vector<std::string_view>{"lower", "cycles", "corners", "transform", "compensation"}));
 }
 
 TEST(PassManager, StopAfterLowerKeepsWorkSpaceAndItsVerifierAcceptsIt) {

@@ -532,9 +532,11 @@ bool CompensationPass::checkInterference(const Open& a, const Vec2& end) {
   // A move that starts without a vector (start-up, after a temporary cancel) turns by design.
   if (a.startup || (a.comp_start - a.e.start).norm() <= kLengthTolerance) return true;
   bool against = false;
+  std::string by;
   if (!a.e.arc) {
     const Vec2 programmed = a.e.end - a.e.start, compensated = end - a.comp_start;
     against = compensated.norm() > kLengthTolerance && compensated.dot(programmed) < 0;
+    by = absl::StrCat(", backwards by ", mm(-compensated.dot(programmed.normalized())), " mm");
   } else {
     const double r = comp::offsetRadius(a.e, a.w);
     if (std::fabs((end - a.e.centre).norm() - r) > 1e-7) return true;  // a given vector
@@ -548,7 +550,7 @@ bool CompensationPass::checkInterference(const Open& a, const Vec2& end) {
   const ir::Block& b = at(a.ref.block).block;
   const std::string message = absl::StrCat(
       "interference: the compensated path of this ", a.e.arc ? "arc" : "move",
-      " runs against the programmed one (tool radius D", a.comp.d_number, " = ",
+      " runs against the programmed one", by, " (tool radius D", a.comp.d_number, " = ",
       mm(std::fabs(a.w)), " mm is larger than the contour here allows): the tool would cut "
       "into the work");
   if (!a.comp.interference_check) {

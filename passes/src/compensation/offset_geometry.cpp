@@ -171,9 +171,11 @@ std::optional<CornerPath> cornerPath(const Element& a, double wa, const Element&
     }
     const auto ca = offsetCurve(a, wa), cb = offsetCurve(b, wb);
     if (!ca || !cb) return std::nullopt;
-    const auto x = intersect(*ca, *cb, p);
-    if (!x) return std::nullopt;
-    return CornerPath{*x, {}};
+    if (const auto x = intersect(*ca, *cb, p)) return CornerPath{*x, {}};
+    // A corner meant to be tangent (a lead-in arc onto a circle) whose offset curves miss each
+    // other by the rounding of the program's coordinates: from one to the other.
+    if ((p2 - p1).norm() <= kTangentGap) return through({p1, p2});
+    return std::nullopt;
   }
   // Outer corners.
   if (rules.arc_connection && std::fabs(wa - wb) <= kLengthTolerance) {

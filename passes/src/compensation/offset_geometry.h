@@ -18,6 +18,9 @@ using Vec2 = Eigen::Vector2d;
 
 inline constexpr double kLengthTolerance = 1e-9;  // mm: shorter is no move
 inline constexpr double kAngleTolerance = 1e-9;   // rad: closer is tangent
+// mm: offset curves of a nearly tangent inner corner that miss each other by no more than this
+// (the default arc radius tolerance, a program's rounding) are joined by a line.
+inline constexpr double kTangentGap = 0.01;
 
 inline Vec2 leftNormal(const Vec2& d) { return {-d.y(), d.x()}; }
 inline double cross(const Vec2& a, const Vec2& b) { return a.x() * b.y() - a.y() * b.x(); }
