@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Cutter compensation on three shop programs of tests/corpus/fanuc-m, checked by hand against
+"""Cutter compensation on shop programs of tests/corpus/fanuc-m, checked by hand against
 FANUC's rules (docs/compensation.md): the tool-centre points of every compensated move, and the
 interference alarm where a slot entry runs backwards. The programs are inch (G20) and written
 for "control" compensation (D holds the tool radius): the machine files give D the radii of the
@@ -122,6 +122,44 @@ class CorpusCompensation(ScratchDirTest):
         self.assertIn("enier-mill_240904_nims.nc:194:1: error[PS0041]: interference", proc.stderr)
         self.assertIn("backwards by 0.052 mm", proc.stderr)
         self.assertFalse(os.path.exists(out), "nothing is written")
+
+
+class MacroCompensation(ScratchDirTest):
+    def test_selyaev_spiral_hole_milling_macro_with_a_4_mm_end_mill(self):
+        # selyaev-3: G65 P3003 mills a 10 mm hole (D10.) from Z1 down to Z-10 in 1 mm helical
+        # turns with G41 (E41), then a last flat turn and G40 back to the centre. D1 = 2 mm: the
+        # tool centre runs on radius 5 - 2 = 3 (G41 on a counterclockwise circle is inside).
+        toml = self.write("m.toml", "[machine]\naxes = [\"X\", \"Y\", \"Z\"]\n"
+                                    "[machine.offsets]\nD1 = 2.0\nH1 = 0.0\n")
+        proc = subprocess.run([NCC, "run", "selyaev-3.nc", "--dialect", "fanuc-m", "--machine",
+                               toml, "--emit=moves"], capture_output=True, text=True,
+                              timeout=120, cwd=CORPUS)
+        self.assertEqual(proc.returncode, 0, proc.stderr)
+        moves = [(m["file"], m["line"], m["kind"], round(m["to"]["X"], 4), round(m["to"]["Y"], 4),
+                  round(m["to"]["Z"], 4)) for m in move_list(proc.stdout)
+                 if m["file"] == "selyaev-3003.nc" and m["line"] >= 16]
+        root5 = round(-(5 ** 0.5), 4)  # x where y = -+2 meets the circle of radius 3
+        expected = [
+            # G91 G41 X-5.: start-up, inner corner with the circle: the offset of the leftward
+            # move (y = -2) meets the offset circle (radius 3) nearest the wall point.
+            ("selyaev-3003.nc", 16, "line", root5, -2.0, 1.0),
+            # The first turn from there to perpendicular at the wall point (the next turn goes
+            # on tangent), one helix pitch down.
+            ("selyaev-3003.nc", 21, "arc", -3.0, 0.0, 0.0),
+        ]
+        # Ten more full turns to Z-10 (WHILE #1 >= -10 with #1 stepping 1 from 0).
+        expected += [("selyaev-3003.nc", 21, "arc", -3.0, 0.0, float(-z)) for z in range(1, 11)]
+        expected += [
+            # N2: the flat turn ends where the circle meets the offset of the G40 move (y = 2).
+            ("selyaev-3003.nc", 23, "arc", root5, 2.0, -10.0),
+            ("selyaev-3003.nc", 24, "line", 0.0, 0.0, -10.0),  # G40 to the centre
+            ("selyaev-3003.nc", 25, "rapid", 0.0, 0.0, 5.0),
+        ]
+        self.assertEqual(moves, expected)
+        for m in move_list(proc.stdout):
+            if m["kind"] == "arc":
+                self.assertAlmostEqual(m["center"]["X"], 0.0, places=9)
+                self.assertAlmostEqual(m["center"]["Y"], 0.0, places=9)
 
 
 if __name__ == "__main__":

@@ -350,10 +350,11 @@ void CompensationPass::admit(uint64_t n, size_t i, const AxisValues& start, cons
     if (d.norm() > kLengthTolerance)
       b.fixed_end = b.e.end + comp::leftNormal(d.normalized()) * b.w;
   }
-  // An arc starts on its offset circle: a line there from a vector that is not.
-  if (b.e.arc) {
+  // An arc starts on its offset circle: from a vector off it, a line to perpendicular there.
+  if (b.e.arc &&
+      std::fabs((b.comp_start - b.e.centre).norm() - comp::offsetRadius(b.e, b.w)) > 1e-7) {
     const Vec2 on = b.e.start + comp::leftNormal(b.e.startDirection()) * b.w;
-    if ((on - b.comp_start).norm() > 1e-7) {
+    {
       ir::Linear line;
       const auto& arc = std::get<ir::Arc>(block.ops[i]);
       line.feed = arc.feed;
