@@ -121,6 +121,25 @@ Vec2 planeVector(const std::array<double, 3>& v, ir::Plane plane) {
   return {v[0], v[1]};
 }
 
+// FANUC No.5010: a straight corner move whose change on each plane axis is within `limit` is
+// left out (the tool goes on from where it is), but not the one onto an arc, which must start
+// on its circle.
+void dropSmallCornerMoves(CornerPath& path, double limit, bool arc_follows) {
+  if (limit <= 0) return;
+  Vec2 from = path.a_end;
+  std::vector<Connector> kept;
+  for (size_t k = 0; k < path.connectors.size(); ++k) {
+    const Connector& c = path.connectors[k];
+    const bool last = k + 1 == path.connectors.size();
+    const Vec2 d = c.to - from;
+    if (!c.arc && !(last && arc_follows) && std::fabs(d.x()) <= limit && std::fabs(d.y()) <= limit)
+      continue;
+    kept.push_back(c);
+    from = c.to;
+  }
+  path.connectors = std::move(kept);
+}
+
 }  // namespace
 
 CompensationPass::CompensationPass(ir::BlockSink& next, Dialect dialect, DiagnosticEngine& diags,
@@ -440,6 +459,7 @@ void CompensationPass::join(Open& b) {
     }
     path = *found;
   }
+  dropSmallCornerMoves(path, a.comp.corner_move_limit, b.e.arc);
   close(path, connector_block);
   if (failed_) return;
   b.comp_start = path.b_start();

@@ -1,0 +1,58 @@
+// The compensation pass's parameters and special cases beyond the corner rules (see
+// corners_test.cpp): FANUC's corner move limit, G93 feeds, machine-space moves.
+#include <algorithm>
+#include <variant>
+
+#include "compensation_harness.h"
+#include "gtest/gtest.h"
+
+namespace ncc::passes::testing {
+namespace {
+
+using Side = ir::CutterComp::Side;
+
+int movesOfLine(const std::string& moves, int line) {
+  const std::string prefix = std::to_string(line) + ": ";
+  int n = 0;
+  for (size_t at = 0; (at = moves.find(prefix, at)) != std::string::npos; at += prefix.size())
+    if (at == 0 || moves[at - 1] == '\n') ++n;
+  return n;
+}
+
+CompProgram sharpTurn(double radius, double limit) {
+  // Right of +X, then back up-left: an acute outer corner, turned by two extended vectors.
+  CompProgram p;
+  p.settings().corner_move_limit = limit;
+  p.rapid(-10, 0).side(Side::Right, radius).line(0, 0).line(40, 0).line(0, 10).cancel()
+      .line(-10, 10);
+  return p;
+}
+
+TEST(CompensationRules, CornerMovesWithinTheLimitAreLeftOut) {
+  // r = 0.004: the corner move between the two extended vectors changes X and Y by less than
+  // 0.01 mm (FANUC No.5010 = 0.01): left out, the next move starts where the last one ended.
+  const std::string kept = sharpTurn(0.004, 0.0).run(), dropped = sharpTurn(0.004, 0.01).run();
+  EXPECT_EQ(movesOfLine(kept, 3), 2) << kept;
+  EXPECT_EQ(movesOfLine(dropped, 3), 1) << dropped;
+  // A larger tool's corner move stays.
+  EXPECT_EQ(movesOfLine(sharpTurn(5, 0.01).run(), 3), 2);
+}
+
+TEST(CompensationRules, AMachineSpaceMoveRunsOnItsPointAndTheNextMoveTakesTheVectorUp) {
+  // G28's last leg (machine space) while compensating: the move before ends perpendicular to
+  // itself, the reference move runs as programmed, the next move starts from it.
+  CompProgram p;
+  p.rapid(0, -10).side(Side::Left, 2).line(0, 0).line(20, 0).machineRapid(50, 50).line(60, 50)
+      .line(60, 70).cancel().line(70, 80);
+  EXPECT_EQ(p.run(),
+            "1: R 0.000 -10.000\n"
+            "2: L 0.000 2.000\n"      // type A start-up: perpendicular to the next move
+            "3: L 20.000 2.000\n"     // perpendicular to itself before the temporary cancel
+            "4: R 50.000 50.000\n"    // on the programmed (machine) point
+            "5: L 58.000 52.000\n"    // from there to the corner with the next move (inner)
+            "6: L 58.000 70.000\n"    // cancel corner, outer, type A: perpendicular to Y70
+            "7: L 70.000 80.000\n");
+}
+
+}  // namespace
+}  // namespace ncc::passes::testing
