@@ -330,10 +330,13 @@ void CompensationPass::admit(uint64_t n, size_t i, const AxisValues& start, cons
     if (d.norm() > kLengthTolerance)
       b.fixed_end = b.e.end + comp::leftNormal(d.normalized()) * b.w;
   }
-  // An arc starts on its offset circle: a line there from a vector that is not.
+  // An arc starts on its offset circle: a line there from a vector that is not (an inner
+  // corner's intersection is on it already, and stays where it is).
   if (b.e.arc) {
     const Vec2 on = b.e.start + comp::leftNormal(b.e.startDirection()) * b.w;
-    if ((on - b.comp_start).norm() > 1e-7) {
+    const double off_circle =
+        std::fabs((b.comp_start - b.e.centre).norm() - comp::offsetRadius(b.e, b.w));
+    if (off_circle > 1e-7) {
       ir::Linear line;
       const auto& arc = std::get<ir::Arc>(block.ops[i]);
       line.feed = arc.feed;
