@@ -4,6 +4,7 @@
 // the comment beside each case, never by calling the pass's geometry), and the diagnostics it
 // must give. The docs' drawings (docs/compensation/*.svg) are drawn from the same cases.
 #include <functional>
+#include <ostream>
 #include <string>
 #include <vector>
 
@@ -20,5 +21,8 @@ struct GoldenCase {
 };
 
 const std::vector<GoldenCase>& goldenCases();
+
+// GoogleTest prints a case by its name.
+inline void PrintTo(const GoldenCase& g, std::ostream* os) { *os << g.name; }
 
 }  // namespace ncc::passes::testing
