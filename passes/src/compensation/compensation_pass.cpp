@@ -626,6 +626,12 @@ void CompensationPass::cancel(uint64_t n, size_t i, const AxisValues& start,
     }
   }
   close(path, a.ref.block);
+  if (failed_) return;
+  // Inverse time feed: the G40 move starts off its programmed start and keeps its time too.
+  const double programmed = distance(start, end);
+  const double length = distance(withPlane(start, a.comp, path.b_start()), end);
+  if (block.modal.feed_mode == ir::FeedMode::InverseTime && programmed > kLengthTolerance)
+    if (auto* line = std::get_if<ir::Linear>(&at(n).block.ops[i])) line->feed *= length / programmed;
   open_.reset();
 }
 
