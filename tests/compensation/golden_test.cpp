@@ -62,22 +62,38 @@ TEST(CompensationGolden, AHelixKeepsItsZAndIsOffsetInThePlane) {
 }
 
 TEST(CompensationGolden, InverseTimeFeedScalesWithTheCompensatedLength) {
-  // G93, G42 r = 5 round an inner right turn: A (0,0) -> (40,0) at F10 (1/min, 4 s) is cut
-  // from (0,-5) to (35,-5): 35 mm in the same time, F 10 * 35 / 40 = 8.75. B (40,0) ->
-  // (40,-30) F20 runs from (35,-5) to (35,-30) (the straight cancel after it): 25/30 * 20 =
-  // 16.667. The lead-in (a start-up from (-20,0) to (0,-5), 20.616 mm for 20) F5: 5.154.
+  // G93: lowering turns F (1/min) into mm/min over the programmed length, so a block that keeps
+  // its time 1/F has its feed scaled by compensated / programmed length. G42 r = 5 round an
+  // inner right turn:
+  //   lead-in (-20,0) -> (0,0), F1 (feed 20): cut (-20,0) -> (0,-5), sqrt(425) mm: 20.616;
+  //   A (0,0) -> (40,0), F10 (feed 400): cut (0,-5) -> (35,-5): 400 * 35 / 40 = 350;
+  //   B (40,0) -> (40,-30), F2 (feed 60): cut (35,-5) -> (35,-30) (a straight cancel after
+  //   it): 60 * 25 / 30 = 50;
+  //   the G40 move (40,-30) -> (40,-40), F3 (feed 30): from (35,-30), sqrt(125) mm: 33.541.
   CompProgram p;
   p.feedMode(ir::FeedMode::InverseTime);
-  p.rapid(-20, 0).side(Side::Right, 5).line(0, 0, 0, 5).line(40, 0, 0, 10).line(40, -30, 0, 20)
-      .cancel().line(40, -40, 0, 30);
+  p.rapid(-20, 0).side(Side::Right, 5).line(0, 0, 0, 20).line(40, 0, 0, 400)
+      .line(40, -30, 0, 60).cancel().line(40, -40, 0, 30);
   const std::vector<ir::Block> out = p.runBlocks();
   ASSERT_EQ(out.size(), 5u);
+  EXPECT_EQ(movesText(out),
+            "1: R -20.000 0.000\n2: L 0.000 -5.000\n3: L 35.000 -5.000\n4: L 35.000 -30.000\n"
+            "5: L 40.000 -40.000\n");
   auto feed = [&](size_t i) { return std::get<ir::Linear>(out[i].ops.at(0)).feed; };
-  EXPECT_NEAR(feed(1), 5 * std::sqrt(20.0 * 20 + 25) / 20, 1e-9);
-  EXPECT_NEAR(feed(2), 8.75, 1e-9);
-  EXPECT_NEAR(feed(3), 20.0 * 25 / 30, 1e-9);
-  // The cancel move from (35,-30) to (40,-40): sqrt(125) mm for 10.
-  EXPECT_NEAR(feed(4), 30.0, 1e-9) << "the cancel move is not compensated: its feed stays";
+  EXPECT_NEAR(feed(1), std::sqrt(425.0), 1e-9);
+  EXPECT_NEAR(feed(2), 350.0, 1e-9);
+  EXPECT_NEAR(feed(3), 50.0, 1e-9);
+  EXPECT_NEAR(feed(4), 3 * std::sqrt(125.0), 1e-9);
+}
+
+TEST(CompensationGolden, PerMinuteFeedIsNotScaled) {
+  CompProgram p;
+  p.rapid(-20, 0).side(Side::Right, 5).line(0, 0, 0, 20).line(40, 0, 0, 400).cancel()
+      .line(40, -40, 0, 30);
+  const std::vector<ir::Block> out = p.runBlocks();
+  ASSERT_EQ(out.size(), 4u);
+  EXPECT_EQ(std::get<ir::Linear>(out[2].ops.at(0)).feed, 400.0);
+  EXPECT_EQ(std::get<ir::Linear>(out[3].ops.at(0)).feed, 30.0);
 }
 
 TEST(CompensationGolden, ANegativeRadiusIsTheOtherSide) {
