@@ -163,6 +163,17 @@ std::vector<GoldenCase> makeCases() {
       "1: R 20.000 40.000\n2: L 25.000 20.000\n3: A 40.000 5.000 40.000 20.000 ccw\n"
       "3: L 45.000 5.000\n3: L 47.071 0.000\n4: L 13.536 -33.536\n5: L 0.000 -40.000\n");
 
+  // Arc connection: the arc ends perpendicular (40,5), a clockwise arc about P to
+  // P + 5 n2 = (43.536,-3.536).
+  add("al_outer_acute_arc", "arc-line, outer acute corner, arc connection",
+      [] { return leadInArc(Side::Left, true).line(10, -30).cancel().line(0, -40); },
+      "1: R 20.000 40.000\n2: L 25.000 20.000\n3: A 40.000 5.000 40.000 20.000 ccw\n"
+      "3: A 43.536 -3.536 40.000 0.000 cw\n4: L 13.536 -33.536\n5: L 0.000 -40.000\n");
+  add("la_outer_acute_arc", "line-arc, outer acute corner, arc connection",
+      [] { return leadInLine(Side::Left, 5, true).arc(20, 20, 30, 10, true).cancel().line(30, 30); },
+      "1: R -20.000 0.000\n2: L 0.000 5.000\n3: L 40.000 5.000\n3: A 43.536 -3.536 40.000 0.000 cw\n"
+      "4: A 16.464 23.536 30.000 10.000 cw\n5: L 30.000 30.000\n");
+
   // ---- Offset mode, arc -> arc.
   // B ccw about (20,0) to (20,20): inner. Circles (40,20) r 15 and (20,0) r 15: their
   // centres 20 sqrt2 apart, the common chord through the midpoint (30,10) across (1,-1)/sqrt2
@@ -182,8 +193,21 @@ std::vector<GoldenCase> makeCases() {
       "1: R 20.000 40.000\n2: L 25.000 20.000\n3: A 40.000 5.000 40.000 20.000 ccw\n"
       "3: A 45.000 0.000 40.000 0.000 cw\n4: A 20.000 -25.000 20.000 0.000 cw\n"
       "5: L 10.000 -20.000\n");
-  // B ccw about (20,0)... no: B continues A's circle's tangent: ccw about (40,20) to (60,20),
-  // tangent (straight); one circle of radius 15 through (40,5) to (55,20).
+  // B the half circle clockwise about (30,10) of la_outer_acute_linear (outer acute): the arc
+  // A ends perpendicular (40,5), then (45,5), (47.071,0) and B's perpendicular start
+  // (43.536,-3.536); B ends at (16.464,23.536).
+  add("aa_outer_acute_linear", "arc-arc, outer acute corner, linear connection",
+      [] { return leadInArc().arc(20, 20, 30, 10, true).cancel().line(30, 30); },
+      "1: R 20.000 40.000\n2: L 25.000 20.000\n3: A 40.000 5.000 40.000 20.000 ccw\n"
+      "3: L 45.000 5.000\n3: L 47.071 0.000\n3: L 43.536 -3.536\n"
+      "4: A 16.464 23.536 30.000 10.000 cw\n5: L 30.000 30.000\n");
+  add("aa_outer_acute_arc", "arc-arc, outer acute corner, arc connection",
+      [] { return leadInArc(Side::Left, true).arc(20, 20, 30, 10, true).cancel().line(30, 30); },
+      "1: R 20.000 40.000\n2: L 25.000 20.000\n3: A 40.000 5.000 40.000 20.000 ccw\n"
+      "3: A 43.536 -3.536 40.000 0.000 cw\n4: A 16.464 23.536 30.000 10.000 cw\n"
+      "5: L 30.000 30.000\n");
+  // B continues A's circle: ccw about (40,20) to (60,20), tangent (straight); one circle of
+  // radius 15 through (40,5) to (55,20).
   add("aa_tangent", "arc-arc, tangent",
       [] { return leadInArc().arc(60, 20, 40, 20, false).cancel().line(60, 30); },
       "1: R 20.000 40.000\n2: L 25.000 20.000\n3: A 40.000 5.000 40.000 20.000 ccw\n"
@@ -252,6 +276,23 @@ std::vector<GoldenCase> makeCases() {
       [] { return startupType(Startup::B).arc(20, -20, 0, -20, true).cancel().line(20, -30); },
       "1: R 0.000 -20.000\n2: L -5.000 0.000\n2: L -5.000 5.000\n2: L 0.000 5.000\n"
       "3: A 25.000 -20.000 0.000 -20.000 cw\n4: L 20.000 -30.000\n");
+  // Type C with motion in its start-up block is type A: the acute corner, straight on, into an
+  // arc give type A's points.
+  add("startup_c_acute", "start-up type C with motion, outer acute corner (as A)",
+      [] { return startupType(Startup::C).line(30, -30).cancel().line(40, -40); },
+      "1: R 0.000 -20.000\n2: L 3.536 3.536\n3: L 33.536 -26.464\n4: L 40.000 -40.000\n");
+  add("startup_c_straight", "start-up type C with motion, straight on (as A)",
+      [] { return startupType(Startup::C).line(0, 40).cancel().line(0, 50); },
+      "1: R 0.000 -20.000\n2: L -5.000 0.000\n3: L -5.000 40.000\n4: L 0.000 50.000\n");
+  add("startup_c_line_arc", "start-up type C with motion into an arc (as A)",
+      [] { return startupType(Startup::C).arc(20, -20, 0, -20, true).cancel().line(20, -30); },
+      "1: R 0.000 -20.000\n2: L 0.000 5.000\n3: A 25.000 -20.000 0.000 -20.000 cw\n"
+      "4: L 20.000 -30.000\n");
+  // Type B into an arc with arc connection: (-5,0), clockwise about P to (0,5), the arc.
+  add("startup_b_line_arc_arc", "start-up type B into an arc, arc connection",
+      [] { return startupType(Startup::B, true).arc(20, -20, 0, -20, true).cancel().line(20, -30); },
+      "1: R 0.000 -20.000\n2: L -5.000 0.000\n2: A 0.000 5.000 0.000 0.000 cw\n"
+      "3: A 25.000 -20.000 0.000 -20.000 cw\n4: L 20.000 -30.000\n");
   // G41 in a block without motion at (0,0). Type C: the tool moves there to perpendicular to
   // the next move, P + 5 n(1,0) = (0,5) (a rapid: no feed is in force); type A: nothing moves
   // in it, the next move is the start-up and ramps from (0,0) to (40,5).
@@ -309,6 +350,16 @@ std::vector<GoldenCase> makeCases() {
       [] { return leadInArc(Side::Left, false, Startup::B).cancel().line(40, -30); },
       "1: R 20.000 40.000\n2: L 25.000 20.000\n3: A 40.000 5.000 40.000 20.000 ccw\n"
       "3: L 45.000 5.000\n3: L 45.000 0.000\n4: L 40.000 -30.000\n");
+  // After the arc, an inner G40 move up to (40,30): the offset circle (radius 15) meets the
+  // G40 move's offset x = 35 at (35, 20 - sqrt(200)) = (35,5.858).
+  add("cancel_arc_inner", "cancel after an arc, inner corner",
+      [] { return leadInArc().cancel().line(40, 30); },
+      "1: R 20.000 40.000\n2: L 25.000 20.000\n3: A 35.000 5.858 40.000 20.000 ccw\n"
+      "4: L 40.000 30.000\n");
+  // Cancel type C with motion is type A.
+  add("cancel_c_outer", "cancel type C with motion, outer corner (as A)",
+      [] { return cancelType(Startup::C).line(40, -30); },
+      "1: R -20.000 0.000\n2: L 0.000 5.000\n3: L 40.000 5.000\n4: L 40.000 -30.000\n");
   // G40 in a block without motion. A: the vector (40,5) stays; the next move leaves it.
   // C: the tool moves back to (40,0) in the G40 block.
   add("cancel_a_without_motion", "cancel type A in a block without motion",
@@ -351,6 +402,11 @@ std::vector<GoldenCase> makeCases() {
       },
       "1: R -20.000 0.000\n2: L 0.000 5.000\n3: L 36.464 3.536\n4: L 35.000 30.000\n"
       "5: L 40.000 40.000\n");
+  // I1 J1 in a block without motion after A: it sets A's end vector, (36.464,3.536).
+  add("ij_vector_without_motion", "an I J vector in a block without motion",
+      [] { return leadInLine().vector(1, 1).still().line(40, 30).cancel().line(40, 40); },
+      "1: R -20.000 0.000\n2: L 0.000 5.000\n3: L 36.464 3.536\n5: L 35.000 30.000\n"
+      "6: L 40.000 40.000\n");
   // G38 on the move down to (40,-30): the corner before it is turned as usual (A ends at the
   // intersection (45,5)) and the G38 move keeps that vector (5,5) to its end: (45,-25); the
   // next move (to (70,-30), an inner corner) starts there and ends at (70,-25).

@@ -3,6 +3,7 @@
 // changes of side and radius, temporary cancel, robustness) against its hand-worked moves and
 // diagnostics; and the cases whose result is not only the plane's points (helix, feed).
 #include <cmath>
+#include <tuple>
 #include <variant>
 
 #include "compensation_harness.h"
@@ -94,6 +95,30 @@ TEST(CompensationGolden, PerMinuteFeedIsNotScaled) {
   ASSERT_EQ(out.size(), 4u);
   EXPECT_EQ(std::get<ir::Linear>(out[2].ops.at(0)).feed, 400.0);
   EXPECT_EQ(std::get<ir::Linear>(out[3].ops.at(0)).feed, 30.0);
+}
+
+TEST(CompensationGolden, TheAlarmsAreTheDialects) {
+  // The groove of the golden case (interference at line 5), and the line into the ccw arc of
+  // la_inner with r = 12: the offset circle's radius 20 - 12 = 8 never reaches y = 12 (no
+  // intersection at line 4).
+  for (const auto& [dialect, interference, no_intersection] :
+       {std::tuple{Dialect::FanucM, "PS0041", "PS0033"}, std::tuple{Dialect::MazakM, "837", "836"},
+        std::tuple{Dialect::SiemensIsoM, "NCC2127", "NCC2126"}}) {
+    CompProgram groove(dialect);
+    groove.rapid(-10, 10).side(Side::Left, 5).line(0, 0).line(20, 0).line(20, -10).line(23, -10)
+        .line(23, 0).line(40, 0).cancel().line(50, 10);
+    groove.run();
+    ASSERT_EQ(groove.diagnostics().diagnostics().size(), 1u);
+    EXPECT_EQ(groove.diagnostics().diagnostics()[0].code, interference);
+    EXPECT_EQ(groove.diagnostics().diagnostics()[0].location.line, 5u);
+    CompProgram miss(dialect);
+    miss.rapid(-20, 0).side(Side::Left, 12).line(0, 0).line(40, 0).arc(20, 20, 20, 0, false)
+        .cancel().line(10, 20);
+    miss.run();
+    ASSERT_EQ(miss.diagnostics().diagnostics().size(), 1u);
+    EXPECT_EQ(miss.diagnostics().diagnostics()[0].code, no_intersection);
+    EXPECT_EQ(miss.diagnostics().diagnostics()[0].location.line, 4u);
+  }
 }
 
 TEST(CompensationGolden, ANegativeRadiusIsTheOtherSide) {
