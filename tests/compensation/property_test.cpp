@@ -1,7 +1,8 @@
 // Property tests of cutter radius compensation on random contours (seeds fixed and printed):
 //  (a) closed contours of lines and arcs that leave room for the tool (convex polygons whose
-//      edges are lines or shallow arcs, every corner a left turn of 10..150 degrees; G41 puts
-//      the tool inside, every corner inner; G42 outside, every corner outer): each compensated
+//      edges are lines or shallow arcs, every corner a left turn of 10..150 degrees, or convex
+//      polygons whose corners are rounded by fillets larger than the tool; G41 puts the tool
+//      inside, every sharp corner inner; G42 outside, every sharp corner outer): each compensated
 //      move keeps the offset distance from the element it offsets (1e-9 mm), every point of
 //      the path keeps at least that distance from the whole contour, and the corner moves
 //      follow the stated rules (closed forms written here, not the pass's geometry);
@@ -167,6 +168,52 @@ std::vector<Elem> randomContour(std::mt19937_64& rng) {
   }
 }
 
+// A random convex polygon of lines whose corners are rounded by counterclockwise fillets of
+// radius rho (tangent corners: line, arc, line); rho > `least` so a tool inside fits them.
+std::vector<Elem> roundedContour(std::mt19937_64& rng, double least) {
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  for (;;) {
+    const int n = 3 + static_cast<int>(u(rng) * 6);
+    const double radius = 30 + 30 * u(rng);
+    std::vector<double> angles;
+    for (int i = 0; i < n; ++i) angles.push_back(2 * kPi * u(rng));
+    std::sort(angles.begin(), angles.end());
+    std::vector<P2> v;
+    for (double a : angles) v.push_back({radius * std::cos(a), radius * std::sin(a)});
+    // Each corner's fillet: tangent length t = rho tan(phi / 2) along both edges.
+    std::vector<double> rho(n), t(n);
+    bool ok = true;
+    for (int i = 0; i < n; ++i) {
+      const P2 d1 = unit(v[i] - v[(i + n - 1) % n]), d2 = unit(v[(i + 1) % n] - v[i]);
+      const double phi = std::atan2(crs(d1, d2), dot(d1, d2));
+      if (phi < 10 * kPi / 180 || phi > 150 * kPi / 180) ok = false;
+      rho[i] = least + 0.1 + u(rng) * 10;
+      t[i] = rho[i] * std::tan(phi / 2);
+    }
+    for (int i = 0; i < n && ok; ++i)
+      if (t[i] + t[(i + 1) % n] > dist(v[i], v[(i + 1) % n]) - 5) ok = false;
+    if (!ok) continue;
+    std::vector<Elem> c;
+    for (int i = 0; i < n; ++i) {
+      const int j = (i + 1) % n;
+      const P2 d = unit(v[j] - v[i]);
+      Elem line;
+      line.s = v[i] + d * t[i];
+      line.e = v[j] - d * t[j];
+      c.push_back(line);
+      // The fillet at v[j], from line.e to the next edge's tangent point, about line.e + rho n.
+      const P2 d2 = unit(v[(j + 1) % n] - v[j]);
+      Elem fillet;
+      fillet.arc = true;
+      fillet.s = line.e;
+      fillet.e = v[j] + d2 * t[j];
+      fillet.c = line.e + left(d) * rho[j];
+      c.push_back(fillet);
+    }
+    return c;
+  }
+}
+
 struct Run {
   CompProgram program;
   std::vector<Move> moves;
@@ -196,17 +243,26 @@ TEST(CompensationProperty, ContoursWithRoomForTheToolKeepTheOffsetDistanceAndThe
   std::printf("CompensationProperty seed %llu\n", static_cast<unsigned long long>(seed));
   std::mt19937_64 rng(seed);
   std::uniform_real_distribution<double> u(0.0, 1.0);
-  int checked_moves = 0, inner = 0, outer_linear = 0, outer_arc = 0;
+  int checked_moves = 0, inner = 0, outer_linear = 0, outer_arc = 0, tangent = 0;
   for (int trial = 0; trial < 300; ++trial) {
-    const std::vector<Elem> contour = randomContour(rng);
-    double shortest = 1e9;
-    for (const Elem& el : contour) shortest = std::min(shortest, dist(el.s, el.e));
-    const double r = 0.3 + u(rng) * (shortest / 10 - 0.3);
+    // Every third contour has rounded (tangent) corners; the tool is smaller than the fillets.
+    const bool rounded = trial % 3 == 2;
+    double r = 0.0;
+    std::vector<Elem> contour;
+    if (rounded) {
+      r = 0.3 + u(rng) * 4;
+      contour = roundedContour(rng, r);
+    } else {
+      contour = randomContour(rng);
+      double shortest = 1e9;
+      for (const Elem& el : contour) shortest = std::min(shortest, dist(el.s, el.e));
+      r = 0.3 + u(rng) * (shortest / 10 - 0.3);
+    }
     const bool inside = trial % 2 == 0;
     const bool arc_corners = trial % 4 >= 2;
     const Side side = inside ? Side::Left : Side::Right;
     SCOPED_TRACE(::testing::Message() << "seed " << seed << " trial " << trial << " r " << r
-                                      << (inside ? " G41" : " G42")
+                                      << (inside ? " G41" : " G42") << (rounded ? " rounded" : "")
                                       << (arc_corners ? " arc corners" : ""));
     CompProgram p = programOf(contour, side, r, arc_corners);
     const std::vector<ir::Block> out = p.runBlocks();
@@ -258,6 +314,13 @@ TEST(CompensationProperty, ContoursWithRoomForTheToolKeepTheOffsetDistanceAndThe
       const P2 P = el.e, d1 = el.tangent(el.e), d2 = next.tangent(next.s);
       const P2 m1 = left(d1) * w, m2 = left(d2) * w;  // the offset vectors
       const std::vector<Move> corner(mine.begin() + 1, mine.end());
+      if (std::fabs(crs(d1, d2)) < 1e-12 && dot(d1, d2) > 0) {
+        // Tangent: the moves meet at P + m1 = P + m2, no corner move.
+        ++tangent;
+        EXPECT_TRUE(corner.empty()) << "element " << i;
+        EXPECT_LT(dist(main.to, P + m1), kTol) << "element " << i;
+        continue;
+      }
       if (inside) {
         // Inner: the offset curves meet; no corner move.
         ++inner;
@@ -303,6 +366,7 @@ TEST(CompensationProperty, ContoursWithRoomForTheToolKeepTheOffsetDistanceAndThe
   EXPECT_GT(inner, 100);
   EXPECT_GT(outer_linear, 100);
   EXPECT_GT(outer_arc, 100);
+  EXPECT_GT(tangent, 500);
   EXPECT_GT(checked_moves, 1000);
 }
 
