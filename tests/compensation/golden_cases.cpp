@@ -463,6 +463,20 @@ std::vector<GoldenCase> makeCases() {
       [] { return leadInLine().side(Side::Left, 8).line(80, 0).cancel().line(90, 0); },
       "1: R -20.000 0.000\n2: L 0.000 5.000\n3: L 40.000 5.000\n4: L 80.000 8.000\n"
       "5: L 90.000 0.000\n");
+  // G41 -> G42 into the clockwise arc about (20,0) (G42 on a cw arc: towards the centre, radius
+  // 15): y = 5 meets it at (20 + sqrt(15^2 - 5^2), 5) = (34.142,5); the arc ends at
+  // (20,-20) - 5 n(-1,0) = (20,-15).
+  add("side_change_into_arc", "G41 to G42 into an arc",
+      [] { return leadInLine().side(Side::Right, 5).arc(20, -20, 20, 0, true).cancel().line(10, -20); },
+      "1: R -20.000 0.000\n2: L 0.000 5.000\n3: L 34.142 5.000\n4: A 20.000 -15.000 20.000 0.000 cw\n"
+      "5: L 10.000 -20.000\n");
+  // D 5 -> 8 on the tangent arc of la_tangent: an arc takes the new radius at once (radius
+  // 20 - 8 = 12 about (40,20)), after a step from (40,5) to (40,8) at the corner; it ends at
+  // (60,20) + 8 n(0,1) = (52,20).
+  add("radius_change_into_arc", "a new radius on an arc",
+      [] { return leadInLine().side(Side::Left, 8).arc(60, 20, 40, 20, false).cancel().line(60, 30); },
+      "1: R -20.000 0.000\n2: L 0.000 5.000\n3: L 40.000 5.000\n3: L 40.000 8.000\n"
+      "4: A 52.000 20.000 40.000 20.000 ccw\n5: L 60.000 30.000\n");
   // A machine-space move (G53/G28's last leg) after A: A ends perpendicular (40,5), the move
   // runs to its programmed point, and the next move takes the vector up from there: it ends at
   // (80,50) + 5 (0,1) = (80,55).
