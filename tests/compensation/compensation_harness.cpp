@@ -39,6 +39,7 @@ ir::Block CompProgram::next(ir::Operation op) {
   ir::Block b;
   b.loc = SourceLocation{1, static_cast<uint32_t>(blocks_.size() + 1), 1};
   b.ops.push_back(std::move(op));
+  b.modal.feed_mode = feed_mode_;
   if (on_ || cancelling_) {
     ir::CutterComp c = settings_;
     c.side = side_;
@@ -47,6 +48,7 @@ ir::Block CompProgram::next(ir::Operation op) {
     c.side_commanded = commanded_;
     c.special = next_.special;
     c.vector = next_.vector;
+    c.suspended = next_.suspended;
     b.comp = c;
     if (side_ == ir::CutterComp::Side::Off) on_ = cancelling_ = false;
   }
@@ -104,7 +106,8 @@ std::string movesText(const std::vector<ir::Block>& blocks) {
         absl::StrAppend(&out, at, "L ", num(l->to[0]), " ", num(l->to[1]), "\n");
       else if (const auto* a = std::get_if<ir::Arc>(&op))
         absl::StrAppend(&out, at, "A ", num(a->to[0]), " ", num(a->to[1]), " ", num(a->center[0]),
-                        " ", num(a->center[1]), a->clockwise ? " cw" : " ccw", "\n");
+                        " ", num(a->center[1]), a->clockwise ? " cw" : " ccw",
+                        std::abs(a->to[2]) >= 5e-4 ? absl::StrCat(" z", num(a->to[2])) : "", "\n");
     }
   return out;
 }

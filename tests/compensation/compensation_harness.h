@@ -21,6 +21,10 @@ class CompProgram {
   // The next block's special, vector or hole-cycle suspension.
   CompProgram& special(ir::CutterComp::Special s) { next_.special = s; return *this; }
   CompProgram& vector(double i, double j) { next_.vector = std::array<double, 3>{i, j, 0}; return *this; }
+  // The next block is a hole cycle's (its moves run on the programmed points).
+  CompProgram& suspend() { next_.suspended = true; return *this; }
+  // G93/G94/G95 for the blocks after.
+  CompProgram& feedMode(ir::FeedMode mode) { feed_mode_ = mode; return *this; }
   CompProgram& rapid(double x, double y, double z = 0.0);
   CompProgram& line(double x, double y, double z = 0.0, double feed = 100.0);
   CompProgram& arc(double x, double y, double cx, double cy, bool clockwise, double z = 0.0);
@@ -29,10 +33,13 @@ class CompProgram {
   CompProgram& machineRapid(double x, double y, double z = 0.0);
 
   // The moves out of the pass, one per line: "R x y", "L x y", "A x y cx cy cw|ccw" (plane
-  // coordinates, 3 decimals), each prefixed with the source line of its block.
+  // coordinates, 3 decimals; an arc's " zZ" if it ends off Z = 0), each prefixed with the
+  // source line of its block.
   std::string run();
   const DiagnosticEngine& diagnostics() const { return diags_; }
   std::vector<ir::Block> runBlocks();
+  // The blocks as programmed (the pass's input).
+  const std::vector<ir::Block>& input() const { return blocks_; }
 
  private:
   ir::Block next(ir::Operation op);
@@ -44,7 +51,9 @@ class CompProgram {
   struct Next {
     ir::CutterComp::Special special = ir::CutterComp::Special::None;
     std::optional<std::array<double, 3>> vector;
+    bool suspended = false;
   } next_;
+  ir::FeedMode feed_mode_ = ir::FeedMode::PerMinute;
   std::vector<ir::Block> blocks_;
   DiagnosticEngine diags_;
 };

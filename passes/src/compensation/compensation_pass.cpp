@@ -369,11 +369,13 @@ void CompensationPass::admit(uint64_t n, size_t i, const AxisValues& start, cons
     if (d.norm() > kLengthTolerance)
       b.fixed_end = b.e.end + comp::leftNormal(d.normalized()) * b.w;
   }
-  // An arc starts on its offset circle: from a vector off it, a line to perpendicular there.
-  if (b.e.arc &&
-      std::fabs((b.comp_start - b.e.centre).norm() - comp::offsetRadius(b.e, b.w)) > 1e-7) {
+  // An arc starts on its offset circle: a line there from a vector that is not (an inner
+  // corner's intersection is on it already, and stays where it is).
+  if (b.e.arc) {
     const Vec2 on = b.e.start + comp::leftNormal(b.e.startDirection()) * b.w;
-    {
+    const double off_circle =
+        std::fabs((b.comp_start - b.e.centre).norm() - comp::offsetRadius(b.e, b.w));
+    if (off_circle > 1e-7) {
       ir::Linear line;
       const auto& arc = std::get<ir::Arc>(block.ops[i]);
       line.feed = arc.feed;
@@ -673,6 +675,12 @@ void CompensationPass::cancel(uint64_t n, size_t i, const AxisValues& start,
     }
   }
   close(path, a.ref.block);
+  if (failed_) return;
+  // Inverse time feed: the G40 move starts off its programmed start and keeps its time too.
+  const double programmed = distance(start, end);
+  const double length = distance(withPlane(start, a.comp, path.b_start()), end);
+  if (block.modal.feed_mode == ir::FeedMode::InverseTime && programmed > kLengthTolerance)
+    if (auto* line = std::get_if<ir::Linear>(&at(n).block.ops[i])) line->feed *= length / programmed;
   open_.reset();
 }
 
