@@ -407,15 +407,16 @@ std::vector<GoldenCase> makeCases() {
       [] { return leadInLine().vector(1, 1).still().line(40, 30).cancel().line(40, 40); },
       "1: R -20.000 0.000\n2: L 0.000 5.000\n3: L 36.464 3.536\n5: L 35.000 30.000\n"
       "6: L 40.000 40.000\n");
-  // G38 on the move down to (40,-30): the corner before it is turned as usual (A ends at the
-  // intersection (45,5)) and the G38 move keeps that vector (5,5) to its end: (45,-25); the
-  // next move (to (70,-30), an inner corner) starts there and ends at (70,-25).
+  // G38 on the move down to (40,-30): the block before it ends perpendicular to itself (FANUC
+  // §5.5: "G38 の 1 つ前のブロックの終点において、そのブロックに垂直なベクトル"), (40,5), and
+  // the G38 move keeps that vector (0,5) to its end: (40,-25); the next move (to (70,-30))
+  // starts there and ends at its corner with the cancel, (70,-25).
   add("g38_vector_hold", "G38 holds the vector",
       [] {
         return leadInLine().special(Special::VectorHold).line(40, -30).line(70, -30).cancel()
             .line(80, -30);
       },
-      "1: R -20.000 0.000\n2: L 0.000 5.000\n3: L 45.000 5.000\n4: L 45.000 -25.000\n"
+      "1: R -20.000 0.000\n2: L 0.000 5.000\n3: L 40.000 5.000\n4: L 40.000 -25.000\n"
       "5: L 70.000 -25.000\n6: L 80.000 -30.000\n");
 
   // ---- Blocks without motion in the plane (the limit: 1 by default).

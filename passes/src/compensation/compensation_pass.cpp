@@ -404,6 +404,9 @@ void CompensationPass::join(Open& b) {
     path.a_end = *a.fixed_end;
   } else if (given_vector_) {
     path.a_end = p + *given_vector_;
+  } else if (b.comp.special == ir::CutterComp::Special::VectorHold) {
+    // G38: the block before ends perpendicular to itself, and G38 keeps that vector (FANUC §5.5).
+    path.a_end = p + comp::leftNormal(a.e.endDirection()) * a.w;
   } else if (corner_arc_) {
     // G39: an arc of the offset radius about the corner, to perpendicular to the next move
     // (or to I J), in the G39 block.
@@ -412,6 +415,14 @@ void CompensationPass::join(Open& b) {
                         ? Vec2(corner_arc_vector_->normalized())
                         : b.e.startDirection();
     path.a_end = p + n1 * a.w;
+    const ir::Block& g39 = at(*corner_arc_).block;
+    if (std::holds_alternative<ir::Rapid>(at(a.ref.block).block.ops[a.ref.op]) &&
+        g39.modal.feed <= 0) {
+      fail(Alarm::FeedMissing, g39.loc,
+           "no feed rate: G39's corner arc after G00 runs at the modal F, and none has been "
+           "programmed");
+      return;
+    }
     const Vec2 to = p + comp::leftNormal(d2) * a.w;
     if ((to - path.a_end).norm() > kLengthTolerance)
       path.connectors.push_back({true, to, p, a.w > 0});
@@ -590,7 +601,7 @@ ir::Operation CompensationPass::connector(const Open& a, const Connector& c,
                                           const ir::Block& in) {
   const ir::Operation& op = at(a.ref.block).block.ops[a.ref.op];
   const AxisValues to = withPlane(a.end, a.comp, c.to);
-  if (const auto* r = std::get_if<ir::Rapid>(&op)) {
+  if (const auto* r = std::get_if<ir::Rapid>(&op); r && !c.arc) {
     ir::Rapid out = *r;
     out.to = fromCommon(in, to, ir::Space::Work);
     out.space = ir::Space::Work;
@@ -600,6 +611,11 @@ ir::Operation CompensationPass::connector(const Open& a, const Connector& c,
   bool per_rev = false;
   if (const auto* l = std::get_if<ir::Linear>(&op)) feed = l->feed, per_rev = l->feed_per_rev;
   if (const auto* arc = std::get_if<ir::Arc>(&op)) feed = arc->feed, per_rev = arc->feed_per_rev;
+  if (std::holds_alternative<ir::Rapid>(op)) {
+    // G39's arc after G00 runs at the modal F (FANUC §5.6: "the previous F, even in G00").
+    feed = in.modal.feed;
+    per_rev = in.modal.feed_mode == ir::FeedMode::PerRevolution;
+  }
   if (!c.arc) {
     ir::Linear out;
     out.to = fromCommon(in, to, ir::Space::Work);
