@@ -162,6 +162,52 @@ class MacroCompensation(ScratchDirTest):
                 self.assertAlmostEqual(m["center"]["Y"], 0.0, places=9)
 
 
+class SelyaevMacros(ScratchDirTest):
+    """selyaev-1 and -2 each carry one fault of their own, which a FANUC 0i-MD rejects too; with
+    that one character or variable corrected they run to the end (their G41 included)."""
+
+    def copy_folder(self):
+        import shutil
+        for name in os.listdir(CORPUS):
+            if name.startswith("selyaev-"):
+                shutil.copy(os.path.join(CORPUS, name), self.dir)
+
+    def run_here(self, program):
+        return subprocess.run([NCC, "run", program, "--dialect", "fanuc-m", "--emit=summary"],
+                              capture_output=True, text=True, timeout=120, cwd=self.dir)
+
+    def test_selyaev_1_stops_at_its_impossible_corner_arc(self):
+        # O3001 line 47: #621=#610+#18 (the right side plus R) where the left side plus R
+        # (#620+#18) is meant: the G2 ... R#18 of line 66 then joins points 104.6 mm apart with
+        # R0.2: PS0020, at the R word of the called program.
+        self.copy_folder()
+        proc = self.run_here("selyaev-1.nc")
+        self.assertEqual(proc.returncode, 1)
+        self.assertIn("selyaev-3001.nc:66:13: error[PS0020]: no arc of radius 0.200 joins the "
+                      "start and end points 104.600 apart", proc.stderr)
+        with open(os.path.join(self.dir, "selyaev-3001.nc")) as f:
+            text = f.read()
+        with open(os.path.join(self.dir, "selyaev-3001.nc"), "w") as f:
+            f.write(text.replace("#621=#610+#18;", "#621=#620+#18;"))
+        proc = self.run_here("selyaev-1.nc")
+        self.assertEqual(proc.returncode, 0, proc.stderr)
+        self.assertIn("status             completed", proc.stdout)
+
+    def test_selyaev_2_stops_at_its_colon(self):
+        # Line 15 ends "#1=#1-#11:" - a colon (the ISO program-number address) for the ';'.
+        self.copy_folder()
+        proc = self.run_here("selyaev-2.nc")
+        self.assertEqual(proc.returncode, 1)
+        self.assertIn("selyaev-2.nc:15:11: error[NCC1010]", proc.stderr)
+        with open(os.path.join(self.dir, "selyaev-2.nc")) as f:
+            text = f.read()
+        with open(os.path.join(self.dir, "selyaev-2.nc"), "w") as f:
+            f.write(text.replace("#1=#1-#11:", "#1=#1-#11;"))
+        proc = self.run_here("selyaev-2.nc")
+        self.assertEqual(proc.returncode, 0, proc.stderr)
+        self.assertIn("status             completed", proc.stdout)
+
+
 if __name__ == "__main__":
     NCC = sys.argv.pop(1)
     unittest.main()
