@@ -439,13 +439,17 @@ void CompensationPass::join(Open& b) {
                            " plane before this move (at most ", a.comp.max_without_motion,
                            " keep the corner): the controller stops perpendicular to the move "
                            "before them");
-    if (kind == comp::CornerKind::Inner) {
+    // Only where the perpendicular vector differs from the corner's: not on a straight
+    // continuation, not without an offset.
+    const bool matters = kind != comp::CornerKind::Straight && (a.w != 0 || wb != 0);
+    if (matters && kind == comp::CornerKind::Inner) {
       fail(Alarm::CompWithoutMotion, bb.loc,
            absl::StrCat(what, ", and this inner corner would be cut into"));
       return;
     }
-    diags_.warning(std::string(table_->alarm(Alarm::CompWithoutMotion)), bb.loc,
-                   absl::StrCat(what, ": this corner is left uncut"));
+    if (matters)
+      diags_.warning(std::string(table_->alarm(Alarm::CompWithoutMotion)), bb.loc,
+                     absl::StrCat(what, ": this corner is left uncut"));
     path = comp::perpendicularPath(a.e, a.w, b.e, wb);
   } else {
     comp::CornerRules rules;
