@@ -119,7 +119,7 @@ std::vector<ParamSpec> buildRegistry() {
                        "3-D tool radius compensation: length of (I,J,K) used instead of its "
                        "computed length; 0: computed (F11)")
                       .range(0, kInf));
-  specs.push_back(Spec("corner_move_limit", T::Number, "fanuc-t", "0", 0.0,
+  specs.push_back(Spec("corner_move_limit", T::Number, kIso, "0", 0.0,
                        "Cutter/nose compensation: corner moves shorter than this are dropped, mm "
                        "(FANUC No.5010)")
                       .range(0, kInf));
@@ -204,8 +204,9 @@ std::vector<ParamSpec> buildRegistry() {
   specs.push_back(Spec("input_unit_x10", T::Bool, "mazak-m", "false", false,
                        "Coordinates without a decimal point are in 0.01 mm (F91 bit 0 = 1); "
                        "H/D offset values are not affected"));
-  specs.push_back(Spec("interference_check", T::Bool, "fanuc-t", "true", true,
-                       "Cutter/nose compensation interference check on (FANUC No.5008#3 = 0)"));
+  specs.push_back(Spec("interference_check", T::Bool, kIso, "true", true,
+                       "Cutter/nose compensation interference check on (FANUC No.5008#3 = 0, "
+                       "Mazak F92 bit 5 = 0: an interference is an alarm)"));
   specs.push_back(Spec("m_code_macros", T::StringTable, kIso, "{} (none)",
                        ParamStringTable{},
                        "M codes that call a macro program with the block's words as G65 "
@@ -230,10 +231,13 @@ std::vector<ParamSpec> buildRegistry() {
   specs.push_back(Spec("offset_number_digits", T::Integer, "fanuc-t", "2", 2.0,
                        "How many low digits of T are the offset number (FANUC No.5028)")
                       .range(0, 3));
-  specs.push_back(Spec("outer_corner_connection", T::String, "fanuc-t", "\"linear\"",
-                       std::string("linear"),
+  // The defaults of the compensation keys are the dialect's (CompRules, docs/semantics.md);
+  // the values here are the registry's placeholders.
+  specs.push_back(Spec("outer_corner_connection", T::String, kIso,
+                       "\"linear\"; \"arc\" in siemens-iso-m (G450)", std::string("linear"),
                        "Cutter/nose compensation outer-corner connection: \"linear\" "
-                       "(intersection lines) or \"arc\" (FANUC CCC)")
+                       "(intersection lines) or \"arc\" (FANUC CCC, Siemens G450 transition "
+                       "circle)")
                       .oneOf({"linear", "arc"}));
   specs.push_back(Spec("parallel_axes", T::AxisNameTable, "siemens-iso-m", "{} (none)",
                        ParamStringTable{},
@@ -341,8 +345,9 @@ std::vector<ParamSpec> buildRegistry() {
                        "min_travel / max_travel"));
   specs.push_back(Spec("spindle_encoder", T::Bool, "siemens-din", "true", true,
                        "The spindle has an encoder (CYCLE97 and tapping need it)"));
-  specs.push_back(Spec("startup_type", T::String, "fanuc-t", "\"A\"", std::string("A"),
-                       "Cutter/nose compensation start-up and cancel type: \"A\", \"B\" or \"C\"")
+  specs.push_back(Spec("startup_type", T::String, kIso, "\"A\"", std::string("A"),
+                       "Cutter/nose compensation start-up and cancel type: \"A\", \"B\" or \"C\" "
+                       "(FANUC SUV/SUP No.5003, Mazak F92 bit 4: 0 = A, 1 = B)")
                       .oneOf({"A", "B", "C"}));
   specs.push_back(Spec("t_code_digits", T::Integer, "fanuc-t", "4", 4.0,
                        "Digits in a T word (FANUC No.3032)")
@@ -357,9 +362,12 @@ std::vector<ParamSpec> buildRegistry() {
                       .oneOf({"rigid", "floating", "high_speed_peck", "peck"}));
   specs.push_back(Spec("thread_chamfer_signal", T::Bool, "fanuc-t", "false", false,
                        "Thread chamfering (chamfer-out) at the end of G92/G76 on (signal CDZ)"));
-  specs.push_back(Spec("tnrc_lookahead_blocks", T::Integer, "fanuc-t", "3", 3.0,
-                       "Cutter/nose compensation look-ahead depth in blocks (FANUC No.19625)")
-                      .range(3, 8));
+  specs.push_back(Spec("tnrc_lookahead_blocks", T::Integer, kIso,
+                       "3; 5 in mazak-m, 2 in siemens-iso-m", 3.0,
+                       "Cutter/nose compensation look-ahead depth in blocks (FANUC No.19625, "
+                       "3-8); in fanuc-m it also sets how many blocks without motion in the "
+                       "plane keep the corner (the depth - 2)")
+                      .range(2, 8));
   specs.push_back(Spec("tool_length_mode", T::String, "siemens-iso-m", "\"A\"", std::string("A"),
                        "G43/G44 mode (MD20380 TOOL_CORR_MODE_G43G44 = 0, 1, 2): \"A\" H acts on "
                        "Z, \"B\" on the axis normal to the plane, \"C\" on the axis programmed")
@@ -381,17 +389,17 @@ std::vector<ParamSpec> buildRegistry() {
   // gets warning NCC0307. Every other key is applied in every dialect.
   static constexpr std::string_view kNotApplied[] = {
       "base_frames", "c_axis_clamp_m_code", "c_axis_unclamp_dwell",
-      "chamfer_address", "comp3d_normal_length", "corner_move_limit",
+      "chamfer_address",
       "cutting_edge_default", "cycle_safety_clearance", "drawing_dimension_input",
       "fs15_program_format", "g10_geometry_p_limit",
       "gcode_system", "geometry_number_from_tool_select", "geometry_offset_method",
-      "geometry_wear_offsets", "index_table_1", "indexing_axes", "interference_check",
-      "machine_unit", "offset_applied_at", "offset_number_digits", "outer_corner_connection",
+      "geometry_wear_offsets", "index_table_1", "indexing_axes",
+      "machine_unit", "offset_applied_at", "offset_number_digits",
       "parallel_axes", "peck_cycle_type", "reset_feed_mode",
       "rigid_tap_retract_override", "rough_finish_pass_type1",
       "rough_finish_pass_type2", "second_geometry_axes",
-      "spindle_encoder", "startup_type", "t_code_digits",
-      "thread_chamfer_signal", "tnrc_lookahead_blocks", "wear_offset_method"};
+      "spindle_encoder", "t_code_digits",
+      "thread_chamfer_signal", "wear_offset_method"};
   // The hole-cycle keys act in the mill dialects' cycles (docs/cycles.md), not yet in fanuc-t.
   static constexpr std::string_view kMillCycles[] = {"boring_shift_direction", "peck_clearance",
                                                      "peck_return", "tap_retract_percent",
@@ -400,7 +408,15 @@ std::vector<ParamSpec> buildRegistry() {
   static constexpr std::string_view kMillTransforms[] = {
       "default_rotation_angle", "default_scale_factor", "rotation_angle_incremental",
       "scale_factor_unit", "scale_per_axis"};
+  // The cutter compensation keys: lowering records them for the compensation pass in the mill
+  // dialects (docs/semantics.md); fanuc-t's nose radius compensation is not built yet.
+  static constexpr std::string_view kMillComp[] = {"comp3d_normal_length", "corner_move_limit",
+                                                   "interference_check", "outer_corner_connection",
+                                                   "startup_type", "tnrc_lookahead_blocks"};
   for (ParamSpec& spec : out) {
+    if (std::find(std::begin(kMillComp), std::end(kMillComp), spec.key) != std::end(kMillComp))
+      spec.applied_in = spec.key == "comp3d_normal_length" ? "mazak-m"
+                                                            : "fanuc-m, mazak-m, siemens-iso-m";
     if (std::find(std::begin(kMillTransforms), std::end(kMillTransforms), spec.key) !=
         std::end(kMillTransforms))
       spec.applied_in = spec.key == "rotation_angle_incremental" ? "fanuc-m" : spec.dialects;

@@ -105,10 +105,22 @@ class Decoder {
       out_.exact_stop = g;
       return;
     }
-    if (e->group == GGroup::OneShot) {
-      if (out_.one_shot) {
+    if (e->action == GAction::CompVectorHold || e->action == GAction::CompCornerArc) {
+      if (out_.comp_special || out_.one_shot) {
+        const GWord& other = out_.comp_special ? *out_.comp_special : *out_.one_shot;
         fail(Alarm::OneShotConflict, w.loc,
-             absl::StrCat(gCodeName(e->code10), " and ", gCodeName(out_.one_shot->entry->code10),
+             absl::StrCat(gCodeName(e->code10), " and ", gCodeName(other.entry->code10),
+                          " cannot be given in one block"));
+        return;
+      }
+      out_.comp_special = g;
+      return;
+    }
+    if (e->group == GGroup::OneShot) {
+      if (out_.one_shot || out_.comp_special) {
+        const GWord& other = out_.one_shot ? *out_.one_shot : *out_.comp_special;
+        fail(Alarm::OneShotConflict, w.loc,
+             absl::StrCat(gCodeName(e->code10), " and ", gCodeName(other.entry->code10),
                           " cannot be given in one block"));
         return;
       }

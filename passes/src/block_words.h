@@ -38,6 +38,9 @@ struct DecodedBlock {
   std::array<std::optional<GWord>, static_cast<size_t>(GGroup::Other) + 1> modal;
   std::optional<GWord> one_shot;  // G04 G10 G27 G28 G30 G52 G53 G92 G92.1
   std::optional<GWord> exact_stop;  // G09
+  // G38 / G39 (cutter compensation, one-shot): the block's move (G38) or its lack (G39) is
+  // lowered as usual, so they are kept apart from `one_shot`.
+  std::optional<GWord> comp_special;
   std::array<std::optional<WordValue>, kMaxAxes> axes;
   std::optional<WordValue> i, j, k, r, f, s, h, d, p, l, q;
   std::vector<WordValue> t, m;

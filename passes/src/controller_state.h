@@ -89,6 +89,21 @@ struct TransformState {
   bool mirrorsAny() const { return mirrored[0] || mirrored[1] || mirrored[2]; }
 };
 
+// Cutter radius compensation in force (lowering_cutter_comp.cpp): what the next block's
+// ir::CutterComp starts from. The D number is ControllerState::d_selected; its radius is read
+// from the offset tables at each block, so a G10 write is seen from its own block on.
+struct CompState {
+  ir::CutterComp::Side side = ir::CutterComp::Side::Off;  // G40 at power-on, reset, M02/M30
+  // Blocks compensated since the start-up block (1 = the start-up block itself): a side change
+  // in the first two is CompSideChangeEarly where the dialect says so.
+  int blocks = 0;
+  // Mazak 3-D compensation: the start-up's (I,J,K) / |I,J,K| (comp3d_normal_length in place
+  // of |I,J,K| when set), negated for G42; the offset is the radius x this, fixed until G40/D00.
+  std::optional<std::array<double, 3>> direction_3d;
+
+  bool active() const { return side != ir::CutterComp::Side::Off; }
+};
+
 struct ControllerState {
   ir::Modal modal;
   GAction motion = GAction::Rapid;     // group 01
@@ -121,6 +136,7 @@ struct ControllerState {
   // (lowering_skip.cpp).
   AxisMask skip_axes = 0;
   bool polar = false;                  // G16 in force (group 17; lowering_polar.cpp)
+  CompState comp;                      // G40/G41/G42 (group 07)
 };
 
 struct OffsetTables {

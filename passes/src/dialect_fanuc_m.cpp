@@ -23,7 +23,8 @@ constexpr GCodeEntry kCodes[] = {
     {300, G::OneShot, 0, false, A::ReferenceReturnN, 0, "2nd/3rd/4th reference position return"},
     {310, G::OneShot, 0, false, A::Skip, 0, "skip function"},
     {370, G::OneShot, 0, false, A::NotSupported, 0, "automatic tool length measurement"},
-    {390, G::OneShot, 0, false, A::NotSupported, 0, "corner circular interpolation"},
+    {380, G::OneShot, 0, false, A::CompVectorHold, 0, "cutter compensation vector hold"},
+    {390, G::OneShot, 0, false, A::CompCornerArc, 0, "corner circular interpolation"},
     {450, G::OneShot, 0, false, A::NotSupported, 0, "tool position offset"},
     {460, G::OneShot, 0, false, A::NotSupported, 0, "tool position offset"},
     {470, G::OneShot, 0, false, A::NotSupported, 0, "tool position offset"},
@@ -58,9 +59,9 @@ constexpr GCodeEntry kCodes[] = {
     {200, G::Units, 6, false, A::Inch, 0, "inch input"},
     {210, G::Units, 6, true, A::Metric, 0, "metric input"},
     // group 07
-    {400, G::CutterComp, 7, true, A::CancelNoEffect, 0, "cutter compensation cancel"},
-    {410, G::CutterComp, 7, false, A::NotSupported, 0, "cutter compensation left"},
-    {420, G::CutterComp, 7, false, A::NotSupported, 0, "cutter compensation right"},
+    {400, G::CutterComp, 7, true, A::CompCancel, 0, "cutter compensation cancel"},
+    {410, G::CutterComp, 7, false, A::CompLeft, 0, "cutter compensation left"},
+    {420, G::CutterComp, 7, false, A::CompRight, 0, "cutter compensation right"},
     // group 08
     {430, G::LengthComp, 8, false, A::LengthPlus, 0, "tool length compensation +"},
     {440, G::LengthComp, 8, false, A::LengthMinus, 0, "tool length compensation -"},
@@ -352,7 +353,26 @@ constexpr PolarRules kPolar{
     .corners_allowed = false,                  // ,C / ,R "cannot be specified" in G16
 };
 
+// G40/G41/G42, G38, G39 (FANUC 30i §5.3-5.6, the mill rules of the lathe manual's algorithm).
+constexpr CompRules kComp{
+    .lookahead = 3,                  // No.19625 (3-8)
+    .max_without_motion = 0,         // §5.4.3: intersection while (N - 2) >= M
+    .startup = ir::CutterComp::Startup::A,  // SUV = SUP = 0
+    .arc_corners = false,            // CCC (No.19607#2) = 0: linear
+    .side_change_early_is_error = true,   // "no G41/G42 change in the start-up block and the next"
+    .cancel_in_arc_is_error = true,  // PS0034: start-up or cancel in G02/G03
+    .reference_return_is_error = false,   // G28/G30 remove the vector for the block (§5.4)
+    .skip_is_error = true,           // PS0035
+    .d_zero_cancels = false,         // D0 is radius 0 (the lathe's T□□00 is the T word)
+    .same_side_recommand_counts = true,  // G41 in G41: the vector perpendicular to the previous block
+    .vector_with_motion = true,      // G00/G01 with I J K: the IJ-type vector
+    .vector_with_cancel = true,      // G40 X Y I J
+    .vector_with_hold = false,       // G38 IP_ only
+    .has_3d = false,                 // G41.2/G42.2 are a separate function (not supported)
+    .cycle_in_3d_is_error = false,
+};
+
 const DialectTable kFanucMTable{Dialect::FanucM, kCodes, kAlarms, kBehaviour, kSystemVariables,
-                                &kCycles, &kTransforms, &kPolar};
+                                &kCycles, &kTransforms, &kPolar, &kComp};
 
 }  // namespace ncc::passes

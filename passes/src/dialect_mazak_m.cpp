@@ -22,8 +22,8 @@ constexpr GCodeEntry kCodes[] = {
     {312, G::OneShot, 0, false, A::Skip, 0, "multi-step skip"},
     {313, G::OneShot, 0, false, A::Skip, 0, "multi-step skip"},
     {370, G::OneShot, 0, false, A::NotSupported, 0, "automatic tool length measurement"},
-    {380, G::OneShot, 0, false, A::NotSupported, 0, "tool radius compensation vector selection"},
-    {390, G::OneShot, 0, false, A::NotSupported, 0, "tool radius compensation corner arc"},
+    {380, G::OneShot, 0, false, A::CompVectorHold, 0, "tool radius compensation vector selection"},
+    {390, G::OneShot, 0, false, A::CompCornerArc, 0, "tool radius compensation corner arc"},
     {450, G::OneShot, 0, false, A::PositionOffset, 0, "tool position offset extension"},
     {460, G::OneShot, 0, false, A::PositionOffset, 0, "tool position offset reduction"},
     {470, G::OneShot, 0, false, A::PositionOffset, 0, "tool position offset double extension"},
@@ -64,9 +64,9 @@ constexpr GCodeEntry kCodes[] = {
     {200, G::Units, 6, false, A::Inch, 0, "inch data input"},
     {210, G::Units, 6, true, A::Metric, 0, "metric data input"},
     // group 07
-    {400, G::CutterComp, 7, true, A::CancelNoEffect, 0, "tool radius compensation cancel"},
-    {410, G::CutterComp, 7, false, A::NotSupported, 0, "tool radius compensation left"},
-    {420, G::CutterComp, 7, false, A::NotSupported, 0, "tool radius compensation right"},
+    {400, G::CutterComp, 7, true, A::CompCancel, 0, "tool radius compensation cancel"},
+    {410, G::CutterComp, 7, false, A::CompLeft, 0, "tool radius compensation left"},
+    {420, G::CutterComp, 7, false, A::CompRight, 0, "tool radius compensation right"},
     // group 08
     {430, G::LengthComp, 8, false, A::LengthPlus, 0, "tool length offset +"},
     {440, G::LengthComp, 8, false, A::LengthMinus, 0, "tool length offset -"},
@@ -334,7 +334,26 @@ constexpr TransformRules kTransforms{
 };
 }  // namespace
 
+// G40/G41/G42, G38, G39 (§12-4).
+constexpr CompRules kComp{
+    .lookahead = 5,                  // "after the next five blocks are read"
+    .max_without_motion = 4,         // "more than 4 blocks without motion": over- or under-cut
+    .startup = ir::CutterComp::Startup::A,  // F92 bit 4 = 0
+    .arc_corners = false,
+    .side_change_early_is_error = true,   // "not in the first and second compensated blocks"
+    .cancel_in_arc_is_error = true,  // 835: G40/D00 in an arc block
+    .reference_return_is_error = false,   // "the vector is cleared for that block"
+    .skip_is_error = true,           // G31 in compensation is an error
+    .d_zero_cancels = true,          // "cancelled by G40 or D00"
+    .same_side_recommand_counts = false,  // "G41 or G42 given in compensation is ignored"
+    .vector_with_motion = false,     // I J K with G01 only as 3-D compensation (all three)
+    .vector_with_cancel = true,      // G40 X Y I J (§12-4-3 6.)
+    .vector_with_hold = true,        // G38 I J D: a new vector direction
+    .has_3d = true,                  // G41/G42 X Y Z I J K D
+    .cycle_in_3d_is_error = true,    // 901
+};
+
 const DialectTable kMazakMTable{Dialect::MazakM, kCodes, kAlarms, kBehaviour, kSystemVariables,
-                                &kCycles, &kTransforms};
+                                &kCycles, &kTransforms, nullptr, &kComp};
 
 }  // namespace ncc::passes

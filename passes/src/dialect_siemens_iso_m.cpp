@@ -32,9 +32,9 @@ constexpr GCodeEntry kCodes[] = {
     {200, G::Units, 6, false, A::Inch, 0, "inch input"},
     {210, G::Units, 6, true, A::Metric, 0, "metric input"},
     // group 7
-    {400, G::CutterComp, 7, true, A::CancelNoEffect, 0, "cutter radius compensation cancel"},
-    {410, G::CutterComp, 7, false, A::NotSupported, 0, "cutter radius compensation left"},
-    {420, G::CutterComp, 7, false, A::NotSupported, 0, "cutter radius compensation right"},
+    {400, G::CutterComp, 7, true, A::CompCancel, 0, "cutter radius compensation cancel"},
+    {410, G::CutterComp, 7, false, A::CompLeft, 0, "cutter radius compensation left"},
+    {420, G::CutterComp, 7, false, A::CompRight, 0, "cutter radius compensation right"},
     // group 8
     {430, G::LengthComp, 8, false, A::LengthPlus, 0, "tool length compensation +"},
     {440, G::LengthComp, 8, false, A::LengthMinus, 0, "tool length compensation -"},
@@ -292,7 +292,26 @@ constexpr PolarRules kPolar{
     .corners_allowed = true,                 // §4.8.2 puts no limit; the corner is Cartesian
 };
 
+// G40/G41/G42 (§3.5.3; no G38/G39 in ISO mode).
+constexpr CompRules kComp{
+    .lookahead = 2,                  // "the NC buffers 2 blocks"
+    .max_without_motion = 2,         // "at most 2 consecutive blocks without motion in the plane"
+    .startup = ir::CutterComp::Startup::A,
+    .arc_corners = true,             // G450: the transition circle is the default
+    .side_change_early_is_error = false,  // the side changes in that block (§3.5.3)
+    .cancel_in_arc_is_error = false,  // §3.5.3 names the start-up only
+    .reference_return_is_error = true,    // §2.2: G28 in G41/G42 is an alarm
+    .skip_is_error = true,           // §3.5.3: G31 while compensating
+    .d_zero_cancels = false,         // D00 = radius 0
+    .same_side_recommand_counts = false,  // the manual gives G41 in G41 no meaning
+    .vector_with_motion = false,
+    .vector_with_cancel = false,
+    .vector_with_hold = false,
+    .has_3d = false,
+    .cycle_in_3d_is_error = false,
+};
+
 const DialectTable kSiemensIsoMTable{Dialect::SiemensIsoM, kCodes, kAlarms, kBehaviour, kSystemVariables,
-                                &kCycles, &kTransforms, &kPolar};
+                                &kCycles, &kTransforms, &kPolar, &kComp};
 
 }  // namespace ncc::passes

@@ -146,6 +146,7 @@ void commit(BlockContext& ctx) {
       ctx.words.exact_stop.has_value() || ctx.next.modal.path == ir::PathControl::ExactStop;
   out.ops = std::move(ctx.ops);
   out.corner = ctx.corner;
+  out.comp = ctx.comp;
   // While something is unknown (only after an error: the run fails anyway) targets may rest
   // on it; later passes would judge them (travel limits) and report consequences.
   if (ctx.next.unknown.any()) return;
@@ -232,6 +233,7 @@ LowerResult lowerBlock(LoweringCore& core, const ast::Block& block) {
   }
   ctx.silent = depends.words || depends.motion;
   applyTransformCodes(ctx);
+  applyCutterComp(ctx);
   // G68 / G51 / G51.1 / G50.1 take the axis words as their centres: such a block moves nothing.
   const bool centres = transformTakesAxisWords(ctx);
   // G16: the plane words become Cartesian before anything reads them.
@@ -240,12 +242,15 @@ LowerResult lowerBlock(LoweringCore& core, const ast::Block& block) {
     ;
   else if (ctx.words.one_shot)
     oneShot(ctx);
+  else if (cornerArcBlock(ctx))
+    ;  // G39: the corner arc is the compensation pass's
   else if (inCycle(ctx))
     lowerCycle(ctx);
   else
     lowerMotion(ctx);
   scalingCancelMove(ctx);
   machineFunctions(ctx, result);
+  finishCutterComp(ctx, result.program_end);
   checkSkipDependence(ctx);
   if (ctx.needs_run_time) {
     result.needs_run_time = std::move(ctx.needs_run_time);
@@ -306,6 +311,7 @@ void Lowering::variablesWritten(SourceLocation loc, std::vector<ir::SetVariable>
   out.modal.work_offset = st.cs.work_name;
   out.frame = frameOf(st.cs, st.table->behaviour);
   out.ops.assign(writes.begin(), writes.end());
+  out.comp = compensationInForce(st, st.cs);
   st.out.accept(std::move(out));
 }
 

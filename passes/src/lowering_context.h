@@ -17,6 +17,7 @@
 //   lowering_transforms.cpp        G68/G69, G51/G50, G51.1/G50.1, G92.5 into TransformState
 //   lowering_transform_map.cpp     the transforms as one map; the tool under it
 //   lowering_figure_rotation.cpp   Mazak's figure rotation (M98 I J K L)
+//   lowering_cutter_comp.cpp       G40/G41/G42, D, G38/G39: the block's ir::CutterComp
 //   lowering_recovery.cpp          after a rejected block: what is unknown, which later
 //                                  blocks depend on it (skipped without a diagnostic)
 //   lowering_context.cpp           the helpers below, shared by all of them
@@ -131,6 +132,8 @@ struct BlockContext {
   AxisMask skip_moved = 0;
   // G16: the block's plane words as written, before convertPolarWords made them Cartesian.
   std::optional<PolarWords> polar;
+  // Cutter compensation: the block's record for the compensation pass (lowering_cutter_comp.cpp).
+  std::optional<ir::CutterComp> comp;
   bool failed = false;
   // The block depends on unknown state (lowering_recovery.cpp): it is lowered for its effects
   // on the state only, and its errors are not reported (they would be consequences).
@@ -317,6 +320,23 @@ int polarAngleAxis(const BlockContext& ctx);
 // words taken from `from` (the previous hole), as the control repeats them (`G91 Y45. K7`
 // drills round a bolt circle). Unchanged without polar words.
 void polarHole(const BlockContext& ctx, const AxisValues& from, AxisValues& hole);
+
+// ---- lowering_cutter_comp.cpp ----
+// G40/G41/G42 (and Mazak's D00), G38/G39 and the I J K vectors: the block checked against the
+// compensation in force (start-up/cancel in an arc, plane change, G31, G28/G30, an early side
+// change, a G39 move), the new state in `next.comp` and the block's record in `ctx.comp`.
+// After the modal codes and D, before the block's motion.
+void applyCutterComp(BlockContext& ctx);
+// A G39 block: the corner arc is the compensation pass's; the block moves nothing itself.
+bool cornerArcBlock(const BlockContext& ctx);
+// After the block's motion and M codes: the radius (with the block's G10 writes), `suspended`
+// on a hole cycle's block (Mazak 901 in 3-D), the count of compensated blocks; M02/M30
+// (`program_end`) put G40 back.
+void finishCutterComp(BlockContext& ctx, bool program_end);
+// The record of a block lowering emits outside lowerBlock (variable writes) while
+// compensation is in force; nullopt when it is not.
+std::optional<ir::CutterComp> compensationInForce(const LoweringCore& core,
+                                                  const ControllerState& cs);
 
 // ---- lowering_machine_functions.cpp ----
 void dwell(BlockContext& ctx, const GWord& g);  // G04

@@ -1,5 +1,6 @@
 #include "lowering_settings.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace ncc::passes {
@@ -68,6 +69,20 @@ LoweringSettings LoweringSettings::resolve(const DialectTable& table,
   s.block_skip = p.getBool("block_skip", false);
   if (const auto* levels = p.getNumberList("block_skip_levels"))
     for (double l : *levels) s.skip_levels.insert(static_cast<int>(std::lround(l)));
+  if (const CompRules* c = table.comp) {
+    using Startup = ir::CutterComp::Startup;
+    static constexpr const char* kStartup[] = {"A", "B", "C"};
+    const std::string type = p.getString("startup_type", kStartup[static_cast<int>(c->startup)]);
+    s.comp_startup = type == "B" ? Startup::B : type == "C" ? Startup::C : Startup::A;
+    s.comp_arc_corners =
+        p.getString("outer_corner_connection", c->arc_corners ? "arc" : "linear") == "arc";
+    s.comp_lookahead = static_cast<int>(std::lround(p.getNumber("tnrc_lookahead_blocks", c->lookahead)));
+    s.comp_max_without_motion =
+        c->max_without_motion > 0 ? c->max_without_motion : std::max(0, s.comp_lookahead - 2);
+    s.comp_interference_check = p.getBool("interference_check", true);
+    s.comp_corner_move_limit = p.getNumber("corner_move_limit", 0.0);
+    s.comp3d_normal_length = p.getNumber("comp3d_normal_length", 0.0);
+  }
   s.reset_unit =
       p.getString("reset_unit", "G21") == "G20" ? ir::Units::Inch : ir::Units::Millimetre;
   s.reset_motion =

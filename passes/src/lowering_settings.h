@@ -48,6 +48,15 @@ struct LoweringSettings {
   double default_scale_factor = 0.0;  // G51 without a factor; 0: x1
   double default_rotation_angle = 0.0;  // G68 without R, degrees
   bool rotation_angle_incremental = false;  // FANUC RIN: R follows G90/G91
+  // Cutter radius compensation (lowering_cutter_comp.cpp): the dialect's CompRules with the
+  // machine's parameters, recorded in every ir::CutterComp.
+  ir::CutterComp::Startup comp_startup = ir::CutterComp::Startup::A;  // startup_type
+  bool comp_arc_corners = false;      // outer_corner_connection = "arc"
+  int comp_lookahead = 3;             // tnrc_lookahead_blocks
+  int comp_max_without_motion = 1;    // from the look-ahead or fixed (CompRules)
+  bool comp_interference_check = true;  // interference_check
+  double comp_corner_move_limit = 0.0;  // corner_move_limit, mm
+  double comp3d_normal_length = 0.0;  // comp3d_normal_length (Mazak F11); 0: |I J K|
   // Power-on state (reset_unit, reset_motion_mode, reset_plane), resolved from the strings.
   ir::Units reset_unit = ir::Units::Millimetre;
   GAction reset_motion = GAction::Rapid;

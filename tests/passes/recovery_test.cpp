@@ -7,18 +7,19 @@ namespace ncc::passes::test {
 namespace {
 
 TEST(Recovery, ArcsAfterARejectedCutterCompBlockAreNotJudged) {
-  // corpus enier-mill_240811_1003.nc: the G41 block's X/Y are not reached, so the arc after
-  // it starts elsewhere (PS0020 before). Its absolute end point fixes X/Y: the next arcs, which
-  // fit, are judged and pass.
+  // After corpus enier-mill_240811_1003.nc, whose G41 blocks were rejected before cutter
+  // compensation was lowered; G41.2 (3-D compensation) still is. The rejected block's X/Y are
+  // not reached, so the arc after it starts elsewhere (PS0020 before). Its absolute end point
+  // fixes X/Y: the next arcs, which fit, are judged and pass.
   Lowered r = lower(Dialect::FanucM,
                     "G90 G17 G00 X0 Y0\n"
                     "G01 X10. F100.\n"
-                    "G41 X12. Y-1. D1\n"
+                    "G41.2 X12. Y-1. D1\n"
                     "G03 X15. Y2. I0 J3.\n"
                     "G02 X18. Y5. I3. J0\n"
                     "G01 G40 X20. Y5.\n");
   EXPECT_EQ(r.diagText(),
-            "3:1: error[NCC2010]: G41 (cutter compensation left) is not supported yet\n");
+            "3:1: error[NCC2010]: G41.2 (3-D cutter compensation left) is not supported yet\n");
 }
 
 TEST(Recovery, AnUnknownGCodeLeavesEveryGroupUnknown) {

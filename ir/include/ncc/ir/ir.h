@@ -274,6 +274,7 @@ struct CutterComp {
   int lookahead = 3;             // blocks read ahead (FANUC No.19625, Mazak 5, Siemens 2)
   int max_without_motion = 1;    // blocks without motion in the plane that keep the corner
   bool interference_check = true;
+  double corner_move_limit = 0.0;  // corner moves no longer than this are dropped (FANUC No.5010), mm
   SourceLocation loc;            // the G41/G42/G40 (or D) word, for messages
   friend bool operator==(const CutterComp&, const CutterComp&) = default;
 };

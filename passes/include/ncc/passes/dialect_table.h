@@ -48,6 +48,8 @@ enum class GAction : uint8_t {
   CycleCancel,     // G80
   ReturnInitial, ReturnR,                       // G98 G99
   PolarOff, PolarOn,                            // G15 G16: polar coordinate command
+  CompCancel, CompLeft, CompRight,              // G40 G41 G42: cutter radius compensation
+  CompVectorHold, CompCornerArc,                // G38 G39 (one-shot, in compensation only)
   NotSupported,    // a real code of the controller that ncc does not implement yet
 };
 
@@ -336,6 +338,31 @@ struct PolarRules {
   bool corners_allowed;  // ,C / ,R (FANUC: "cannot be specified in the polar coordinate mode")
 };
 
+// How the dialect's cutter radius compensation differs (lowering_cutter_comp.cpp,
+// docs/semantics.md). Lowering records these (with the machine's parameters) in every
+// ir::CutterComp, so the compensation pass needs nothing else; each field names its manual.
+struct CompRules {
+  int lookahead;                 // blocks read ahead (FANUC No.19625 = 3, Mazak 5, Siemens 2)
+  // Blocks without motion in the plane that keep the corner; 0: the look-ahead - 2 (FANUC
+  // §5.4.3 "(N-2) >= M"), else fixed (Mazak "more than 4", Siemens "at most 2").
+  int max_without_motion;
+  ir::CutterComp::Startup startup;  // the start-up/cancel type (FANUC SUV/SUP, Mazak F92 bit 4)
+  bool arc_corners;              // outer corners joined by an arc (Siemens G450; FANUC CCC = 0)
+  bool side_change_early_is_error;  // G41<->G42 in the start-up block or the next (FANUC, Mazak)
+  bool cancel_in_arc_is_error;      // G40 (D00) in G02/G03 mode (FANUC PS0034, Mazak 835)
+  bool reference_return_is_error;   // G28/G30 in G41/G42 (Siemens §2.2); else the vector drops
+  bool skip_is_error;               // G31 in G41/G42 (all three manuals)
+  bool d_zero_cancels;              // Mazak §12-4: "G40 or D00" cancels; else D00 = radius 0
+  bool same_side_recommand_counts;  // FANUC: G41 in G41 re-makes the vector; Mazak: ignored
+  // Where I J K (the plane's two) are a vector, not an arc centre: with G00/G01 (FANUC IJ-type
+  // vector), with G40 (the direction of a virtual next move), with G38 (Mazak: a new vector).
+  bool vector_with_motion;
+  bool vector_with_cancel;
+  bool vector_with_hold;
+  bool has_3d;                      // Mazak: G41/G42 with all of I J K is 3-D compensation
+  bool cycle_in_3d_is_error;        // Mazak 901: a hole cycle in 3-D compensation
+};
+
 struct DialectTable {
   Dialect dialect;
   std::span<const GCodeEntry> gcodes;
@@ -345,6 +372,7 @@ struct DialectTable {
   const CycleRules* cycles = nullptr;  // the canned hole cycles
   const TransformRules* transforms = nullptr;  // coordinate rotation, scaling, mirror
   const PolarRules* polar = nullptr;   // G16; null where the dialect has no polar command
+  const CompRules* comp = nullptr;     // G40/G41/G42; null: compensation is not supported
 
   const GCodeEntry* findG(int code10) const;
   std::string_view alarm(Alarm a) const { return alarm_codes[static_cast<size_t>(a)]; }
