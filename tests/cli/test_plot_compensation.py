@@ -17,6 +17,7 @@ import xml.etree.ElementTree as ET
 from cli_harness import ScratchDirTest
 
 NCC = None
+ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 SVG = "{http://www.w3.org/2000/svg}"
 
 # Cutter radius registers: D1 5 mm, D2 8 mm (a 16 mm cutter).
@@ -266,7 +267,25 @@ class PlotCompensationTest(ScratchDirTest):
         self.assertEqual(titles(move_paths(view(root, "top")))[4],
                          "part.nc:7: G01 X45.000 Y35.000 Z-1.000 (T1)")
 
+    def test_docs_drawing_is_current(self):
+        """docs/images/plot-compensation.svg is what the commands of docs/cli.md ("ncc plot",
+        cutter compensation) draw today."""
+        with open(os.path.join(ROOT, "docs", "cli.md"), encoding="utf-8") as f:
+            doc = f.read()
+        contour = re.search(r"^\$ printf '(.*)' > contour\.nc$", doc, re.M).group(1)
+        machine = re.search(r"^\$ printf '(.*)' > mill\.toml$", doc, re.M).group(1)
+        command = re.search(r"^\$ ncc plot contour\.nc (.*) -o contour\.svg$", doc, re.M).group(1)
+        self.write("contour.nc", contour.replace("\\n", "\n"))
+        self.write("mill.toml", machine.replace("\\n", "\n"))
+        r = subprocess.run([NCC, "plot", "contour.nc", *command.split(), "-o", "contour.svg"],
+                           capture_output=True, text=True, timeout=120, cwd=self.dir)
+        self.assertEqual(r.returncode, 0, r.stderr)
+        with open(self.path("contour.svg"), encoding="utf-8") as a, \
+                open(os.path.join(ROOT, "docs", "images", "plot-compensation.svg"),
+                     encoding="utf-8") as b:
+            self.assertEqual(a.read(), b.read())
+
 
 if __name__ == "__main__":
-    NCC = sys.argv.pop(1)
+    NCC = os.path.abspath(sys.argv.pop(1))
     unittest.main()
