@@ -67,6 +67,19 @@ G40 X70. Y10.
 M30
 """
 
+# A left turn from a line into a small G03 arc: with the 5 mm cutter on the inside (G41) the
+# offset line (Y5) and the offset arc (radius 0.59 about X4.5 Y1) do not meet.
+NO_INTERSECTION = """G90 G17 G21
+G00 X-20. Y-10. Z5.
+G01 Z-1. F500.
+G41 X-10. Y0 D1
+G01 X10.
+G03 X4.5 Y6.59 I-5.5 J1.
+G01 X-10.
+G40 X-20. Y-10.
+M30
+"""
+
 
 def ncc(*args, stdin=None, timeout=120):
     return subprocess.run([NCC, *args], capture_output=True, text=True, timeout=timeout,
@@ -226,6 +239,35 @@ class PlotCompensationTest(ScratchDirTest):
             self.assertIn(f"part.nc:8:1: error[{code}]:", r.stderr)
             alarm = view(root, "top").find(f"{SVG}g[@class='alarm']")
             self.assertTrue(title_of(alarm).startswith(f"alarm {code} at part.nc:8: "), dialect)
+
+    def test_no_intersection_alarm_of_each_dialect(self):
+        for dialect, code in (("fanuc-m", "PS0033"), ("mazak-m", "836"),
+                              ("siemens-iso-m", "NCC2126")):
+            r, root = self.plot(NO_INTERSECTION, "--dialect", dialect)
+            self.assertEqual(r.returncode, 1, dialect)
+            self.assertIn(f"part.nc:6:1: error[{code}]: the offset paths", r.stderr)
+            top = view(root, "top")
+            self.assertEqual(move_paths(top), [])
+            self.assertEqual(len(programmed_paths(top)), 7)
+            alarm = top.find(f"{SVG}g[@class='alarm']")
+            self.assertTrue(title_of(alarm).startswith(f"alarm {code} at part.nc:6: "), dialect)
+            arc = next(p for p in programmed_paths(top) if p.get("data-line") == "6")
+            circle = alarm.find(f"{SVG}circle")
+            self.assertEqual((float(circle.get("cx")), float(circle.get("cy"))),
+                             end_point(arc.get("d")))
+
+    def test_a_warning_of_compensation_still_draws_both(self):
+        # Three blocks without motion in the plane: FANUC keeps the corner over one only, a
+        # warning (NCC2128), not an error; the drawing is made as for any compensated program.
+        r, root = self.plot("G90 G17 G21\nG00 X-20. Y-20. Z5.\nG01 Z-1. F500.\nG41 X0 Y0 D1\n"
+                            "G01 Y30.\nZ-2.\nZ-3.\nZ-4.\nX40.\nG40 X60. Y40.\nM30\n")
+        self.assertEqual(r.returncode, 0, r.stderr)
+        self.assertIn("part.nc:9:1: warning[NCC2128]", r.stderr)
+        top = view(root, "top")
+        self.assertIsNone(top.find(f"{SVG}g[@class='alarm']"))
+        self.assertEqual(len(programmed_paths(top)), 9)
+        self.assertGreaterEqual(len(move_paths(top)), 9)  # with the corner's own moves
+        self.assertEqual(r.stderr.count("warning[NCC2128]"), 1, "the warning printed once")
 
     def test_a_smaller_cutter_fits_the_slot(self):
         r, root = self.plot(SLOT.replace("D2", "D1").replace("X36.", "X42."))
