@@ -269,6 +269,25 @@ class PlotCompensationTest(ScratchDirTest):
         self.assertGreaterEqual(len(move_paths(top)), 9)  # with the corner's own moves
         self.assertEqual(r.stderr.count("warning[NCC2128]"), 1, "the warning printed once")
 
+    def test_run_time_alarm_draws_both_up_to_it_and_exits_3(self):
+        # G95 with the spindle stopped (alarm NCC7207) on line 8, in compensation mode.
+        r, root = self.plot(SQUARE.replace("Y0\n", "G95 Y0 F0.1\n"))
+        self.assertEqual(r.returncode, 3, r.stderr)
+        self.assertIn("part.nc:8:", r.stderr)
+        self.assertIn("NCC7207", r.stderr)
+        top = view(root, "top")
+        self.assertEqual(legend_paths(root), {"tool-centre": "tool centre (G41/G42)",
+                                              "programmed": "programmed path"})
+        centre = move_paths(top)
+        self.assertTrue(all(int(p.get("data-line")) < 8 for p in centre))
+        self.assertTrue(all(int(p.get("data-line")) < 8 for p in programmed_paths(top)))
+        alarm = top.find(f"{SVG}g[@class='alarm']")
+        self.assertTrue(title_of(alarm).startswith("alarm NCC7207 at part.nc:8: "))
+        # Where the tool centre's last move ends, as for any run-time alarm.
+        circle = alarm.find(f"{SVG}circle")
+        self.assertEqual((float(circle.get("cx")), float(circle.get("cy"))),
+                         end_point(centre[-1].get("d")))
+
     def test_a_smaller_cutter_fits_the_slot(self):
         r, root = self.plot(SLOT.replace("D2", "D1").replace("X36.", "X42."))
         self.assertEqual(r.returncode, 0, r.stderr)

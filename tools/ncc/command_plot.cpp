@@ -89,8 +89,9 @@ void keepLines(std::vector<driver::PlotMove>& moves, const bytecode::Program& pr
 }
 
 // The programmed path of a program with cutter compensation: the session's program compiled
-// again with compensation off, and run. nullopt when there is none to draw: that compile
-// failed, or it left blocks to the VM, whose block preparation compensates them all the same.
+// again with compensation off, and run (up to its own alarm, if any: the verdict is the
+// compensated program's). nullopt when there is none to draw: that compile failed, or it left
+// blocks to the VM, whose block preparation compensates them all the same.
 std::optional<Drawn> programmedPath(driver::Session& session, const MachineConfig& machine,
                                     const PlotArgs& args, bytecode::Program& program) {
   session.diagnostics().clear();
@@ -101,7 +102,9 @@ std::optional<Drawn> programmedPath(driver::Session& session, const MachineConfi
   // Its warnings were the first compile's, printed already.
   session.diagnostics().clear();
   if (!loaded || session.compileFacts().prepared_at_run_time) return std::nullopt;
-  return simulateForPlot(program, machine, args);
+  Drawn drawn = simulateForPlot(program, machine, args);
+  if (!drawn.sim.error.empty()) return std::nullopt;
+  return drawn;
 }
 
 // Where a compile alarm of `line` is marked on the programmed path: the end of that block's
