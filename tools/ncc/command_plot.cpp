@@ -107,8 +107,8 @@ std::optional<Drawn> programmedPath(driver::Session& session, const MachineConfi
   return drawn;
 }
 
-// Where a compile alarm of `line` is marked on the programmed path: the end of that block's
-// first move, else of the last move of an earlier line of its file, else the start.
+// Where a compile alarm at `at` is marked on the programmed path: the end of the first move
+// of its line, else of the last move of an earlier line of its file, else the start.
 AxisValues alarmPlace(const std::vector<driver::PlotMove>& moves, const SourceLocation& at,
                       const AxisValues& start) {
   AxisValues place = start;
