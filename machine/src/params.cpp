@@ -367,7 +367,7 @@ std::vector<ParamSpec> buildRegistry() {
                        "Cutter/nose compensation look-ahead depth in blocks (FANUC No.19625, "
                        "3-8); in fanuc-m it also sets how many blocks without motion in the "
                        "plane keep the corner (the depth - 2)")
-                      .range(2, 8));
+                      .range(3, 8));
   specs.push_back(Spec("tool_length_mode", T::String, "siemens-iso-m", "\"A\"", std::string("A"),
                        "G43/G44 mode (MD20380 TOOL_CORR_MODE_G43G44 = 0, 1, 2): \"A\" H acts on "
                        "Z, \"B\" on the axis normal to the plane, \"C\" on the axis programmed")

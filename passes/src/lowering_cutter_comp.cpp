@@ -171,8 +171,9 @@ void checkBlock(BlockContext& ctx, const CompRules& rules, Side was, Side now,
   }
 }
 
-// G38 / G39: the one-shot special and, where the dialect reads one, its vector.
-void special(BlockContext& ctx, const CompRules& rules, ir::CutterComp& c) {
+// G38 / G39: the one-shot special and, where the dialect reads one, its vector. In an arc
+// block (`arc`: G38 X Y in G02/G03 mode) I J K stay the arc's centre.
+void special(BlockContext& ctx, const CompRules& rules, bool arc, ir::CutterComp& c) {
   const GWord& g = *ctx.words.comp_special;
   const std::array<bool, 3> plane = planeSlots(ctx.next.modal.plane);
   if (g.entry->action == GAction::CompCornerArc) {
@@ -188,7 +189,8 @@ void special(BlockContext& ctx, const CompRules& rules, ir::CutterComp& c) {
     return;
   }
   c.special = Special::VectorHold;
-  if (rules.vector_with_hold && hasPlaneVector(ctx, plane)) c.vector = vectorOf(ctx, plane, "G38");
+  if (rules.vector_with_hold && !arc && hasPlaneVector(ctx, plane))
+    c.vector = vectorOf(ctx, plane, "G38");
 }
 
 }  // namespace
@@ -250,7 +252,7 @@ void applyCutterComp(BlockContext& ctx) {
     for (double& x : *state.direction_3d) x = -x;  // a side change in 3-D: the other way
   }
   if (ctx.words.comp_special) {
-    special(ctx, *rules, c);
+    special(ctx, *rules, arc, c);
     if (ctx.failed) return;
   } else if (!arc && !cycle && !ctx.used_ijk && hasPlaneVector(ctx, plane)) {
     const bool vector = now == Side::Off ? rules->vector_with_cancel
@@ -286,6 +288,13 @@ void finishCutterComp(BlockContext& ctx, bool program_end) {
   c.max_without_motion = in_force.max_without_motion;
   c.interference_check = in_force.interference_check;
   c.corner_move_limit = in_force.corner_move_limit;
+  c.recommand_perpendicular = rules.same_side_recommand_counts;
+  // The plane's machine axes (first, second, normal), as an arc in it takes them.
+  static constexpr const char* kAxes[][3] = {{"X", "Y", "Z"}, {"Z", "X", "Y"}, {"Y", "Z", "X"}};
+  const auto& names = kAxes[static_cast<int>(ctx.next.modal.plane)];
+  c.plane_a = ctx.axisNamed(names[0]);
+  c.plane_b = ctx.axisNamed(names[1]);
+  c.plane_normal = ctx.axisNamed(names[2]);
   for (const ir::Operation& op : ctx.ops) {
     if (!std::holds_alternative<ir::HoleCycle>(op)) continue;
     // A hole cycle runs on the programmed points (FANUC, Siemens "compensation is ignored in

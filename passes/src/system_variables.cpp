@@ -92,6 +92,10 @@ std::optional<double> modalCode(const LoweringCore& core, int group_number) {
     case GGroup::Mirror:
       return codeOf(cs.transforms.mirrorsAny() ? GAction::Mirror : GAction::MirrorCancel);
     case GGroup::Polar: return codeOf(cs.polar ? GAction::PolarOn : GAction::PolarOff);
+    case GGroup::CutterComp:  // the side in force (Mazak: D00 cancels it)
+      return codeOf(cs.comp.side == ir::CutterComp::Side::Left    ? GAction::CompLeft
+                    : cs.comp.side == ir::CutterComp::Side::Right ? GAction::CompRight
+                                                                  : GAction::CompCancel);
     case GGroup::WorkOffset: {
       const std::string& w = cs.work_name;  // "G54".."G59", "G54.1P3", "G54P3"
       if (w.rfind("G54.1", 0) == 0) return 54.1;

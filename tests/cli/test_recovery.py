@@ -32,21 +32,26 @@ def diagnostics(stderr, severity=None):
 class RecoveryTest(ScratchDirTest):
     # ---- one root cause, one diagnostic ----------------------------------------------------
 
-    def test_enier_mill_1003_has_no_arc_error_after_a_rejected_g41(self):
-        # Every G41 block is rejected (cutter compensation is not supported yet); the arcs that
-        # follow start where the rejected block would have gone, so they are not judged: no
-        # PS0020 (it was reported at N2680 before).
-        proc = ncc("check", os.path.join(CORPUS, "fanuc-m", "enier-mill_240811_1003.nc"), "--dialect", "fanuc-m")
-        self.assertEqual(proc.returncode, 1)
-        errors = diagnostics(proc.stderr, "error")
-        self.assertTrue(errors, proc.stderr)
-        self.assertNotIn("PS0020", proc.stderr)
-        with open(os.path.join(CORPUS, "fanuc-m", "enier-mill_240811_1003.nc")) as f:
+    def test_enier_mill_1003_lowers_its_g41_blocks_and_judges_the_arcs_after_them(self):
+        # Every G41 block was rejected before cutter compensation was lowered, and the arcs
+        # after it were then not judged (PS0020 at N2680 before that). Now each G41/G42 block
+        # records its compensation, so the arcs start where the program says and are judged:
+        # lowering reports nothing. (The tool centre's path is the compensation pass's.)
+        path = os.path.join(CORPUS, "fanuc-m", "enier-mill_240811_1003.nc")
+        proc = ncc("compile", path, "--dialect", "fanuc-m", "--emit=ir", "--stop-after=lower", "-o", "-")
+        self.assertEqual(proc.returncode, 0, proc.stderr)
+        self.assertEqual(diagnostics(proc.stderr), [], proc.stderr)
+        with open(path) as f:
             source = f.read().splitlines()
-        for d in errors:
-            # Each error is a root cause: the unsupported G41/G42 itself.
-            self.assertEqual(d["code"], "NCC2010", proc.stderr)
-            self.assertRegex(source[int(d["line"]) - 1], r"G4[12]\b")
+        headers = {int(m.group(1)): line for line in proc.stdout.splitlines()
+                   for m in [re.match(r"block \d+:(\d+):\d+ ", line)] if m}
+        starts = [n for n, text in enumerate(source, 1) if re.search(r"G4[12]\b", text)]
+        self.assertTrue(starts)
+        for n in starts:
+            self.assertRegex(headers.get(n, ""), r"comp\((left|right) D1=0\.000 commanded\)", n)
+        for n, text in enumerate(source, 1):
+            if re.search(r"G40\b", text) and n in headers and "comp(" in headers[n]:
+                self.assertIn("comp(off D1=", headers[n])
 
     def test_mach3_write_reports_the_g90_1_only(self):
         proc = ncc("check", os.path.join(CORPUS, "cam-iso", "pygcode-Mach3_write.tap"), "--dialect", "fanuc-m")

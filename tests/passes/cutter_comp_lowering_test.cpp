@@ -242,6 +242,14 @@ TEST(CutterCompLowering, MazakG38WithIJSetsANewVectorFanucHasOnlyTheHold) {
   EXPECT_EQ(mazak.comps(),
             "1: comp(right D1=5.000 commanded)\n2: comp(right D3=2.000 hold vector 0.000 -1.000 0.000)\n"
             "3: comp(off D3=2.000)\n");
+  // In G02/G03 mode I J are the arc's centre, G38 only holds the vector.
+  Lowered arc = lowerOnly(Dialect::MazakM,
+                          "G17 G01 G42 X10. D1 F100.\nG02 G38 X20. Y0 I5. J0\nG01 G40 X0\nM30\n");
+  EXPECT_EQ(arc.diags, "");
+  EXPECT_EQ(arc.line(2).comp->special, ir::CutterComp::Special::VectorHold);
+  EXPECT_FALSE(arc.line(2).comp->vector.has_value());
+  ASSERT_EQ(arc.line(2).ops.size(), 1u);
+  EXPECT_TRUE(std::holds_alternative<ir::Arc>(arc.line(2).ops[0]));
   Lowered fanuc = lowerOnly(Dialect::FanucM, "G17 G01 G42 X10. D1 F100.\nG38 X20. I0 J-1.\nM30\n");
   EXPECT_EQ(fanuc.diags, "2:10: error[NCC2014]: address I has no meaning in this block\n");
 }

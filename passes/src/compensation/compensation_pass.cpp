@@ -141,6 +141,7 @@ void CompensationPass::reset() {
   corner_arc_.reset();
   corner_arc_vector_.reset();
   shift_block_.reset();
+  recommanded_ = false;
 }
 
 void CompensationPass::accept(ir::Block block) {
@@ -184,6 +185,8 @@ void CompensationPass::accept(ir::Block block) {
 void CompensationPass::process(uint64_t n) {
   ir::Block& block = at(n).block;
   const ir::CutterComp* c = block.comp ? &*block.comp : nullptr;
+  // A plane the machine lacks an axis of: the lowering has refused its moves already.
+  if (c && (c->plane_a < 0 || c->plane_b < 0)) c = nullptr;
   const bool comp_after = c && c->side != Side::Off;
   if (c && c->offset_3d) {
     // Mazak 3-D compensation: every target moves by the vector (§12-4-10).
@@ -202,8 +205,26 @@ void CompensationPass::process(uint64_t n) {
     }
     return;
   }
+  if (c) {
+    last_comp_ = *c;
+  } else {  // no request: compensation ends here, with nothing of the last block's specials
+    last_comp_.side = Side::Off;
+    last_comp_.vector.reset();
+    last_comp_.special = ir::CutterComp::Special::None;
+  }
   if (state_ == State::Off && comp_after) state_ = State::Starting;
   const bool cancelling = state_ != State::Off && !comp_after;
+  // G41 again in G41 mode (FANUC): the corner before this block's move is perpendicular.
+  if (state_ == State::On && open_ && c && c->side_commanded && c->recommand_perpendicular &&
+      c->side == open_->comp.side)
+    recommanded_ = true;
+  // G28/G30, G53, a hole cycle: the block runs on its programmed points (temporary cancel).
+  bool temporary = c && c->suspended;
+  for (ir::Operation& op : block.ops) {
+    ir::Space space{};
+    if (target(op, space) && (space == ir::Space::Machine || std::holds_alternative<ir::Skip>(op)))
+      temporary = true;
+  }
   bool plane_motion = false;
   for (size_t i = 0; i < block.ops.size(); ++i) {
     ir::Space space{};
@@ -213,11 +234,10 @@ void CompensationPass::process(uint64_t n) {
     const AxisValues end = common(block, *to, space);
     last_ = end;
     if (state_ == State::Off) continue;
-    const ir::CutterComp& cc = *c;
+    const ir::CutterComp& cc = last_comp_;  // a block without a request ends compensation
     const bool arc = std::holds_alternative<ir::Arc>(block.ops[i]);
     const bool in_plane = arc || (planeOf(end, cc) - planeOf(start, cc)).norm() > kLengthTolerance;
-    if (space == ir::Space::Machine || cc.suspended ||
-        std::holds_alternative<ir::Skip>(block.ops[i])) {
+    if (temporary) {
       // Temporary cancel: the move runs on its programmed point; the next one takes the
       // vector up again from there.
       if (open_) {
@@ -374,12 +394,18 @@ void CompensationPass::join(Open& b) {
     if ((to - path.a_end).norm() > kLengthTolerance)
       path.connectors.push_back({true, to, p, a.w > 0});
     connector_block = *corner_arc_;
-  } else if (without_motion_ > a.comp.max_without_motion) {
+  } else if (side_change && b.comp.side_change_perpendicular) {
+    path = CornerPath{p + comp::leftNormal(a.e.endDirection()) * a.w, {}};  // b: from there
+  } else if (without_motion_ > a.comp.max_without_motion || recommanded_) {
     const comp::CornerKind kind = comp::classify(a.e.endDirection(), b.e.startDirection(), a.w);
-    const std::string what = absl::StrCat(
-        without_motion_, " blocks without motion in the ", planeName(bb), " plane before this move "
-        "(at most ", a.comp.max_without_motion, " keep the corner): the controller stops "
-        "perpendicular to the move before them");
+    const std::string what =
+        recommanded_
+            ? absl::StrCat(b.comp.side == Side::Left ? "G41" : "G42", " again while it is in "
+                           "force: the controller ends the move before perpendicular to itself")
+            : absl::StrCat(without_motion_, " blocks without motion in the ", planeName(bb),
+                           " plane before this move (at most ", a.comp.max_without_motion,
+                           " keep the corner): the controller stops perpendicular to the move "
+                           "before them");
     if (kind == comp::CornerKind::Inner) {
       fail(Alarm::CompWithoutMotion, bb.loc,
            absl::StrCat(what, ", and this inner corner would be cut into"));
@@ -436,6 +462,7 @@ void CompensationPass::close(const CornerPath& path, uint64_t connector_block) {
   given_vector_.reset();
   corner_arc_.reset();
   corner_arc_vector_.reset();
+  recommanded_ = false;
 }
 
 void CompensationPass::placeBetween(const CornerPath& path, uint64_t connector_block) {
@@ -572,7 +599,7 @@ void CompensationPass::cancel(uint64_t n, size_t i, const AxisValues& start,
   if (!open_) return;  // after a temporary cancel: nothing is held
   Open& a = *open_;
   const ir::Block& block = at(n).block;
-  const ir::CutterComp& c = *block.comp;
+  const ir::CutterComp& c = last_comp_;
   Open b;
   b.ref = {n, i};
   b.start = start;

@@ -83,12 +83,14 @@ class CompensationPass : public ir::BlockSink {
   AxisValues last_{};   // the programmed position (the pass's frame)
   State state_ = State::Off;
   std::optional<Open> open_;
+  ir::CutterComp last_comp_;      // the last request seen (its plane, for a block without one)
   std::vector<Ref> between_;      // moves off the plane after open_: placed at the corner
   int without_motion_ = 0;        // blocks without motion in the plane since open_
   std::optional<comp::Vec2> given_vector_;  // I J in a block without motion (FANUC IJ type)
   std::optional<uint64_t> corner_arc_;      // a G39 block since open_
   std::optional<comp::Vec2> corner_arc_vector_;
   std::optional<uint64_t> shift_block_;     // type C: the start-up block without motion
+  bool recommanded_ = false;                // G41 again in G41 mode (FANUC): perpendicular
   bool compensate_ = true;
   bool failed_ = false;           // after an alarm every block passes as it is
 };

@@ -274,6 +274,12 @@ struct CutterComp {
   int lookahead = 3;             // blocks read ahead (FANUC No.19625, Mazak 5, Siemens 2)
   int max_without_motion = 1;    // blocks without motion in the plane that keep the corner
   bool interference_check = true;
+  // G41 again in G41 mode (G42 in G42): the move before ends perpendicular to itself (FANUC
+  // §5.4); false: ignored (Mazak).
+  bool recommand_perpendicular = false;
+  // A change of side runs over its block from perpendicular (old side) to perpendicular (new
+  // side) (Siemens §3.5.3); false: the corner is where the old and new offset paths meet (FANUC).
+  bool side_change_perpendicular = false;
   double corner_move_limit = 0.0;  // corner moves no longer than this are dropped (FANUC No.5010), mm
   SourceLocation loc;            // the G41/G42/G40 (or D) word, for messages
   friend bool operator==(const CutterComp&, const CutterComp&) = default;
