@@ -132,6 +132,23 @@ struct DiscardingSink : ir::BlockSink {
   void finish() override {}
 };
 
+// In front of a pipeline: notes in the session's CompileFacts that a lowered block asks for
+// cutter compensation.
+class FactsTap : public ir::BlockSink {
+ public:
+  FactsTap(CompileFacts& facts, ir::BlockSink& next) : facts_(facts), next_(next) {}
+  void accept(ir::Block block) override {
+    if (block.comp && (block.comp->side != ir::CutterComp::Side::Off || block.comp->offset_3d))
+      facts_.cutter_comp = true;
+    next_.accept(std::move(block));
+  }
+  void finish() override { next_.finish(); }
+
+ private:
+  CompileFacts& facts_;
+  ir::BlockSink& next_;
+};
+
 // The rest of the program goes to the VM's block preparation (docs/runtime.md): an ir::Prepare
 // carrying the block store, after the blocks prepared so far.
 // `main_end`: where the main program ended, when the compile got there (--defer): the text
@@ -169,6 +186,7 @@ void prepareAtRunTime(Session& session, SourceProgramStore& store, const prepare
   ir::Block block;
   block.loc = deferred ? SourceLocation{session.mainFile(), 1, 1} : loop.runTimeReason().loc;
   block.ops.push_back(std::move(prepare));
+  session.compileFacts().prepared_at_run_time = true;
   entry.accept(std::move(block));
 }
 
@@ -201,10 +219,11 @@ void lowerProgram(Session& session, ir::BlockSink& entry, AstStageTap& tap) {
     check_options.axis_count = session.machine().axisCount();
     check_options.dialect = session.dialect();
     check_options.verify = false;
+    check_options.compensate = session.compensate();
     checks.emplace(check_options, diags, discard);
   }
-  prepare::BlockLoop loop(settings, store, session.mainFile(), diags,
-                          deferred ? checks->entry() : entry);
+  FactsTap checked(session.compileFacts(), deferred ? checks->entry() : entry);
+  prepare::BlockLoop loop(settings, store, session.mainFile(), diags, checked);
   // After on_write: the loaded values reach the VM too, so a run ends with every kept
   // variable, written by the program or not (and --vars saves them all back).
   std::optional<std::map<int64_t, double>> saved = loadSavedVariables(session, loop.variables());
@@ -265,6 +284,8 @@ bool compileWith(Session& session, ir::BlockSink& sink, Pipeline which,
   passes::PipelineOptions options;
   options.axis_count = session.machine().axisCount();
   options.dialect = session.dialect();
+  options.compensate = session.compensate();
+  session.compileFacts() = {};
   if (lowers) {
     if (which == Pipeline::Check) options.travel_limits = &session.machine();
     options.verify_each = control.verify_each;

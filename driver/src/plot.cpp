@@ -51,6 +51,10 @@ using Kind = vm::MotionPrimitive::Kind;
 constexpr const char* kPalette[] = {"#1f77b4", "#ff7f0e", "#2ca02c", "#9467bd", "#8c564b",
                                     "#e377c2", "#7f7f7f", "#bcbd22", "#17becf", "#d62728"};
 
+// The programmed path under cutter compensation: thin, dashed, a colour no tool has.
+constexpr const char* kProgrammedStyle =
+    "stroke=\"#ff00ff\" stroke-width=\"0.9\" stroke-dasharray=\"4 2\"";
+
 struct Point2 {
   double u = 0.0, v = 0.0;
 };
@@ -274,19 +278,24 @@ void Writer::fit(double left, double top, double width, double height) {
     vlo = std::min(vlo, q.v), vhi = std::max(vhi, q.v);
   };
   add(point(o_.work_zero));
-  for (const PlotMove& pm : moves_) {
-    const vm::MotionPrimitive& m = pm.motion;
-    if (m.kind != Kind::Arc) {
-      add(point(m.from));
-      add(point(m.to));
-      continue;
+  const auto add_moves = [&](const std::vector<PlotMove>& moves) {
+    for (const PlotMove& pm : moves) {
+      const vm::MotionPrimitive& m = pm.motion;
+      if (m.kind != Kind::Arc) {
+        add(point(m.from));
+        add(point(m.to));
+        continue;
+      }
+      // The arc's box (every corner, so the isometric view's fits too).
+      const AxisBox box = arcExtent(arcOf(m), kMaxAxes);
+      const Point3 lo = point(box.low), hi = point(box.high);
+      for (int c = 0; c < 8; ++c)
+        add({c & 1 ? hi.x : lo.x, c & 2 ? hi.y : lo.y, c & 4 ? hi.z : lo.z});
     }
-    // The arc's box (every corner, so the isometric view's fits too).
-    const AxisBox box = arcExtent(arcOf(m), kMaxAxes);
-    const Point3 lo = point(box.low), hi = point(box.high);
-    for (int c = 0; c < 8; ++c)
-      add({c & 1 ? hi.x : lo.x, c & 2 ? hi.y : lo.y, c & 4 ? hi.z : lo.z});
-  }
+  };
+  add_moves(moves_);
+  if (o_.programmed) add_moves(*o_.programmed);
+  if (o_.alarm_at) add(point(*o_.alarm_at));
   constexpr double kMargin = 36.0;  // px, room for the label and the work zero's
   const double w = std::max(width - 2 * kMargin, 1.0), h = std::max(height - 2 * kMargin, 1.0);
   const double du = uhi - ulo, dv = vhi - vlo;
@@ -320,6 +329,16 @@ void Writer::writeView(PlotView view, double left, double top, double width, dou
        << "<text x=\"" << px(z.u + 6) << "\" y=\"" << px(z.v + 16) << "\" font-size=\"11\">"
        << xml(o_.work_zero_label) << " zero</text></g>\n";
   writeExtentsBox();
+  if (o_.programmed) {
+    // Under the tool centre's path, which stays readable where the two coincide.
+    out_ << "<g class=\"programmed-path\" fill=\"none\" stroke-linecap=\"round\" "
+         << kProgrammedStyle << ">\n";
+    for (const PlotMove& pm : *o_.programmed)
+      out_ << "<path class=\"programmed\" d=\"" << pathData(pm.motion) << "\" data-line=\""
+           << pm.motion.where.line << "\"><title>programmed: " << xml(moveTitle(pm))
+           << "</title></path>\n";
+    out_ << "</g>\n";
+  }
   // What every move shares is said once, by the group (SVG inheritance).
   out_ << "<g class=\"moves\" fill=\"none\" stroke-linecap=\"round\" stroke-linejoin=\"round\">\n";
   for (const PlotMove& pm : moves_) {
@@ -333,7 +352,9 @@ void Writer::writeView(PlotView view, double left, double top, double width, dou
   }
   out_ << "</g>\n";
   if (o_.alarm) {
-    const Point2 a = screen(moves_.empty() ? o_.start : moves_.back().motion.to);
+    const Point2 a = screen(o_.alarm_at       ? *o_.alarm_at
+                            : moves_.empty() ? o_.start
+                                             : moves_.back().motion.to);
     std::string where = absl::StrCat(
         o_.file_name ? o_.file_name(o_.alarm->where.file) : std::string(), ":", o_.alarm->where.line);
     out_ << "<g class=\"alarm\"><title>" << xml(absl::StrCat("alarm ", o_.alarm->code, " at ", where,
@@ -347,7 +368,10 @@ void Writer::writeView(PlotView view, double left, double top, double width, dou
 }
 
 void Writer::findExtents() {
-  for (const PlotMove& pm : moves_) {
+  // Stopped by a compensation alarm, the programmed path is all there is.
+  const std::vector<PlotMove>& moves =
+      moves_.empty() && o_.programmed ? *o_.programmed : moves_;
+  for (const PlotMove& pm : moves) {
     const vm::MotionPrimitive& m = pm.motion;
     Point3 a, b;
     if (m.kind == Kind::Line) {
@@ -426,6 +450,20 @@ void Writer::writeLegend(double top) {
        << "\" stroke=\"#000000\" stroke-width=\"1.6\"/><text x=\"" << px(x + 30) << "\" y=\""
        << px(y) << "\" font-size=\"12\">feed</text>\n";
   x += 80.0;
+  if (o_.programmed) {
+    if (!o_.alarm_at) {
+      out_ << "<g class=\"legend-path\" data-path=\"tool-centre\"><path d=\"M" << px(x) << " "
+           << px(y - 4) << " L" << px(x + 24) << " " << px(y - 4)
+           << "\" stroke=\"#000000\" stroke-width=\"1.6\"/><text x=\"" << px(x + 30)
+           << "\" y=\"" << px(y) << "\" font-size=\"12\">tool centre (G41/G42)</text></g>\n";
+      x += 170.0;
+    }
+    out_ << "<g class=\"legend-path\" data-path=\"programmed\"><path d=\"M" << px(x) << " "
+         << px(y - 4) << " L" << px(x + 24) << " " << px(y - 4) << "\" " << kProgrammedStyle
+         << "/><text x=\"" << px(x + 30) << "\" y=\"" << px(y)
+         << "\" font-size=\"12\">programmed path</text></g>\n";
+    x += 160.0;
+  }
   for (int64_t tool : tool_order_) {
     out_ << "<g class=\"legend-tool\" data-tool=\"" << tool << "\"><rect x=\"" << px(x)
          << "\" y=\"" << px(y - 10) << "\" width=\"12\" height=\"12\" fill=\"" << colours_.at(tool)
@@ -451,7 +489,10 @@ void Writer::write() {
        << "<title>" << xml(o_.title) << "</title>\n"
        << "<rect width=\"100%\" height=\"100%\" fill=\"#ffffff\"/>\n"
        << "<text id=\"heading\" x=\"12\" y=\"20\" font-size=\"15\" font-weight=\"bold\">"
-       << xml(o_.title) << " (" << moves_.size() << " moves)</text>\n";
+       << xml(o_.title) << " (" << moves_.size() << " moves"
+       << (o_.programmed ? absl::StrCat("; programmed path: ", o_.programmed->size(), " moves")
+                         : std::string())
+       << ")</text>\n";
   constexpr double kHeader = 28.0, kFooter = 48.0;
   const double body = std::max(height - kHeader - kFooter, 40.0);
   const std::vector<PlotView>& views = o_.views;

@@ -15,6 +15,7 @@
 #include "ncc/driver/plot.h"
 #include "ncc/driver/run.h"
 #include "ncc/driver/simulate.h"
+#include "ncc/support/diagnostics.h"
 
 namespace ncc::cli {
 
@@ -56,6 +57,70 @@ std::vector<driver::PlotView> parseViews(const std::string& view) {
   return {PlotView::Top, PlotView::Iso, PlotView::Front, PlotView::Side};
 }
 
+// The moves of a simulation of `program`, recorded for the drawing.
+struct Drawn {
+  std::vector<driver::PlotMove> moves;
+  driver::SimulationResult sim;
+};
+
+Drawn simulateForPlot(const bytecode::Program& program, const MachineConfig& machine,
+                      const PlotArgs& args) {
+  driver::PlotRecorder recorder;
+  driver::SimulationOptions options;
+  options.max_steps = args.max_steps;
+  options.max_seconds = args.max_time;
+  options.observer = &recorder;
+  Drawn drawn;
+  drawn.sim = driver::simulate(program, machine, nullptr, options);
+  drawn.moves = recorder.finish();
+  return drawn;
+}
+
+// --from/--to: the moves of those lines of the main program's file only.
+void keepLines(std::vector<driver::PlotMove>& moves, const bytecode::Program& program,
+               const PlotArgs& args) {
+  if (!args.from_line && !args.to_line) return;
+  const uint32_t main = program.units.empty() ? 1 : program.units[0].name;
+  std::erase_if(moves, [&](const driver::PlotMove& m) {
+    const vm::SourcePosition& w = m.motion.where;
+    return w.file != main || (args.from_line && w.line < args.from_line) ||
+           (args.to_line && w.line > args.to_line);
+  });
+}
+
+// The programmed path of a program with cutter compensation: the session's program compiled
+// again with compensation off, and run (up to its own alarm, if any: the verdict is the
+// compensated program's). nullopt when there is none to draw: that compile failed, or it left
+// blocks to the VM, whose block preparation compensates them all the same.
+std::optional<Drawn> programmedPath(driver::Session& session, const MachineConfig& machine,
+                                    const PlotArgs& args, bytecode::Program& program) {
+  session.diagnostics().clear();
+  session.setCompensate(false);
+  const bool loaded = driver::loadProgram(session, program, /*check_machine=*/true,
+                                          driver::Residence::Paged);
+  session.setCompensate(true);
+  // Its warnings were the first compile's, printed already.
+  session.diagnostics().clear();
+  if (!loaded || session.compileFacts().prepared_at_run_time) return std::nullopt;
+  Drawn drawn = simulateForPlot(program, machine, args);
+  if (!drawn.sim.error.empty()) return std::nullopt;
+  return drawn;
+}
+
+// Where a compile alarm at `at` is marked on the programmed path: the end of the first move
+// of its line, else of the last move of an earlier line of its file, else the start.
+AxisValues alarmPlace(const std::vector<driver::PlotMove>& moves, const SourceLocation& at,
+                      const AxisValues& start) {
+  AxisValues place = start;
+  for (const driver::PlotMove& m : moves) {
+    const vm::SourcePosition& w = m.motion.where;
+    if (w.file != at.file) continue;
+    if (w.line == at.line) return m.motion.to;
+    if (w.line < at.line) place = m.motion.to;
+  }
+  return place;
+}
+
 int runPlot(const PlotArgs& args) {
   if (args.from_line && args.to_line && args.from_line > args.to_line) {
     printError("NCC0010", absl::StrCat("--from ", args.from_line, " is after --to ", args.to_line));
@@ -64,42 +129,53 @@ int runPlot(const PlotArgs& args) {
   driver::Session session;
   MachineConfig machine;
   bytecode::Program program;
+  // The compile stopped on this error of a program with cutter compensation (an interference,
+  // no intersection): when the program compiles without compensation, its programmed path is
+  // drawn with the alarm marked on it, and the verdict stays the compile's.
+  std::optional<Diagnostic> compile_alarm;
   if (std::optional<int> failed =
-          loadForRun(session, args.input, args.common, args.run, machine, program))
-    return *failed;
+          loadForRun(session, args.input, args.common, args.run, machine, program)) {
+    if (*failed != kProgramError || !session.compileFacts().cutter_comp) return *failed;
+    for (const Diagnostic& d : session.diagnostics().diagnostics())
+      if (d.severity == Severity::Error) {
+        compile_alarm = d;
+        break;
+      }
+    if (!compile_alarm) return *failed;
+  }
+  // Compensation: the programmed path too (not from a .ncb: its source is not at hand).
+  bytecode::Program programmed_program;
+  std::optional<Drawn> programmed;
+  if (compile_alarm || (session.compileFacts().cutter_comp &&
+                        !session.compileFacts().prepared_at_run_time)) {
+    programmed = programmedPath(session, machine, args, programmed_program);
+    if (compile_alarm && !programmed) return kProgramError;  // as without compensation
+  }
   // Opened after the compile: the inputs then include the called subprograms (NCC0005).
   PendingOutput output;
   if (!output.open(args.output, session.inputFiles())) return kUsage;
 
   // The same simulation as ncc run (executor, planner, servo): the same alarms, one verdict.
-  driver::PlotRecorder recorder;
-  driver::SimulationOptions options;
-  options.max_steps = args.max_steps;
-  options.max_seconds = args.max_time;
-  options.observer = &recorder;
-  driver::SimulationResult sim = driver::simulate(program, machine, nullptr, options);
-  if (!sim.error.empty()) {
-    const std::size_t colon = sim.error.find(": ");
-    if (colon == std::string::npos) printError("NCC7100", sim.error);
-    else printError(sim.error.substr(0, colon), sim.error.substr(colon + 2));
-    return kProgramError;
+  Drawn run;
+  if (!compile_alarm) {
+    run = simulateForPlot(program, machine, args);
+    if (!run.sim.error.empty()) {
+      const driver::SimulationResult& sim = run.sim;
+      const std::size_t colon = sim.error.find(": ");
+      if (colon == std::string::npos) printError("NCC7100", sim.error);
+      else printError(sim.error.substr(0, colon), sim.error.substr(colon + 2));
+      return kProgramError;
+    }
   }
-  std::vector<driver::PlotMove> moves = recorder.finish();
-  // --from/--to: the moves of those lines of the main program's file only.
-  if (args.from_line || args.to_line) {
-    const uint32_t main = program.units.empty() ? 1 : program.units[0].name;
-    std::erase_if(moves, [&](const driver::PlotMove& m) {
-      const vm::SourcePosition& w = m.motion.where;
-      return w.file != main || (args.from_line && w.line < args.from_line) ||
-             (args.to_line && w.line > args.to_line);
-    });
-  }
+  // The drawing's names come from the program run, or the programmed one when none ran.
+  const bytecode::Program& named = compile_alarm ? programmed_program : program;
+  keepLines(run.moves, named, args);
 
   driver::PlotOptions plot;
   plot.views = parseViews(args.view);
   parseSize(args.size, plot.width, plot.height);  // checked by the option's validator
-  const uint32_t main = program.units.empty() ? 1 : program.units[0].name;
-  plot.title = driver::sourceFileName(program, main);
+  const uint32_t main = named.units.empty() ? 1 : named.units[0].name;
+  plot.title = driver::sourceFileName(named, main);
   if (plot.title.empty()) plot.title = session.sources().displayName(session.mainFile());
   if (args.from_line || args.to_line)
     absl::StrAppend(&plot.title, ", lines ", args.from_line ? args.from_line : 1, " to ",
@@ -110,20 +186,30 @@ int runPlot(const PlotArgs& args) {
   if (auto it = machine.work_offsets.find("G54"); it != machine.work_offsets.end())
     plot.work_zero = it->second;
   plot.start = machine.start_position;
-  plot.alarm = sim.alarm;
-  plot.file_name = [&program](uint32_t index) { return driver::sourceFileName(program, index); };
-  driver::writePlotSvg(output.stream(), moves, plot);
+  plot.alarm = run.sim.alarm;
+  if (programmed) {
+    if (compile_alarm) {
+      // Source ids are the program's file indices (one session compiled both).
+      plot.alarm = vm::Alarm{compile_alarm->code, compile_alarm->message, compile_alarm->location};
+      plot.alarm_at = alarmPlace(programmed->moves, compile_alarm->location, plot.start);
+    }
+    keepLines(programmed->moves, named, args);
+    plot.programmed = std::move(programmed->moves);
+  }
+  plot.file_name = [&named](uint32_t index) { return driver::sourceFileName(named, index); };
+  driver::writePlotSvg(output.stream(), run.moves, plot);
   const bool written = output.commit();
-  if (sim.alarm) {
-    SourceLocation where{0, sim.alarm->where.line, sim.alarm->where.column};
-    if (sim.alarm->where.file < program.strings.size() &&
-        !program.strings[sim.alarm->where.file].empty())
-      where.file = session.sources().addFile(program.strings[sim.alarm->where.file]);
-    session.diagnostics().error(sim.alarm->code, where, sim.alarm->message);
+  if (compile_alarm) return written ? kProgramError : kUsage;  // its diagnostics are printed
+  const std::optional<vm::Alarm>& alarm = run.sim.alarm;
+  if (alarm) {
+    SourceLocation where{0, alarm->where.line, alarm->where.column};
+    if (alarm->where.file < program.strings.size() && !program.strings[alarm->where.file].empty())
+      where.file = session.sources().addFile(program.strings[alarm->where.file]);
+    session.diagnostics().error(alarm->code, where, alarm->message);
     printDiagnostics(session);
   }
   if (!written) return kUsage;
-  return sim.alarm ? kRuntimeAlarm : kOk;
+  return alarm ? kRuntimeAlarm : kOk;
 }
 
 }  // namespace

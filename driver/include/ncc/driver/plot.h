@@ -2,6 +2,7 @@
 // `ncc plot`: the path a program runs (the executor's motion primitives, in machine
 // coordinates) drawn as one self-contained SVG: top, front, side and isometric views, rapids
 // dashed, feed moves solid, one colour per tool, a <title> with the source line on every move.
+// With cutter compensation, the programmed path is drawn too, under the tool centre's.
 // Format in docs/cli.md ("ncc plot").
 #include <cstdint>
 #include <functional>
@@ -59,9 +60,16 @@ struct PlotOptions {
   // The work zero marked in every view (machine coordinates) and its label ("G54").
   AxisValues work_zero{};
   std::string work_zero_label = "G54";
+  // Cutter compensation (G41/G42): the programmed path (the program compiled with
+  // compensation off), drawn thin and dashed in one colour under the moves, which are then
+  // the tool centre's path; the legend names both. nullopt: the program has no compensation.
+  std::optional<std::vector<PlotMove>> programmed;
   // The run stopped on this alarm: a red mark where the last drawn move ends (or at
   // `start` when none was drawn), titled with its code, place and message.
   std::optional<vm::Alarm> alarm;
+  // The mark's place instead, when the compile stopped on a compensation alarm: there is no
+  // tool centre's path (no moves), the mark is at the end of the alarm's programmed block.
+  std::optional<AxisValues> alarm_at;
   AxisValues start{};  // machine position before the program
   // The name of source file `index` of the program (its string pool), for the titles.
   std::function<std::string(uint32_t index)> file_name;

@@ -28,6 +28,12 @@ struct SessionOptions {
   bool defer = false;
 };
 
+// What a compile found out about the program, beyond its diagnostics (ncc plot uses it).
+struct CompileFacts {
+  bool cutter_comp = false;           // a block asked for cutter compensation (G41/G42)
+  bool prepared_at_run_time = false;  // blocks were left to the VM's block preparation
+};
+
 // Why a session could not be opened; maps to exit code 2 (usage / configuration). Codes
 // (docs/cli.md): NCC0001 unreadable input, NCC0002 unknown or unsupported dialect, NCC0003
 // invalid machine file.
@@ -67,6 +73,13 @@ class Session {
   uint64_t maxBackJumps() const { return max_back_jumps_; }
   const std::optional<std::filesystem::path>& variablesFile() const { return variables_file_; }
   bool defer() const { return defer_; }
+  // false: compiles keep the programmed path, cutter compensation's requests dropped
+  // (passes::PipelineOptions::compensate; `ncc plot` draws that path beside the tool centre's).
+  bool compensate() const { return compensate_; }
+  void setCompensate(bool on) { compensate_ = on; }
+  // Set by each compile (compile.h) of this session: what the last one found.
+  const CompileFacts& compileFacts() const { return compile_facts_; }
+  CompileFacts& compileFacts() { return compile_facts_; }
   // The standard input's bytes when the input is "-", else nullptr.
   const std::string* stdinContents() const { return sources_.buffer(main_file_); }
   // Every file on disk the session reads: the program (source or bytecode), the subprograms
@@ -90,6 +103,8 @@ class Session {
   uint64_t max_back_jumps_ = 10'000;
   std::optional<std::filesystem::path> variables_file_;
   bool defer_ = false;
+  bool compensate_ = true;
+  CompileFacts compile_facts_;
   std::function<void(const SourceLocation&)> block_observer_;
 };
 
