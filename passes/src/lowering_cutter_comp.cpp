@@ -224,7 +224,7 @@ void applyCutterComp(BlockContext& ctx) {
   if (was == Side::Off && now == Side::Off) {
     if (code && rules->vector_with_cancel && !arc && !cycle && hasPlaneVector(ctx, plane))
       ctx.used_ijk = true;
-    if (ctx.words.comp_special)
+    if (ctx.words.comp_special && !ctx.silent)
       ctx.core.diags.warning(
           std::string(ctx.table.alarm(Alarm::AddressWithoutMeaning)), ctx.words.comp_special->loc,
           absl::StrCat(gCodeName(ctx.words.comp_special->entry->code10),
@@ -275,19 +275,13 @@ void applyCutterComp(BlockContext& ctx) {
 void finishCutterComp(BlockContext& ctx, bool program_end) {
   if (!ctx.comp || ctx.failed) return;
   const CompRules& rules = *ctx.table.comp;
-  ir::CutterComp& c = *ctx.comp;
-  // The side after the block with the D (and its radius, this block's G10 writes included).
-  ir::CutterComp in_force = recordOf(ctx.core, ctx.next, &ctx.table_writes);
-  c.side = in_force.side;
-  c.d_number = in_force.d_number;
-  c.radius = in_force.radius;
-  c.offset_3d = in_force.offset_3d;
-  c.startup = in_force.startup;
-  c.arc_corners = in_force.arc_corners;
-  c.lookahead = in_force.lookahead;
-  c.max_without_motion = in_force.max_without_motion;
-  c.interference_check = in_force.interference_check;
-  c.corner_move_limit = in_force.corner_move_limit;
+  // The record in force after the block (side, D, its radius with this block's G10 writes,
+  // the 3-D offset, the rules), with what the block's own words said.
+  ir::CutterComp c = recordOf(ctx.core, ctx.next, &ctx.table_writes);
+  c.side_commanded = ctx.comp->side_commanded;
+  c.special = ctx.comp->special;
+  c.vector = ctx.comp->vector;
+  c.loc = ctx.comp->loc;
   for (const ir::Operation& op : ctx.ops) {
     if (!std::holds_alternative<ir::HoleCycle>(op)) continue;
     // A hole cycle runs on the programmed points (FANUC, Siemens "compensation is ignored in
@@ -300,16 +294,17 @@ void finishCutterComp(BlockContext& ctx, bool program_end) {
     }
     c.suspended = true;
   }
+  ctx.comp = c;
   if (c.side != Side::Off) ++ctx.next.comp.blocks;
   // M02/M30 reset the control: G40 (the vector is cleared after the block).
   if (program_end) ctx.next.comp = CompState{};
 }
 
 std::optional<ir::CutterComp> compensationInForce(const LoweringCore& core,
-                                                  const ControllerState& cs) {
+                                                  const ControllerState& cs, SourceLocation loc) {
   if (!core.table || !core.table->comp || !cs.comp.active()) return std::nullopt;
   ir::CutterComp c = recordOf(core, cs, nullptr);
-  c.loc = SourceLocation{};
+  c.loc = loc;
   return c;
 }
 
