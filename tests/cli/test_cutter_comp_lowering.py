@@ -105,8 +105,8 @@ class CutterCompLoweringTest(ScratchDirTest):
         self.assertIn("line work X0.000 Y40.000", proc.stdout)
 
     def test_variable_writes_while_compensating_carry_the_record(self):
-        # #2401 (radius geometry D1) = 7.: the write's own block and the next ones hold 7.
-        program = "G17 G01 G41 X10. D1 F100.\n#2401=7.\n#100=1\nX20.\nG40 X0\nM30\n"
+        # #2601 (radius geometry D1) = 7.: the write's own block and the next ones hold 7.
+        program = "G17 G01 G41 X10. D1 F100.\n#2601=7.\n#100=1\nX20.\nG40 X0\nM30\n"
         proc = self.lower(program, "fanuc-m")
         self.assertEqual(proc.returncode, 0, proc.stderr)
         self.assertEqual(self.comps(proc.stdout), [
