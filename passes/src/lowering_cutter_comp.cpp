@@ -135,13 +135,14 @@ void checkBlock(BlockContext& ctx, const CompRules& rules, Side was, Side now,
                           " mode: the start-up and the cancel must be G00 or G01 blocks"));
     return;
   }
-  // The plane while compensating (FANUC PS0037, Siemens §3.5.3).
-  if ((was != Side::Off || now != Side::Off) && ctx.next.modal.plane != before.modal.plane) {
+  // The plane while compensating (FANUC PS0037, Siemens §3.5.3); the start-up block may choose
+  // it (Siemens: "in or before the G41 block").
+  if (was != Side::Off && ctx.next.modal.plane != before.modal.plane) {
     const auto& g = ctx.words.group(GGroup::Plane);
     ctx.fail(Alarm::CompPlaneChange, g ? g->loc : ctx.block.loc,
              absl::StrCat(planeCode(ctx.next.modal.plane), " changes the plane from ",
                           planeCode(before.modal.plane), " while cutter compensation (",
-                          sideCode(was != Side::Off ? was : now),
+                          sideCode(was),
                           ") is in force; cancel it with G40 first"));
     return;
   }

@@ -404,6 +404,13 @@ TEST(CutterCompLowering, ARejectedBlockLeavesTheSideUnknownUntilGivenAgain) {
   EXPECT_EQ(r.line(4).comp->side, ir::CutterComp::Side::Left);
 }
 
+TEST(CutterCompLowering, TheStartUpBlockMayChooseThePlane) {
+  Lowered r = lowerOnly(Dialect::SiemensIsoM, "G17 G01 F100.\nG18 G41 X10. Z5. D1\nG40 X0\nM30\n");
+  EXPECT_EQ(r.diags, "");
+  EXPECT_EQ(r.line(2).modal.plane, ir::Plane::ZX);
+  EXPECT_EQ(r.line(2).comp->side, ir::CutterComp::Side::Left);
+}
+
 TEST(CutterCompLowering, SiemensChangesTheSideAnywhere) {
   Lowered r = lowerOnly(Dialect::SiemensIsoM, "G17 G01 G41 X10. D1 F100.\nG42 X20.\nM30\n");
   EXPECT_EQ(r.diags, "");
