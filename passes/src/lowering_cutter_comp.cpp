@@ -76,8 +76,9 @@ ir::CutterComp recordOf(const LoweringCore& core, const ControllerState& cs,
   return c;
 }
 
-// I J K as a work-space vector on X Y Z (mm), from the slots `use`; claims the words read.
-// nullopt (after reporting) when they give no direction.
+// I J K (slots 0 1 2) as a work-space vector on X Y Z (mm), from the slots `use`; claims the
+// block's I J K. nullopt after reporting: a word outside `use` (the plane's third address) has
+// no meaning, and a zero vector gives no direction.
 std::optional<std::array<double, 3>> vectorOf(BlockContext& ctx, std::array<bool, 3> use,
                                               const char* what) {
   const std::optional<WordValue>* words[3] = {&ctx.words.i, &ctx.words.j, &ctx.words.k};
@@ -107,7 +108,7 @@ std::optional<std::array<double, 3>> vectorOf(BlockContext& ctx, std::array<bool
   return v;
 }
 
-// Whether the block has one of the plane's I J K words (`all3`: all of I, J and K).
+// Whether the block has one of the I J K words of the slots `use`.
 bool hasPlaneVector(const BlockContext& ctx, std::array<bool, 3> use) {
   const std::optional<WordValue>* words[3] = {&ctx.words.i, &ctx.words.j, &ctx.words.k};
   for (int n = 0; n < 3; ++n)
