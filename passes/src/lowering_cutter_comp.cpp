@@ -221,6 +221,14 @@ void applyCutterComp(BlockContext& ctx) {
   const bool arc = arcMode(ctx.next.motion) && !ctx.words.one_shot && !cycle;
   const std::array<bool, 3> plane = planeSlots(ctx.next.modal.plane);
   const bool all3 = ctx.words.i && ctx.words.j && ctx.words.k;
+  // Mazak 835: 3-D compensation starts or changes only in G00/G01 (I J K of an arc are its).
+  if (rules->has_3d && all3 && arc && code && now != Side::Off) {
+    ctx.fail(Alarm::CompStartInArc, code->loc,
+             absl::StrCat(sideCode(now), " with I J K (3-D compensation) in ",
+                          ctx.next.motion == GAction::ArcCW ? "G02" : "G03",
+                          " mode: 3-D compensation starts and changes in G00 or G01 blocks"));
+    return;
+  }
   // G40 in cancel mode: its I J K are ignored (FANUC §5.2 "in cancel mode I/K with G40 are
   // ignored"), and nothing is recorded.
   if (was == Side::Off && now == Side::Off) {

@@ -357,6 +357,10 @@ const AlarmCase kAlarms[] = {
      "G17 G01 G41 X10. D1 F100.\nG02 X20. Y10. R10.\nD00",
      "3:1: error[835]: D0 cancels cutter compensation in G02 mode: the start-up and the cancel "
      "must be G00 or G01 blocks"},
+    {"ThreeDChangeInArcMazak", Dialect::MazakM,
+     "G17 G01 G41 X10. D1 F100.\nX20.\nG02 G42 X30. Y10. I0 J10. K1.",
+     "3:5: error[835]: G42 with I J K (3-D compensation) in G02 mode: 3-D compensation starts "
+     "and changes in G00 or G01 blocks"},
     {"PlaneChangeFanuc", Dialect::FanucM, "G17 G01 G41 X10. D1 F100.\nX20.\nG18 X30.",
      "3:1: error[PS0037]: G18 changes the plane from G17 while cutter compensation (G41) is in "
      "force; cancel it with G40 first"},
