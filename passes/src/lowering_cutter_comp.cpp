@@ -58,6 +58,7 @@ double radiusOf(const LoweringCore& core, const std::vector<TableWrite>* writes,
 ir::CutterComp recordOf(const LoweringCore& core, const ControllerState& cs,
                         const std::vector<TableWrite>* writes) {
   const LoweringSettings& s = core.settings;
+  const CompRules& rules = *core.table->comp;
   ir::CutterComp c;
   c.side = cs.comp.side;
   c.d_number = cs.d_selected;
@@ -73,6 +74,14 @@ ir::CutterComp recordOf(const LoweringCore& core, const ControllerState& cs,
   c.max_without_motion = s.comp_max_without_motion;
   c.interference_check = s.comp_interference_check;
   c.corner_move_limit = s.comp_corner_move_limit;
+  c.recommand_perpendicular = rules.same_side_recommand_counts;
+  c.side_change_perpendicular = rules.side_change_perpendicular;
+  // The plane's machine axes (first, second, normal), as an arc in it takes them; -1: none.
+  static constexpr int kSlots[][3] = {{0, 1, 2}, {2, 0, 1}, {1, 2, 0}};  // XY, ZX, YZ of X Y Z
+  const int* slots = kSlots[static_cast<int>(cs.modal.plane)];
+  c.plane_a = core.xyz[slots[0]];
+  c.plane_b = core.xyz[slots[1]];
+  c.plane_normal = core.xyz[slots[2]];
   return c;
 }
 

@@ -1,5 +1,6 @@
 #include "ncc/passes/pass_registry.h"
 
+#include "compensation/compensation_pass.h"
 #include "cycle_expansion.h"
 #include "ncc/passes/coordinate_transform.h"
 #include "ncc/passes/travel_check.h"
@@ -34,6 +35,11 @@ std::unique_ptr<ir::BlockSink> transform(ir::BlockSink& next, const PipelineOpti
   return std::make_unique<TransformPass>(next, o.dialect, diags);
 }
 
+std::unique_ptr<ir::BlockSink> compensation(ir::BlockSink& next, const PipelineOptions& o,
+                                            DiagnosticEngine& diags) {
+  return std::make_unique<CompensationPass>(next, o.dialect, diags, o.compensate);
+}
+
 std::unique_ptr<ir::BlockSink> travelCheck(ir::BlockSink& next, const PipelineOptions& o,
                                            DiagnosticEngine& diags) {
   return std::make_unique<TravelCheckPass>(next, *o.travel_limits, o.dialect, diags);
@@ -50,6 +56,8 @@ constexpr PassInfo kPasses[] = {
      corners, false},
     {"transform", "G68 rotation, G51 scaling, G51.1 mirror, G92.5: maps targets and arc centres",
      always, transform, false},
+    {"compensation", "G41/G42 cutter radius compensation: the tool centre's path around each corner",
+     always, compensation, false},
     {"work-to-machine", "adds each block's frame: work offset, shifts, tool length", inMachineSpace,
      workToMachine, true},
     {"travel-check", "motion targets against the travel limits (ncc check only)", checksTravel,

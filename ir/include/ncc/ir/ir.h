@@ -256,6 +256,8 @@ struct CutterComp {
   Side side = Side::Off;
   double radius = 0.0;   // the D register in force, mm; a negative value swaps the side
   int d_number = 0;      // for messages; Mazak/Siemens D00 is radius 0
+  int plane_a = 0, plane_b = 1;  // the machine axes of the plane in force (first, second)
+  int plane_normal = 2;          // and of its normal (-1: the machine has none)
   bool side_commanded = false;  // G41/G42 written in this block (FANUC: same side again)
   Special special = Special::None;
   bool suspended = false;  // a hole cycle's block: its moves run on the programmed points
@@ -272,6 +274,12 @@ struct CutterComp {
   int lookahead = 3;             // blocks read ahead (FANUC No.19625, Mazak 5, Siemens 2)
   int max_without_motion = 1;    // blocks without motion in the plane that keep the corner
   bool interference_check = true;
+  // G41 again in G41 mode (G42 in G42): the move before ends perpendicular to itself (FANUC
+  // §5.4); false: ignored (Mazak).
+  bool recommand_perpendicular = false;
+  // A change of side runs over its block from perpendicular (old side) to perpendicular (new
+  // side) (Siemens §3.5.3); false: the corner is where the old and new offset paths meet (FANUC).
+  bool side_change_perpendicular = false;
   double corner_move_limit = 0.0;  // corner moves no longer than this are dropped (FANUC No.5010), mm
   SourceLocation loc;            // the G41/G42/G40 (or D) word, for messages
   friend bool operator==(const CutterComp&, const CutterComp&) = default;

@@ -23,6 +23,9 @@ struct PipelineOptions {
   // to_machine_space), reporting with the dialect's alarm numbers.
   const MachineConfig* travel_limits = nullptr;
   Dialect dialect = Dialect::FanucM;
+  // false: the compensation pass drops the G41/G42 requests and keeps the programmed path
+  // (`ncc plot` draws it beside the compensated one).
+  bool compensate = true;
   // `--print-after`: the IR as it leaves each of these passes goes to `printer` (needed when
   // the list is not empty). Names are checked by the caller (driver::checkPassControl); a name
   // that is no pass of this pipeline prints nothing.
