@@ -415,6 +415,21 @@ TEST(CutterCompLowering, TheStartUpBlockMayChooseThePlane) {
   EXPECT_EQ(r.line(2).comp->side, ir::CutterComp::Side::Left);
 }
 
+TEST(CutterCompLowering, TheDialectsRulesAndThePlanesAxesAreRecorded) {
+  const std::string program = "G18 G01 G41 X10. Z5. D1 F100.\nM08\nG40 X0\nM30\n";
+  for (Dialect d : kAll) {
+    Lowered r = lowerOnly(d, program);
+    EXPECT_EQ(r.diags, "");
+    for (uint32_t line : {1u, 2u, 3u}) {
+      const ir::CutterComp& c = *r.line(line).comp;
+      EXPECT_EQ(std::vector<int>({c.plane_a, c.plane_b, c.plane_normal}),
+                std::vector<int>({2, 0, 1}));  // G18: Z X, normal Y
+      EXPECT_EQ(c.recommand_perpendicular, d == Dialect::FanucM);
+      EXPECT_EQ(c.side_change_perpendicular, d == Dialect::SiemensIsoM);
+    }
+  }
+}
+
 TEST(CutterCompLowering, SiemensChangesTheSideAnywhere) {
   Lowered r = lowerOnly(Dialect::SiemensIsoM, "G17 G01 G41 X10. D1 F100.\nG42 X20.\nM30\n");
   EXPECT_EQ(r.diags, "");
