@@ -365,6 +365,7 @@ constexpr CompRules kComp{
     .skip_is_error = true,           // PS0035
     .d_zero_cancels = false,         // D0 is radius 0 (the lathe's T□□00 is the T word)
     .same_side_recommand_counts = true,  // G41 in G41: the vector perpendicular to the previous block
+    .side_change_perpendicular = false,  // the old and new paths' intersection
     .vector_with_motion = true,      // G00/G01 with I J K: the IJ-type vector
     .vector_with_cancel = true,      // G40 X Y I J
     .vector_with_hold = false,       // G38 IP_ only

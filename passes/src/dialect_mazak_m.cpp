@@ -346,6 +346,7 @@ constexpr CompRules kComp{
     .skip_is_error = true,           // G31 in compensation is an error
     .d_zero_cancels = true,          // "cancelled by G40 or D00"
     .same_side_recommand_counts = false,  // "G41 or G42 given in compensation is ignored"
+    .side_change_perpendicular = false,  // "changes directly" (§12-4-3 3.)
     .vector_with_motion = false,     // I J K with G01 only as 3-D compensation (all three)
     .vector_with_cancel = true,      // G40 X Y I J (§12-4-3 6.)
     .vector_with_hold = true,        // G38 I J D: a new vector direction

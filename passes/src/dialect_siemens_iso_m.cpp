@@ -304,6 +304,7 @@ constexpr CompRules kComp{
     .skip_is_error = true,           // §3.5.3: G31 while compensating
     .d_zero_cancels = false,         // D00 = radius 0
     .same_side_recommand_counts = false,  // the manual gives G41 in G41 no meaning
+    .side_change_perpendicular = true,  // "at the start and end points of that block"
     .vector_with_motion = false,
     .vector_with_cancel = false,
     .vector_with_hold = false,

@@ -311,7 +311,7 @@ void Lowering::variablesWritten(SourceLocation loc, std::vector<ir::SetVariable>
   out.modal.work_offset = st.cs.work_name;
   out.frame = frameOf(st.cs, st.table->behaviour);
   out.ops.assign(writes.begin(), writes.end());
-  out.comp = compensationInForce(st, st.cs);
+  out.comp = compensationInForce(st, st.cs, loc);
   st.out.accept(std::move(out));
 }
 

@@ -333,10 +333,10 @@ bool cornerArcBlock(const BlockContext& ctx);
 // on a hole cycle's block (Mazak 901 in 3-D), the count of compensated blocks; M02/M30
 // (`program_end`) put G40 back.
 void finishCutterComp(BlockContext& ctx, bool program_end);
-// The record of a block lowering emits outside lowerBlock (variable writes) while
+// The record of a block lowering emits outside lowerBlock (variable writes, at `loc`) while
 // compensation is in force; nullopt when it is not.
 std::optional<ir::CutterComp> compensationInForce(const LoweringCore& core,
-                                                  const ControllerState& cs);
+                                                  const ControllerState& cs, SourceLocation loc);
 
 // ---- lowering_machine_functions.cpp ----
 void dwell(BlockContext& ctx, const GWord& g);  // G04

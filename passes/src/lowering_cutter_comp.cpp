@@ -58,6 +58,7 @@ double radiusOf(const LoweringCore& core, const std::vector<TableWrite>* writes,
 ir::CutterComp recordOf(const LoweringCore& core, const ControllerState& cs,
                         const std::vector<TableWrite>* writes) {
   const LoweringSettings& s = core.settings;
+  const CompRules& rules = *core.table->comp;
   ir::CutterComp c;
   c.side = cs.comp.side;
   c.d_number = cs.d_selected;
@@ -73,11 +74,20 @@ ir::CutterComp recordOf(const LoweringCore& core, const ControllerState& cs,
   c.max_without_motion = s.comp_max_without_motion;
   c.interference_check = s.comp_interference_check;
   c.corner_move_limit = s.comp_corner_move_limit;
+  c.recommand_perpendicular = rules.same_side_recommand_counts;
+  c.side_change_perpendicular = rules.side_change_perpendicular;
+  // The plane's machine axes (first, second, normal), as an arc in it takes them; -1: none.
+  static constexpr int kSlots[][3] = {{0, 1, 2}, {2, 0, 1}, {1, 2, 0}};  // XY, ZX, YZ of X Y Z
+  const int* slots = kSlots[static_cast<int>(cs.modal.plane)];
+  c.plane_a = core.xyz[slots[0]];
+  c.plane_b = core.xyz[slots[1]];
+  c.plane_normal = core.xyz[slots[2]];
   return c;
 }
 
-// I J K as a work-space vector on X Y Z (mm), from the slots `use`; claims the words read.
-// nullopt (after reporting) when they give no direction.
+// I J K (slots 0 1 2) as a work-space vector on X Y Z (mm), from the slots `use`; claims the
+// block's I J K. nullopt after reporting: a word outside `use` (the plane's third address) has
+// no meaning, and a zero vector gives no direction.
 std::optional<std::array<double, 3>> vectorOf(BlockContext& ctx, std::array<bool, 3> use,
                                               const char* what) {
   const std::optional<WordValue>* words[3] = {&ctx.words.i, &ctx.words.j, &ctx.words.k};
@@ -107,7 +117,7 @@ std::optional<std::array<double, 3>> vectorOf(BlockContext& ctx, std::array<bool
   return v;
 }
 
-// Whether the block has one of the plane's I J K words (`all3`: all of I, J and K).
+// Whether the block has one of the I J K words of the slots `use`.
 bool hasPlaneVector(const BlockContext& ctx, std::array<bool, 3> use) {
   const std::optional<WordValue>* words[3] = {&ctx.words.i, &ctx.words.j, &ctx.words.k};
   for (int n = 0; n < 3; ++n)
@@ -135,13 +145,14 @@ void checkBlock(BlockContext& ctx, const CompRules& rules, Side was, Side now,
                           " mode: the start-up and the cancel must be G00 or G01 blocks"));
     return;
   }
-  // The plane while compensating (FANUC PS0037, Siemens §3.5.3).
-  if ((was != Side::Off || now != Side::Off) && ctx.next.modal.plane != before.modal.plane) {
+  // The plane while compensating (FANUC PS0037, Siemens §3.5.3); the start-up block may choose
+  // it (Siemens: "in or before the G41 block").
+  if (was != Side::Off && ctx.next.modal.plane != before.modal.plane) {
     const auto& g = ctx.words.group(GGroup::Plane);
     ctx.fail(Alarm::CompPlaneChange, g ? g->loc : ctx.block.loc,
              absl::StrCat(planeCode(ctx.next.modal.plane), " changes the plane from ",
                           planeCode(before.modal.plane), " while cutter compensation (",
-                          sideCode(was != Side::Off ? was : now),
+                          sideCode(was),
                           ") is in force; cancel it with G40 first"));
     return;
   }
@@ -219,12 +230,20 @@ void applyCutterComp(BlockContext& ctx) {
   const bool arc = arcMode(ctx.next.motion) && !ctx.words.one_shot && !cycle;
   const std::array<bool, 3> plane = planeSlots(ctx.next.modal.plane);
   const bool all3 = ctx.words.i && ctx.words.j && ctx.words.k;
+  // Mazak 835: 3-D compensation starts or changes only in G00/G01 (I J K of an arc are its).
+  if (rules->has_3d && all3 && arc && code && now != Side::Off) {
+    ctx.fail(Alarm::CompStartInArc, code->loc,
+             absl::StrCat(sideCode(now), " with I J K (3-D compensation) in ",
+                          ctx.next.motion == GAction::ArcCW ? "G02" : "G03",
+                          " mode: 3-D compensation starts and changes in G00 or G01 blocks"));
+    return;
+  }
   // G40 in cancel mode: its I J K are ignored (FANUC §5.2 "in cancel mode I/K with G40 are
   // ignored"), and nothing is recorded.
   if (was == Side::Off && now == Side::Off) {
     if (code && rules->vector_with_cancel && !arc && !cycle && hasPlaneVector(ctx, plane))
       ctx.used_ijk = true;
-    if (ctx.words.comp_special)
+    if (ctx.words.comp_special && !ctx.silent)
       ctx.core.diags.warning(
           std::string(ctx.table.alarm(Alarm::AddressWithoutMeaning)), ctx.words.comp_special->loc,
           absl::StrCat(gCodeName(ctx.words.comp_special->entry->code10),
@@ -275,26 +294,13 @@ void applyCutterComp(BlockContext& ctx) {
 void finishCutterComp(BlockContext& ctx, bool program_end) {
   if (!ctx.comp || ctx.failed) return;
   const CompRules& rules = *ctx.table.comp;
-  ir::CutterComp& c = *ctx.comp;
-  // The side after the block with the D (and its radius, this block's G10 writes included).
-  ir::CutterComp in_force = recordOf(ctx.core, ctx.next, &ctx.table_writes);
-  c.side = in_force.side;
-  c.d_number = in_force.d_number;
-  c.radius = in_force.radius;
-  c.offset_3d = in_force.offset_3d;
-  c.startup = in_force.startup;
-  c.arc_corners = in_force.arc_corners;
-  c.lookahead = in_force.lookahead;
-  c.max_without_motion = in_force.max_without_motion;
-  c.interference_check = in_force.interference_check;
-  c.corner_move_limit = in_force.corner_move_limit;
-  c.recommand_perpendicular = rules.same_side_recommand_counts;
-  // The plane's machine axes (first, second, normal), as an arc in it takes them.
-  static constexpr const char* kAxes[][3] = {{"X", "Y", "Z"}, {"Z", "X", "Y"}, {"Y", "Z", "X"}};
-  const auto& names = kAxes[static_cast<int>(ctx.next.modal.plane)];
-  c.plane_a = ctx.axisNamed(names[0]);
-  c.plane_b = ctx.axisNamed(names[1]);
-  c.plane_normal = ctx.axisNamed(names[2]);
+  // The record in force after the block (side, D, its radius with this block's G10 writes,
+  // the 3-D offset, the rules), with what the block's own words said.
+  ir::CutterComp c = recordOf(ctx.core, ctx.next, &ctx.table_writes);
+  c.side_commanded = ctx.comp->side_commanded;
+  c.special = ctx.comp->special;
+  c.vector = ctx.comp->vector;
+  c.loc = ctx.comp->loc;
   for (const ir::Operation& op : ctx.ops) {
     if (!std::holds_alternative<ir::HoleCycle>(op)) continue;
     // A hole cycle runs on the programmed points (FANUC, Siemens "compensation is ignored in
@@ -307,16 +313,17 @@ void finishCutterComp(BlockContext& ctx, bool program_end) {
     }
     c.suspended = true;
   }
+  ctx.comp = c;
   if (c.side != Side::Off) ++ctx.next.comp.blocks;
   // M02/M30 reset the control: G40 (the vector is cleared after the block).
   if (program_end) ctx.next.comp = CompState{};
 }
 
 std::optional<ir::CutterComp> compensationInForce(const LoweringCore& core,
-                                                  const ControllerState& cs) {
+                                                  const ControllerState& cs, SourceLocation loc) {
   if (!core.table || !core.table->comp || !cs.comp.active()) return std::nullopt;
   ir::CutterComp c = recordOf(core, cs, nullptr);
-  c.loc = SourceLocation{};
+  c.loc = loc;
   return c;
 }
 

@@ -357,6 +357,10 @@ const AlarmCase kAlarms[] = {
      "G17 G01 G41 X10. D1 F100.\nG02 X20. Y10. R10.\nD00",
      "3:1: error[835]: D0 cancels cutter compensation in G02 mode: the start-up and the cancel "
      "must be G00 or G01 blocks"},
+    {"ThreeDChangeInArcMazak", Dialect::MazakM,
+     "G17 G01 G41 X10. D1 F100.\nX20.\nG02 G42 X30. Y10. I0 J10. K1.",
+     "3:5: error[835]: G42 with I J K (3-D compensation) in G02 mode: 3-D compensation starts "
+     "and changes in G00 or G01 blocks"},
     {"PlaneChangeFanuc", Dialect::FanucM, "G17 G01 G41 X10. D1 F100.\nX20.\nG18 X30.",
      "3:1: error[PS0037]: G18 changes the plane from G17 while cutter compensation (G41) is in "
      "force; cancel it with G40 first"},
@@ -402,6 +406,28 @@ TEST(CutterCompLowering, ARejectedBlockLeavesTheSideUnknownUntilGivenAgain) {
   EXPECT_EQ(r.diags.substr(0, 19), "2:1: error[NCC2124]");
   for (const ir::Block& b : r.blocks) EXPECT_TRUE(b.loc.line != 2u && b.loc.line != 3u);
   EXPECT_EQ(r.line(4).comp->side, ir::CutterComp::Side::Left);
+}
+
+TEST(CutterCompLowering, TheStartUpBlockMayChooseThePlane) {
+  Lowered r = lowerOnly(Dialect::SiemensIsoM, "G17 G01 F100.\nG18 G41 X10. Z5. D1\nG40 X0\nM30\n");
+  EXPECT_EQ(r.diags, "");
+  EXPECT_EQ(r.line(2).modal.plane, ir::Plane::ZX);
+  EXPECT_EQ(r.line(2).comp->side, ir::CutterComp::Side::Left);
+}
+
+TEST(CutterCompLowering, TheDialectsRulesAndThePlanesAxesAreRecorded) {
+  const std::string program = "G18 G01 G41 X10. Z5. D1 F100.\nM08\nG40 X0\nM30\n";
+  for (Dialect d : kAll) {
+    Lowered r = lowerOnly(d, program);
+    EXPECT_EQ(r.diags, "");
+    for (uint32_t line : {1u, 2u, 3u}) {
+      const ir::CutterComp& c = *r.line(line).comp;
+      EXPECT_EQ(std::vector<int>({c.plane_a, c.plane_b, c.plane_normal}),
+                std::vector<int>({2, 0, 1}));  // G18: Z X, normal Y
+      EXPECT_EQ(c.recommand_perpendicular, d == Dialect::FanucM);
+      EXPECT_EQ(c.side_change_perpendicular, d == Dialect::SiemensIsoM);
+    }
+  }
 }
 
 TEST(CutterCompLowering, SiemensChangesTheSideAnywhere) {

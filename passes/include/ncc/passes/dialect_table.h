@@ -354,6 +354,9 @@ struct CompRules {
   bool skip_is_error;               // G31 in G41/G42 (all three manuals)
   bool d_zero_cancels;              // Mazak §12-4: "G40 or D00" cancels; else D00 = radius 0
   bool same_side_recommand_counts;  // FANUC: G41 in G41 re-makes the vector; Mazak: ignored
+  // A change of side runs over its block, perpendicular to perpendicular (Siemens §3.5.3); else
+  // the corner is where the old and new offset paths meet (FANUC §5.4, Mazak §12-4-3 3.).
+  bool side_change_perpendicular;
   // Where I J K (the plane's two) are a vector, not an arc centre: with G00/G01 (FANUC IJ-type
   // vector), with G40 (the direction of a virtual next move), with G38 (Mazak: a new vector).
   bool vector_with_motion;
