@@ -204,6 +204,10 @@ std::vector<ParamSpec> buildRegistry() {
   specs.push_back(Spec("input_unit_x10", T::Bool, "mazak-m", "false", false,
                        "Coordinates without a decimal point are in 0.01 mm (F91 bit 0 = 1); "
                        "H/D offset values are not affected"));
+  specs.push_back(Spec("interference_avoidance", T::Bool, kIso, "false", false,
+                       "Cutter compensation: an interference between three moves is avoided by "
+                       "leaving the middle one out (FANUC CAV No.19607#5 = 1, Mazak F92 bit 5 "
+                       "= 1) instead of the alarm"));
   specs.push_back(Spec("interference_check", T::Bool, kIso, "true", true,
                        "Cutter/nose compensation interference check on (FANUC No.5008#3 = 0, "
                        "Mazak F92 bit 5 = 0: an interference is an alarm)"));
@@ -411,6 +415,7 @@ std::vector<ParamSpec> buildRegistry() {
   // The cutter compensation keys: lowering records them for the compensation pass in the mill
   // dialects (docs/semantics.md); fanuc-t's nose radius compensation is not built yet.
   static constexpr std::string_view kMillComp[] = {"comp3d_normal_length", "corner_move_limit",
+                                                   "interference_avoidance",
                                                    "interference_check", "outer_corner_connection",
                                                    "startup_type", "tnrc_lookahead_blocks"};
   for (ParamSpec& spec : out) {

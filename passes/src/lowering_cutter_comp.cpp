@@ -73,6 +73,7 @@ ir::CutterComp recordOf(const LoweringCore& core, const ControllerState& cs,
   c.lookahead = s.comp_lookahead;
   c.max_without_motion = s.comp_max_without_motion;
   c.interference_check = s.comp_interference_check;
+  c.interference_avoidance = s.comp_interference_avoidance;
   c.corner_move_limit = s.comp_corner_move_limit;
   c.recommand_perpendicular = rules.same_side_recommand_counts;
   c.side_change_perpendicular = rules.side_change_perpendicular;

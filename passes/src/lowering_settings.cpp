@@ -80,6 +80,7 @@ LoweringSettings LoweringSettings::resolve(const DialectTable& table,
     s.comp_max_without_motion =
         c->max_without_motion > 0 ? c->max_without_motion : std::max(0, s.comp_lookahead - 2);
     s.comp_interference_check = p.getBool("interference_check", true);
+    s.comp_interference_avoidance = p.getBool("interference_avoidance", false);
     s.comp_corner_move_limit = p.getNumber("corner_move_limit", 0.0);
     s.comp3d_normal_length = p.getNumber("comp3d_normal_length", 0.0);
   }

@@ -55,6 +55,7 @@ struct LoweringSettings {
   int comp_lookahead = 3;             // tnrc_lookahead_blocks
   int comp_max_without_motion = 1;    // from the look-ahead or fixed (CompRules)
   bool comp_interference_check = true;  // interference_check
+  bool comp_interference_avoidance = false;  // interference_avoidance
   double comp_corner_move_limit = 0.0;  // corner_move_limit, mm
   double comp3d_normal_length = 0.0;  // comp3d_normal_length (Mazak F11); 0: |I J K|
   // Power-on state (reset_unit, reset_motion_mode, reset_plane), resolved from the strings.

@@ -54,5 +54,50 @@ TEST(CompensationRules, AMachineSpaceMoveRunsOnItsPointAndTheNextMoveTakesTheVec
             "7: L 70.000 80.000\n");
 }
 
+CompProgram shortChamfer(bool avoidance) {
+  // G41 r = 5: along +X, a 1 mm 45-degree chamfer, then up. The chamfer's offset runs backwards
+  // from (17.929,5) to (16,3.071): an interference.
+  CompProgram p;
+  p.settings().interference_avoidance = avoidance;
+  p.rapid(0, -10).side(Side::Left, 5).line(0, 0).line(20, 0).line(21, 1).line(21, 20).cancel()
+      .line(30, 30);
+  return p;
+}
+
+TEST(CompensationRules, AnInterferenceIsAnAlarmUnlessAvoidanceIsOn) {
+  CompProgram alarm = shortChamfer(false);
+  alarm.run();
+  ASSERT_TRUE(alarm.diagnostics().hasErrors());
+  EXPECT_EQ(alarm.diagnostics().diagnostics()[0].code, "PS0041");
+  EXPECT_EQ(alarm.diagnostics().diagnostics()[0].location.line, 4u);
+
+  // Avoidance (FANUC CAV = 1): the moves before and after the chamfer are joined where their
+  // offsets y = 5 and x = 16 meet; the chamfer runs no way in the plane; a warning says so.
+  CompProgram avoided = shortChamfer(true);
+  EXPECT_EQ(avoided.run(),
+            "1: R 0.000 -10.000\n"
+            "2: L 0.000 5.000\n"
+            "3: L 16.000 5.000\n"
+            "4: L 16.000 5.000\n"
+            "5: L 16.000 20.000\n"   // cancel corner, outer, type A: perpendicular
+            "6: L 30.000 30.000\n");
+  ASSERT_EQ(avoided.diagnostics().diagnostics().size(), 1u);
+  const Diagnostic& d = avoided.diagnostics().diagnostics()[0];
+  EXPECT_EQ(d.severity, Severity::Warning);
+  EXPECT_EQ(d.code, "PS0041");
+  EXPECT_EQ(d.location.line, 4u);
+  EXPECT_NE(d.message.find("interference avoided"), std::string::npos) << d.message;
+}
+
+TEST(CompensationRules, AvoidanceCannotJoinParallelWallsSoAGrooveStaysAnAlarm) {
+  CompProgram p;
+  p.settings().interference_avoidance = true;
+  p.rapid(-10, 10).side(Side::Left, 5).line(0, 0).line(20, 0).line(20, -10).line(23, -10)
+      .line(23, 0).line(40, 0).cancel().line(50, 10);
+  p.run();
+  ASSERT_TRUE(p.diagnostics().hasErrors());
+  EXPECT_EQ(p.diagnostics().diagnostics()[0].code, "PS0041");
+}
+
 }  // namespace
 }  // namespace ncc::passes::testing

@@ -161,6 +161,7 @@ void CompensationPass::reset() {
   corner_arc_vector_.reset();
   shift_block_.reset();
   recommanded_ = false;
+  closed_.reset();
 }
 
 void CompensationPass::accept(ir::Block block) {
@@ -197,6 +198,7 @@ void CompensationPass::accept(ir::Block block) {
   // Everything before the held move (or the start-up block that waits for its direction).
   uint64_t hold = count_;
   if (open_) hold = open_->ref.block;
+  if (closed_) hold = std::min(hold, closed_->a.ref.block);
   if (shift_block_) hold = std::min(hold, *shift_block_);
   release(hold);
 }
@@ -263,6 +265,7 @@ void CompensationPass::process(uint64_t n) {
         const Open& a = *open_;
         close(CornerPath{a.e.end + comp::leftNormal(a.e.endDirection()) * a.w, {}}, a.ref.block);
         open_.reset();
+        closed_.reset();
       }
       plane_motion = true;
       continue;
@@ -477,9 +480,66 @@ void CompensationPass::join(Open& b) {
     path = *found;
   }
   dropSmallCornerMoves(path, a.comp.corner_move_limit, b.e.arc);
+  if (a.comp.interference_avoidance && closed_ && interferes(a, path.a_end) && avoid(b)) return;
   close(path, connector_block);
   if (failed_) return;
   b.comp_start = path.b_start();
+}
+
+// Interference avoidance (FANUC §5.4.6 CAV = 1, Mazak F92 bit 5 = 1): the held move would run
+// backwards, so the move before it and `c` are joined where their offset paths meet, and the
+// held move runs no way in the plane. False when there is no such point or the move before
+// would then run backwards itself (FANUC PS5447: the caller's alarm).
+bool CompensationPass::avoid(Open& c) {
+  Closed& k = *closed_;
+  const Open& mid = *open_;
+  if (mid.fixed_end || c.startup) return false;
+  const auto ca = comp::offsetCurve(k.a.e, k.a.w), cc = comp::offsetCurve(c.e, c.w);
+  if (!ca || !cc) return false;
+  const auto x = comp::intersect(*ca, *cc, (mid.e.start + mid.e.end) / 2);
+  if (!x || interferes(k.a, *x)) return false;
+  // The move before ends at the new point, without the corner moves it had.
+  Pending& pa = at(k.a.ref.block);
+  pa.block.ops[k.a.ref.op] = k.op;
+  pa.after[k.a.ref.op] = k.after;
+  finishMove(k.a, *x);
+  // The held move and the moves off the plane on both sides of it stay at that point.
+  Pending& pm = at(mid.ref.block);
+  ir::Operation& op = pm.block.ops[mid.ref.op];
+  ir::Space space{};
+  const AxisValues to = fromCommon(
+      pm.block, withPlane(common(pm.block, *target(op, space), space), mid.comp, *x), space);
+  if (const auto* arc = std::get_if<ir::Arc>(&op)) {
+    ir::Linear line;
+    line.to = to;
+    line.space = space;
+    line.feed = arc->feed;
+    line.feed_per_rev = arc->feed_per_rev;
+    op = line;
+  } else {
+    *target(op, space) = to;
+  }
+  std::vector<Ref> refs = k.between;
+  refs.insert(refs.end(), between_.begin(), between_.end());
+  for (const Ref& r : refs) {
+    Pending& pb = at(r.block);
+    AxisValues* t = target(pb.block.ops[r.op], space);
+    *t = fromCommon(pb.block, withPlane(common(pb.block, *t, space), mid.comp, *x), space);
+  }
+  diags_.warning(std::string(table_->alarm(Alarm::CompInterference)), pm.block.loc,
+                 absl::StrCat("interference avoided: this ", mid.e.arc ? "arc" : "move",
+                              " would run against the programmed one; the moves before and "
+                              "after it are joined where their offset paths meet and it runs "
+                              "no way in the plane (interference_avoidance)"));
+  between_.clear();
+  without_motion_ = 0;
+  given_vector_.reset();
+  corner_arc_.reset();
+  corner_arc_vector_.reset();
+  recommanded_ = false;
+  closed_.reset();
+  c.comp_start = *x;
+  return true;
 }
 
 // Ends the held move at the path's first point, puts the corner moves after it and the moves
@@ -487,6 +547,12 @@ void CompensationPass::join(Open& b) {
 void CompensationPass::close(const CornerPath& path, uint64_t connector_block) {
   const Open& a = *open_;
   if (!checkInterference(a, path.a_end)) return;
+  closed_.reset();
+  if (a.comp.interference_avoidance && connector_block == a.ref.block && !a.startup &&
+      !a.fixed_end) {
+    const Pending& pa = at(a.ref.block);
+    closed_ = Closed{a, pa.block.ops[a.ref.op], pa.after[a.ref.op], between_};
+  }
   finishMove(a, path.a_end);
   Pending& holder = at(connector_block);
   for (const Connector& c : path.connectors) {
@@ -566,24 +632,27 @@ void CompensationPass::finishMove(const Open& a, Vec2 end) {
 // The interference check (FANUC §5.4.6, Mazak §12-4 837): the compensated move must not run
 // against the programmed one (lines: more than 90 degrees; arcs: a sweep 180 degrees or more
 // apart), or the tool cuts into the contour.
-bool CompensationPass::checkInterference(const Open& a, const Vec2& end) {
+bool CompensationPass::interferes(const Open& a, const Vec2& end, std::string* by) const {
   // A move that starts without a vector (start-up, after a temporary cancel) turns by design.
-  if (a.startup || (a.comp_start - a.e.start).norm() <= kLengthTolerance) return true;
-  bool against = false;
-  std::string by;
+  if (a.startup || (a.comp_start - a.e.start).norm() <= kLengthTolerance) return false;
   if (!a.e.arc) {
     const Vec2 programmed = a.e.end - a.e.start, compensated = end - a.comp_start;
-    against = compensated.norm() > kLengthTolerance && compensated.dot(programmed) < 0;
-    by = absl::StrCat(", backwards by ", mm(-compensated.dot(programmed.normalized())), " mm");
-  } else {
-    const double r = comp::offsetRadius(a.e, a.w);
-    if (std::fabs((end - a.e.centre).norm() - r) > 1e-7) return true;  // a given vector
-    const double programmed = std::fabs(a.e.sweep());
-    const bool closed = programmed > 6.28 && (end - a.comp_start).norm() <= 1e-7;
-    const double compensated =
-        closed ? programmed : comp::sweepBetween(a.e.centre, a.comp_start, end, a.e.clockwise);
-    against = std::fabs(programmed - compensated) >= std::numbers::pi - 1e-9;
+    if (by)
+      *by = absl::StrCat(", backwards by ", mm(-compensated.dot(programmed.normalized())), " mm");
+    return compensated.norm() > kLengthTolerance && compensated.dot(programmed) < 0;
   }
+  const double r = comp::offsetRadius(a.e, a.w);
+  if (std::fabs((end - a.e.centre).norm() - r) > 1e-7) return false;  // a given vector
+  const double programmed = std::fabs(a.e.sweep());
+  const bool closed = programmed > 6.28 && (end - a.comp_start).norm() <= 1e-7;
+  const double compensated =
+      closed ? programmed : comp::sweepBetween(a.e.centre, a.comp_start, end, a.e.clockwise);
+  return std::fabs(programmed - compensated) >= std::numbers::pi - 1e-9;
+}
+
+bool CompensationPass::checkInterference(const Open& a, const Vec2& end) {
+  std::string by;
+  const bool against = interferes(a, end, &by);
   if (!against) return true;
   const ir::Block& b = at(a.ref.block).block;
   const std::string message = absl::StrCat(
@@ -730,6 +799,7 @@ void CompensationPass::cancelWithoutMotion(uint64_t n) {
   }
   close(path, a.ref.block);
   open_.reset();
+  closed_.reset();
 }
 
 // Sends on the blocks numbered below `before`, with their corner moves in place.

@@ -58,6 +58,14 @@ class CompensationPass : public ir::BlockSink {
     ir::CutterComp comp;
   };
   enum class State { Off, Starting, On };
+  // With interference avoidance on, the move ended before the held one, as it was before: an
+  // interference of the held move is then avoided by joining this move with the next directly.
+  struct Closed {
+    Open a;
+    ir::Operation op;                  // its operation before it was ended
+    std::vector<ir::Operation> after;  // the moves after it then
+    std::vector<Ref> between;          // the moves off the plane placed at its corner
+  };
 
   Pending& at(uint64_t n) { return window_[n - first_]; }
   void process(uint64_t n);
@@ -69,6 +77,8 @@ class CompensationPass : public ir::BlockSink {
   void finishMove(const Open& a, comp::Vec2 end);
   void placeBetween(const comp::CornerPath& path, uint64_t connector_block);
   bool checkInterference(const Open& a, const comp::Vec2& end);
+  bool interferes(const Open& a, const comp::Vec2& end, std::string* by = nullptr) const;
+  bool avoid(Open& c);
   ir::Operation connector(const Open& a, const comp::Connector& c, const ir::Block& in);
   void release(uint64_t before);
   void fail(Alarm alarm, SourceLocation loc, std::string message);
@@ -83,6 +93,7 @@ class CompensationPass : public ir::BlockSink {
   AxisValues last_{};   // the programmed position (the pass's frame)
   State state_ = State::Off;
   std::optional<Open> open_;
+  std::optional<Closed> closed_;  // interference avoidance only
   ir::CutterComp last_comp_;      // the last request seen (its plane, for a block without one)
   std::vector<Ref> between_;      // moves off the plane after open_: placed at the corner
   int without_motion_ = 0;        // blocks without motion in the plane since open_

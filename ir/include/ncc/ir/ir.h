@@ -274,6 +274,9 @@ struct CutterComp {
   int lookahead = 3;             // blocks read ahead (FANUC No.19625, Mazak 5, Siemens 2)
   int max_without_motion = 1;    // blocks without motion in the plane that keep the corner
   bool interference_check = true;
+  // An interference between three moves is avoided by leaving the middle one out (FANUC CAV = 1,
+  // Mazak F92 bit 5 = 1); false: the alarm.
+  bool interference_avoidance = false;
   // G41 again in G41 mode (G42 in G42): the move before ends perpendicular to itself (FANUC
   // §5.4); false: ignored (Mazak).
   bool recommand_perpendicular = false;
