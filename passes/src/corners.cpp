@@ -154,18 +154,8 @@ Element elementOf(const ir::Operation& op, Vec start, const Planar& pl) {
   return el;
 }
 
-bool onlyVariableWrites(const ir::Block& b) {
-  if (b.ops.empty() || b.corner) return false;
-  for (const ir::Operation& op : b.ops)
-    if (!std::holds_alternative<ir::SetVariable>(op)) return false;
-  return true;
-}
-
-bool hasPrepare(const ir::Block& b) {
-  for (const ir::Operation& op : b.ops)
-    if (std::holds_alternative<ir::Prepare>(op)) return true;
-  return false;
-}
+// Variable writes between the held block and the next move stay with the held block.
+bool heldWithIt(const ir::Block& b) { return !b.corner && ir::onlyVariableWrites(b); }
 
 const char* what(const ir::CornerRequest& c) {
   return c.kind == ir::CornerRequest::Kind::Chamfer ? "chamfer" : "corner rounding";
@@ -182,11 +172,11 @@ void CornersPass::fail(Alarm a, SourceLocation loc, std::string message) {
 
 void CornersPass::accept(ir::Block block) {
   if (!held_) return take(std::move(block));
-  if (onlyVariableWrites(block)) {
+  if (heldWithIt(block)) {
     writes_.push_back(std::move(block));
     return;
   }
-  if (hasPrepare(block)) {
+  if (ir::hasPrepare(block)) {
     // The VM prepares the held block again, with the block after it (corners.h).
     held_.reset();
     writes_.clear();

@@ -72,17 +72,6 @@ double offsetOf(const ir::CutterComp& c) {
   return 0.0;
 }
 
-bool onlyVariableWrites(const ir::Block& b) {
-  if (b.ops.empty()) return false;
-  for (const ir::Operation& op : b.ops)
-    if (!std::holds_alternative<ir::SetVariable>(op)) return false;
-  return true;
-}
-bool hasPrepare(const ir::Block& b) {
-  for (const ir::Operation& op : b.ops)
-    if (std::holds_alternative<ir::Prepare>(op)) return true;
-  return false;
-}
 
 const char* planeName(const ir::Block& b) {
   switch (b.modal.plane) {
@@ -154,18 +143,13 @@ void CompensationPass::fail(Alarm alarm, SourceLocation loc, std::string message
 void CompensationPass::reset() {
   state_ = State::Off;
   open_.reset();
-  between_.clear();
-  without_motion_ = 0;
-  given_vector_.reset();
-  corner_arc_.reset();
-  corner_arc_vector_.reset();
+  spendCorner();
   shift_block_.reset();
-  recommanded_ = false;
   closed_.reset();
 }
 
 void CompensationPass::accept(ir::Block block) {
-  if (hasPrepare(block)) {
+  if (ir::hasPrepare(block)) {
     // The VM prepares the held blocks again, with the ones after them (as the corners pass).
     window_.clear();
     reset();
@@ -303,7 +287,7 @@ void CompensationPass::process(uint64_t n) {
   }
   if (state_ == State::Starting && !open_ && c && c->startup == Startup::C && !shift_block_)
     shift_block_ = n;
-  if (open_ && !onlyVariableWrites(at(n).block)) ++without_motion_;
+  if (open_ && !ir::onlyVariableWrites(at(n).block)) ++without_motion_;
 }
 
 // A move in the plane while compensating: the corner before it ends the held move.
@@ -531,12 +515,7 @@ bool CompensationPass::avoid(Open& c) {
                               " would run against the programmed one; the moves before and "
                               "after it are joined where their offset paths meet and it runs "
                               "no way in the plane (interference_avoidance)"));
-  between_.clear();
-  without_motion_ = 0;
-  given_vector_.reset();
-  corner_arc_.reset();
-  corner_arc_vector_.reset();
-  recommanded_ = false;
+  spendCorner();
   closed_.reset();
   c.comp_start = *x;
   return true;
@@ -561,6 +540,11 @@ void CompensationPass::close(const CornerPath& path, uint64_t connector_block) {
     else holder.tail.push_back(std::move(op));
   }
   placeBetween(path, connector_block);
+  spendCorner();
+}
+
+// What the blocks since the held move said about its corner has been used.
+void CompensationPass::spendCorner() {
   between_.clear();
   without_motion_ = 0;
   given_vector_.reset();

@@ -76,6 +76,7 @@ class CompensationPass : public ir::BlockSink {
   void close(const comp::CornerPath& path, uint64_t connector_block);
   void finishMove(const Open& a, comp::Vec2 end);
   void placeBetween(const comp::CornerPath& path, uint64_t connector_block);
+  void spendCorner();
   bool checkInterference(const Open& a, const comp::Vec2& end);
   bool interferes(const Open& a, const comp::Vec2& end, std::string* by = nullptr) const;
   bool avoid(Open& c);

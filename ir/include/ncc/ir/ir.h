@@ -300,6 +300,23 @@ struct Block {
   std::optional<CutterComp> comp;       // lowering -> compensation pass only
 };
 
+// A block made only of variable writes (`#100 = 1`): no step of the path, which look-ahead
+// passes hold beside the block before it.
+inline bool onlyVariableWrites(const Block& b) {
+  if (b.ops.empty()) return false;
+  for (const Operation& op : b.ops)
+    if (!std::holds_alternative<SetVariable>(op)) return false;
+  return true;
+}
+
+// A block that leaves the rest of the program to the VM's preparation (ir::Prepare): a
+// look-ahead pass drops what it holds, the VM prepares those blocks again.
+inline bool hasPrepare(const Block& b) {
+  for (const Operation& op : b.ops)
+    if (std::holds_alternative<Prepare>(op)) return true;
+  return false;
+}
+
 // A pass or the backend: receives blocks one at a time. finish() is called once at the end
 // (a look-ahead pass flushes what it holds there).
 class BlockSink {
