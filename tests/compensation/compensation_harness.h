@@ -38,6 +38,8 @@ class CompProgram {
   std::string run();
   const DiagnosticEngine& diagnostics() const { return diags_; }
   std::vector<ir::Block> runBlocks();
+  // The blocks built so far (to feed a pass by hand).
+  const std::vector<ir::Block>& built() const { return blocks_; }
   // The blocks as programmed (the pass's input).
   const std::vector<ir::Block>& input() const { return blocks_; }
 

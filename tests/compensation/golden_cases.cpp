@@ -430,18 +430,20 @@ std::vector<GoldenCase> makeCases() {
       [] { return leadInLine().line(40, 0).line(40, -30).cancel().line(40, -40); },
       "1: R -20.000 0.000\n2: L 0.000 5.000\n3: L 45.000 5.000\n4: L 45.000 5.000\n"
       "5: L 45.000 -30.000\n6: L 40.000 -40.000\n");
-  // Two, at an outer corner: A ends perpendicular (40,5), then perpendicular to the next move
-  // (45,0); a warning (the corner is left uncut).
+  // Two, at an outer corner: the look-ahead runs dry, A ends perpendicular to itself (40,5)
+  // (FANUC §5.4: "more than N-2 consecutive: perpendicular vector"), and the next move goes on
+  // from there to its own end vector (45,-30): the corner is left uncut, a warning.
   add("without_motion_beyond_outer", "too many blocks without motion at an outer corner",
       [] { return leadInLine().still().still().line(40, -30).cancel().line(40, -40); },
-      "1: R -20.000 0.000\n2: L 0.000 5.000\n3: L 40.000 5.000\n3: L 45.000 0.000\n"
+      "1: R -20.000 0.000\n2: L 0.000 5.000\n3: L 40.000 5.000\n"
       "6: L 45.000 -30.000\n7: L 40.000 -40.000\n",
       {}, {"NCC2128"});
-  // Two at an inner corner: the perpendicular vectors would cut into it: an alarm at the move
-  // after them (line 6); everything passes unchanged after it.
+  // Two at an inner corner: A ends perpendicular (40,5), and going on from there would cut
+  // into the corner: an alarm at the move after them (line 6); everything passes unchanged
+  // after it.
   add("without_motion_beyond_inner", "too many blocks without motion at an inner corner: alarm",
       [] { return leadInLine().still().still().line(40, 30).cancel().line(40, 40); },
-      "1: R -20.000 0.000\n2: L 0.000 5.000\n3: L 40.000 0.000\n6: L 40.000 30.000\n"
+      "1: R -20.000 0.000\n2: L 0.000 5.000\n3: L 40.000 5.000\n6: L 40.000 30.000\n"
       "7: L 40.000 40.000\n",
       {"NCC2128"});
 

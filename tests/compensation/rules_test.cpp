@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <variant>
 
+#include "compensation/compensation_pass.h"
 #include "compensation_harness.h"
 #include "gtest/gtest.h"
 
@@ -52,6 +53,32 @@ TEST(CompensationRules, AMachineSpaceMoveRunsOnItsPointAndTheNextMoveTakesTheVec
             "5: L 58.000 52.000\n"    // from there to the corner with the next move (inner)
             "6: L 58.000 70.000\n"    // cancel corner, outer, type A: perpendicular to Y70
             "7: L 70.000 80.000\n");
+}
+
+TEST(CompensationRules, TheWindowNeverHoldsMoreThanTheBlocksWithoutMotionThatKeepACorner) {
+  // 10000 blocks without motion (M08) after a compensated move: past the limit (1) the tool
+  // stops perpendicular and every block goes on at once, so the pass holds at most the move and
+  // the limit's blocks, whatever follows.
+  CompProgram p;
+  p.rapid(0, -10).side(Side::Left, 5).line(0, 0).line(20, 0);
+  for (int k = 0; k < 10000; ++k) p.still();
+  p.line(20, 20).cancel().line(30, 30);
+  struct Count : ir::BlockSink {
+    void accept(ir::Block) override { ++n; }
+    void finish() override {}
+    size_t n = 0;
+  } out;
+  DiagnosticEngine diags;
+  CompensationPass pass(out, Dialect::FanucM, diags);
+  size_t in = 0, most_held = 0;
+  for (const ir::Block& b : p.built()) {
+    pass.accept(b);
+    ++in;
+    most_held = std::max(most_held, in - out.n);
+  }
+  pass.finish();
+  EXPECT_EQ(out.n, in);
+  EXPECT_LE(most_held, 3u);  // the held move's block, one block without motion, the one past it
 }
 
 CompProgram shortChamfer(bool avoidance) {

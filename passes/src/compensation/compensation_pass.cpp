@@ -146,6 +146,7 @@ void CompensationPass::reset() {
   spendCorner();
   shift_block_.reset();
   closed_.reset();
+  stopped_.reset();
 }
 
 void CompensationPass::accept(ir::Block block) {
@@ -256,6 +257,7 @@ void CompensationPass::process(uint64_t n) {
     }
     if (!in_plane) {
       if (open_) between_.push_back({n, i});
+      else if (stopped_) placeAt({n, i}, stopped_->point, cc);
       continue;
     }
     plane_motion = true;
@@ -288,6 +290,44 @@ void CompensationPass::process(uint64_t n) {
   if (state_ == State::Starting && !open_ && c && c->startup == Startup::C && !shift_block_)
     shift_block_ = n;
   if (open_ && !ir::onlyVariableWrites(at(n).block)) ++without_motion_;
+  // The window stays within the look-ahead: past it the corner is known without the next move.
+  if (open_ && without_motion_ > open_->comp.max_without_motion && !corner_arc_)
+    stopPerpendicular();
+}
+
+void CompensationPass::stopPerpendicular() {
+  const Open& a = *open_;
+  const Vec2 point = given_vector_ ? Vec2(a.e.end + *given_vector_)
+                                   : Vec2(a.e.end + comp::leftNormal(a.e.endDirection()) * a.w);
+  stopped_ = Stopped{point, a.e.endDirection(), a.w, without_motion_, a.comp.max_without_motion,
+                     !given_vector_.has_value()};
+  close(CornerPath{point, {}}, a.ref.block);
+  open_.reset();
+  closed_.reset();
+}
+
+// The controller stops perpendicular to the move before and goes on from there: where that
+// cuts into an inner corner it is an error, where it leaves an outer one uncut a warning;
+// nothing where the corner is straight or there is no offset. False after the error.
+bool CompensationPass::judgePerpendicular(const Vec2& d1, double w, const Vec2& d2, double wb,
+                                          const ir::Block& at, const std::string& what) {
+  const comp::CornerKind kind = comp::classify(d1, d2, w);
+  if (kind == comp::CornerKind::Straight || (w == 0 && wb == 0)) return true;
+  if (kind == comp::CornerKind::Inner) {
+    fail(Alarm::CompWithoutMotion, at.loc,
+         absl::StrCat(what, ", and this inner corner would be cut into"));
+    return false;
+  }
+  diags_.warning(std::string(table_->alarm(Alarm::CompWithoutMotion)), at.loc,
+                 absl::StrCat(what, ": this corner is left uncut"));
+  return true;
+}
+
+void CompensationPass::placeAt(const Ref& r, const Vec2& p, const ir::CutterComp& c) {
+  Pending& pb = at(r.block);
+  ir::Space space{};
+  AxisValues* to = target(pb.block.ops[r.op], space);
+  *to = fromCommon(pb.block, withPlane(common(pb.block, *to, space), c, p), space);
 }
 
 // A move in the plane while compensating: the corner before it ends the held move.
@@ -342,6 +382,15 @@ void CompensationPass::admit(uint64_t n, size_t i, const AxisValues& start, cons
   } else if (open_) {
     join(b);
     if (failed_) return;
+  } else if (stopped_) {
+    const Stopped s = *std::exchange(stopped_, std::nullopt);
+    const std::string what = absl::StrCat(
+        s.blocks, " blocks without motion in the ", planeName(block), " plane before this move "
+        "(at most ", s.limit, " keep the corner): the controller stops perpendicular to the move "
+        "before them");
+    if (s.judge && !judgePerpendicular(s.direction, s.w, b.e.startDirection(), b.w, block, what))
+      return;
+    b.comp_start = s.point;
   } else {
     b.comp_start = b.e.start;  // after a temporary cancel: from where the tool is
   }
@@ -416,28 +465,14 @@ void CompensationPass::join(Open& b) {
     connector_block = *corner_arc_;
   } else if (side_change && b.comp.side_change_perpendicular) {
     path = CornerPath{p + comp::leftNormal(a.e.endDirection()) * a.w, {}};  // b: from there
-  } else if (without_motion_ > a.comp.max_without_motion || recommanded_) {
-    const comp::CornerKind kind = comp::classify(a.e.endDirection(), b.e.startDirection(), a.w);
-    const std::string what =
-        recommanded_
-            ? absl::StrCat(b.comp.side == Side::Left ? "G41" : "G42", " again while it is in "
-                           "force: the controller ends the move before perpendicular to itself")
-            : absl::StrCat(without_motion_, " blocks without motion in the ", planeName(bb),
-                           " plane before this move (at most ", a.comp.max_without_motion,
-                           " keep the corner): the controller stops perpendicular to the move "
-                           "before them");
-    // Only where the perpendicular vector differs from the corner's: not on a straight
-    // continuation, not without an offset.
-    const bool matters = kind != comp::CornerKind::Straight && (a.w != 0 || wb != 0);
-    if (matters && kind == comp::CornerKind::Inner) {
-      fail(Alarm::CompWithoutMotion, bb.loc,
-           absl::StrCat(what, ", and this inner corner would be cut into"));
+  } else if (recommanded_) {
+    // FANUC §5.4: the move before ends perpendicular to itself, the next goes on from there.
+    if (!judgePerpendicular(a.e.endDirection(), a.w, b.e.startDirection(), wb, bb,
+                            absl::StrCat(b.comp.side == Side::Left ? "G41" : "G42",
+                                         " again while it is in force: the controller ends the "
+                                         "move before perpendicular to itself")))
       return;
-    }
-    if (matters)
-      diags_.warning(std::string(table_->alarm(Alarm::CompWithoutMotion)), bb.loc,
-                     absl::StrCat(what, ": this corner is left uncut"));
-    path = comp::perpendicularPath(a.e, a.w, b.e, wb);
+    path = CornerPath{p + comp::leftNormal(a.e.endDirection()) * a.w, {}};
   } else {
     comp::CornerRules rules;
     rules.arc_connection = a.comp.arc_corners &&

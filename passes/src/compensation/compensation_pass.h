@@ -77,6 +77,10 @@ class CompensationPass : public ir::BlockSink {
   void finishMove(const Open& a, comp::Vec2 end);
   void placeBetween(const comp::CornerPath& path, uint64_t connector_block);
   void spendCorner();
+  void stopPerpendicular();
+  bool judgePerpendicular(const comp::Vec2& d1, double w, const comp::Vec2& d2, double wb,
+                          const ir::Block& at, const std::string& what);
+  void placeAt(const Ref& r, const comp::Vec2& p, const ir::CutterComp& c);
   bool checkInterference(const Open& a, const comp::Vec2& end);
   bool interferes(const Open& a, const comp::Vec2& end, std::string* by = nullptr) const;
   bool avoid(Open& c);
@@ -95,6 +99,17 @@ class CompensationPass : public ir::BlockSink {
   State state_ = State::Off;
   std::optional<Open> open_;
   std::optional<Closed> closed_;  // interference avoidance only
+  // More blocks without motion in the plane followed the last move than keep its corner (the
+  // controller's look-ahead ran dry): the tool stopped perpendicular to that move (or on an I J
+  // vector), the blocks went on, and the next move starts from there.
+  struct Stopped {
+    comp::Vec2 point;
+    comp::Vec2 direction;  // the last move's, at its end
+    double w = 0.0;
+    int blocks = 0, limit = 0;
+    bool judge = true;     // false: an I J vector put it there, as the program said
+  };
+  std::optional<Stopped> stopped_;
   ir::CutterComp last_comp_;      // the last request seen (its plane, for a block without one)
   std::vector<Ref> between_;      // moves off the plane after open_: placed at the corner
   int without_motion_ = 0;        // blocks without motion in the plane since open_
