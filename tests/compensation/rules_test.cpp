@@ -81,6 +81,22 @@ TEST(CompensationRules, TheWindowNeverHoldsMoreThanTheBlocksWithoutMotionThatKee
   EXPECT_LE(most_held, 3u);  // the held move's block, one block without motion, the one past it
 }
 
+TEST(CompensationRules, AStopPastTheLookAheadEndsWithACancelAndIsNotTakenIntoTheNextStart) {
+  // G41 r = 2, two blocks without motion (past the limit: the tool stops at (20,2)), G40 alone,
+  // a move off the plane, then a new start-up: nothing of the old stop point reaches it.
+  CompProgram p;
+  p.rapid(0, -10).side(Side::Left, 2).line(0, 0).line(20, 0).still().still().cancel().still()
+      .side(Side::Left, 2).rapid(20, 0, 5).line(40, 0).line(40, 20).cancel().line(50, 30);
+  EXPECT_EQ(p.run(),
+            "1: R 0.000 -10.000\n"
+            "2: L 0.000 2.000\n"
+            "3: L 20.000 2.000\n"    // stopped perpendicular past the look-ahead
+            "7: R 20.000 0.000\n"    // G41 with Z alone: no vector yet (type A), Z at the point
+            "8: L 38.000 2.000\n"    // a fresh start-up (inner corner with Y20.)
+            "9: L 38.000 20.000\n"
+            "10: L 50.000 30.000\n");
+}
+
 CompProgram shortChamfer(bool avoidance) {
   // G41 r = 5: along +X, a 1 mm 45-degree chamfer, then up. The chamfer's offset runs backwards
   // from (17.929,5) to (16,3.071): an interference.

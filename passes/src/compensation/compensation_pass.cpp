@@ -252,6 +252,7 @@ void CompensationPass::process(uint64_t n) {
         open_.reset();
         closed_.reset();
       }
+      stopped_.reset();
       plane_motion = true;
       continue;
     }
@@ -265,6 +266,7 @@ void CompensationPass::process(uint64_t n) {
       cancel(n, i, start, end);
       if (failed_) return;
       state_ = State::Off;
+      stopped_.reset();
       continue;
     }
     admit(n, i, start, end);
@@ -274,6 +276,7 @@ void CompensationPass::process(uint64_t n) {
   if (cancelling && state_ != State::Off) {
     cancelWithoutMotion(n);
     state_ = State::Off;
+    stopped_.reset();  // the tool stays where it stopped until the next move, as programmed
     return;
   }
   if (state_ == State::Off || plane_motion) return;

@@ -7,7 +7,9 @@
 //
 // Streaming with a bounded window: the last compensated move is held until the next move in
 // the plane arrives (the corner between them decides where it ends); the blocks after it
-// (without motion in the plane) are held with it. The geometry is offset_geometry.h's.
+// (without motion in the plane) are held with it, up to the dialect's limit of such blocks:
+// past it the tool stops perpendicular to the held move and they go on (the controller's
+// look-ahead has run dry too). The geometry is offset_geometry.h's.
 //
 // Positions are compared in one frame for the whole program, work + work offset + shift (the
 // tool length left out: compensation acts on the tool's tip), so that a change of work offset
