@@ -229,7 +229,7 @@ std::vector<GoldenCase> makeCases() {
   for (const auto& [t, name] : {std::pair{Startup::A, "a"}, std::pair{Startup::C, "c"}})
     add(std::string("startup_") + name + "_outer", std::string("start-up type ") + name +
             ", outer corner: straight to perpendicular to the next move",
-        [t] { return startupType(t).line(40, 0).cancel().line(50, 0); },
+        [t = t] { return startupType(t).line(40, 0).cancel().line(50, 0); },
         "1: R 0.000 -20.000\n2: L 0.000 5.000\n3: L 40.000 5.000\n4: L 50.000 0.000\n");
   // B: perpendicular to the start-up move P + 5 n1 = (-5,0), then the offset lines' meeting
   // point P + 5 (n1 + n2) / 1 = (-5,5).
@@ -257,13 +257,13 @@ std::vector<GoldenCase> makeCases() {
        {std::pair{Startup::A, "a"}, std::pair{Startup::B, "b"}, std::pair{Startup::C, "c"}})
     add(std::string("startup_") + name + "_inner",
         std::string("start-up type ") + name + ", inner corner: the offset lines' intersection",
-        [t] { return startupType(t).line(-40, 0).cancel().line(-50, 0); },
+        [t = t] { return startupType(t).line(-40, 0).cancel().line(-50, 0); },
         "1: R 0.000 -20.000\n2: L -5.000 -5.000\n3: L -40.000 -5.000\n4: L -50.000 0.000\n");
   // B straight on to (0,40): A and B both end at P + 5 n1 = (-5,0).
   for (const auto& [t, name] : {std::pair{Startup::A, "a"}, std::pair{Startup::B, "b"}})
     add(std::string("startup_") + name + "_straight",
         std::string("start-up type ") + name + ", straight on",
-        [t] { return startupType(t).line(0, 40).cancel().line(0, 50); },
+        [t = t] { return startupType(t).line(0, 40).cancel().line(0, 50); },
         "1: R 0.000 -20.000\n2: L -5.000 0.000\n3: L -5.000 40.000\n4: L 0.000 50.000\n");
   // B an arc clockwise about (0,-20), R = 20, to (20,-20): starts along +X (outer 90), offset
   // radius 25. A: to P + 5 n2 = (0,5) (on the offset circle). B: (-5,0), (-5,5), then B's
@@ -316,7 +316,7 @@ std::vector<GoldenCase> makeCases() {
   // Inner (G40 up to (40,30)), every type: the offset lines meet at (35,5).
   for (const auto& [t, name] : {std::pair{Startup::A, "a"}, std::pair{Startup::B, "b"}})
     add(std::string("cancel_") + name + "_inner", std::string("cancel type ") + name + ", inner",
-        [t] { return cancelType(t).line(40, 30); },
+        [t = t] { return cancelType(t).line(40, 30); },
         "1: R -20.000 0.000\n2: L 0.000 5.000\n3: L 35.000 5.000\n4: L 40.000 30.000\n");
   // Outer 90 (down to (40,-30)). A: A ends perpendicular, (40,5), then to the point.
   add("cancel_a_outer", "cancel type A, outer corner",
