@@ -32,7 +32,10 @@ class CompileFactsTest : public ::testing::Test {
  protected:
   // Opens a session for `program` on a machine whose D1 is 5 mm.
   void open(const std::string& program) {
-    dir_ = fs::path(::testing::TempDir()) / "ncc_plot_test";
+    // One folder per test: ctest runs the tests of this file side by side.
+    dir_ = fs::path(::testing::TempDir()) /
+           (std::string("ncc_plot_test_") +
+            ::testing::UnitTest::GetInstance()->current_test_info()->name());
     fs::create_directories(dir_);
     std::ofstream(dir_ / "part.nc") << program;
     std::ofstream(dir_ / "mill.toml") << "[machine.offsets]\nD1 = 5.0\n";
@@ -58,7 +61,7 @@ TEST_F(CompileFactsTest, ACompensatedProgramIsReportedAndCompilesToBothPaths) {
   EXPECT_TRUE(session_.compileFacts().cutter_comp);
   EXPECT_FALSE(session_.compileFacts().prepared_at_run_time);
   // The rectangle's corners, 5 mm out.
-  for (const auto corner : {std::pair{-5.0, 35.0}, std::pair{45.0, 35.0}, std::pair{45.0, -5.0}})
+  for (const auto& corner : {std::pair{-5.0, 35.0}, std::pair{45.0, 35.0}, std::pair{45.0, -5.0}})
     EXPECT_NE(std::find(centre.ends.begin(), centre.ends.end(), corner), centre.ends.end())
         << corner.first << " " << corner.second;
   EXPECT_EQ(std::find(centre.ends.begin(), centre.ends.end(), std::pair{40.0, 30.0}),
