@@ -97,6 +97,35 @@ TEST(CompensationRules, AStopPastTheLookAheadEndsWithACancelAndIsNotTakenIntoThe
             "10: L 50.000 30.000\n");
 }
 
+TEST(CompensationRules, G39AfterG00WithoutAFeedIsPs0011AtTheG39Block) {
+  // G39's arc runs at the modal F even after G00 (FANUC §5.6); none was programmed.
+  CompProgram p;
+  p.rapid(0, -10).side(Side::Left, 5).rapid(0, 0).rapid(40, 0)
+      .special(ir::CutterComp::Special::CornerArc).still().rapid(40, -30).cancel().rapid(50, -40);
+  p.run();
+  ASSERT_EQ(p.diagnostics().diagnostics().size(), 1u);
+  const Diagnostic& d = p.diagnostics().diagnostics()[0];
+  EXPECT_EQ(d.code, "PS0011");
+  EXPECT_EQ(d.location.line, 4u);
+  EXPECT_NE(d.message.find("G39's corner arc after G00 runs at the modal F"), std::string::npos)
+      << d.message;
+}
+
+TEST(CompensationRules, TooManyBlocksWithoutMotionBeforeAnInnerCornerIsNcc2128AtTheMove) {
+  CompProgram p;
+  p.rapid(-20, 0).side(Side::Left, 5).line(0, 0).line(40, 0).still().still().line(40, 30)
+      .cancel().line(40, 40);
+  p.run();
+  ASSERT_EQ(p.diagnostics().diagnostics().size(), 1u);
+  const Diagnostic& d = p.diagnostics().diagnostics()[0];
+  EXPECT_EQ(d.code, "NCC2128");
+  EXPECT_EQ(d.location.line, 6u);
+  EXPECT_NE(d.message.find("2 blocks without motion in the XY plane before this move (at most 1 "
+                           "keep the corner)"),
+            std::string::npos) << d.message;
+  EXPECT_NE(d.message.find("this inner corner would be cut into"), std::string::npos);
+}
+
 CompProgram shortChamfer(bool avoidance) {
   // G41 r = 5: along +X, a 1 mm 45-degree chamfer, then up. The chamfer's offset runs backwards
   // from (17.929,5) to (16,3.071): an interference.
