@@ -37,7 +37,7 @@ void BytecodeWriter::error(std::string code, SourceLocation where, std::string m
   if (diags_ != nullptr) diags_->error(std::move(code), where, std::move(message));
 }
 
-void BytecodeWriter::accept(ir::Block block) {
+void BytecodeWriter::accept(ir::Block&& block) {
   if (!ok_ || finished_) return;
   std::vector<std::string> problems =
       ir::verify(block, ir::VerifyOptions{machine_.axisCount(), /*require_machine_space=*/true});

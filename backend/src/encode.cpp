@@ -202,9 +202,11 @@ std::optional<std::string> outOfBounds(const bytecode::Instruction& in,
   using bytecode::Opcode;
   auto beyond = [](double v) { return !(std::abs(v) <= bytecode::kMaxCoordinate); };
   auto number = [](double v) { return absl::StrFormat("%.10g", v); };
-  const std::string coordinate_bound = absl::StrCat(
-      " is beyond +-", number(bytecode::kMaxCoordinate),
-      " mm (or degrees), the largest coordinate a bytecode program may hold");
+  // Built only for a message: this runs on every instruction.
+  auto coordinate_bound = [&number] {
+    return absl::StrCat(" is beyond +-", number(bytecode::kMaxCoordinate),
+                        " mm (or degrees), the largest coordinate a bytecode program may hold");
+  };
   const bool has_axes = in.op == Opcode::Rapid || in.op == Opcode::Line ||
                         in.op == Opcode::Arc || in.op == Opcode::RefCheck ||
                         in.op == Opcode::Skip;
@@ -212,19 +214,19 @@ std::optional<std::string> outOfBounds(const bytecode::Instruction& in,
     for (int i = 0; i < machine_.axisCount(); ++i) {
       if (beyond(in.axes[i]))
         return absl::StrCat("the ", machine_.axes[i].name, " position ", number(in.axes[i]),
-                            " (machine coordinates, after offsets)", coordinate_bound);
+                            " (machine coordinates, after offsets)", coordinate_bound());
     }
   }
   if (in.op == Opcode::Skip) {
     for (int i = 0; i < machine_.axisCount(); ++i)
       if (beyond(in.origin[i]))
         return absl::StrCat("the ", machine_.axes[i].name, " work origin ", number(in.origin[i]),
-                            " (machine coordinates)", coordinate_bound);
+                            " (machine coordinates)", coordinate_bound());
   }
   if (in.op == Opcode::Arc) {
     if (beyond(in.center1) || beyond(in.center2))
       return absl::StrCat("the arc centre (", number(in.center1), ", ", number(in.center2),
-                          ")", coordinate_bound);
+                          ")", coordinate_bound());
     if (in.turns > bytecode::kMaxExtraTurns)
       return absl::StrCat(in.turns, " extra turns of an arc (at most ",
                           bytecode::kMaxExtraTurns, ")");

@@ -45,7 +45,7 @@ struct BlockStoreTargets {
 std::optional<eval::ProgramPoint> writtenMainEnd(SourceProgramStore& store, uint32_t file);
 
 // `store`: the compile's store, after the compile (its records say what the run asked for).
-// The result's ahead_blocks, max_back_jumps and saved_variables are left at their defaults.
+// The result's ahead_blocks, limits and saved_variables are left at their defaults.
 eval::BlockStore buildBlockStore(SourceProgramStore& store, uint32_t main_file,
                                  const BlockStoreTargets& targets, DiagnosticEngine& diags);
 

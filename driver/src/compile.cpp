@@ -21,6 +21,7 @@
 #include "ncc/prepare/block_loop.h"
 #include "ncc/eval/block_store.h"
 #include "block_store_builder.h"
+#include "run_budget.h"
 #include "ast_stages.h"
 #include "source_program_store.h"
 
@@ -128,7 +129,7 @@ std::optional<std::map<int64_t, double>> loadSavedVariables(Session& session,
 
 // Receives the IR and keeps nothing.
 struct DiscardingSink : ir::BlockSink {
-  void accept(ir::Block) override {}
+  void accept(ir::Block&&) override {}
   void finish() override {}
 };
 
@@ -137,7 +138,7 @@ struct DiscardingSink : ir::BlockSink {
 class FactsTap : public ir::BlockSink {
  public:
   FactsTap(CompileFacts& facts, ir::BlockSink& next) : facts_(facts), next_(next) {}
-  void accept(ir::Block block) override {
+  void accept(ir::Block&& block) override {
     if (block.comp && (block.comp->side != ir::CutterComp::Side::Off || block.comp->offset_3d))
       facts_.cutter_comp = true;
     next_.accept(std::move(block));
@@ -176,7 +177,7 @@ void prepareAtRunTime(Session& session, SourceProgramStore& store, const prepare
   eval::BlockStore blocks = buildBlockStore(store, session.mainFile(), targets, session.diagnostics());
   if (session.diagnostics().hasErrors()) return;
   blocks.ahead_blocks = deferred ? 0 : loop.steps();
-  blocks.max_back_jumps = session.maxBackJumps();
+  blocks.limits = session.loopLimits();
   blocks.saved_variables = std::move(saved);
   ir::Prepare prepare;
   prepare.ahead_blocks = blocks.ahead_blocks;
@@ -195,7 +196,10 @@ void prepareAtRunTime(Session& session, SourceProgramStore& store, const prepare
 // What follows is never executed; it is not parsed either, and draws a warning at most.
 // From a block that needs a value known only when the program runs (or from the start, with
 // --defer) the VM prepares the blocks: the compiler writes the block store for it.
-void lowerProgram(Session& session, ir::BlockSink& entry, AstStageTap& tap) {
+// `budget` is the run's bounds in front of the final sink: the compile stops where the run
+// would (run_budget.h).
+void lowerProgram(Session& session, ir::BlockSink& entry, AstStageTap& tap,
+                  const RunBudgetSink& budget) {
   DiagnosticEngine& diags = session.diagnostics();
   const eval::MacroRules& rules = eval::macroRules(session.dialect());
   SourceProgramStore store(session.sources(), diags, session.programDir(),
@@ -206,7 +210,7 @@ void lowerProgram(Session& session, ir::BlockSink& entry, AstStageTap& tap) {
   settings.dialect = session.dialect();
   settings.machine = &session.machine();
   settings.program_dir = session.programDir();
-  settings.max_back_jumps = session.maxBackJumps();
+  settings.limits = session.loopLimits();
   // --defer: the whole program is still evaluated here, for its diagnostics and the programs
   // it calls, but its IR goes nowhere: the VM prepares every block. It still passes the
   // passes, whose alarms (a corner that does not fit, docs/semantics.md) are then reported
@@ -214,14 +218,17 @@ void lowerProgram(Session& session, ir::BlockSink& entry, AstStageTap& tap) {
   DiscardingSink discard;
   const bool deferred = session.defer();
   std::optional<passes::PassManager> checks;  // built for --defer only
+  std::optional<RunBudgetSink> deferred_budget;
   if (deferred) {
+    deferred_budget.emplace(session.machine(), session.bounds(), discard);
     passes::PipelineOptions check_options;
     check_options.axis_count = session.machine().axisCount();
     check_options.dialect = session.dialect();
     check_options.verify = false;
     check_options.compensate = session.compensate();
-    checks.emplace(check_options, diags, discard);
+    checks.emplace(check_options, diags, *deferred_budget);
   }
+  const RunBudgetSink& bounds = deferred ? *deferred_budget : budget;
   FactsTap checked(session.compileFacts(), deferred ? checks->entry() : entry);
   prepare::BlockLoop loop(settings, store, session.mainFile(), diags, checked);
   // After on_write: the loaded values reach the VM too, so a run ends with every kept
@@ -239,9 +246,12 @@ void lowerProgram(Session& session, ir::BlockSink& entry, AstStageTap& tap) {
     tap.after("evaluate", block);
   };
   prepare::Step step;
-  while ((step = loop.step()) == prepare::Step::Block) {
+  while ((step = loop.step()) == prepare::Step::Block && !bounds.exceeded()) {
   }
   tap.finish();
+  if (const std::optional<RunBudgetSink::Exceeded>& passed = bounds.exceeded();
+      passed && session.boundAction() == BoundAction::Report)
+    diags.error(passed->code, passed->loc, passed->message);
   const eval::Evaluator& evaluator = loop.evaluator();
   if (step == prepare::Step::RunTime && !deferred)
     diags.report(Severity::Note, "NCC0023", loop.runTimeReason().loc,
@@ -293,8 +303,9 @@ bool compileWith(Session& session, ir::BlockSink& sink, Pipeline which,
     options.printer = printer;
     options.stop_after = control.stop_after;
   }
-  passes::PassManager pipeline(options, session.diagnostics(), lowers ? sink : discard);
-  lowerProgram(session, pipeline.entry(), tap);
+  RunBudgetSink budget(session.machine(), session.bounds(), lowers ? sink : discard);
+  passes::PassManager pipeline(options, session.diagnostics(), budget);
+  lowerProgram(session, pipeline.entry(), tap, budget);
   return !session.diagnostics().hasErrors();
 }
 }  // namespace

@@ -47,7 +47,9 @@ std::optional<SetupError> Session::open(const std::filesystem::path& input,
   input_ = input;
   // --dialect, else the machine file's [machine] dialect, else from the file name.
   const Dialect by_name = from_stdin ? Dialect::FanucM : dialectFromFileName(input.filename().string());
-  max_back_jumps_ = options.max_back_jumps;
+  loop_limits_ = options.loop_limits;
+  bounds_ = options.bounds;
+  bound_action_ = options.bound_action;
   variables_file_ = options.variables_file;
   defer_ = options.defer;
   if (options.machine_file) {

@@ -1,7 +1,8 @@
 #include "source_program_store.h"
 
 #include <algorithm>
-#include <unordered_map>
+
+#include "absl/container/flat_hash_map.h"
 
 namespace ncc::driver {
 
@@ -9,43 +10,52 @@ namespace {
 
 // A file's blocks through a BlockReader. Once the cursor has gone back (a loop, a repeat), the
 // blocks it reads are kept, parsed, by where they start, so a loop body is parsed once rather
-// than on every turn; a cursor that only reads forward keeps nothing. The cache is bounded:
-// past kMaxCached blocks it starts again.
+// than on every turn; a cursor that only reads forward keeps nothing. Replaying a kept block
+// does not touch the file: the reader is moved (a seek of its stream, a system call) only when
+// a block must be read again. The cache is bounded: past kMaxCached blocks it starts again, so
+// a multi-million-line program still streams.
 class ReaderCursor final : public eval::BlockCursor {
  public:
   ReaderCursor(const SourceManager& sources, uint32_t file, DiagnosticEngine& diags,
                frontend::ReaderOptions options)
-      : reader(sources, file, diags, options) {}
+      : reader_(sources, file, diags, options) {}
 
   std::optional<ast::Block> next() override {
-    if (!replaying_) return reader.next();
-    const frontend::BlockPosition from = reader.position();
-    const uint64_t key = from.offset * 4096u + from.column;
-    if (auto it = cache_.find(key); it != cache_.end() && it->second.from == from) {
-      last_ = it->second.at;
-      reader.seek(it->second.after);
-      return it->second.block;
+    if (!replaying_) return reader_.next();
+    if (const Cached* hit = find(at_)) {
+      last_ = hit->at;
+      at_ = hit->after;
+      return hit->block;
     }
-    std::optional<ast::Block> block = reader.next();
+    syncReader();
+    const frontend::BlockPosition from = at_;
+    std::optional<ast::Block> block = reader_.next();
     last_.reset();
+    at_ = reader_.position();
     if (!block) return block;
     if (cache_.size() >= kMaxCached) cache_.clear();
-    cache_[key] = Cached{from, reader.lastPosition(), reader.position(), *block};
+    cache_.insert_or_assign(key(from), Cached{from, reader_.lastPosition(), at_,
+                                              reader_.language(), *block});
     return block;
   }
   eval::ProgramPoint lastPoint() const override {
-    return {reader.file(), last_ ? *last_ : reader.lastPosition()};
+    return {reader_.file(), last_ ? *last_ : reader_.lastPosition()};
   }
   void seek(const eval::ProgramPoint& point) override {
     replaying_ = true;
     last_.reset();
-    reader.seek(point.position);
+    at_ = point.position;
+    synced_ = false;
   }
-  void setLanguage(frontend::Language language) override { reader.setLanguage(language); }
-  uint64_t rejectedBlocks() const override { return reader.stats().rejected_blocks; }
-  uint32_t file() const override { return reader.file(); }
+  void setLanguage(frontend::Language language) override { reader_.setLanguage(language); }
+  uint64_t rejectedBlocks() const override { return reader_.stats().rejected_blocks; }
+  uint32_t file() const override { return reader_.file(); }
 
-  frontend::BlockReader reader;
+  // The reader, where this cursor stands.
+  frontend::BlockReader& reader() {
+    if (replaying_) syncReader();
+    return reader_;
+  }
 
  private:
   static constexpr size_t kMaxCached = 4096;
@@ -53,11 +63,30 @@ class ReaderCursor final : public eval::BlockCursor {
     frontend::BlockPosition from;   // where reading stood (blank text may precede the block)
     frontend::BlockPosition at;     // where the block starts
     frontend::BlockPosition after;  // where reading goes on
+    frontend::Language language;    // read in (G290/G291 may read the same text otherwise)
     ast::Block block;
   };
+  static uint64_t key(const frontend::BlockPosition& p) { return p.offset * 4096u + p.column; }
+  const Cached* find(const frontend::BlockPosition& from) const {
+    auto it = cache_.find(key(from));
+    if (it == cache_.end() || !(it->second.from == from) ||
+        it->second.language != reader_.language())
+      return nullptr;
+    return &it->second;
+  }
+  void syncReader() {
+    if (synced_) return;
+    reader_.seek(at_);
+    synced_ = true;
+  }
+
+  frontend::BlockReader reader_;
   bool replaying_ = false;
+  // While replaying: where the next block starts, and whether the reader stands there.
+  frontend::BlockPosition at_;
+  bool synced_ = true;
   std::optional<frontend::BlockPosition> last_;  // lastPoint() of a block from the cache
-  std::unordered_map<uint64_t, Cached> cache_;
+  absl::flat_hash_map<uint64_t, Cached> cache_;
 };
 
 frontend::SequenceSearch toFrontend(eval::SequenceSearch order) {
@@ -131,7 +160,7 @@ eval::ProgramPoint SourceProgramStore::programEnd(const eval::ProgramPoint& star
 }
 
 frontend::BlockReader& SourceProgramStore::readerOf(eval::BlockCursor& cursor) {
-  return static_cast<ReaderCursor&>(cursor).reader;
+  return static_cast<ReaderCursor&>(cursor).reader();
 }
 
 }  // namespace ncc::driver

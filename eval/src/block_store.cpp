@@ -14,7 +14,7 @@ namespace ncc::eval {
 namespace {
 
 constexpr uint8_t kMagic[4] = {'N', 'C', 'B', 'S'};
-constexpr uint16_t kVersion = 1;
+constexpr uint16_t kVersion = 2;  // 2: the loop limits (max_idle_blocks)
 
 uint64_t zigzag(int64_t v) { return (static_cast<uint64_t>(v) << 1) ^ static_cast<uint64_t>(v >> 63); }
 int64_t unzigzag(uint64_t u) { return static_cast<int64_t>((u >> 1) ^ (~(u & 1) + 1)); }
@@ -477,7 +477,8 @@ std::vector<uint8_t> encodeBlockStore(const BlockStore& store) {
   w.u8(static_cast<uint8_t>(kVersion >> 8));
   w.varint(store.main_file);
   w.varint(store.ahead_blocks);
-  w.varint(store.max_back_jumps);
+  w.varint(store.limits.max_back_jumps);
+  w.varint(store.limits.max_idle_blocks);
   w.varint(store.saved_variables.size());
   for (const auto& [n, v] : store.saved_variables) {
     w.svarint(n);
@@ -528,7 +529,8 @@ std::optional<BlockStore> decodeBlockStore(std::span<const uint8_t> bytes, std::
   BlockStore store;
   uint64_t n = 0;
   if (!r.u32(store.main_file, "file id") || !r.varint(store.ahead_blocks) ||
-      !r.varint(store.max_back_jumps) || !r.count(n, 9))
+      !r.varint(store.limits.max_back_jumps) || !r.varint(store.limits.max_idle_blocks) ||
+      !r.count(n, 9))
     return std::nullopt;
   for (uint64_t i = 0; i < n; ++i) {
     int64_t key = 0;

@@ -421,7 +421,7 @@ bool Evaluator::Impl::ret(const Pending& p) {
   Frame& f = frames.back();
   if (f.is_main) {
     // M99 in the main program: it starts again (endless on a real control; bounded here by
-    // the limit of jumps back).
+    // the simulated time, or by the loop limits when it neither moves nor dwells).
     if (!countBackJump(p.loc)) return false;
     f.loops.clear();
     if (p.sequence)

@@ -90,11 +90,28 @@ std::optional<int64_t> Evaluator::Impl::integerOf(const ast::Expr& e, SourceLoca
 }
 
 bool Evaluator::Impl::countBackJump(SourceLocation loc) {
-  if (++back_jumps <= options.max_back_jumps) return true;
-  fail(EvalError::StepLimit, loc,
-       absl::StrCat("the program jumped back ", options.max_back_jumps,
-                    " times here: an endless loop? (the limit is --max-back-jumps)"));
-  return false;
+  // After an error the program has failed: running its loop again would only repeat what the
+  // first turn reported (and a loop whose moves failed may never end).
+  if (diags.hasErrors()) {
+    end = ProgramEnd::Alarm;
+    return false;
+  }
+  const LoopLimits& limits = options.limits;
+  ++back_jumps;
+  if (limits.max_back_jumps > 0 && back_jumps > limits.max_back_jumps) {
+    fail(EvalError::StepLimit, loc,
+         absl::StrCat("the program jumped back ", limits.max_back_jumps,
+                      " times here: an endless loop? (the limit is --max-back-jumps)"));
+    return false;
+  }
+  if (limits.max_idle_blocks > 0 && blocks_read - progress_at > limits.max_idle_blocks) {
+    fail(EvalError::StepLimit, loc,
+         absl::StrCat("the program ran ", blocks_read - progress_at,
+                      " blocks without a move or a dwell and jumps back here: an endless loop? "
+                      "(the limit is --max-idle-blocks)"));
+    return false;
+  }
+  return true;
 }
 
 ProgramPoint Evaluator::Impl::programEnd(Frame& frame) {
@@ -150,6 +167,7 @@ std::optional<ast::Block> Evaluator::Impl::next() {
       programFinished();
       continue;
     }
+    ++blocks_read;
     const ProgramPoint at = f.cursor->lastPoint();
     if (block->program_number) {
       if (f.header_at_begin && at == f.begin) continue;  // the program's own O block
@@ -396,6 +414,7 @@ std::optional<ast::Block> Evaluator::Impl::evaluateBlock(ast::Block block,
       int depth = 0;
       while (true) {
         std::optional<ast::Block> b = frame.cursor->next();
+        ++blocks_read;
         if (!b || b->program_number) {
           fail(EvalError::LoopNotClosed, flow_loc,
                absl::StrCat("WHILE ... DO ", loop_id, " has no END ", loop_id));
@@ -431,6 +450,8 @@ Evaluator::Evaluator(EvaluatorOptions options, ProgramStore& store,
 Evaluator::~Evaluator() = default;
 
 std::optional<ast::Block> Evaluator::next() { return impl_->next(); }
+
+void Evaluator::madeProgress() { impl_->progress_at = impl_->blocks_read; }
 
 void Evaluator::programEndCode() {
   if (impl_->end == ProgramEnd::Running) impl_->end = ProgramEnd::ProgramEndCode;

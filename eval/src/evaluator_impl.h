@@ -81,6 +81,8 @@ struct Evaluator::Impl {
   ProgramEnd end = ProgramEnd::Running;
   Failure run_time_reason;  // with ProgramEnd::RunTime
   uint64_t back_jumps = 0;
+  uint64_t blocks_read = 0;    // from every cursor
+  uint64_t progress_at = 0;    // blocks_read at the last block that moved or dwelt
   uint64_t rejected_closed = 0;  // unreadable blocks of cursors already closed
 
   // ---- evaluator.cpp ----

@@ -153,7 +153,7 @@ std::vector<std::string> verify(const Block& block, const VerifyOptions& options
   return problems;
 }
 
-void VerifyingSink::accept(Block block) {
+void VerifyingSink::accept(Block&& block) {
   std::vector<std::string> problems = verify(block, options_);
   if (problems.empty()) {
     next_.accept(std::move(block));

@@ -6,7 +6,7 @@
 
 namespace ncc::passes {
 
-void WorkToMachinePass::accept(ir::Block block) {
+void WorkToMachinePass::accept(ir::Block&& block) {
   const AxisValues total = block.frame.total();
   const int n = std::clamp(axis_count_, 0, kMaxAxes);
   auto shift = [&](AxisValues& v) {

@@ -170,7 +170,7 @@ void CornersPass::fail(Alarm a, SourceLocation loc, std::string message) {
   diags_.error(std::string(table_->alarm(a)), loc, std::move(message));
 }
 
-void CornersPass::accept(ir::Block block) {
+void CornersPass::accept(ir::Block&& block) {
   if (!held_) return take(std::move(block));
   if (heldWithIt(block)) {
     writes_.push_back(std::move(block));

@@ -22,7 +22,7 @@ namespace ncc::passes {
 class CornersPass : public ir::BlockSink {
  public:
   CornersPass(ir::BlockSink& next, Dialect dialect, DiagnosticEngine& diags);
-  void accept(ir::Block block) override;
+  void accept(ir::Block&& block) override;
   void finish() override;
 
  private:

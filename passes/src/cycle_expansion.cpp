@@ -14,30 +14,31 @@ namespace {
 
 constexpr double kSame = 1e-9;  // mm: a move of this length or less is no move
 
+// A hole's operations, handed to `emit` one at a time as they are made (a deep hole's pecks are
+// never all held).
 class Sequence {
  public:
-  Sequence(const ir::HoleCycle& c, int axis_count)
-      : c_(c), n_(std::clamp(axis_count, 0, kMaxAxes)), at_(c.from) {}
+  Sequence(const ir::HoleCycle& c, int axis_count, const OperationEmitter& emit)
+      : c_(c), n_(std::clamp(axis_count, 0, kMaxAxes)), at_(c.from), emit_(emit) {}
 
   void rapid(const AxisValues& to) {
     if (same(to)) return;
-    ops_.push_back(ir::Rapid{to, ir::Space::Work, c_.rapid_type});
+    emit_(ir::Rapid{to, ir::Space::Work, c_.rapid_type});
     at_ = to;
   }
   void feed(const AxisValues& to, double f) {
     if (same(to)) return;
-    ops_.push_back(ir::Linear{to, ir::Space::Work, f, c_.feed_per_rev});
+    emit_(ir::Linear{to, ir::Space::Work, f, c_.feed_per_rev});
     at_ = to;
   }
   // A move of the drilling axis only.
   void rapidTo(double level) { rapid(level_(level)); }
   void feedTo(double level, double f) { feed(level_(level), f); }
   void dwell() {
-    if (c_.dwell > 0) ops_.push_back(ir::Dwell{c_.dwell, c_.dwell_revolutions});
+    if (c_.dwell > 0) emit_(ir::Dwell{c_.dwell, c_.dwell_revolutions});
   }
-  void spindle(ir::MachineFunction::Kind k) { ops_.push_back(ir::MachineFunction{k, 0, 0.0}); }
+  void spindle(ir::MachineFunction::Kind k) { emit_(ir::MachineFunction{k, 0, 0.0}); }
   const AxisValues& at() const { return at_; }
-  std::vector<ir::Operation> take() { return std::move(ops_); }
 
  private:
   bool same(const AxisValues& to) const {
@@ -54,7 +55,7 @@ class Sequence {
   const ir::HoleCycle& c_;
   int n_;
   AxisValues at_;
-  std::vector<ir::Operation> ops_;
+  const OperationEmitter& emit_;
 };
 
 using K = ir::MachineFunction::Kind;
@@ -150,8 +151,14 @@ void backBore(Sequence& s, const ir::HoleCycle& c) {
 }  // namespace
 
 std::vector<ir::Operation> expandHoleCycle(const ir::HoleCycle& c, int axis_count) {
+  std::vector<ir::Operation> ops;
+  expandHoleCycle(c, axis_count, [&ops](ir::Operation&& op) { ops.push_back(std::move(op)); });
+  return ops;
+}
+
+void expandHoleCycle(const ir::HoleCycle& c, int axis_count, const OperationEmitter& emit) {
   using Kind = ir::HoleCycle::Kind;
-  Sequence s(c, axis_count);
+  Sequence s(c, axis_count, emit);
   // 1. Positioning in the plane (the drilling axis stays where it is).
   if (c.positioning_by_feed)
     s.feed(c.hole, c.feed);
@@ -159,7 +166,7 @@ std::vector<ir::Operation> expandHoleCycle(const ir::HoleCycle& c, int axis_coun
     s.rapid(c.hole);
   if (c.kind == Kind::BackBore) {
     backBore(s, c);
-    return s.take();
+    return;
   }
   // 2. Rapid to R.
   s.rapidTo(c.r_level);
@@ -204,22 +211,36 @@ std::vector<ir::Operation> expandHoleCycle(const ir::HoleCycle& c, int axis_coun
       if (c.stop_spindle_at_bottom) s.spindle(direction(c.spindle_direction));
       break;
   }
-  return s.take();
 }
 
-void CycleExpansionPass::accept(ir::Block block) {
+void CycleExpansionPass::accept(ir::Block&& block) {
   bool any = false;
   for (const ir::Operation& op : block.ops) any |= std::holds_alternative<ir::HoleCycle>(op);
-  if (any) {
-    std::vector<ir::Operation> ops;
-    for (ir::Operation& op : block.ops) {
-      if (const auto* c = std::get_if<ir::HoleCycle>(&op)) {
-        for (ir::Operation& e : expandHoleCycle(*c, axis_count_)) ops.push_back(std::move(e));
-      } else {
-        ops.push_back(std::move(op));
-      }
+  if (!any) {
+    next_.accept(std::move(block));
+    return;
+  }
+  // The operations go on in blocks of at most kMaxOperations, each with the block's modal state
+  // and frame: memory stays flat however many holes (K) and pecks a block has. The corner
+  // request, if any, belongs to the block's end: the last part.
+  std::vector<ir::Operation> source = std::move(block.ops);
+  block.ops.clear();
+  ir::Block header = block;
+  header.corner.reset();
+  auto add = [&](ir::Operation&& op) {
+    if (block.ops.size() >= kMaxOperations) {
+      ir::Block part = header;
+      part.ops = std::move(block.ops);
+      block.ops.clear();
+      next_.accept(std::move(part));
     }
-    block.ops = std::move(ops);
+    block.ops.push_back(std::move(op));
+  };
+  for (ir::Operation& op : source) {
+    if (const auto* c = std::get_if<ir::HoleCycle>(&op))
+      expandHoleCycle(*c, axis_count_, add);
+    else
+      add(std::move(op));
   }
   next_.accept(std::move(block));
 }

@@ -15,7 +15,7 @@ class PrintTap : public ir::BlockSink {
  public:
   PrintTap(ir::BlockSink& next, std::string_view pass, PassPrinter& printer)
       : next_(next), pass_(pass), printer_(printer) {}
-  void accept(ir::Block block) override {
+  void accept(ir::Block&& block) override {
     printer_.print(pass_, block);
     next_.accept(std::move(block));
   }
@@ -37,7 +37,7 @@ class VerifyAfter : public ir::BlockSink {
   VerifyAfter(ir::BlockSink& next, std::string_view pass, ir::VerifyOptions options,
               DiagnosticEngine& diags)
       : next_(next), pass_(pass), options_(options), diags_(diags) {}
-  void accept(ir::Block block) override {
+  void accept(ir::Block&& block) override {
     std::vector<std::string> problems = ir::verify(block, options_);
     if (problems.empty()) {
       next_.accept(std::move(block));

@@ -14,7 +14,7 @@ namespace ncc::passes {
 TransformPass::TransformPass(ir::BlockSink& next, Dialect dialect, DiagnosticEngine& diags)
     : next_(next), table_(dialectTable(dialect)), diags_(diags) {}
 
-void TransformPass::accept(ir::Block block) {
+void TransformPass::accept(ir::Block&& block) {
   const AxisValues total = block.frame.total();
   // Where the tool ends (machine coordinates): an arc's start, for the check below.
   auto track = [&](const AxisValues& to, ir::Space space) {

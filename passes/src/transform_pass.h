@@ -19,7 +19,7 @@ namespace ncc::passes {
 class TransformPass : public ir::BlockSink {
  public:
   TransformPass(ir::BlockSink& next, Dialect dialect, DiagnosticEngine& diags);
-  void accept(ir::Block block) override;
+  void accept(ir::Block&& block) override;
   void finish() override { next_.finish(); }
 
  private:

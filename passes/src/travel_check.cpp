@@ -31,7 +31,7 @@ std::pair<int, int> planeAxes(const MachineConfig& machine, ir::Plane plane) {
 
 }  // namespace
 
-void TravelCheckPass::accept(ir::Block block) {
+void TravelCheckPass::accept(ir::Block&& block) {
   bool reported = false;  // one diagnostic per block
   for (const ir::Operation& op : block.ops) {
     // The end point of a move and whether the move leaves the travel; nothing for the

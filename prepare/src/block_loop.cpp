@@ -55,22 +55,29 @@ std::vector<eval::VariableRange> commonVariables(const eval::MacroRules& rules,
 
 BlockLoop::BlockLoop(const Settings& settings, eval::ProgramStore& store, uint32_t main_file,
                      DiagnosticEngine& diags, ir::BlockSink& out)
-    : lowering_(loweringOptions(settings), diags, out),
+    : progress_(out),
+      lowering_(loweringOptions(settings), diags, progress_),
       variables_(eval::macroRules(settings.dialect),
                  commonVariables(eval::macroRules(settings.dialect), *settings.machine),
                  &lowering_.systemVariables()) {
   const eval::MacroRules& rules = eval::macroRules(settings.dialect);
+  // Writes between two lowered blocks reach the IR as one block holding each variable's last
+  // value: a loop of assignments that runs a million turns adds nothing per turn.
   variables_.on_write = [this](int64_t n, const eval::Value& v, SourceLocation loc) {
     if (n <= 0 || n >= bytecode::kDefaultVariableCount) return;
-    if (loc.line != writes_loc_.line || loc.file != writes_loc_.file) flushWrites();
     writes_loc_ = loc;
-    writes_.push_back({static_cast<uint32_t>(n), v.vacant ? 0.0 : v.number, v.vacant});
+    const ir::SetVariable write{static_cast<uint32_t>(n), v.vacant ? 0.0 : v.number, v.vacant};
+    auto [it, added] = write_index_.try_emplace(write.number, writes_.size());
+    if (added)
+      writes_.push_back(write);
+    else
+      writes_[it->second] = write;
   };
   const MachineConfig& machine = *settings.machine;
   eval::EvaluatorOptions options;
   options.rules = &rules;
   options.repeat = repeatEncoding(rules, machine);
-  options.max_back_jumps = settings.max_back_jumps;
+  options.limits = settings.limits;
   options.skipped = [this](const ast::Block& b) { return lowering_.skips(b); };
   options.is_axis = [&machine](std::string_view a) {
     return machine.axisIndex(std::string(a)) >= 0;
@@ -93,7 +100,31 @@ BlockLoop::~BlockLoop() = default;
 eval::Variables& BlockLoop::variables() { return variables_; }
 
 void BlockLoop::flushWrites() {
-  if (!writes_.empty()) lowering_.variablesWritten(writes_loc_, std::exchange(writes_, {}));
+  if (writes_.empty()) return;
+  write_index_.clear();
+  lowering_.variablesWritten(writes_loc_, std::exchange(writes_, {}));
+}
+
+void BlockLoop::ProgressTap::accept(ir::Block&& block) {
+  for (const ir::Operation& op : block.ops) moved |= advances(op);
+  next.accept(std::move(block));
+}
+
+// A move to where the tool already is takes no time: a loop of such moves (a macro run with
+// vacant arguments) is as endless as one without moves.
+bool BlockLoop::ProgressTap::advances(const ir::Operation& op) {
+  if (const auto* d = std::get_if<ir::Dwell>(&op)) return d->seconds > 0.0;
+  if (std::holds_alternative<ir::HoleCycle>(op)) return true;
+  const AxisValues* to = nullptr;
+  const ir::Arc* arc = std::get_if<ir::Arc>(&op);
+  if (const auto* r = std::get_if<ir::Rapid>(&op)) to = &r->to;
+  if (const auto* l = std::get_if<ir::Linear>(&op)) to = &l->to;
+  if (const auto* s = std::get_if<ir::Skip>(&op)) to = &s->to;
+  if (arc) to = &arc->to;
+  if (!to) return false;
+  const bool same = *to == at;
+  at = *to;
+  return !same || (arc && arc->center != *to);  // an arc back to its start: a full circle
 }
 
 Step BlockLoop::step() {
@@ -102,6 +133,7 @@ Step BlockLoop::step() {
     if (evaluator_->end() == eval::ProgramEnd::RunTime) {
       // The writes of the block that stopped: it is evaluated again where it runs.
       writes_.clear();
+      write_index_.clear();
       run_time_reason_ = evaluator_->runTimeReason();
       return Step::RunTime;
     }
@@ -115,6 +147,10 @@ Step BlockLoop::step() {
   }
   if (on_block) on_block(*block);
   passes::LowerResult result = lowering_.lower(*block);
+  if (progress_.moved) {
+    progress_.moved = false;
+    evaluator_->madeProgress();
+  }
   if (result.needs_run_time) {
     run_time_reason_ = std::move(*result.needs_run_time);
     return Step::RunTime;

@@ -11,7 +11,7 @@ namespace ncc::passes::testing {
 namespace {
 
 struct Collect : ir::BlockSink {
-  void accept(ir::Block b) override { blocks.push_back(std::move(b)); }
+  void accept(ir::Block&& b) override { blocks.push_back(std::move(b)); }
   void finish() override {}
   std::vector<ir::Block> blocks;
 };

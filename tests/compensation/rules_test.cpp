@@ -64,7 +64,7 @@ TEST(CompensationRules, TheWindowNeverHoldsMoreThanTheBlocksWithoutMotionThatKee
   for (int k = 0; k < 10000; ++k) p.still();
   p.line(20, 20).cancel().line(30, 30);
   struct Count : ir::BlockSink {
-    void accept(ir::Block) override { ++n; }
+    void accept(ir::Block&&) override { ++n; }
     void finish() override {}
     size_t n = 0;
   } out;

@@ -221,7 +221,7 @@ TEST(BlockStoreBuilder, ParsedProgramsRoundTrip) {
   eval::BlockStore s = buildBlockStore(store, fx.main, {}, fx.diags);
   ASSERT_FALSE(fx.diags.hasErrors()) << diagnosticsText(fx.diags);
   s.saved_variables = {{500, 2.5}};
-  s.max_back_jumps = 5;
+  s.limits.max_back_jumps = 5;
   s.ahead_blocks = 17;
   // The corpus's FANUC programs too: real CAM and hand-written text.
   size_t corpus_files = 0;

@@ -20,7 +20,7 @@ namespace fs = std::filesystem;
 
 // The X Y end points of the feed moves a compile delivers.
 struct FeedEnds : ir::BlockSink {
-  void accept(ir::Block block) override {
+  void accept(ir::Block&& block) override {
     for (const ir::Operation& op : block.ops)
       if (const auto* line = std::get_if<ir::Linear>(&op)) ends.push_back({line->to[0], line->to[1]});
   }

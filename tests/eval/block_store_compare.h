@@ -69,7 +69,7 @@ inline std::string diffBlock(const ast::Block& a, const ast::Block& b, const std
 inline std::string diffStore(const BlockStore& a, const BlockStore& b) {
   if (a.main_file != b.main_file) return "main_file";
   if (a.ahead_blocks != b.ahead_blocks) return "ahead_blocks";
-  if (a.max_back_jumps != b.max_back_jumps) return "max_back_jumps";
+  if (!(a.limits == b.limits)) return "limits";
   if (a.saved_variables.size() != b.saved_variables.size()) return "saved_variables size";
   for (auto i = a.saved_variables.begin(), j = b.saved_variables.begin();
        i != a.saved_variables.end(); ++i, ++j)

@@ -51,7 +51,8 @@ BlockStore richStore() {
   BlockStore s;
   s.main_file = 3;
   s.ahead_blocks = 123456789012ull;
-  s.max_back_jumps = 77;
+  s.limits.max_back_jumps = 77;
+  s.limits.max_idle_blocks = 1234;
   s.saved_variables = {{500, 1.5}, {501, -0.0}, {-3, std::numeric_limits<double>::infinity()}};
 
   StoredFile f;
@@ -254,15 +255,15 @@ TEST(BlockStore, CorruptedCopiesNeverCrash) {
 }
 
 TEST(BlockStore, HugeCountsAreRefusedBeforeAllocating) {
-  // "NCBS" v1, main 1, ahead 0, jumps 0, no variables, then 2^62 files.
-  std::vector<uint8_t> bytes = {'N', 'C', 'B', 'S', 1, 0, 1, 0, 0, 0,
+  // "NCBS" v2, main 1, ahead 0, jumps 0, idle blocks 0, no variables, then 2^62 files.
+  std::vector<uint8_t> bytes = {'N', 'C', 'B', 'S', 2, 0, 1, 0, 0, 0, 0,
                                 0x80, 0x80, 0x80, 0x80, 0x80, 0x80, 0x80, 0x80, 0x40};
   std::string error;
   EXPECT_FALSE(decodeBlockStore(bytes, error));
   EXPECT_NE(error.find("count beyond the remaining bytes"), std::string::npos) << error;
-  bytes = {'N', 'C', 'B', 'S', 2, 0};
+  bytes = {'N', 'C', 'B', 'S', 3, 0};
   EXPECT_FALSE(decodeBlockStore(bytes, error));
-  EXPECT_NE(error.find("version 2"), std::string::npos) << error;
+  EXPECT_NE(error.find("version 3"), std::string::npos) << error;
   bytes = {'X', 'C', 'B', 'S', 1, 0};
   EXPECT_FALSE(decodeBlockStore(bytes, error));
   EXPECT_NE(error.find("NCBS"), std::string::npos) << error;

@@ -41,7 +41,7 @@ struct EvalRun {
   ProgramEnd end = ProgramEnd::Running;
 };
 
-EvalRun run(std::string_view program, Dialect dialect = Dialect::FanucM, uint64_t max_back_jumps = 10000) {
+EvalRun run(std::string_view program, Dialect dialect = Dialect::FanucM, uint64_t max_back_jumps = 0) {
   const MacroRules& rules = macroRules(dialect);
   MemoryStore store;
   const uint32_t main = store.add(parse(store, program));
@@ -54,7 +54,7 @@ EvalRun run(std::string_view program, Dialect dialect = Dialect::FanucM, uint64_
   EvaluatorOptions options;
   options.rules = &rules;
   options.repeat = rules.repeat;
-  options.max_back_jumps = max_back_jumps;
+  options.limits.max_back_jumps = max_back_jumps;
   options.is_axis = [](std::string_view a) { return a == "X" || a == "Y" || a == "Z"; };
   Evaluator evaluator(options, store, store.open(main), variables, diags);
   while (std::optional<ast::Block> b = evaluator.next()) {

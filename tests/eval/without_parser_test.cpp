@@ -26,7 +26,7 @@ ast::Expr variable(double n) {
 ast::Word word(const char* address, ast::Expr value) { return ast::Word{address, std::move(value), {}}; }
 
 struct Collect : ir::BlockSink {
-  void accept(ir::Block b) override { blocks.push_back(std::move(b)); }
+  void accept(ir::Block&& b) override { blocks.push_back(std::move(b)); }
   void finish() override {}
   std::vector<ir::Block> blocks;
 };

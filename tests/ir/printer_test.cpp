@@ -63,7 +63,7 @@ TEST(IrPrinter, DefaultBlockWithoutSequenceOrFrame) {
   b.loc = SourceLocation{2, 1, 1};
   std::ostringstream out;
   PrintingSink sink(out, kXyz);
-  sink.accept(b);
+  sink.accept(std::move(b));
   sink.finish();
   EXPECT_EQ(out.str(), "block 2:1:1 G17 G90 G21 G94 G64 G54 G49 H0 T0 F0.000 S0.000\n");
 }

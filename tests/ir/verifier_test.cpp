@@ -10,7 +10,7 @@ namespace {
 struct CollectingSink : BlockSink {
   std::vector<Block> blocks;
   bool finished = false;
-  void accept(Block block) override { blocks.push_back(std::move(block)); }
+  void accept(Block&& block) override { blocks.push_back(std::move(block)); }
   void finish() override { finished = true; }
 };
 

@@ -21,7 +21,7 @@ namespace {
 class Collect : public ir::BlockSink {
  public:
   explicit Collect(std::vector<ir::Block>& out) : out_(out) {}
-  void accept(ir::Block block) override { out_.push_back(std::move(block)); }
+  void accept(ir::Block&& block) override { out_.push_back(std::move(block)); }
   void finish() override {}
 
  private:

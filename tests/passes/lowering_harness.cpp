@@ -15,7 +15,7 @@ namespace {
 class Collect : public ir::BlockSink {
  public:
   explicit Collect(Lowered& run) : run_(run) {}
-  void accept(ir::Block block) override {
+  void accept(ir::Block&& block) override {
     for (const ir::Operation& op : block.ops) {
       Move m;
       m.line = static_cast<int>(block.loc.line);

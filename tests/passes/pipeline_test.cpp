@@ -10,7 +10,7 @@ namespace {
 
 class Keep : public ir::BlockSink {
  public:
-  void accept(ir::Block b) override { blocks.push_back(std::move(b)); }
+  void accept(ir::Block&& b) override { blocks.push_back(std::move(b)); }
   void finish() override { finished = true; }
   std::vector<ir::Block> blocks;
   bool finished = false;

@@ -8,7 +8,7 @@ namespace ncc::passes {
 namespace {
 
 struct Count : ir::BlockSink {
-  void accept(ir::Block) override { ++blocks; }
+  void accept(ir::Block&&) override { ++blocks; }
   void finish() override {}
   int blocks = 0;
 };

@@ -17,13 +17,17 @@ enum ExitCode : int { kOk = 0, kProgramError = 1, kUsage = 2, kRuntimeAlarm = 3 
 // A driver error on stderr: `ncc: error[CODE]: message` (codes NCC00xx in docs/cli.md).
 void printError(std::string_view code, std::string_view message);
 
-// --dialect, --machine, --program-dir, --max-back-jumps, --vars, --defer: accepted by every
-// command.
+// --dialect, --machine, --program-dir, --max-time, --max-steps, --max-idle-blocks,
+// --max-back-jumps, --vars, --defer: accepted by every command that reads a program.
 struct CommonOptions {
   std::string dialect;
   std::string machine_file;
   std::string program_dir;
-  uint64_t max_back_jumps = 10'000;
+  eval::LoopLimits loop_limits;
+  driver::RunBounds bounds;
+  // Set by the commands that run the program (run, plot): a bound the compile passes is left to
+  // the run's own alarm.
+  driver::BoundAction bound_action = driver::BoundAction::Report;
   std::string vars_file;
   bool defer = false;
   void addTo(CLI::App& command);

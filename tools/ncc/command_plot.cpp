@@ -29,8 +29,6 @@ struct PlotArgs {
   std::string size = "1200x900";
   uint32_t from_line = 0;  // 0: from the start
   uint32_t to_line = 0;    // 0: to the end
-  uint64_t max_steps = driver::kDefaultMaxSteps;
-  double max_time = vm::kDefaultMaxRunSeconds;
   RunInput run;  // --probe, --signal
 };
 
@@ -67,8 +65,8 @@ Drawn simulateForPlot(const bytecode::Program& program, const MachineConfig& mac
                       const PlotArgs& args) {
   driver::PlotRecorder recorder;
   driver::SimulationOptions options;
-  options.max_steps = args.max_steps;
-  options.max_seconds = args.max_time;
+  options.max_steps = args.common.bounds.max_steps;
+  options.max_seconds = args.common.bounds.max_seconds;
   options.observer = &recorder;
   Drawn drawn;
   drawn.sim = driver::simulate(program, machine, nullptr, options);
@@ -238,16 +236,11 @@ void addPlotCommand(CLI::App& app, int& exit_code) {
   cmd->add_option("--to", args->to_line,
                   "draw only the moves of this line of the main program's file and before")
       ->check(CLI::Range(uint32_t{1}, uint32_t{4'000'000'000}));
-  cmd->add_option("--max-steps", args->max_steps,
-                  "stop with alarm NCC7204 after this many VM instructions (0: no limit)")
-      ->capture_default_str();
-  cmd->add_option("--max-time", args->max_time,
-                  "stop with alarm NCC7208 after this many seconds of simulated time (0: no limit)")
-      ->check(CLI::Range(0.0, 1e12))
-      ->capture_default_str();
   args->run.addTo(*cmd, "AXIS=VALUE: the simulated skip signal of G31, as for ncc run (repeatable)",
                   "N=VALUE: an interface input signal, as for ncc run (repeatable)");
   args->common.addTo(*cmd);
+  // The run raises the alarm of a bound the compile passes, where it passes it.
+  args->common.bound_action = driver::BoundAction::LeaveToRun;
   cmd->callback([args, &exit_code] { exit_code = runPlot(*args); });
 }
 

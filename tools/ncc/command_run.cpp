@@ -35,8 +35,6 @@ struct RunArgs {
   std::string output;
   std::string emit = "summary";
   uint64_t trace_every = 1;  // --trace-every N: every Nth tick
-  uint64_t max_steps = driver::kDefaultMaxSteps;
-  double max_time = vm::kDefaultMaxRunSeconds;  // s of simulated time
   double feed_override = 100.0;   // %
   double rapid_override = 100.0;  // %
   std::vector<std::string> feed_override_at;  // "SECONDS=PERCENT", as given
@@ -166,8 +164,8 @@ bool saveVariables(driver::Session& session, const driver::SimulationResult& sim
 int runController(driver::Session& session, const MachineConfig& machine,
                   const bytecode::Program& program, const RunArgs& args) {
   driver::SimulationOptions options;
-  options.max_steps = args.max_steps;
-  options.max_seconds = args.max_time;
+  options.max_steps = args.common.bounds.max_steps;
+  options.max_seconds = args.common.bounds.max_seconds;
   options.feed_override = args.feed_override / 100.0;
   options.rapid_override = args.rapid_override / 100.0;
   if (!parseOverrideTurns("--feed-override-at", 200.0, args.feed_override_at,
@@ -273,15 +271,6 @@ void addRunCommand(CLI::App& app, int& exit_code) {
                   "--emit=trace: write every Nth IPO tick only (ticks 0, N, 2N, ...)")
       ->check(CLI::Range(uint64_t{1}, uint64_t{1000000000}))
       ->capture_default_str();
-  cmd->add_option("--max-steps", args->max_steps,
-                  "stop with alarm NCC7204 after this many VM instructions (0: no limit); guards "
-                  "against programs that loop forever")
-      ->capture_default_str();
-  cmd->add_option("--max-time", args->max_time,
-                  "stop the simulated run with alarm NCC7208 after this many seconds of "
-                  "simulated time (0: no limit); also at once when a block cannot end before it")
-      ->check(CLI::Range(0.0, 1e12))
-      ->capture_default_str();
   cmd->add_option("--feed-override", args->feed_override,
                   "feed override at the start of the simulated run, % of the programmed F")
       ->check(CLI::Range(1.0, 200.0))
@@ -307,6 +296,8 @@ void addRunCommand(CLI::App& app, int& exit_code) {
                   "N=VALUE: the interface input signal #N (#1000-#1031: 0 or 1; #1033-#1035: a "
                   "32-bit word) a program reads (repeatable; over [machine.signals])");
   args->common.addTo(*cmd);
+  // The run raises the alarm of a bound the compile passes, where it passes it.
+  args->common.bound_action = driver::BoundAction::LeaveToRun;
   cmd->callback([args, &exit_code] { exit_code = runRun(*args); });
 }
 

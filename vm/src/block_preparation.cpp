@@ -32,7 +32,7 @@ struct BlockPreparation::Impl final : passes::RunTimeState, ir::BlockSink {
     prepare::Settings s;
     s.dialect = program.header.dialect;
     s.machine = &machine;
-    s.max_back_jumps = store.max_back_jumps;
+    s.limits = store.limits;
     s.run_time = this;
     return s;
   }
@@ -51,7 +51,7 @@ struct BlockPreparation::Impl final : passes::RunTimeState, ir::BlockSink {
   }
 
   // ir::BlockSink: the pipeline's IR, encoded as the backend encodes it ahead of time.
-  void accept(ir::Block block) override {
+  void accept(ir::Block&& block) override {
     if (replaying) return;
     const SourcePosition where = block.loc;
     for (const ir::Operation& op : block.ops) {

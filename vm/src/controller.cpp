@@ -296,9 +296,14 @@ void Controller::raisePositioningAlarm(int axis, double error, SourcePosition wh
 }
 
 bool Controller::withinTimeLimit(const Event& event) {
-  if (options_.max_seconds <= 0.0 || event.kind != Event::Kind::Motion) return true;
+  if (event.kind != Event::Kind::Motion) {
+    if (event.machine.kind == MachineEvent::Kind::SpindleSpeed) spindle_rpm_ = event.machine.value;
+    return true;
+  }
+  if (options_.max_seconds <= 0.0) return true;
   least_seconds_ += minimumSeconds(event.motion, machine_,
-                                   std::max(options_.feed_override, options_.max_feed_override));
+                                   std::max(options_.feed_override, options_.max_feed_override),
+                                   spindle_rpm_);
   if (least_seconds_ <= options_.max_seconds) return true;
   late_block_ = event.motion.where;
   return false;

@@ -17,7 +17,7 @@ double topPathSpeed(const MachineConfig& machine) {
 }
 
 double minimumSeconds(const MotionPrimitive& m, const MachineConfig& machine,
-                      double max_feed_override) {
+                      double max_feed_override, double spindle_rpm) {
   using Kind = MotionPrimitive::Kind;
   if (m.kind == Kind::Dwell) return m.revolutions ? 0.0 : std::max(m.seconds, 0.0);
   const int n = std::min(machine.axisCount(), kMaxAxes);
@@ -43,8 +43,9 @@ double minimumSeconds(const MotionPrimitive& m, const MachineConfig& machine,
   }
   const double length = std::sqrt(plane * plane + off_plane);
   double speed = topPathSpeed(machine);
-  if (m.kind != Kind::Rapid && !m.feed_per_rev && m.feed > 0.0)
-    speed = std::min(speed, m.feed / 60.0 * std::max(max_feed_override, 1.0));
+  const double per_minute = m.feed_per_rev ? m.feed * spindle_rpm : m.feed;  // mm/min
+  if (m.kind != Kind::Rapid && per_minute > 0.0)
+    speed = std::min(speed, per_minute / 60.0 * std::max(max_feed_override, 1.0));
   if (!(speed > 0.0)) return 0.0;
   const double seconds = length / speed;
   return std::isfinite(seconds) ? seconds : 0.0;

@@ -149,7 +149,7 @@ void CompensationPass::reset() {
   stopped_.reset();
 }
 
-void CompensationPass::accept(ir::Block block) {
+void CompensationPass::accept(ir::Block&& block) {
   if (ir::hasPrepare(block)) {
     // The VM prepares the held blocks again, with the ones after them (as the corners pass).
     window_.clear();

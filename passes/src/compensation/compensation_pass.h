@@ -34,7 +34,7 @@ class CompensationPass : public ir::BlockSink {
   // compensate = false: every request is dropped, the programmed path goes on (ncc plot).
   CompensationPass(ir::BlockSink& next, Dialect dialect, DiagnosticEngine& diags,
                    bool compensate = true);
-  void accept(ir::Block block) override;
+  void accept(ir::Block&& block) override;
   void finish() override;
 
  private:

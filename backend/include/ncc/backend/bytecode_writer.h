@@ -29,7 +29,7 @@ class BytecodeWriter : public ir::BlockSink {
   BytecodeWriter(std::ostream& out, const MachineConfig& machine, Dialect dialect,
                  const SourceManager& sources, DiagnosticEngine* diags = nullptr);
 
-  void accept(ir::Block block) override;
+  void accept(ir::Block&& block) override;
   void finish() override;
 
   // False once any error was found; the output is then not a valid program.

@@ -35,9 +35,4 @@ bool loadProgram(Session& session, bytecode::Program& program, bool check_machin
                  Residence residence = Residence::InMemory,
                  std::optional<SetupError>* setup_error = nullptr);
 
-// A run stops with alarm NCC7204 after this many VM instructions unless told otherwise: a
-// program that loops forever must not hang the command line. 100 million instructions are far
-// more than a 1,000,000-block program executes.
-inline constexpr uint64_t kDefaultMaxSteps = 100'000'000;
-
 }  // namespace ncc::driver

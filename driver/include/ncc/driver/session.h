@@ -8,19 +8,39 @@
 #include <string>
 #include <vector>
 
+#include "ncc/eval/loop_limits.h"
 #include "ncc/machine/dialect.h"
 #include "ncc/machine/machine_config.h"
 #include "ncc/support/diagnostics.h"
 #include "ncc/support/source_manager.h"
+#include "ncc/vm/run_limits.h"
 
 namespace ncc::driver {
+
+// A run stops with alarm NCC7204 after this many VM instructions unless told otherwise: a
+// guard against programs that loop forever without moving.
+inline constexpr uint64_t kDefaultMaxSteps = 100'000'000;
+
+// The bounds of a run (docs/cli.md, Bounds), 0: no limit. The compiler applies them too
+// (driver/src/run_budget.h), so that every command ends an endless program.
+struct RunBounds {
+  double max_seconds = vm::kDefaultMaxRunSeconds;  // --max-time: simulated s, NCC7208
+  uint64_t max_steps = kDefaultMaxSteps;           // --max-steps: VM instructions, NCC7204
+};
+
+// Where the compiler passes a bound: `Report` it as an error (compile, check), or `LeaveToRun`:
+// stop there quietly, the program compiled so far going to the VM, which raises the same alarm
+// inside it (run, plot).
+enum class BoundAction : uint8_t { Report, LeaveToRun };
 
 struct SessionOptions {
   std::optional<Dialect> dialect;                   // default: from the file name
   std::optional<std::filesystem::path> machine_file;  // default: the built-in machine
   std::optional<std::filesystem::path> program_dir;   // default: the program's folder
-  // Jumps back (GOTO, END, M99) before a program is stopped as an endless loop (NCC2419).
-  uint64_t max_back_jumps = 10'000;
+  // What ends an endless loop that neither moves nor dwells (NCC2419).
+  eval::LoopLimits loop_limits;
+  RunBounds bounds;
+  BoundAction bound_action = BoundAction::Report;
   // --vars FILE: persistent common variables loaded before compiling (variables_file.h).
   std::optional<std::filesystem::path> variables_file;
   // --defer: the VM prepares every block while the program runs, as it does from the first
@@ -70,7 +90,9 @@ class Session {
   uint32_t mainFile() const { return main_file_; }
   const std::filesystem::path& input() const { return input_; }
   const std::filesystem::path& programDir() const { return program_dir_; }
-  uint64_t maxBackJumps() const { return max_back_jumps_; }
+  const eval::LoopLimits& loopLimits() const { return loop_limits_; }
+  const RunBounds& bounds() const { return bounds_; }
+  BoundAction boundAction() const { return bound_action_; }
   const std::optional<std::filesystem::path>& variablesFile() const { return variables_file_; }
   bool defer() const { return defer_; }
   // false: compiles keep the programmed path, cutter compensation's requests dropped
@@ -100,7 +122,9 @@ class Session {
   std::filesystem::path input_;
   std::filesystem::path program_dir_;
   std::optional<std::filesystem::path> machine_file_;
-  uint64_t max_back_jumps_ = 10'000;
+  eval::LoopLimits loop_limits_;
+  RunBounds bounds_;
+  BoundAction bound_action_ = BoundAction::Report;
   std::optional<std::filesystem::path> variables_file_;
   bool defer_ = false;
   bool compensate_ = true;

@@ -22,6 +22,7 @@
 #include <string_view>
 #include <vector>
 
+#include "ncc/eval/loop_limits.h"
 #include "ncc/eval/program_store.h"
 #include "ncc/frontend/ast.h"
 #include "ncc/frontend/block_position.h"
@@ -57,7 +58,7 @@ struct StoredFile {
 struct BlockStore {
   uint32_t main_file = 0;           // id of the main program's file (one of `files`)
   uint64_t ahead_blocks = 0;        // blocks the compiler already prepared ahead of time
-  uint64_t max_back_jumps = 10000;  // --max-back-jumps
+  LoopLimits limits;                // --max-idle-blocks, --max-back-jumps
   std::map<int64_t, double> saved_variables;  // --vars values loaded at compile time
   std::vector<StoredFile> files;                // ids unique
   // Programs of the program folder, resolved at compile time as ProgramLibrary steps 2-3 do

@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "ncc/eval/loop_limits.h"
 #include "ncc/eval/macro_rules.h"
 #include "ncc/eval/program_store.h"
 #include "ncc/eval/variables.h"
@@ -23,9 +24,7 @@ namespace ncc::eval {
 
 struct EvaluatorOptions {
   const MacroRules* rules = nullptr;  // required
-  // Jumps back (GOTO to an earlier block, END, M99 repeats and restarts) before the program
-  // is stopped as an endless loop (NCC2419 at the jump).
-  uint64_t max_back_jumps = 10'000;
+  LoopLimits limits;
   // M98 repeats in the high digits of P (M98 P30021) rather than in L.
   RepeatEncoding repeat = RepeatEncoding::LAddress;
   // Whether a block is skipped by the block-skip switch ('/'); a skipped block is not
@@ -87,6 +86,9 @@ class Evaluator {
   void programEndCode();
   // G290/G291 in the block last returned: the current file's language for the next blocks.
   void setLanguage(frontend::Language language);
+  // The block last returned moved the tool or dwelt: the count of blocks without progress
+  // (LoopLimits::max_idle_blocks) starts again.
+  void madeProgress();
   // Unreadable blocks (syntax errors) skipped by the readers so far.
   uint64_t rejectedBlocks() const;
 

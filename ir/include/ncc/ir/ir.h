@@ -322,7 +322,9 @@ inline bool hasPrepare(const Block& b) {
 class BlockSink {
  public:
   virtual ~BlockSink() = default;
-  virtual void accept(Block block) = 0;
+  // The block is the sink's to keep or change: one that only looks at it and forwards it moves
+  // nothing (a block is large: passing it by reference through each stage saves a copy).
+  virtual void accept(Block&& block) = 0;
   virtual void finish() = 0;
 };
 

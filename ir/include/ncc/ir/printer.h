@@ -23,7 +23,7 @@ std::string printBlock(const Block& block, const AxisNames& axes);
 class PrintingSink : public BlockSink {
  public:
   PrintingSink(std::ostream& out, AxisNames axes) : out_(out), axes_(std::move(axes)) {}
-  void accept(Block block) override { printBlock(out_, block, axes_); }
+  void accept(Block&& block) override { printBlock(out_, block, axes_); }
   void finish() override {}
 
  private:

@@ -22,7 +22,7 @@ class VerifyingSink : public BlockSink {
  public:
   VerifyingSink(BlockSink& next, VerifyOptions options, DiagnosticEngine& diags)
       : next_(next), options_(options), diags_(diags) {}
-  void accept(Block block) override;
+  void accept(Block&& block) override;
   void finish() override { next_.finish(); }
 
  private:

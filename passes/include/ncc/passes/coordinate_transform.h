@@ -9,7 +9,7 @@ namespace ncc::passes {
 class WorkToMachinePass : public ir::BlockSink {
  public:
   WorkToMachinePass(ir::BlockSink& next, int axis_count) : next_(next), axis_count_(axis_count) {}
-  void accept(ir::Block block) override;
+  void accept(ir::Block&& block) override;
   void finish() override { next_.finish(); }
 
  private:

@@ -15,7 +15,14 @@ class PassPrinter;
 struct PipelineOptions {
   int axis_count = 3;
   bool to_machine_space = true;  // false: stop in work space (debug printing)
-  bool verify = true;            // run the IR verifier before the final sink
+  // Run the IR verifier before the final sink: in every build but Release (NCC_VERIFY_IR),
+  // where it cost about a tenth of a plain program's compile; --verify-each asks for it in any
+  // build, after every pass.
+#ifdef NCC_VERIFY_IR
+  bool verify = true;
+#else
+  bool verify = false;
+#endif
   // Run the IR verifier after every pass instead (tests, `--verify-each`): a pass that breaks
   // an invariant is named in the NCC9001 error rather than found passes later.
   bool verify_each = false;

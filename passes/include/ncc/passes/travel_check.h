@@ -19,7 +19,7 @@ class TravelCheckPass : public ir::BlockSink {
                   DiagnosticEngine& diags)
       : next_(next), machine_(machine), alarms_(travelAlarmCodes(dialect)), diags_(diags),
         position_(machine.start_position) {}
-  void accept(ir::Block block) override;
+  void accept(ir::Block&& block) override;
   void finish() override { next_.finish(); }
 
  private:

@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "absl/container/flat_hash_map.h"
 #include "ncc/eval/evaluator.h"
 #include "ncc/eval/program_store.h"
 #include "ncc/eval/variables.h"
@@ -30,8 +31,8 @@ struct Settings {
   Dialect dialect = Dialect::FanucM;
   const MachineConfig* machine = nullptr;  // required
   std::filesystem::path program_dir;
-  // Jumps back (GOTO, END, M99) before the program is stopped as an endless loop (NCC2419).
-  uint64_t max_back_jumps = 10'000;
+  // What ends an endless loop that neither moves nor dwells (NCC2419).
+  eval::LoopLimits limits;
   // The running machine (the VM); null in the compiler.
   const passes::RunTimeState* run_time = nullptr;
 };
@@ -87,12 +88,27 @@ class BlockLoop {
  private:
   void flushWrites();
 
+  // Between lowering and `out`: notes a block that moves or dwells (the evaluator's count of
+  // blocks without progress starts again, eval::LoopLimits).
+  struct ProgressTap final : ir::BlockSink {
+    explicit ProgressTap(ir::BlockSink& n) : next(n) {}
+    void accept(ir::Block&& block) override;
+    void finish() override { next.finish(); }
+    bool advances(const ir::Operation& op);
+    ir::BlockSink& next;
+    bool moved = false;
+    AxisValues at{};  // the last move's target
+  };
+
+  ProgressTap progress_;
   passes::Lowering lowering_;
   eval::Variables variables_;
   std::unique_ptr<eval::Evaluator> evaluator_;
-  // Variable writes reach the IR, one block per statement block, before the block that
-  // follows them (the VM holds #1 to #9999: the system variables above are the model's own).
+  // Variable writes reach the IR before the block that follows them, one block with each
+  // variable's last value (the VM holds #1 to #9999: the system variables above are the
+  // model's own).
   std::vector<ir::SetVariable> writes_;
+  absl::flat_hash_map<uint32_t, size_t> write_index_;  // variable -> its entry in writes_
   SourceLocation writes_loc_;
   uint64_t unreadable_ = 0;
   uint64_t steps_ = 0;

@@ -233,6 +233,7 @@ class Controller {
   // far; a block that would pass the limit waits in late_block_ until the queue has run.
   uint64_t max_ticks_ = 0;
   double least_seconds_ = 0.0;
+  double spindle_rpm_ = 0.0;  // S in force, for the least time of a G95 move
   std::optional<SourcePosition> late_block_;
 
   Event event_;                   // the executor's output slot (reused)

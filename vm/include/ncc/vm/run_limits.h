@@ -16,11 +16,12 @@ inline constexpr double kDefaultMaxRunSeconds = 100.0 * 3600.0;
 
 // A lower bound of the time `motion` takes on `machine`, s: a dwell its seconds (0 in spindle
 // revolutions), a move its path length at the fastest it can go: the programmed feed (mm/min)
-// times `max_feed_override` for a line or arc in feed per minute, and never more than the
-// fastest any axis combination can go (topPathSpeed). An arc's length is taken at its smaller
-// radius. O(1), no allocation.
+// times `max_feed_override` for a line or arc in feed per minute, in feed per revolution the
+// feed times `spindle_rpm` (the S in force; 0: unknown) times the override, and never more than
+// the fastest any axis combination can go (topPathSpeed). An arc's length is taken at its
+// smaller radius. O(1), no allocation.
 double minimumSeconds(const MotionPrimitive& motion, const MachineConfig& machine,
-                      double max_feed_override);
+                      double max_feed_override, double spindle_rpm = 0.0);
 
 // The fastest path speed of `machine`, mm/s: the Euclidean sum of every axis' larger of
 // rapid_velocity and max_velocity.
