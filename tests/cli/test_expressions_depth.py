@@ -99,6 +99,11 @@ class ExpressionDepthTest(ScratchDirTest):
             got = json.load(f)
         self.assertEqual(got, {"#100": float(LIMIT), "#101": 3.0, "#102": 1000.0 - (LIMIT - 1),
                                "#103": 1.0, "#104": 7.0, "#105": 0.5 * (LIMIT - 2)})
+        # Deferred, the blocks travel in the block store (nested 257 deep with the statement)
+        # and the VM evaluates them: the same values.
+        proc = ncc("run", prog, "--defer", "--emit=vars")
+        self.assertEqual(proc.returncode, 0, proc.stderr)
+        self.assertEqual(json.loads(proc.stdout), got)
         for command in (["check", prog], ["compile", prog, "-o", self.path("limit.ncb")]):
             proc = ncc(*command)
             self.assertEqual(proc.returncode, 0, proc.stderr)
