@@ -293,14 +293,21 @@ int opens(const ast::Expr& e) {
   }
 }
 
-bool depthWithin(const ast::Expr& e, int depth, const MacroRules& rules, Failure& failure) {
+// `level` counts the nodes from the root (1 at the root). The frontend builds no tree deeper
+// than ast::kMaxExprDepth; one from elsewhere (a block store, a test) is refused here, before
+// this walk or the evaluator recurse once per level into it.
+bool depthWithin(const ast::Expr& e, int depth, int level, const MacroRules& rules,
+                 Failure& failure) {
+  if (level > ast::kMaxExprDepth)
+    return fail(failure, EvalError::BracketNesting, e.loc,
+                absl::StrCat("expression nested deeper than ", ast::kMaxExprDepth, " levels"));
   depth += opens(e);
   if (depth > rules.max_bracket_depth)
     return fail(failure, EvalError::BracketNesting, e.loc,
                 absl::StrCat("brackets nested ", depth, " deep; at most ",
                              rules.max_bracket_depth, " levels, function brackets included"));
   for (const ast::Expr& arg : e.args)
-    if (!depthWithin(arg, depth, rules, failure)) return false;
+    if (!depthWithin(arg, depth, level + 1, rules, failure)) return false;
   return true;
 }
 
@@ -308,7 +315,7 @@ bool depthWithin(const ast::Expr& e, int depth, const MacroRules& rules, Failure
 
 bool checkBracketDepth(const ast::Expr& expr, const MacroRules& rules, int enclosing,
                        Failure& failure) {
-  return depthWithin(expr, enclosing, rules, failure);
+  return depthWithin(expr, enclosing, 1, rules, failure);
 }
 
 std::optional<Value> evaluate(const ast::Expr& expr, const ExpressionContext& context,

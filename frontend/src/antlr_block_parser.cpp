@@ -1,5 +1,6 @@
 #include "antlr_block_parser.h"
 
+#include <algorithm>
 #include <climits>
 #include <string>
 #include <vector>
@@ -23,6 +24,11 @@ using antlr4::Token;
 // Deeper nesting than this is refused before parsing: the parser and the AST are recursive,
 // and no controller allows more than a handful of bracket levels (FANUC: 5).
 constexpr int kMaxNesting = 64;
+
+std::string tooDeep() {
+  return absl::StrCat("expression nested deeper than ", ast::kMaxExprDepth,
+                      " levels (each operator, sign, bracket and function is one)");
+}
 
 // Remembers the first error the parser reports; the message is ours, built from the token.
 class FirstErrorListener : public antlr4::BaseErrorListener {
@@ -89,23 +95,41 @@ class Builder {
         fail(codes::kUnclosedComment, at(t), "comment '(' is not closed by ')'");
     }
     std::vector<const Token*> open_brackets;
+    // The parser recurses once per sign (unary) and a few times per bracket; chains are loops.
+    // Signs in a row before a bracket nest it deeper ("-[-[-[..."), so each open bracket keeps
+    // its level: brackets and signs around it. The level never exceeds the depth of the tree
+    // the builder makes there (each counts a node of it, or a binary operation for the first
+    // sign of "1-[..]"), so this refuses nothing the builder would take, only earlier: the
+    // parser never recurses more than kMaxExprDepth signs and kMaxNesting brackets deep.
+    std::vector<int> levels;
     int sign_run = 0;
     for (size_t i = 0; i < tokens.size(); ++i) {
       const Token* t = tokens[i];
       const size_t type = t->getType();
+      const int signs_before = sign_run;
       sign_run = (type == IsoLexer::PLUS || type == IsoLexer::MINUS) ? sign_run + 1 : 0;
       if (sign_run > kMaxNesting)
         fail(codes::kNesting, at(t), absl::StrCat("more than ", kMaxNesting, " signs in a row"));
+      const int level = levels.empty() ? 0 : levels.back();
+      if (level + sign_run > ast::kMaxExprDepth) fail(codes::kExprDepth, at(t), tooDeep());
       switch (type) {
         case IsoLexer::LBRACK:
           open_brackets.push_back(t);
           if (open_brackets.size() > kMaxNesting)
             fail(codes::kNesting, at(t),
                  absl::StrCat("brackets nested deeper than ", kMaxNesting, " levels"));
+          {
+            // The bracket of IF [..] / WHILE [..] makes no node (its contents are the condition).
+            const size_t before = i > 0 ? tokens[i - 1]->getType() : 0;
+            const bool condition = before == IsoLexer::IF || before == IsoLexer::WHILE;
+            levels.push_back(level + signs_before + (condition ? 0 : 1));
+          }
+          if (levels.back() > ast::kMaxExprDepth) fail(codes::kExprDepth, at(t), tooDeep());
           break;
         case IsoLexer::RBRACK:
           if (open_brackets.empty()) fail(codes::kUnopenedBracket, at(t), "unbalanced ']'");
           open_brackets.pop_back();
+          levels.pop_back();
           break;
         case IsoLexer::COMMA:
           if (open_brackets.empty()) checkCommaAddress(tokens, i);
@@ -160,6 +184,18 @@ class Builder {
   }
 
   // ---- AST --------------------------------------------------------------------------------
+
+  // An expression being built with its depth (ast::kMaxExprDepth), counted bottom-up so that a
+  // chain is refused at the operator where it becomes too deep, reading left to right.
+  struct Node {
+    ast::Expr expr;
+    int depth = 1;
+  };
+
+  Node node(ast::Expr e, int depth) {
+    if (depth > ast::kMaxExprDepth) fail(codes::kExprDepth, e.loc, tooDeep());
+    return Node{std::move(e), depth};
+  }
 
   ast::Block block(IsoParser::BlockContext* ctx) {
     ast::Block b;
@@ -238,7 +274,7 @@ class Builder {
     slot = *n;
   }
 
-  ast::Expr literal(antlr4::tree::TerminalNode* number, const Token* sign) {
+  Node literal(antlr4::tree::TerminalNode* number, const Token* sign) {
     std::string_view text = upper(number);
     std::optional<NumberText> n = readNumber(text);
     if (!n)
@@ -249,60 +285,62 @@ class Builder {
     ast::Expr e = ast::Expr::literal(negative ? -n->value : n->value, n->has_point,
                                      sign ? at(sign) : at(number));
     e.digits = n->digits;
-    return e;
+    return Node{std::move(e), 1};
   }
 
-  ast::Expr signed_(Token* sign, ast::Expr inner) {
+  Node signed_(Token* sign, Node inner) {
     if (!sign) return inner;
     ast::Expr e;
     e.kind = ast::Expr::Kind::Unary;
     e.op.assign(1, sign->getType() == IsoLexer::MINUS ? '-' : '+');
     e.loc = at(sign);
-    e.args.push_back(std::move(inner));
-    return e;
+    e.args.push_back(std::move(inner.expr));
+    return node(std::move(e), inner.depth + 1);
   }
 
   // value and target share a shape: sign? (NUMBER | variable | bracket)
   template <typename Ctx>
-  ast::Expr operand(Ctx* v) {
+  Node operand(Ctx* v) {
     if (auto* n = v->NUMBER()) return literal(n, v->sign);
     if (auto* var = v->variable()) return signed_(v->sign, variable(var));
     return signed_(v->sign, bracket(v->bracket()));
   }
-  ast::Expr value(IsoParser::ValueContext* v) { return operand(v); }
+  ast::Expr value(IsoParser::ValueContext* v) { return operand(v).expr; }
 
-  ast::Expr variable(IsoParser::VariableContext* v) {
+  Node variable(IsoParser::VariableContext* v) {
     ast::Expr e;
     e.kind = ast::Expr::Kind::Variable;
     e.loc = at(v->HASH());
-    if (auto* n = v->NUMBER()) e.args.push_back(literal(n, nullptr));
-    else e.args.push_back(expr(v->bracket()->expr()));
-    return e;
+    Node number = v->NUMBER() ? literal(v->NUMBER(), nullptr) : expr(v->bracket()->expr());
+    e.args.push_back(std::move(number.expr));
+    return node(std::move(e), number.depth + 1);
   }
 
-  ast::Expr bracket(IsoParser::BracketContext* b) {
+  Node bracket(IsoParser::BracketContext* b) {
     ast::Expr e;
     e.kind = ast::Expr::Kind::Bracket;
     e.loc = at(b->LBRACK());
-    e.args.push_back(expr(b->expr()));
-    return e;
+    Node inner = expr(b->expr());
+    e.args.push_back(std::move(inner.expr));
+    return node(std::move(e), inner.depth + 1);
   }
 
-  ast::Expr binary(ast::Expr lhs, antlr4::ParserRuleContext* op, ast::Expr rhs) {
+  Node binary(Node lhs, antlr4::ParserRuleContext* op, Node rhs) {
     ast::Expr e;
     e.kind = ast::Expr::Kind::Binary;
     e.op = std::string(upper(op->getStart()));
     e.loc = at(op->getStart());
-    e.args.push_back(std::move(lhs));
-    e.args.push_back(std::move(rhs));
-    return e;
+    e.args.push_back(std::move(lhs.expr));
+    e.args.push_back(std::move(rhs.expr));
+    return node(std::move(e), std::max(lhs.depth, rhs.depth) + 1);
   }
 
   // The three binary levels have the same shape: operand (op operand)*, left-associative.
+  // The parse tree of a chain is flat; the AST is left-deep, one level per operator.
   template <typename Next, typename Ctx, typename Fn>
-  ast::Expr leftAssociative(Ctx* ctx, Fn&& operandOf) {
+  Node leftAssociative(Ctx* ctx, Fn&& operandOf) {
     auto& children = ctx->children;
-    ast::Expr lhs = operandOf(static_cast<Next*>(children[0]));
+    Node lhs = operandOf(static_cast<Next*>(children[0]));
     for (size_t i = 1; i + 1 < children.size(); i += 2) {
       auto* op = static_cast<antlr4::ParserRuleContext*>(children[i]);
       lhs = binary(std::move(lhs), op, operandOf(static_cast<Next*>(children[i + 1])));
@@ -310,20 +348,20 @@ class Builder {
     return lhs;
   }
 
-  ast::Expr expr(IsoParser::ExprContext* ctx) {
+  Node expr(IsoParser::ExprContext* ctx) {
     return leftAssociative<IsoParser::AdditiveContext>(
         ctx, [this](IsoParser::AdditiveContext* c) { return additive(c); });
   }
-  ast::Expr additive(IsoParser::AdditiveContext* ctx) {
+  Node additive(IsoParser::AdditiveContext* ctx) {
     return leftAssociative<IsoParser::MultiplicativeContext>(
         ctx, [this](IsoParser::MultiplicativeContext* c) { return multiplicative(c); });
   }
-  ast::Expr multiplicative(IsoParser::MultiplicativeContext* ctx) {
+  Node multiplicative(IsoParser::MultiplicativeContext* ctx) {
     return leftAssociative<IsoParser::UnaryContext>(
         ctx, [this](IsoParser::UnaryContext* c) { return unary(c); });
   }
 
-  ast::Expr unary(IsoParser::UnaryContext* ctx) {
+  Node unary(IsoParser::UnaryContext* ctx) {
     if (!ctx->sign) return primary(ctx->primary());
     // A sign directly before a number is part of the literal, as in a word value.
     IsoParser::UnaryContext* inner = ctx->unary();
@@ -332,20 +370,25 @@ class Builder {
     return signed_(ctx->sign, unary(inner));
   }
 
-  ast::Expr primary(IsoParser::PrimaryContext* ctx) {
+  Node primary(IsoParser::PrimaryContext* ctx) {
     if (auto* n = ctx->NUMBER()) return literal(n, nullptr);
     if (auto* v = ctx->variable()) return variable(v);
     if (auto* b = ctx->bracket()) return bracket(b);
     return call(ctx->call());
   }
 
-  ast::Expr call(IsoParser::CallContext* ctx) {
+  Node call(IsoParser::CallContext* ctx) {
     ast::Expr e;
     e.kind = ast::Expr::Kind::Call;
     const Token* name = ctx->getStart();
     e.loc = at(name);
     e.op = canonicalFunctionName(upper(name));
-    for (auto* arg : ctx->expr()) e.args.push_back(expr(arg));
+    int deepest = 0;
+    for (auto* arg : ctx->expr()) {
+      Node a = expr(arg);
+      deepest = std::max(deepest, a.depth);
+      e.args.push_back(std::move(a.expr));
+    }
     // ATAN has one argument, or two written [a]/[b] or [a,b]; the others a fixed count.
     const size_t expected = functionArity(e.op);
     const bool ok = e.op == "ATAN" ? e.args.size() <= 2 : e.args.size() == expected;
@@ -354,7 +397,7 @@ class Builder {
            e.op == "ATAN" ? std::string("ATAN takes [a], [a]/[b] or [a,b]")
                           : absl::StrCat("function '", e.op, "' takes ", expected,
                                          expected == 1 ? " argument" : " arguments"));
-    return e;
+    return node(std::move(e), deepest + 1);
   }
 
   ast::Statement statement(IsoParser::StatementContext* ctx) {
@@ -366,31 +409,31 @@ class Builder {
     if (first == IsoLexer::HASH) {
       auto* a = static_cast<IsoParser::AssignStatementContext*>(ctx);
       s.kind = ast::Statement::Kind::Assign;
-      s.target = variable(a->variable());
-      s.value = expr(a->expr());
+      s.target = variable(a->variable()).expr;
+      s.value = expr(a->expr()).expr;
     } else if (first == IsoLexer::GOTO) {
       auto* g = static_cast<IsoParser::GotoStatementContext*>(ctx);
       s.kind = ast::Statement::Kind::Goto;
-      s.target = operand(g->target());
+      s.target = operand(g->target()).expr;
     } else if (first == IsoLexer::IF && !if_then) {
       auto* ig = static_cast<IsoParser::IfGotoStatementContext*>(ctx);
       s.kind = ast::Statement::Kind::IfGoto;
-      s.value = expr(ig->bracket()->expr());
-      s.target = operand(ig->target());
+      s.value = expr(ig->bracket()->expr()).expr;
+      s.target = operand(ig->target()).expr;
     } else if (if_then) {
       auto* it = static_cast<IsoParser::IfThenStatementContext*>(ctx);
       s.kind = ast::Statement::Kind::IfThen;
-      s.value = expr(it->bracket()->expr());
+      s.value = expr(it->bracket()->expr()).expr;
       auto then = std::make_unique<ast::Statement>();
       then->kind = ast::Statement::Kind::Assign;
       then->loc = at(it->variable()->HASH());
-      then->target = variable(it->variable());
-      then->value = expr(it->expr());
+      then->target = variable(it->variable()).expr;
+      then->value = expr(it->expr()).expr;
       s.then_assign = std::move(then);
     } else if (first == IsoLexer::WHILE) {
       auto* w = static_cast<IsoParser::WhileStatementContext*>(ctx);
       s.kind = ast::Statement::Kind::While;
-      s.value = expr(w->bracket()->expr());
+      s.value = expr(w->bracket()->expr()).expr;
       s.loop_id = loopId(w->NUMBER());
     } else {
       auto* e = static_cast<IsoParser::EndStatementContext*>(ctx);

@@ -20,6 +20,7 @@ inline constexpr const char* kCommaAddress = "NCC1013";       // ',X' other than
 inline constexpr const char* kDuplicateNumber = "NCC1014";    // two N (or O) in one block
 inline constexpr const char* kNumberRange = "NCC1015";        // number does not fit
 inline constexpr const char* kNesting = "NCC1016";            // brackets or signs nested too deep
+inline constexpr const char* kExprDepth = "NCC1017";          // expression deeper than ast::kMaxExprDepth
 inline constexpr const char* kDinNotSupported = "NCC1090";    // G290 DIN block
 
 }  // namespace ncc::frontend::codes

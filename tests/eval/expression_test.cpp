@@ -311,6 +311,34 @@ TEST(Errors, MalformedTreeIsRefusedNotRead) {
   EXPECT_FALSE(evaluate(v, ExpressionContext{mazak(), vars}, f));
 }
 
+// A left-deep chain 1+1+...+1 of `terms` terms, built by hand (the parser builds none deeper
+// than ast::kMaxExprDepth; a block store or a test might).
+ast::Expr chainOfOnes(int terms) {
+  ast::Expr e = ast::Expr::literal(1.0, false, SourceLocation{0, 1, 1});
+  for (int i = 1; i < terms; ++i) {
+    ast::Expr sum;
+    sum.kind = ast::Expr::Kind::Binary;
+    sum.op = "+";
+    sum.loc = SourceLocation{0, 1, static_cast<uint32_t>(2 * i)};
+    sum.args.push_back(std::move(e));
+    sum.args.push_back(ast::Expr::literal(1.0, false, {}));
+    e = std::move(sum);
+  }
+  return e;
+}
+
+TEST(Errors, TreesDeeperThanTheParserBuildsAreRefusedNotWalked) {
+  MapVariables vars;
+  Failure f;
+  auto at_limit = evaluate(chainOfOnes(ast::kMaxExprDepth), ExpressionContext{mazak(), vars}, f);
+  ASSERT_TRUE(at_limit) << f.message;
+  EXPECT_EQ(at_limit->number, ast::kMaxExprDepth);
+  EXPECT_FALSE(evaluate(chainOfOnes(ast::kMaxExprDepth + 1), ExpressionContext{mazak(), vars}, f));
+  EXPECT_EQ(f.error, EvalError::BracketNesting);
+  EXPECT_EQ(f.message, "expression nested deeper than 256 levels");
+  EXPECT_EQ(f.loc.column, 1u);  // the first term, 257 levels down: the walk stops there
+}
+
 TEST(Errors, BracketDepthIsCheckedBeforeEvaluating) {
   // A division by zero inside too deep brackets reports the brackets (a static error).
   EXPECT_EQ(failure("[[[[[[1/0]]]]]]").error, EvalError::BracketNesting);

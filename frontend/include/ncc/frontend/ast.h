@@ -13,6 +13,16 @@
 
 namespace ncc::ast {
 
+// The deepest expression tree a program may write: the nodes on the longest path from the
+// root to a leaf (a literal is 1, `1+2` is 2, a chain of n terms `1+1+...+1` is n because it is
+// a left-deep tree, and each sign, bracket, `#` and function adds one). Everything that walks a
+// tree (evaluation, the printer, copies, destruction, the block store) recurses once per level,
+// so the frontend refuses deeper text as it reads it (NCC1017) and the evaluator refuses deeper
+// trees from elsewhere: a few hundred levels stay far below the stack even with AddressSanitizer,
+// and controllers allow 5 bracket levels in blocks of a few hundred characters
+// (docs/macro.md, Expression depth).
+inline constexpr int kMaxExprDepth = 256;
+
 // An expression: a literal, a `#` variable, a bracketed expression, an operator or a function.
 struct Expr {
   enum class Kind : uint8_t {
