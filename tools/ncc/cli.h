@@ -32,7 +32,8 @@ struct CommonOptions {
 };
 
 // Opens a session for `input` ("-": the standard input), printing setup errors. Returns an
-// exit code on failure.
+// exit code on failure. A --vars file that cannot be one (a device, a FIFO, too large) is
+// NCC0019, before anything is read.
 std::optional<int> openSession(driver::Session& session, const std::filesystem::path& input,
                                const CommonOptions& common);
 

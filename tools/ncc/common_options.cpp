@@ -2,6 +2,7 @@
 
 #include "absl/strings/str_cat.h"
 #include "cli.h"
+#include "ncc/driver/variables_file.h"
 
 namespace ncc::cli {
 
@@ -53,6 +54,15 @@ std::optional<int> openSession(driver::Session& session, const std::filesystem::
   if (std::optional<std::string> error = common.toSessionOptions(options)) {
     printError("NCC0002", *error);
     return kUsage;
+  }
+  // Checked before anything is read: /dev/zero would be read until memory runs out, a FIFO
+  // waited on forever.
+  if (!common.vars_file.empty()) {
+    if (std::optional<std::string> why = driver::variablesFileProblem(common.vars_file)) {
+      printError("NCC0019", absl::StrCat("cannot read the variables file '", common.vars_file,
+                                         "': ", *why));
+      return kUsage;
+    }
   }
   if (std::optional<driver::SetupError> error = session.open(input, options)) {
     printDiagnostics(session);
