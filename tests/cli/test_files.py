@@ -281,6 +281,49 @@ class OutputTest(FilesTest):
         self.run_on_device("/dev/null", lambda device: ["run", good, "--vars", device], refused)
 
 
+# ---- 3. inputs whose read fails are NCC0001, not an empty program --------------------------------
+
+class InputReadTest(FilesTest):
+    def test_proc_self_mem_is_unreadable(self):
+        # A "regular file" that opens but whose read fails (EIO at offset 0).
+        out = self.path("out")
+        for args in (["run", "/proc/self/mem"], ["check", "/proc/self/mem"],
+                     ["compile", "/proc/self/mem", "-o", out], ["plot", "/proc/self/mem", "-o", out],
+                     ["run", "/proc/self/mem", "--defer", "-o", out]):
+            proc = ncc(*args)
+            self.assertDriverError(proc, "NCC0001")
+            self.assertIn("cannot read '/proc/self/mem'", proc.stderr)
+            self.assertNotIn("status", proc.stdout)  # nothing ran
+            self.assertFalse(os.path.exists(out), args)
+        self.assertEqual(self.leftovers(), [])
+
+    def test_subprogram_whose_read_fails(self):
+        main = self.write("main.nc", "G90 G00 X1.\nM98 P1234\nM30\n")
+        os.symlink("/proc/self/mem", self.path("O1234.nc"))
+        out = self.path("main.ncb")
+        for args in (["run", main], ["compile", main, "-o", out], ["compile", main, "--defer", "-o", out]):
+            proc = ncc(*args)
+            self.assertDriverError(proc, "NCC0001")
+            self.assertIn("O1234.nc", proc.stderr)
+            self.assertFalse(os.path.exists(out), args)
+
+    def test_folder_on_stdin_is_unreadable(self):
+        fd = os.open(self.dir, os.O_RDONLY)
+        try:
+            for command in ("run", "check"):
+                os.lseek(fd, 0, os.SEEK_SET)
+                proc = ncc(command, "-", stdin=fd)
+                self.assertDriverError(proc, "NCC0001")
+                self.assertIn("standard input", proc.stderr)
+                self.assertNotIn("status", proc.stdout)
+        finally:
+            os.close(fd)
+
+    def test_folder_as_input_is_unreadable(self):
+        proc = ncc("run", self.dir)
+        self.assertDriverError(proc, "NCC0001")
+
+
 if __name__ == "__main__":
     NCC = os.path.abspath(sys.argv.pop(1))
     unittest.main()

@@ -1,3 +1,7 @@
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <cstdio>
 #include <iostream>
 
 #include "absl/strings/str_cat.h"
@@ -67,6 +71,15 @@ std::optional<int> openSession(driver::Session& session, const std::filesystem::
   if (std::optional<driver::SetupError> error = session.open(input, options)) {
     printDiagnostics(session);
     printError(error->code, error->message);
+    return kUsage;
+  }
+  // The standard input is read through stdio, whose read errors (an I/O error, a folder
+  // redirected to it) end the stream as if it were empty: an empty program must not run.
+  if (input == driver::kStdinName && std::ferror(stdin)) {
+    struct stat st {};
+    const bool folder = fstat(STDIN_FILENO, &st) == 0 && S_ISDIR(st.st_mode);
+    printError("NCC0001", folder ? "cannot read the standard input: it is a folder"
+                                 : "cannot read the standard input: a read error");
     return kUsage;
   }
   return std::nullopt;
