@@ -324,6 +324,39 @@ class InputReadTest(FilesTest):
         self.assertDriverError(proc, "NCC0001")
 
 
+# ---- 4. run limits are limits ---------------------------------------------------------------
+
+class RunLimitTest(FilesTest):
+    def test_bad_limits_are_usage_errors(self):
+        good = self.write("a.nc", GOOD)
+        for command in ("run", "plot"):
+            for option, value in (("--max-time", "nan"), ("--max-time", "-nan"),
+                                  ("--max-time", "-1"), ("--max-time", "inf"),
+                                  ("--max-time", "1e13"), ("--max-steps", "-1"),
+                                  ("--max-steps", " -5")):
+                proc = ncc(command, good, option, value, "-o", self.path("out"))
+                self.assertDriverError(proc, "NCC0010")
+                self.assertIn(option, proc.stderr)
+                self.assertFalse(os.path.exists(self.path("out")), (command, option, value))
+            proc = ncc(command, good, "--max-time=nan")
+            self.assertDriverError(proc, "NCC0010")
+            self.assertIn("finite number from 0 (no limit)", proc.stderr)
+            proc = ncc(command, good, "--max-steps=-1")
+            self.assertDriverError(proc, "NCC0010")
+            self.assertIn("negative", proc.stderr)
+
+    def test_good_limits_still_run(self):
+        good = self.write("a.nc", GOOD)
+        for args in (["--max-time", "0", "--max-steps", "0"], ["--max-time", "3600.5"],
+                     ["--max-steps", "1000000"], ["--max-time", "1e12"]):
+            for command in ("run", "plot"):
+                proc = ncc(command, good, *args, "-o", self.path("out"))
+                self.assertEqual(proc.returncode, 0, (command, args, proc.stderr))
+        proc = ncc("run", good, "--max-steps", "2")
+        self.assertEqual(proc.returncode, 3)
+        self.assertIn("NCC7204", proc.stderr)
+
+
 if __name__ == "__main__":
     NCC = os.path.abspath(sys.argv.pop(1))
     unittest.main()

@@ -238,13 +238,7 @@ void addPlotCommand(CLI::App& app, int& exit_code) {
   cmd->add_option("--to", args->to_line,
                   "draw only the moves of this line of the main program's file and before")
       ->check(CLI::Range(uint32_t{1}, uint32_t{4'000'000'000}));
-  cmd->add_option("--max-steps", args->max_steps,
-                  "stop with alarm NCC7204 after this many VM instructions (0: no limit)")
-      ->capture_default_str();
-  cmd->add_option("--max-time", args->max_time,
-                  "stop with alarm NCC7208 after this many seconds of simulated time (0: no limit)")
-      ->check(CLI::Range(0.0, 1e12))
-      ->capture_default_str();
+  addRunLimitOptions(*cmd, args->max_steps, args->max_time);
   args->run.addTo(*cmd, "AXIS=VALUE: the simulated skip signal of G31, as for ncc run (repeatable)",
                   "N=VALUE: an interface input signal, as for ncc run (repeatable)");
   args->common.addTo(*cmd);

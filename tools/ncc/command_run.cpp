@@ -273,15 +273,7 @@ void addRunCommand(CLI::App& app, int& exit_code) {
                   "--emit=trace: write every Nth IPO tick only (ticks 0, N, 2N, ...)")
       ->check(CLI::Range(uint64_t{1}, uint64_t{1000000000}))
       ->capture_default_str();
-  cmd->add_option("--max-steps", args->max_steps,
-                  "stop with alarm NCC7204 after this many VM instructions (0: no limit); guards "
-                  "against programs that loop forever")
-      ->capture_default_str();
-  cmd->add_option("--max-time", args->max_time,
-                  "stop the simulated run with alarm NCC7208 after this many seconds of "
-                  "simulated time (0: no limit); also at once when a block cannot end before it")
-      ->check(CLI::Range(0.0, 1e12))
-      ->capture_default_str();
+  addRunLimitOptions(*cmd, args->max_steps, args->max_time);
   cmd->add_option("--feed-override", args->feed_override,
                   "feed override at the start of the simulated run, % of the programmed F")
       ->check(CLI::Range(1.0, 200.0))

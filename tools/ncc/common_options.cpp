@@ -1,6 +1,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <cmath>
 #include <cstdio>
 #include <iostream>
 
@@ -48,6 +49,41 @@ std::optional<std::string> CommonOptions::toSessionOptions(driver::SessionOption
   if (!vars_file.empty()) out.variables_file = vars_file;
   out.defer = defer;
   return std::nullopt;
+}
+
+void addRunLimitOptions(CLI::App& command, uint64_t& max_steps, double& max_time) {
+  command
+      .add_option("--max-steps", max_steps,
+                  "stop with alarm NCC7204 after this many VM instructions (0: no limit); guards "
+                  "against programs that loop forever")
+      ->check(CLI::Validator(
+          [](std::string& text) {
+            // The conversion to an unsigned number would take -1 as 2^64-1: no limit at all.
+            const std::size_t first = text.find_first_not_of(" \t");
+            return first != std::string::npos && text[first] == '-'
+                       ? "'" + text + "' is negative: expected a count of VM instructions, "
+                                        "0 (no limit) or more"
+                       : std::string();
+          },
+          "N >= 0"))
+      ->capture_default_str();
+  command
+      .add_option("--max-time", max_time,
+                  "stop the simulated run with alarm NCC7208 after this many seconds of "
+                  "simulated time (0: no limit); also at once when a block cannot end before it")
+      ->check(CLI::Validator(
+          [](std::string& text) {
+            // The option's own conversion, then the value: NaN passes any range check.
+            double seconds = 0.0;
+            if (CLI::detail::lexical_cast(text, seconds) && std::isfinite(seconds) &&
+                seconds >= 0.0 && seconds <= 1e12)
+              return std::string();
+            return absl::StrCat("'", text,
+                                "' is no time limit: expected seconds of simulated time, a "
+                                "finite number from 0 (no limit) to 1e12");
+          },
+          "SECONDS >= 0"))
+      ->capture_default_str();
 }
 
 void printDiagnostics(driver::Session& session) { session.diagnostics().print(std::cerr); }
