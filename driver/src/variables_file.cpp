@@ -2,10 +2,14 @@
 
 #include "ncc/prepare/block_loop.h"
 
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <cerrno>
 #include <charconv>
 #include <cmath>
-#include <fstream>
-#include <sstream>
+#include <cstring>
 #include <toml++/toml.h>
 
 #include "absl/strings/str_cat.h"
@@ -30,33 +34,76 @@ SourceLocation at(uint32_t file, const toml::source_region& region) {
   return SourceLocation{file, region.begin.line, region.begin.column};
 }
 
+// A path that names nothing yet: the first run creates the file (a folder on the way that is
+// a file counts as missing too, as it always has; the write-back then fails).
+bool missing(int error) { return error == ENOENT || error == ENOTDIR; }
+
+const std::string kTooLarge = absl::StrCat("larger than ", kMaxVariablesFileBytes >> 20,
+                                           " MiB, more than any controller's variables");
+
 }  // namespace
+
+std::optional<std::string> variablesFileProblem(const std::filesystem::path& path) {
+  struct stat st {};
+  if (::stat(path.c_str(), &st) != 0) {
+    if (missing(errno)) return std::nullopt;
+    return std::string(std::strerror(errno));
+  }
+  // Not opened before this: opening a FIFO for reading waits for a writer.
+  if (!S_ISREG(st.st_mode)) return std::string("not a regular file");
+  if (static_cast<uint64_t>(st.st_size) > kMaxVariablesFileBytes) return kTooLarge;
+  const int fd = ::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC);
+  if (fd < 0) return std::string(std::strerror(errno));
+  ::close(fd);
+  return std::nullopt;
+}
 
 std::optional<std::map<int64_t, SavedVariable>> readVariablesFile(
     const std::filesystem::path& path, SourceManager& sources, DiagnosticEngine& diags) {
   std::map<int64_t, SavedVariable> out;
-  std::error_code ec;
-  if (!std::filesystem::exists(path, ec)) return out;
-  std::ifstream in(path, std::ios::binary);
-  std::stringstream text;
-  if (in) text << in.rdbuf();
+  // O_NONBLOCK: a FIFO opens at once (and is refused below) instead of waiting for a writer.
+  const int fd = ::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC);
+  if (fd < 0 && missing(errno)) return out;
+  const int open_error = errno;
   const uint32_t file = sources.addFile(path);
-  if (!in) {
+  std::string text;
+  std::string why;
+  struct stat st {};
+  if (fd < 0) {
+    why = std::strerror(open_error);
+  } else if (::fstat(fd, &st) != 0) {
+    why = std::strerror(errno);
+  } else if (!S_ISREG(st.st_mode)) {
+    why = "not a regular file";
+  } else {
+    // Bounded whatever the size said: a file may grow while it is read.
+    char buffer[1 << 16];
+    while (why.empty()) {
+      const ssize_t n = ::read(fd, buffer, sizeof buffer);
+      if (n < 0 && errno == EINTR) continue;
+      if (n < 0) why = std::strerror(errno);
+      if (n <= 0) break;
+      text.append(buffer, static_cast<size_t>(n));
+      if (text.size() > kMaxVariablesFileBytes) why = kTooLarge;
+    }
+  }
+  if (fd >= 0) ::close(fd);
+  if (!why.empty()) {
     diags.error(kBadFile, SourceLocation{file, 0, 0},
-                absl::StrCat("cannot read the variables file '", path.string(), "'"));
+                absl::StrCat("cannot read the variables file '", path.string(), "': ", why));
     return std::nullopt;
   }
   toml::table root;
   try {
 #if TOML_EXCEPTIONS
     try {
-      root = toml::parse(text.str(), path.string());
+      root = toml::parse(text, path.string());
     } catch (const toml::parse_error& e) {
       diags.error(kBadFile, at(file, e.source()), std::string(e.description()));
       return std::nullopt;
     }
 #else
-    toml::parse_result parsed = toml::parse(text.str(), path.string());
+    toml::parse_result parsed = toml::parse(text, path.string());
     if (!parsed) {
       diags.error(kBadFile, at(file, parsed.error().source()),
                   std::string(parsed.error().description()));

@@ -1,5 +1,10 @@
 #include "line_source.h"
 
+#include <cerrno>
+#include <cstring>
+
+#include "ncc/support/source_read_error.h"
+
 namespace ncc::frontend {
 
 LineSource::LineSource(const SourceManager& sources, uint32_t file) {
@@ -9,11 +14,12 @@ LineSource::LineSource(const SourceManager& sources, uint32_t file) {
     return;
   }
   if (file == 0 || file > sources.fileCount()) return;
-  stream_.open(sources.path(file), std::ios::binary);
+  path_ = sources.path(file);
+  stream_.open(path_, std::ios::binary);
   ok_ = stream_.is_open();
 }
 
-LineSource::LineSource(const std::filesystem::path& path) {
+LineSource::LineSource(const std::filesystem::path& path) : path_(path) {
   stream_.open(path, std::ios::binary);
   ok_ = stream_.is_open();
 }
@@ -29,7 +35,12 @@ bool LineSource::next(std::string& line) {
     line.assign(*buffer_, start, end - start);
     next_offset_ = end < buffer_->size() ? end + 1 : end;
   } else {
-    if (!std::getline(stream_, line)) return false;
+    errno = 0;
+    if (!std::getline(stream_, line)) {
+      // A read error is not the end of the file (badbit, not eofbit).
+      if (stream_.bad()) throw SourceReadError(path_, errno ? std::strerror(errno) : "read error");
+      return false;
+    }
     // The offset is counted, not asked of the stream: tellg() costs a system call per line.
     // getline() sets eof only when the last line has no LF.
     next_offset_ += line.size() + (stream_.eof() ? 0 : 1);

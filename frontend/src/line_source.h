@@ -24,7 +24,8 @@ class LineSource {
   explicit LineSource(const std::filesystem::path& path);
   // False when the source could not be opened.
   bool ok() const { return ok_; }
-  // The next line into `line` (its capacity is reused); false at end of input.
+  // The next line into `line` (its capacity is reused); false at end of input. Throws
+  // SourceReadError when reading the file fails.
   bool next(std::string& line);
 
   // Byte offset of the line last returned by next() (0 before the first).
@@ -39,6 +40,7 @@ class LineSource {
   bool ok_ = false;
   const std::string* buffer_ = nullptr;
   std::ifstream stream_;
+  std::filesystem::path path_;  // of the file streamed, for SourceReadError
   uint64_t line_offset_ = 0;
   uint64_t next_offset_ = 0;
 };

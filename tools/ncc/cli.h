@@ -35,8 +35,14 @@ struct CommonOptions {
   std::optional<std::string> toSessionOptions(driver::SessionOptions& out) const;
 };
 
+// --max-steps N and --max-time SECONDS, the bounds of every run and compile (docs/cli.md), with
+// their checks in one place for every command that takes them: a negative count, a negative,
+// non-finite or huge time is a usage error (NCC0010, exit 2) rather than a run without a bound.
+void addRunLimitOptions(CLI::App& command, uint64_t& max_steps, double& max_time);
+
 // Opens a session for `input` ("-": the standard input), printing setup errors. Returns an
-// exit code on failure.
+// exit code on failure. A --vars file that cannot be one (a device, a FIFO, too large) is
+// NCC0019, before anything is read.
 std::optional<int> openSession(driver::Session& session, const std::filesystem::path& input,
                                const CommonOptions& common);
 

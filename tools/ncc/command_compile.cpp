@@ -67,9 +67,9 @@ int runCompile(const CompileArgs& args) {
   {
     // Not while text streams to the terminal the line would be drawn on.
     CompileProgress progress(session, !(output.toStdout() && args.emit != "bytecode" && stdoutIsTerminal()));
-    if (args.emit == "bytecode" && output.toStdout()) {
-      // The writer patches its section table at the end: stdout cannot seek, so the bytes
-      // are collected first.
+    if (args.emit == "bytecode" && output.isStream()) {
+      // The writer patches its section table at the end: stdout, a FIFO or a device cannot
+      // seek, so the bytes are collected first.
       std::stringstream bytes;
       ok = driver::emitBytecode(session, bytes, args.passes);
       if (ok) output.stream() << bytes.rdbuf();

@@ -19,7 +19,7 @@ int runTrace(const std::string& input, const std::string& output_path) {
     return kUsage;
   }
   PendingOutput output;
-  if (!output.open(output_path)) return kUsage;
+  if (!output.open(output_path, {{input, "the run trace"}})) return kUsage;
   driver::TraceReader reader(in);
   if (reader.open()) {
     std::unique_ptr<driver::TraceWriter> csv =

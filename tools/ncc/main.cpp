@@ -2,6 +2,7 @@
 #include <iostream>
 
 #include "cli.h"
+#include "ncc/support/source_read_error.h"
 
 #ifndef NCC_VERSION
 #define NCC_VERSION "unknown"
@@ -24,6 +25,11 @@ int main(int argc, char** argv) {
     app.parse(argc, argv);
   } catch (const CLI::Success& e) {  // --help, --help-all, --version
     return app.exit(e);
+  } catch (const ncc::SourceReadError& e) {
+    // A program or subprogram whose read failed part way: what was read is not the program.
+    // Outputs are discarded on the way here (PendingOutput's destructor).
+    printError("NCC0001", e.what());
+    return kUsage;
   } catch (const CLI::ParseError& e) {
     printError("NCC0010", e.what());
     std::cerr << "Run with --help for more information.\n";

@@ -55,19 +55,53 @@ mode_t finalMode(const std::string& path) {
   return 0666 & ~mask;
 }
 
+// `path` with its symbolic links followed while it is one (at most 40 hops, as the kernel
+// allows): the file an output replaces, so that a link stays a link. A dangling link gives
+// the path it names (the output creates it, as a shell's `>` does).
+std::filesystem::path followLinks(std::filesystem::path path, std::error_code& ec) {
+  for (int hops = 0; hops < 40; ++hops) {
+    const std::filesystem::file_status status = std::filesystem::symlink_status(path, ec);
+    if (status.type() == std::filesystem::file_type::not_found) ec.clear();  // created later
+    if (ec || !std::filesystem::is_symlink(status)) return path;
+    std::filesystem::path target = std::filesystem::read_symlink(path, ec);
+    if (ec) return path;
+    path = target.is_absolute() ? target : path.parent_path() / target;
+  }
+  ec = std::make_error_code(std::errc::too_many_symbolic_link_levels);
+  return path;
+}
+
 }  // namespace
+
+bool sameFile(const std::filesystem::path& a, const std::filesystem::path& b) {
+  std::error_code ec;
+  const std::filesystem::path ra = followLinks(a, ec);
+  const std::filesystem::path rb = followLinks(b, ec);
+  const bool a_exists = std::filesystem::exists(ra, ec);
+  const bool b_exists = std::filesystem::exists(rb, ec);
+  if (a_exists && b_exists) return std::filesystem::equivalent(ra, rb, ec) && !ec;
+  if (a_exists || b_exists) return false;
+  // Neither exists yet (an output and the --vars file a run creates): the same path, once
+  // made absolute with the links of its folders followed.
+  const std::filesystem::path ca = std::filesystem::weakly_canonical(ra, ec);
+  if (ec) return false;
+  const std::filesystem::path cb = std::filesystem::weakly_canonical(rb, ec);
+  return !ec && ca == cb;
+}
 
 bool outputIsAnInput(const std::filesystem::path& output,
                      const std::vector<driver::InputFile>& inputs) {
-  std::error_code ec;
-  if (!std::filesystem::exists(output, ec)) return false;
   for (const driver::InputFile& input : inputs) {
-    if (std::filesystem::equivalent(output, input.path, ec)) {
-      const std::string what = std::string(input.role) == "the program"
+    if (sameFile(output, input.path)) {
+      const std::string role = input.role;
+      const std::string what = role == "the program"
                                    ? "its own source"  // the usual slip: -o part.nc
-                                   : input.role;
+                                   : role;
+      const std::string why = role == "the variables file"
+                                  ? "-o names the --vars file, which is read and written back"
+                                  : "-o names a file this command reads";
       printError("NCC0005", "refusing to write the output over " + what + " '" +
-                                input.path.string() + "' (-o names a file this command reads)");
+                                input.path.string() + "' (" + why + ")");
       return true;
     }
   }
@@ -79,12 +113,36 @@ bool PendingOutput::open(const std::string& path, std::vector<driver::InputFile>
   inputs_ = std::move(inputs);
   if (path_.empty()) return true;
   if (outputIsAnInput(path_, inputs_)) return false;
+  struct stat existing {};
+  if (stat(path_.c_str(), &existing) == 0) {  // through links, as the kernel resolves them
+    if (S_ISDIR(existing.st_mode)) {  // said now, not after a long run
+      printError("NCC0004", "cannot write '" + path_ + "': it is a folder");
+      return false;
+    }
+    if (S_ISFIFO(existing.st_mode) || S_ISCHR(existing.st_mode) || S_ISBLK(existing.st_mode)) {
+      // Written in place, as a stream: renaming a file onto /dev/null or a FIFO would replace
+      // it. A FIFO blocks here until a reader opens it, as a shell's `>` does.
+      in_place_ = true;
+      file_.open(path_, std::ios::binary | std::ios::out);
+      if (!file_) {
+        printError("NCC0004", "cannot write '" + path_ + "': " + std::strerror(errno));
+        in_place_ = false;
+        return false;
+      }
+      return true;
+    }
+    if (!S_ISREG(existing.st_mode)) {  // a socket: nothing to write into, nothing to replace
+      printError("NCC0004", "cannot write '" + path_ + "': not a regular file, FIFO or device");
+      return false;
+    }
+  }
   std::error_code ec;
-  if (std::filesystem::is_directory(path_, ec)) {  // said now, not after a long run
-    printError("NCC0004", "cannot write '" + path_ + "': it is a folder");
+  const std::filesystem::path target = followLinks(path_, ec);
+  if (ec) {
+    printError("NCC0004", "cannot write '" + path_ + "': " + ec.message());
     return false;
   }
-  const std::filesystem::path target(path_);
+  target_ = target.string();
   std::filesystem::path folder = target.parent_path();
   if (folder.empty()) folder = ".";
   std::string pattern = (folder / ("." + target.filename().string() + ".XXXXXX")).string();
@@ -100,7 +158,7 @@ bool PendingOutput::open(const std::string& path, std::vector<driver::InputFile>
     if (fd >= 0) {
       g_temp_registered = 1;
       pattern = g_temp_path;
-      fchmod(fd, finalMode(path_));
+      fchmod(fd, finalMode(target_));
       close(fd);
     }
   }
@@ -140,8 +198,13 @@ bool PendingOutput::commit() {
   file_.flush();
   const bool written = static_cast<bool>(file_);
   file_.close();
+  if (in_place_) {
+    in_place_ = false;
+    if (!written) printError("NCC0004", "cannot write '" + path_ + "'");
+    return written;
+  }
   std::error_code ec;
-  if (written) std::filesystem::rename(temp_, path_, ec);
+  if (written) std::filesystem::rename(temp_, target_, ec);
   if (!written || ec) {
     printError("NCC0004", "cannot write '" + path_ + "'" + (ec ? ": " + ec.message() : ""));
     discard();
@@ -153,6 +216,10 @@ bool PendingOutput::commit() {
 }
 
 void PendingOutput::discard() {
+  if (in_place_) {  // what was written is the reader's already
+    file_.close();
+    in_place_ = false;
+  }
   if (temp_.empty()) return;
   file_.close();
   std::error_code ec;

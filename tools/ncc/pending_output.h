@@ -5,9 +5,14 @@
 // streams into it, and renamed to the path by commit(); discard(), destruction without
 // commit, SIGINT, SIGTERM and SIGHUP remove it. Memory does not grow with the output.
 //
+// A path that is a symbolic link is written through: the temporary file is made beside the
+// file the link names and renamed onto it, so the link stays a link. A path that is a FIFO or
+// a character or block device is written in place as a stream, like stdout (renaming a file
+// onto /dev/null would replace the device).
+//
 // An output is never one of the command's inputs (the source, a called subprogram, the
-// .ncb, the machine file): compared by filesystem identity, at open() and again at commit()
-// (a subprogram may be found only while compiling).
+// .ncb, the machine file, the --vars file even before it exists): compared by filesystem
+// identity, at open() and again at commit() (a subprogram may be found only while compiling).
 #include <filesystem>
 #include <fstream>
 #include <ostream>
@@ -32,20 +37,31 @@ class PendingOutput {
   void addInputs(const std::vector<driver::InputFile>& inputs);
   std::ostream& stream();
   bool toStdout() const { return path_.empty(); }
+  // Written as it comes (stdout, a FIFO, a device): it cannot seek, and what was written
+  // stays written when the command fails.
+  bool isStream() const { return path_.empty() || in_place_; }
   // Makes the output final; false (after printing why) on a write or rename error, or when the
   // path has become one of the inputs.
   bool commit();
   void discard();
 
  private:
-  std::string path_;  // empty: stdout
-  std::string temp_;  // empty: no temporary file exists
+  std::string path_;    // as given; empty: stdout
+  std::string target_;  // path_ with its symbolic links followed: the file replaced
+  std::string temp_;    // empty: no temporary file exists
+  bool in_place_ = false;  // a FIFO or a device, opened and written directly
   std::vector<driver::InputFile> inputs_;
   std::ofstream file_;
 };
 
-// True (after printing NCC0005) when `output` exists and is the same file as one of `inputs`.
+// True (after printing NCC0005) when `output` names the same file as one of `inputs`: by
+// filesystem identity when both exist, else by their paths with symbolic links followed (an
+// input that does not exist yet, the --vars file a run creates).
 bool outputIsAnInput(const std::filesystem::path& output,
                      const std::vector<driver::InputFile>& inputs);
+
+// Whether `a` and `b` name one file, existing or not, through any symbolic link, hard link or
+// spelling of the path.
+bool sameFile(const std::filesystem::path& a, const std::filesystem::path& b);
 
 }  // namespace ncc::cli

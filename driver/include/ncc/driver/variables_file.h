@@ -29,9 +29,20 @@ struct SavedVariable {
   SourceLocation where;  // its key in the file, for diagnostics
 };
 
+// The largest variables file read: a controller keeps at most a few thousand variables, a few
+// hundred KiB of TOML; a bigger file is not one (docs/cli.md, NCC0019).
+inline constexpr uint64_t kMaxVariablesFileBytes = uint64_t{16} << 20;
+
+// Why `path` cannot be read as a variables file: not a regular file (a device such as
+// /dev/zero, a FIFO, a folder), larger than kMaxVariablesFileBytes, or not readable. nullopt
+// when it can, and when it does not exist (the first run creates it). Checks without reading:
+// a FIFO is never opened for reading (that would wait for a writer).
+std::optional<std::string> variablesFileProblem(const std::filesystem::path& path);
+
 // The file's variables; a file that does not exist yet is empty (the first run creates it).
-// nullopt after reporting NCC0017 (unreadable, not TOML, a key that is not `#n`, a value that
-// is not a finite number).
+// nullopt after reporting NCC0017 (unreadable, not a regular file, over the size limit, not
+// TOML, a key that is not `#n`, a value that is not a finite number). Reads at most
+// kMaxVariablesFileBytes, whatever the file turns out to be.
 std::optional<std::map<int64_t, SavedVariable>> readVariablesFile(
     const std::filesystem::path& path, SourceManager& sources, DiagnosticEngine& diags);
 
