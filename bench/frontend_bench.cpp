@@ -46,7 +46,7 @@ std::string camProgram(size_t blocks) {
 // Counts lowered IR blocks (a check that lowering ran); keeps them from being optimised away.
 class CountingSink final : public ncc::ir::BlockSink {
  public:
-  void accept(ncc::ir::Block block) override {
+  void accept(ncc::ir::Block&& block) override {
     benchmark::DoNotOptimize(block);
     ++count;
   }

@@ -88,7 +88,7 @@ CompProgram& CompProgram::machineRapid(double x, double y, double z) {
 std::vector<ir::Block> CompProgram::runBlocks() {
   Collect out;
   CompensationPass pass(out, dialect_, diags_);
-  for (ir::Block& b : blocks_) pass.accept(b);
+  for (ir::Block& b : blocks_) pass.accept(ir::Block(b));
   pass.finish();
   return out.blocks;
 }

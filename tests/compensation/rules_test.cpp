@@ -72,7 +72,7 @@ TEST(CompensationRules, TheWindowNeverHoldsMoreThanTheBlocksWithoutMotionThatKee
   CompensationPass pass(out, Dialect::FanucM, diags);
   size_t in = 0, most_held = 0;
   for (const ir::Block& b : p.built()) {
-    pass.accept(b);
+    pass.accept(ir::Block(b));
     ++in;
     most_held = std::max(most_held, in - out.n);
   }

@@ -72,7 +72,7 @@ TEST(VerifyingSink, ForwardsValidBlocksAndReportsInvalidOnes) {
   Block bad = validBlock();
   bad.loc = SourceLocation{1, 9, 2};
   std::get<Linear>(bad.ops[1]).feed = -1.0;
-  sink.accept(bad);
+  sink.accept(ir::Block(bad));
   sink.finish();
   EXPECT_EQ(next.blocks.size(), 1u);
   EXPECT_TRUE(next.finished);

@@ -137,7 +137,7 @@ TEST(PassManager, VerifyEachNamesThePassThatLeftInvalidIr) {
     PassManager pipeline(o, diags, keep);
     ir::Block bad = offsetRapid(7);
     bad.ops.push_back(ir::Dwell{-1.0, false});  // lowering never makes a negative dwell
-    pipeline.entry().accept(bad);
+    pipeline.entry().accept(ir::Block(bad));
     pipeline.entry().accept(offsetRapid(8));
     pipeline.entry().finish();
     ASSERT_EQ(diags.diagnostics().size(), 1u) << "each " << each;

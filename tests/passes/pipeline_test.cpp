@@ -25,7 +25,7 @@ TEST(WorkToMachine, AddsTheFrameToTargetsAndCentres) {
   b.frame.tool_length = {0, 0, 10};
   b.ops.push_back(ir::Arc{{10, 0, -5}, {0, 0, -5}, ir::Space::Work, ir::Plane::XY, true, 0, 100, false});
   b.ops.push_back(ir::Rapid{{7, 7, 7}, ir::Space::Machine, ir::RapidType::Linear});
-  pass.accept(b);
+  pass.accept(ir::Block(b));
   pass.finish();
   ASSERT_EQ(keep.blocks.size(), 1u);
   const auto& arc = std::get<ir::Arc>(keep.blocks[0].ops[0]);
@@ -47,8 +47,8 @@ TEST(PassManager, WorkSpaceWhenAskedAndMachineSpaceByDefault) {
   ir::Block b;
   b.frame.work_offset = {5, 0, 0};
   b.ops.push_back(ir::Rapid{{1, 0, 0}, ir::Space::Work, ir::RapidType::Linear});
-  debug.entry().accept(b);
-  full.entry().accept(b);
+  debug.entry().accept(ir::Block(b));
+  full.entry().accept(ir::Block(b));
   EXPECT_EQ(std::get<ir::Rapid>(work.blocks[0].ops[0]).to[0], 1.0);
   EXPECT_EQ(std::get<ir::Rapid>(machine.blocks[0].ops[0]).to[0], 6.0);
   EXPECT_FALSE(diags.hasErrors());
