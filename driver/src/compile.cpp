@@ -1,8 +1,10 @@
 #include "ncc/driver/compile.h"
 
+#include <algorithm>
 #include <cctype>
 #include <charconv>
 #include <fstream>
+#include <streambuf>
 #include <string_view>
 #include <utility>
 #include <system_error>
@@ -127,6 +129,37 @@ std::optional<std::map<int64_t, double>> loadSavedVariables(Session& session,
   return loaded;
 }
 
+// Keeps nothing of what is written but answers seeks, for `ncc check`'s bytecode writer (which
+// patches its header at the end): check runs every check compile runs, NCC7017 included.
+class DiscardingBuffer final : public std::streambuf {
+ protected:
+  std::streamsize xsputn(const char*, std::streamsize n) override {
+    advance(n);
+    return n;
+  }
+  int_type overflow(int_type c) override {
+    advance(1);
+    return traits_type::not_eof(c);
+  }
+  pos_type seekoff(off_type off, std::ios_base::seekdir dir, std::ios_base::openmode) override {
+    const off_type base = dir == std::ios_base::beg ? 0 : dir == std::ios_base::cur ? at_ : end_;
+    if (base + off < 0) return pos_type(off_type(-1));
+    at_ = base + off;
+    return pos_type(at_);
+  }
+  pos_type seekpos(pos_type p, std::ios_base::openmode mode) override {
+    return seekoff(off_type(p), std::ios_base::beg, mode);
+  }
+
+ private:
+  void advance(std::streamsize n) {
+    at_ += n;
+    end_ = std::max(end_, at_);
+  }
+  off_type at_ = 0;
+  off_type end_ = 0;
+};
+
 // Receives the IR and keeps nothing.
 struct DiscardingSink : ir::BlockSink {
   void accept(ir::Block&&) override {}
@@ -154,7 +187,7 @@ class FactsTap : public ir::BlockSink {
 // carrying the block store, after the blocks prepared so far.
 // `main_end`: where the main program ended, when the compile got there (--defer): the text
 // after it is never executed (without it, the builder finds the program's M02/M30 itself).
-void prepareAtRunTime(Session& session, SourceProgramStore& store, const prepare::BlockLoop& loop,
+void prepareAtRunTime(Session& session, SourceProgramStore& store, prepare::BlockLoop& loop,
                       bool deferred, std::optional<eval::ProgramPoint> main_end,
                       std::map<int64_t, double> saved, ir::BlockSink& entry) {
   const eval::MacroRules& rules = eval::macroRules(session.dialect());
@@ -175,6 +208,14 @@ void prepareAtRunTime(Session& session, SourceProgramStore& store, const prepare
   }
   targets.main_end = main_end;
   eval::BlockStore blocks = buildBlockStore(store, session.mainFile(), targets, session.diagnostics());
+  if (session.diagnostics().hasErrors()) return;
+  // What the run may reach is checked here as far as it can be without the run's values
+  // (addresses and codes the dialect lacks), so that check, compile and run agree; the rest is
+  // checked as the blocks run. Never-executed text after the main program's end is not.
+  for (const eval::StoredFile& file : blocks.files)
+    for (const eval::StoredBlock& b : file.blocks)
+      if (!(main_end && file.id == main_end->file && main_end->position < b.position))
+        loop.lowering().checkStatically(b.block);
   if (session.diagnostics().hasErrors()) return;
   blocks.ahead_blocks = deferred ? 0 : loop.steps();
   blocks.limits = session.loopLimits();
@@ -315,12 +356,18 @@ bool compileToSink(Session& session, ir::BlockSink& sink) {
 }
 
 bool check(Session& session, const PassControl& control, std::ostream* print_out) {
-  // Discards the IR; every pass and the IR verifier still run, so their diagnostics appear,
-  // and motion targets are checked against the machine's travel limits.
-  DiscardingSink discard;
+  // Every pass runs, and the backend into nothing, so every diagnostic of a compile appears
+  // (NCC7017: a value beyond the bytecode's bounds), and motion targets are checked against the
+  // machine's travel limits.
+  DiscardingBuffer nothing;
+  std::ostream out(&nothing);
+  backend::BytecodeWriter writer(out, session.machine(), session.dialect(), session.sources(),
+                                 &session.diagnostics());
+  DiscardingSink discard;  // --stop-after: the IR may not have reached machine space
   std::optional<passes::PassPrinter> printer;
   if (print_out) printer.emplace(*print_out, axisNames(session.machine()));
-  return compileWith(session, discard, Pipeline::Check, control, printer ? &*printer : nullptr);
+  return compileWith(session, control.stop_after.empty() ? static_cast<ir::BlockSink&>(writer) : discard,
+                     Pipeline::Check, control, printer ? &*printer : nullptr);
 }
 
 bool emitAst(Session& session, std::ostream& out) {

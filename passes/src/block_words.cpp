@@ -47,9 +47,10 @@ class Decoder {
   Decoder(const ast::Block& block, const DecodeContext& ctx) : block_(block), ctx_(ctx) {}
 
   std::optional<DecodedBlock> run() {
-    for (const ast::Statement& st : block_.statements)
-      fail(Alarm::MacroNotSupported, st.loc,
-           "macro expressions/statements are not supported yet (macro statement)");
+    if (!ctx_.statically)
+      for (const ast::Statement& st : block_.statements)
+        fail(Alarm::MacroNotSupported, st.loc,
+             "macro expressions/statements are not supported yet (macro statement)");
     for (size_t n = 0; n < block_.words.size(); ++n)
       if (block_.words[n].address == "G") gWord(block_.words[n], static_cast<int>(n));
     initialDistance();
@@ -73,6 +74,7 @@ class Decoder {
 
   bool literal(const ast::Word& w, double& v, bool& point) {
     if (foldLiteral(w.value, v, point)) return true;
+    if (ctx_.statically) return false;  // its value is known at run time
     fail(Alarm::MacroNotSupported, w.loc,
          absl::StrCat("macro expressions/statements are not supported yet: ", w.address,
                       exprText(w.value)));
@@ -218,7 +220,8 @@ class Decoder {
     if (a == "Q") {
       // Cycle data (lowering_cycles.cpp): only with a hole cycle in force or in the block.
       const auto& cycle = out_.group(GGroup::Cycle);
-      if (!ctx_.cycle_in_force && !(cycle && cycle->entry->action == GAction::HoleCycle)) {
+      if (!ctx_.statically && !ctx_.cycle_in_force &&
+          !(cycle && cycle->entry->action == GAction::HoleCycle)) {
         fail(Alarm::AddressWithoutMeaning, w.loc,
              "address Q (canned cycle data) has no meaning outside a hole cycle");
         return;

@@ -64,6 +64,10 @@ struct DecodeContext {
   ir::DistanceMode modal_distance;  // G90/G91 before the block
   DiagnosticEngine& diags;
   bool cycle_in_force = false;      // a hole cycle is in force: Q is cycle data
+  // A block that will be lowered only at run time (after a value known then): only what holds
+  // whatever the values and the state are is checked (addresses, literal G codes, repeated
+  // words); a word with an expression, the statements and Q's context are left to run time.
+  bool statically = false;
 };
 
 // Returns nullopt (after reporting) when the block has an error.

@@ -300,6 +300,14 @@ bool Lowering::skips(const ast::Block& block) const {
   return (st.settings.block_skip && level <= 1) || st.settings.skip_levels.count(level) > 0;
 }
 
+bool Lowering::checkStatically(const ast::Block& block) const {
+  const State& st = *state_;
+  if (!st.table || skips(block)) return true;
+  DecodeContext decode{*st.table, *st.machine, st.settings.policy, st.cs.modal.distance, st.diags};
+  decode.statically = true;
+  return decodeBlock(block, decode).has_value();
+}
+
 eval::SystemVariables& Lowering::systemVariables() { return state_->system_variables; }
 
 void Lowering::variablesWritten(SourceLocation loc, std::vector<ir::SetVariable> writes) {

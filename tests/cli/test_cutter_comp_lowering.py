@@ -105,13 +105,14 @@ class CutterCompLoweringTest(ScratchDirTest):
         self.assertIn("line work X0.000 Y40.000", proc.stdout)
 
     def test_variable_writes_while_compensating_carry_the_record(self):
-        # #2601 (radius geometry D1) = 7.: the write's own block and the next ones hold 7.
+        # #2601 (radius geometry D1) = 7.: the writes' block (the writes of lines 2 and 3, one
+        # block at the last of them) and the next ones hold 7.
         program = "G17 G01 G41 X10. D1 F100.\n#2601=7.\n#100=1\nX20.\nG40 X0\nM30\n"
         proc = self.lower(program, "fanuc-m")
         self.assertEqual(proc.returncode, 0, proc.stderr)
         self.assertEqual(self.comps(proc.stdout), [
-            (1, "comp(left D1=5.000 commanded)"), (2, "comp(left D1=7.000)"),
-            (3, "comp(left D1=7.000)"), (4, "comp(left D1=7.000)"), (5, "comp(off D1=7.000)")])
+            (1, "comp(left D1=5.000 commanded)"), (3, "comp(left D1=7.000)"),
+            (4, "comp(left D1=7.000)"), (5, "comp(off D1=7.000)")])
 
     def test_the_corpus_step_block_lowers_with_its_d_register(self):
         # As corpus enier-mill_240806_step_block_1.nc: G41 D02 never cancelled before M30;

@@ -74,10 +74,14 @@ class RunBoundsTest(ScratchDirTest):
         prog = self.write("holes.nc", self.ENDLESS_HOLES)
         out = self.path("holes.ncb")
         for command in (["compile", prog, "-o", out], ["check", prog]):
+            proc = self.timed(*command, "--max-time", "1")
+            self.assertEqual(proc.returncode, ERROR_EXIT, proc.stderr)
+            self.assertEqual(codes(proc.stderr), ["NCC7208"], proc.stderr)
+            self.assertIn("the limit is --max-time", proc.stderr)
+            # The reproducer's own options: whichever bound comes first ends it.
             proc = self.timed(*command, "--max-time", "1", "--max-steps", "100")
             self.assertEqual(proc.returncode, ERROR_EXIT, proc.stderr)
-            self.assertIn("NCC7208", codes(proc.stderr), proc.stderr)
-            self.assertIn("the limit is --max-time", proc.stderr)
+            self.assertEqual(codes(proc.stderr), ["NCC7204"], proc.stderr)
         self.assertFalse(os.path.exists(out))
         self.assertEqual([f for f in os.listdir(self.dir) if ".ncb." in f], [])
 
@@ -120,14 +124,42 @@ class RunBoundsTest(ScratchDirTest):
         self.assertIn("NCC7208", run.stderr + run.stdout)
 
     def test_a_g95_move_that_cannot_end_stops_the_run_at_once(self):
-        # 1e6 mm at 0.1 mm/rev and S100: 100 000 s; G94 at the same speed stops at once too.
+        # 99 999 mm at 0.1 mm/rev and S100 (10 mm/min): 600 000 s; G94 at the same speed too.
         for feed in ("G95 F0.1", "G94 F10."):
-            prog = self.write("g95.nc", f"S100 M03\n{feed}\nG91 G01 X1000000.\nM30\n")
-            proc = self.timed("run", prog, "--max-time", "3600", "--machine",
+            prog = self.write("g95.nc", f"S100 M03\n{feed}\nG91 G01 X99999.\nM30\n")
+            proc = self.timed("run", prog, "--max-time", "360000", "--machine",
                               self.write("m.toml", "[machine]\n[machine.axis.X]\n"
-                                         "min_travel = -1e7\nmax_travel = 1e7\n"), limit=10)
+                                         "min_travel = -1e6\nmax_travel = 1e6\n"), limit=10)
             self.assertEqual(proc.returncode, ALARM_EXIT, feed + proc.stderr)
             self.assertIn("NCC7208", proc.stderr + proc.stdout, feed)
+
+    # --- one verdict: check runs every check of compile ------------------------------------------
+
+    def test_check_reports_a_value_beyond_the_bytecodes_bounds_as_compile_does(self):
+        prog = self.write("far.nc", "#5221=999999.\nG54 G00 X999.\nM30\n")
+        for command in (["check", prog], ["compile", prog, "-o", self.path("far.ncb")],
+                        ["run", prog]):
+            proc = ncc(*command)
+            self.assertEqual(proc.returncode, ERROR_EXIT, command)
+            self.assertEqual([(e[0], e[2]) for e in errors(proc.stderr)], [("2", "NCC7017")],
+                             proc.stderr)
+
+    def test_blocks_after_a_run_time_value_are_checked_for_their_words(self):
+        # #3001 (the clock) is known only when the program runs: the block after it is prepared
+        # then, but E (precise thread lead) is refused whatever its value.
+        prog = self.write("late.nc", "#1=#3001\nG01 X1. F100. E5.\nM30\n")
+        for command in (["check", prog], ["compile", prog, "-o", self.path("late.ncb")],
+                        ["run", prog], ["check", "--defer", prog]):
+            proc = ncc(*command)
+            self.assertEqual(proc.returncode, ERROR_EXIT, (command, proc.stderr))
+            self.assertEqual([(e[0], e[1], e[2]) for e in errors(proc.stderr)],
+                             [("2", "15", "NCC2011")], proc.stderr)
+
+    def test_words_whose_values_wait_for_the_run_are_left_to_it(self):
+        # X#1 and G#2 take their values when the program runs; Q outside a cycle is decided then.
+        prog = self.write("ok.nc", "#1=#3001\n#2=1\nG#2 X#1 F100.\nM30\n")
+        proc = ncc("check", prog)
+        self.assertEqual(proc.returncode, 0, proc.stderr)
 
     # --- a loop that neither moves nor dwells ---------------------------------------------------
 

@@ -133,6 +133,7 @@ TEST(PassManager, VerifyEachNamesThePassThatLeftInvalidIr) {
     DiagnosticEngine diags;
     Keep keep;
     PipelineOptions o;
+    o.verify = true;  // the final verifier (the default only outside Release builds)
     o.verify_each = each;
     PassManager pipeline(o, diags, keep);
     ir::Block bad = offsetRapid(7);

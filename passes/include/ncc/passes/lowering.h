@@ -60,6 +60,10 @@ class Lowering {
   void variablesWritten(SourceLocation loc, std::vector<ir::SetVariable> writes);
   // Whether the block-skip switch skips `block` ('/', '/n').
   bool skips(const ast::Block& block) const;
+  // Reports what makes `block` an error whatever the values and the modal state when it runs:
+  // an address or a literal G code the dialect does not have or ncc does not support, a word
+  // given twice. For the blocks a compile leaves to run time (docs/runtime.md); false if any.
+  bool checkStatically(const ast::Block& block) const;
   // The value of a macro-call argument word as the program means it, in the input unit: a
   // length without a decimal point is in least input increments under decimal_point =
   // "standard" (`X10` = 0.010 mm); other addresses and calculator notation take the number.
