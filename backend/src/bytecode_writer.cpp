@@ -39,6 +39,7 @@ void BytecodeWriter::error(std::string code, SourceLocation where, std::string m
 
 void BytecodeWriter::accept(ir::Block&& block) {
   if (!ok_ || finished_) return;
+#ifdef NCC_VERIFY_IR
   std::vector<std::string> problems =
       ir::verify(block, ir::VerifyOptions{machine_.axisCount(), /*require_machine_space=*/true});
   if (!problems.empty()) {
@@ -46,6 +47,7 @@ void BytecodeWriter::accept(ir::Block&& block) {
       error("NCC9001", block.loc, absl::StrCat("internal error: invalid IR: ", p));
     return;
   }
+#endif
   if (block.ops.empty()) return;
   if (block.loc.file > sources_.fileCount()) {
     error("NCC9001", block.loc,

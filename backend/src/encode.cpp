@@ -194,6 +194,20 @@ class Lowering {
 
 EncodedOperation encodeOperation(const ir::Operation& op, const ir::Block& block,
                                  const MachineConfig& machine) {
+  // The one IR invariant a wrong file would follow from, checked in every build (the verifier
+  // in front of the backend runs outside Release only): targets are in machine space.
+  const bool work_space = std::visit(
+      [](const auto& o) {
+        if constexpr (requires { o.space; }) return o.space == ir::Space::Work;
+        return false;
+      },
+      op);
+  if (work_space) {
+    EncodedOperation failed;
+    failed.error = {"NCC9001", "internal error: a work-space target reached the backend "
+                               "(the work-to-machine pass did not run)"};
+    return failed;
+  }
   return std::visit(Lowering{machine, block}, op);
 }
 

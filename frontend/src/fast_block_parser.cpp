@@ -30,6 +30,15 @@ class PlainScanner {
         b.skip_level = level[0] - '0';
       }
     }
+    // One allocation for the words: at most one a letter (the vector would grow three times
+    // for a five-word CAM block).
+    size_t letters = 0;
+    bool comment = false;
+    for (char c : text_) {
+      comment = comment ? c != ')' : c == '(';
+      letters += !comment && isLetter(c);
+    }
+    if (letters > 0) b.words.reserve(letters);
     for (skipBlanks(); pos_ < text_.size(); skipBlanks()) {
       const char c = text_[pos_];
       if (c == '(') {

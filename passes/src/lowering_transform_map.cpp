@@ -25,6 +25,9 @@ ir::Transform transformOf(const LoweringCore& core, const ControllerState& cs) {
   if (!rules) return out;
   const std::array<int8_t, 3>& xyz = core.xyz;
   const TransformState& t = cs.transforms;
+  if (t.work_rotation) out.machine = *t.work_rotation;
+  // No stage in force (nearly every block of a program): nothing to compose.
+  if (!t.figure && !t.mirrorsAny() && !t.scaling && t.rotations.empty()) return out;
   ir::Affine map = identityAffine(xyz);
   for (Stage stage : rules->order) {
     switch (stage) {
@@ -57,7 +60,6 @@ ir::Transform transformOf(const LoweringCore& core, const ControllerState& cs) {
     }
   }
   if (!isIdentity(map)) out.work = map;
-  if (t.work_rotation) out.machine = *t.work_rotation;
   return out;
 }
 
