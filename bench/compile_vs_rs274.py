@@ -185,8 +185,10 @@ def main(argv):
                 continue
             # A loop's blocks are the turns it runs: 5 blocks a turn.
             blocks = 5 * args.loops if peer_path else count_blocks(path)
-            ncc = measure([args.ncc, "compile", str(path), "--dialect", "fanuc-m", "-o", str(tmp / "out.ncb")],
-                          args.repeat, timer)
+            # The loop runs 200,000 turns: older builds stopped it at 10,000 jumps back unless told.
+            loop_args = ["--max-back-jumps", "1000000000"] if peer_path else []
+            ncc = measure([args.ncc, "compile", str(path), "--dialect", "fanuc-m", "-o", str(tmp / "out.ncb"),
+                           *loop_args], args.repeat, timer)
             peer = None
             if have_peer:
                 peer = measure([args.rs274, "-t", str(tool_table), "-g", str(peer_path or path),

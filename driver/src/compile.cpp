@@ -212,9 +212,15 @@ void prepareAtRunTime(Session& session, SourceProgramStore& store, prepare::Bloc
   // What the run may reach is checked here as far as it can be without the run's values
   // (addresses and codes the dialect lacks), so that check, compile and run agree; the rest is
   // checked as the blocks run. Never-executed text after the main program's end is not.
+  // Under a modal call (G66) any word may be an argument: then nothing is checked here.
+  const eval::Evaluator& evaluator = loop.evaluator();
+  bool modal_call = evaluator.modalCallInForce();
+  for (const eval::StoredFile& file : blocks.files)
+    for (const eval::StoredBlock& b : file.blocks) modal_call |= evaluator.mayStartModalCall(b.block);
   for (const eval::StoredFile& file : blocks.files)
     for (const eval::StoredBlock& b : file.blocks)
-      if (!(main_end && file.id == main_end->file && main_end->position < b.position))
+      if (!modal_call && !evaluator.mayTakeArguments(b.block) &&
+          !(main_end && file.id == main_end->file && main_end->position < b.position))
         loop.lowering().checkStatically(b.block);
   if (session.diagnostics().hasErrors()) return;
   blocks.ahead_blocks = deferred ? 0 : loop.steps();

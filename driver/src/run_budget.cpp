@@ -4,6 +4,7 @@
 
 #include "absl/strings/str_cat.h"
 #include "ncc/backend/encode.h"
+#include "ncc/vm/executor.h"
 #include "ncc/vm/run_limits.h"
 
 namespace ncc::driver {
@@ -49,16 +50,10 @@ double RunBudgetSink::leastSeconds(const ir::Operation& op, const ir::Block& blo
     const backend::EncodedOperation code = backend::encodeOperation(op, block, machine_);
     if (code.error || code.count == 0) return 0.0;
     const bytecode::Instruction& in = code.instructions[0];
-    m.kind = Kind::Arc;
+    vm::setArcOperands(in, m);
     m.to = in.axes;
     m.feed = in.value;
     m.feed_per_rev = (in.flags & bytecode::kFlagFeedPerRev) != 0;
-    m.axis1 = in.axis1;
-    m.axis2 = in.axis2;
-    m.center[in.axis1] = in.center1;
-    m.center[in.axis2] = in.center2;
-    m.cw = (in.flags & bytecode::kFlagClockwise) != 0;
-    m.extra_turns = in.turns;
   } else {
     return 0.0;
   }

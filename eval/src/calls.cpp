@@ -74,6 +74,23 @@ std::string codeName(const ast::Word& w) {
 
 }  // namespace
 
+bool Evaluator::mayTakeArguments(const ast::Block& block) const {
+  for (const ast::Word& w : block.words)
+    if (impl_->isCallWord(w) || (w.address == "G" && !isLiteral(w.value))) return true;
+  return false;
+}
+
+bool Evaluator::mayStartModalCall(const ast::Block& block) const {
+  for (const ast::Word& w : block.words) {
+    if (w.address != "G") continue;
+    const CallCode c = callCode(w);
+    if (c == CallCode::G66 || c == CallCode::G661 || !isLiteral(w.value)) return true;
+  }
+  return false;
+}
+
+bool Evaluator::modalCallInForce() const { return !impl_->modal_calls.empty(); }
+
 bool Evaluator::Impl::isCallWord(const ast::Word& w) const {
   if (callCode(w) != CallCode::None) return true;
   if (options.code_macros.empty() || (w.address != "M" && w.address != "G")) return false;

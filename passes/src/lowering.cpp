@@ -130,11 +130,9 @@ void commit(BlockContext& ctx) {
       case TableWrite::Target::RadiusWear: set(tables.radius_wear[w.number], w.values[0]); break;
     }
   }
-  ctx.core.cs = ctx.next;
   ir::Block out;
   for (const TableWrite& w : ctx.table_writes)
-    for (const ir::SetVariable& v :
-         variablesOf(w, ctx.core.cs, tables, ctx.table, ctx.axisCount()))
+    for (const ir::SetVariable& v : variablesOf(w, ctx.next, tables, ctx.table, ctx.axisCount()))
       ctx.ops.push_back(v);
   out.loc = ctx.block.loc;
   out.sequence = ctx.block.sequence.value_or(-1);
@@ -149,7 +147,9 @@ void commit(BlockContext& ctx) {
   out.comp = ctx.comp;
   // While something is unknown (only after an error: the run fails anyway) targets may rest
   // on it; later passes would judge them (travel limits) and report consequences.
-  if (ctx.next.unknown.any()) return;
+  const bool unknown = ctx.next.unknown.any();
+  ctx.core.cs = std::move(ctx.next);  // the block's state is the controller's (ctx is done)
+  if (unknown) return;
   ctx.core.out.accept(std::move(out));
 }
 

@@ -1,6 +1,7 @@
 #include "value_rules.h"
 
 #include <cmath>
+#include <iterator>
 
 namespace ncc::passes {
 
@@ -41,7 +42,14 @@ double ValueRules::dwellX(double v, bool point) const {
   return (standard && !point) ? v * time_increment : v;
 }
 
-double ValueRules::maxCount() const { return std::pow(10.0, digits) - 1.0; }
+double ValueRules::maxCount() const {
+  // Asked for every word of every block: a table rather than pow (exact either way).
+  static constexpr double kPowersOfTen[] = {1e0, 1e1, 1e2, 1e3, 1e4,  1e5,  1e6,  1e7,  1e8,
+                                            1e9, 1e10, 1e11, 1e12, 1e13, 1e14, 1e15, 1e16};
+  if (digits >= 0 && digits < static_cast<int>(std::size(kPowersOfTen)))
+    return kPowersOfTen[digits] - 1.0;
+  return std::pow(10.0, digits) - 1.0;
+}
 
 double ValueRules::lengthIncrement(ir::Units units) const {
   return units == ir::Units::Inch ? inch_increment : mm_increment;

@@ -10,6 +10,17 @@
 
 namespace ncc::vm {
 
+void setArcOperands(const bytecode::Instruction& in, MotionPrimitive& m) {
+  m.kind = MotionPrimitive::Kind::Arc;
+  m.plane = static_cast<Plane>(in.plane);
+  m.axis1 = in.axis1;
+  m.axis2 = in.axis2;
+  m.center[in.axis1] = in.center1;
+  m.center[in.axis2] = in.center2;
+  m.cw = (in.flags & bytecode::kFlagClockwise) != 0;
+  m.extra_turns = in.turns;
+}
+
 namespace {
 
 using bytecode::Instruction;
@@ -256,14 +267,7 @@ bool Executor::next(Event& out) {
             if (in.axis1 >= axis_count_ || in.axis2 >= axis_count_ ||
                 static_cast<uint8_t>(in.plane) > 2)
               return raise("NCC7205", "arc operands out of range (unverified code)", at);
-            m.kind = MotionPrimitive::Kind::Arc;
-            m.plane = static_cast<Plane>(in.plane);
-            m.axis1 = in.axis1;
-            m.axis2 = in.axis2;
-            m.center[in.axis1] = in.center1;
-            m.center[in.axis2] = in.center2;
-            m.cw = (in.flags & bytecode::kFlagClockwise) != 0;
-            m.extra_turns = in.turns;
+            setArcOperands(in, m);
           }
           // A straight move to where the tool already is moves nothing: no primitive.
           if (in.op != Opcode::Arc && sameAxes(m.from, m.to, axis_count_)) continue;

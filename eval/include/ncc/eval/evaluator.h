@@ -86,6 +86,14 @@ class Evaluator {
   void programEndCode();
   // G290/G291 in the block last returned: the current file's language for the next blocks.
   void setLanguage(frontend::Language language);
+  // Whether evaluation may read `block`'s words as a call's arguments rather than as the
+  // dialect's addresses: a call word or code macro in it, a G code computed only when it runs,
+  // or a modal call (G66/G66.1) in force now or started by a block of `others`. A compile
+  // checks the blocks it leaves to run time only where this is false.
+  bool mayTakeArguments(const ast::Block& block) const;
+  // Whether `block` may start a modal call (G66, G66.1, or a G computed at run time).
+  bool mayStartModalCall(const ast::Block& block) const;
+  bool modalCallInForce() const;
   // The block last returned moved the tool or dwelt: the count of blocks without progress
   // (LoopLimits::max_idle_blocks) starts again.
   void madeProgress();

@@ -23,6 +23,11 @@
 
 namespace ncc::vm {
 
+// An ARC instruction's operands on `m` (kind, plane, axes, centre, direction, turns): how the
+// executor reads it, and the compiler's run budget (driver/src/run_budget.h). The axes must be
+// checked against the machine first.
+void setArcOperands(const bytecode::Instruction& in, MotionPrimitive& m);
+
 class BlockPreparation;
 struct PreparedInstruction;
 
