@@ -44,9 +44,10 @@ const char* unsupportedAddress(std::string_view a) {
 
 class Decoder {
  public:
-  Decoder(const ast::Block& block, const DecodeContext& ctx) : block_(block), ctx_(ctx) {}
+  Decoder(const ast::Block& block, const DecodeContext& ctx, DecodedBlock& out)
+      : block_(block), ctx_(ctx), out_(out) {}
 
-  std::optional<DecodedBlock> run() {
+  bool run() {
     if (!ctx_.statically)
       for (const ast::Statement& st : block_.statements)
         fail(Alarm::MacroNotSupported, st.loc,
@@ -62,8 +63,7 @@ class Decoder {
       }
       otherWord(w, static_cast<int>(n));
     }
-    if (failed_) return std::nullopt;
-    return std::move(out_);
+    return !failed_;
   }
 
  private:
@@ -257,15 +257,21 @@ class Decoder {
 
   const ast::Block& block_;
   const DecodeContext& ctx_;
-  DecodedBlock out_;
+  DecodedBlock& out_;
   ir::DistanceMode distance_ = ir::DistanceMode::Absolute;
   bool failed_ = false;
 };
 
 }  // namespace
 
+bool decodeBlock(const ast::Block& block, const DecodeContext& ctx, DecodedBlock& out) {
+  return Decoder(block, ctx, out).run();
+}
+
 std::optional<DecodedBlock> decodeBlock(const ast::Block& block, const DecodeContext& ctx) {
-  return Decoder(block, ctx).run();
+  DecodedBlock out;
+  if (!decodeBlock(block, ctx, out)) return std::nullopt;
+  return out;
 }
 
 }  // namespace ncc::passes

@@ -72,5 +72,8 @@ struct DecodeContext {
 
 // Returns nullopt (after reporting) when the block has an error.
 std::optional<DecodedBlock> decodeBlock(const ast::Block& block, const DecodeContext& ctx);
+// The same into `out` (default-constructed): false (after reporting) on an error. Lowering
+// decodes every block this way, without moving the large DecodedBlock.
+bool decodeBlock(const ast::Block& block, const DecodeContext& ctx, DecodedBlock& out);
 
 }  // namespace ncc::passes

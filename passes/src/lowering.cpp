@@ -201,9 +201,7 @@ LowerResult lowerBlock(LoweringCore& core, const ast::Block& block) {
   DecodeContext decode{ctx.table, *core.machine, ctx.settings.policy, core.cs.modal.distance,
                        core.diags};
   decode.cycle_in_force = core.cs.cycle.code10 != 0;
-  auto decoded = decodeBlock(block, decode);
-  if (!decoded) return reject(ctx);
-  ctx.words = std::move(*decoded);
+  if (!decodeBlock(block, decode, ctx.words)) return reject(ctx);
 
   applyModalCodes(ctx, result);
   applyPolarCode(ctx);
