@@ -451,6 +451,8 @@ Evaluator::~Evaluator() = default;
 
 std::optional<ast::Block> Evaluator::next() { return impl_->next(); }
 
+void Evaluator::setLimits(const LoopLimits& limits) { impl_->options.limits = limits; }
+
 void Evaluator::madeProgress() { impl_->progress_at = impl_->blocks_read; }
 
 void Evaluator::programEndCode() {

@@ -180,6 +180,16 @@ class RunBoundsTest(ScratchDirTest):
             self.assertIn("without a move or a dwell", found[0][3])
             self.assertIn("--max-idle-blocks", found[0][3])
 
+    def test_the_runs_step_budget_bounds_blocks_prepared_at_run_time(self):
+        # #3001 is known only when the program runs: the VM prepares the endless loop, which
+        # executes no instruction; --max-steps bounds it (a damaged store cannot hang a run).
+        prog = self.write("late.nc", "#1=#3001\n#2=0\nWHILE[#2GE0]DO1\n#2=#2+1\nEND1\nM30\n")
+        ncb = self.path("late.ncb")
+        self.assertEqual(ncc("compile", prog, "-o", ncb).returncode, 0)
+        proc = self.timed("run", ncb, "--max-steps", "1000", limit=10)
+        self.assertEqual(proc.returncode, ALARM_EXIT, proc.stderr)
+        self.assertIn("NCC2419", proc.stderr + proc.stdout)
+
     def test_moves_reset_the_idle_count(self):
         # 300 turns of 10 assignments and a move: 3 300 blocks, never 1 000 without a move.
         body = "".join(f"#{i}=#1*2\n" for i in range(2, 12))

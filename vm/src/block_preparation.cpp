@@ -138,6 +138,13 @@ std::unique_ptr<BlockPreparation> BlockPreparation::create(const bytecode::Progr
   return std::unique_ptr<BlockPreparation>(new BlockPreparation(std::move(impl)));
 }
 
+void BlockPreparation::boundIdleBlocks(uint64_t max_steps) {
+  eval::LoopLimits limits = impl_->store.limits;
+  if (max_steps > 0 && (limits.max_idle_blocks == 0 || max_steps < limits.max_idle_blocks))
+    limits.max_idle_blocks = max_steps;
+  impl_->loop.evaluator().setLimits(limits);
+}
+
 bool BlockPreparation::next(std::vector<PreparedInstruction>& out, std::optional<Alarm>& alarm) {
   Impl& p = *impl_;
   out.clear();

@@ -49,6 +49,9 @@ class BlockPreparation {
   // end of the program, with `alarm` set when a block raised one (the manual's alarm number,
   // at the block).
   bool next(std::vector<PreparedInstruction>& out, std::optional<Alarm>& alarm);
+  // The run's instruction budget (--max-steps, 0: none) bounds the blocks it prepares without
+  // a move or a dwell too, as they execute no instruction: a damaged or endless store ends.
+  void boundIdleBlocks(uint64_t max_steps);
 
  private:
   struct Impl;

@@ -119,6 +119,11 @@ Executor::Executor(const bytecode::Program& program, const MachineConfig& machin
 
 Executor::~Executor() = default;
 
+void Executor::setStepLimit(uint64_t limit) {
+  step_limit_ = limit;
+  if (preparation_) preparation_->boundIdleBlocks(limit);
+}
+
 bool Executor::fetch(Instruction& in, uint32_t& at) {
   at = pc_;
   if (!preparing_) {

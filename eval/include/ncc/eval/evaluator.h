@@ -94,6 +94,8 @@ class Evaluator {
   // Whether `block` may start a modal call (G66, G66.1, or a G computed at run time).
   bool mayStartModalCall(const ast::Block& block) const;
   bool modalCallInForce() const;
+  // New loop limits from the next jump back on.
+  void setLimits(const LoopLimits& limits);
   // The block last returned moved the tool or dwelt: the count of blocks without progress
   // (LoopLimits::max_idle_blocks) starts again.
   void madeProgress();

@@ -62,7 +62,8 @@ class Executor {
 
   // Stops the run with alarm NCC7204 after this many instructions (0: no limit). Guards
   // callers that must stay bounded (fuzzing, a run without a cycle-time budget).
-  void setStepLimit(uint64_t limit) { step_limit_ = limit; }
+  // Also bounds the blocks prepared at run time without motion (BlockPreparation).
+  void setStepLimit(uint64_t limit);
   // The run's time, s: what blocks prepared from now on read as the timers (#3001, #3002).
   // The controller sets its IPO time before it asks for events; 0 unless set.
   void setClock(double seconds) { clock_ = seconds; }
