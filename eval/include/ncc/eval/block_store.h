@@ -6,7 +6,7 @@
 // folder gave at compile time; StoredProgramStore serves it to the evaluator with the same
 // semantics, without text or parser. The compiler builds it in driver/src/block_store_builder.h.
 //
-// Encoding (encodeBlockStore): little-endian, "NCBS" then a u16 version (1). Unsigned integers
+// Encoding (encodeBlockStore): little-endian, "NCBS" then a u16 version (2). Unsigned integers
 // are LEB128 varints, signed ones zigzag varints, strings a varint length and bytes; a number
 // is written as m / 10^k (varint m and k) when that gives its double back bit for bit, as
 // every decimal literal of a program does, else as its IEEE bit pattern (-0.0, NaN payloads,
