@@ -1,5 +1,7 @@
 #include "fast_block_parser.h"
 
+#include <algorithm>
+
 #include "lexical.h"
 #include "number_text.h"
 
@@ -30,15 +32,9 @@ class PlainScanner {
         b.skip_level = level[0] - '0';
       }
     }
-    // One allocation for the words: at most one a letter (the vector would grow three times
-    // for a five-word CAM block).
-    size_t letters = 0;
-    bool comment = false;
-    for (char c : text_) {
-      comment = comment ? c != ')' : c == '(';
-      letters += !comment && isLetter(c);
-    }
-    if (letters > 0) b.words.reserve(letters);
+    // One allocation for the words of a usual block: a word takes two characters at least,
+    // and a CAM block has fewer than eight.
+    b.words.reserve(std::min<size_t>(8, (text_.size() - pos_ + 1) / 2));
     for (skipBlanks(); pos_ < text_.size(); skipBlanks()) {
       const char c = text_[pos_];
       if (c == '(') {
@@ -54,9 +50,10 @@ class PlainScanner {
           if (!blockNumber(letter == 'N' ? b.sequence : b.program_number)) return std::nullopt;
           continue;
         }
-        std::optional<ast::Expr> v = value();
-        if (!v) return std::nullopt;
-        b.words.push_back(ast::Word{std::string(1, letter), std::move(*v), where});
+        ast::Word& w = b.words.emplace_back();
+        w.address.push_back(letter);
+        w.loc = where;
+        if (!value(w.value)) return std::nullopt;
       } else if (c == ',') {
         const SourceLocation where = here();
         ++pos_;
@@ -64,9 +61,10 @@ class PlainScanner {
         const char letter = upperAscii(peek());
         if (!isCommaAddressLetter(letter)) return std::nullopt;
         ++pos_;
-        std::optional<ast::Expr> v = value();
-        if (!v) return std::nullopt;
-        b.words.push_back(ast::Word{std::string{',', letter}, std::move(*v), where});
+        ast::Word& w = b.words.emplace_back();
+        w.address = {',', letter};
+        w.loc = where;
+        if (!value(w.value)) return std::nullopt;
       } else if (c == ':') {
         ++pos_;
         if (!blockNumber(b.program_number)) return std::nullopt;
@@ -99,8 +97,9 @@ class PlainScanner {
     return text_.substr(begin, pos_ - begin);
   }
 
-  // sign? NUMBER, blanks allowed around the sign.
-  std::optional<ast::Expr> value() {
+  // sign? NUMBER, blanks allowed around the sign; written into the word in place (a block is
+  // built once, not moved word by word).
+  bool value(ast::Expr& e) {
     skipBlanks();
     const SourceLocation where = here();
     bool negative = false, sign = false;
@@ -110,14 +109,16 @@ class PlainScanner {
       ++pos_;
       skipBlanks();
     }
-    if (!startsNumber()) return std::nullopt;
+    if (!startsNumber()) return false;
     const SourceLocation number_at = here();
     std::optional<NumberText> n = readNumber(numberToken());
-    if (!n) return std::nullopt;
-    ast::Expr e = ast::Expr::literal(negative ? -n->value : n->value, n->has_point,
-                                     sign ? where : number_at);
+    if (!n) return false;
+    e.kind = ast::Expr::Kind::Number;
+    e.number = negative ? -n->value : n->value;
+    e.has_point = n->has_point;
+    e.loc = sign ? where : number_at;
     e.digits = n->digits;
-    return e;
+    return true;
   }
 
   // N, O and ':' take unsigned integer digits, once per block.
