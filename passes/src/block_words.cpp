@@ -181,17 +181,17 @@ class Decoder {
   void store(std::optional<WordValue>& slot, WordValue wv, bool last_wins = false) {
     if (slot && !last_wins) {
       fail(Alarm::AddressRepeated, wv.loc,
-           absl::StrCat("address ", wv.address, " is given twice in the block"));
+           absl::StrCat("address ", std::string(wv.address), " is given twice in the block"));
       return;
     }
     slot = std::move(wv);
   }
 
   void otherWord(const ast::Word& w, int order) {
-    const std::string& a = w.address;
+    const std::string_view a = w.address;
     if (const char* what = unsupportedAddress(a)) {
       fail(Alarm::AddressNotSupported, w.loc,
-           absl::StrCat("address ", a, " (", what, ") is not supported yet"));
+           absl::StrCat("address ", std::string(a), " (", what, ") is not supported yet"));
       return;
     }
     WordValue wv;
@@ -200,59 +200,62 @@ class Decoder {
     wv.mode = distance_;
     wv.address = a;
     wv.order = order;
-    int axis = ctx_.machine.axisIndex(a);
-    if (axis >= 0 && axis < kMaxAxes) {
-      if (!out_.first_axis_loc) out_.first_axis_loc = w.loc;
-      store(out_.axes[axis], std::move(wv));
-      return;
-    }
     const DialectBehaviour& b = ctx_.table.behaviour;
-    if (a == "I") return store(out_.i, std::move(wv));
-    if (a == "J") return store(out_.j, std::move(wv));
-    if (a == "K") return store(out_.k, std::move(wv));
-    if (a == "R") return store(out_.r, std::move(wv));
-    if (a == "F") return store(out_.f, std::move(wv));
+    using Slot = AddressMap::Slot;
+    switch (ctx_.addresses.slot(a)) {
+      case Slot::Axis: {
+        if (!out_.first_axis_loc) out_.first_axis_loc = w.loc;
+        return store(out_.axes[ctx_.addresses.axis(a)], std::move(wv));
+      }
+      case Slot::I: return store(out_.i, std::move(wv));
+      case Slot::J: return store(out_.j, std::move(wv));
+      case Slot::K: return store(out_.k, std::move(wv));
+      case Slot::R: return store(out_.r, std::move(wv));
+      case Slot::F: return store(out_.f, std::move(wv));
+      case Slot::S: return store(out_.s, std::move(wv));
+      case Slot::P: return store(out_.p, std::move(wv));
+      case Slot::L: return store(out_.l, std::move(wv));
+      case Slot::Q: {
+        // Cycle data (lowering_cycles.cpp): only with a hole cycle in force or in the block.
+        const auto& cycle = out_.group(GGroup::Cycle);
+        if (!ctx_.statically && !ctx_.cycle_in_force &&
+            !(cycle && cycle->entry->action == GAction::HoleCycle)) {
+          fail(Alarm::AddressWithoutMeaning, w.loc,
+               "address Q (canned cycle data) has no meaning outside a hole cycle");
+          return;
+        }
+        return store(out_.q, std::move(wv));
+      }
+      case Slot::H: return store(out_.h, std::move(wv), b.duplicate_h_d_last_wins);
+      case Slot::D: return store(out_.d, std::move(wv), b.duplicate_h_d_last_wins);
+      case Slot::M: out_.m.push_back(std::move(wv)); return;
+      case Slot::T: {
+        if (static_cast<int>(out_.t.size()) >= b.max_t_words) {
+          fail(Alarm::AddressRepeated, w.loc,
+               absl::StrCat("address T is given more than ", b.max_t_words,
+                            b.max_t_words == 1 ? " time" : " times", " in the block"));
+          return;
+        }
+        out_.t.push_back(std::move(wv));
+        return;
+      }
+      case Slot::LineAngle: return store(out_.line_angle, std::move(wv));
+      case Slot::Other: break;
+    }
+    // A machine axis with a longer name (the map holds one-letter names).
+    if (const int axis = ctx_.machine.axisIndex(a); axis >= 0 && axis < kMaxAxes) {
+      if (!out_.first_axis_loc) out_.first_axis_loc = w.loc;
+      return store(out_.axes[axis], std::move(wv));
+    }
     // ,C / ,R: one corner per block; of both, the last written is used (Mazak §13-14).
     if (a == ",C" || a == ",R") return store(out_.corner, std::move(wv), a != out_.corner_kind());
-    if (a == "S") return store(out_.s, std::move(wv));
-    if (a == "P") return store(out_.p, std::move(wv));
-    if (a == "L") return store(out_.l, std::move(wv));
-    if (a == "Q") {
-      // Cycle data (lowering_cycles.cpp): only with a hole cycle in force or in the block.
-      const auto& cycle = out_.group(GGroup::Cycle);
-      if (!ctx_.statically && !ctx_.cycle_in_force &&
-          !(cycle && cycle->entry->action == GAction::HoleCycle)) {
-        fail(Alarm::AddressWithoutMeaning, w.loc,
-             "address Q (canned cycle data) has no meaning outside a hole cycle");
-        return;
-      }
-      return store(out_.q, std::move(wv));
-    }
-    if (a == "H") return store(out_.h, std::move(wv), b.duplicate_h_d_last_wins);
-    if (a == "D") return store(out_.d, std::move(wv), b.duplicate_h_d_last_wins);
-    if (a == "M") {
-      out_.m.push_back(std::move(wv));
-      return;
-    }
-    if (a == "T") {
-      if (static_cast<int>(out_.t.size()) >= b.max_t_words) {
-        fail(Alarm::AddressRepeated, w.loc,
-             absl::StrCat("address T is given more than ", b.max_t_words,
-                          b.max_t_words == 1 ? " time" : " times", " in the block"));
-        return;
-      }
-      out_.t.push_back(std::move(wv));
-      return;
-    }
-    if (!b.line_angle_address.empty() && a == b.line_angle_address)
-      return store(out_.line_angle, std::move(wv));
     if (a.size() == 1 && std::string_view("XYZABCUVW").find(a[0]) != std::string_view::npos) {
       fail(Alarm::AddressNotAnAxis, w.loc,
-           absl::StrCat("address ", a, ": the machine has no axis ", a));
+           absl::StrCat("address ", std::string(a), ": the machine has no axis ", std::string(a)));
       return;
     }
     fail(Alarm::AddressNotSupported, w.loc,
-         absl::StrCat("address ", a, " is not supported yet"));
+         absl::StrCat("address ", std::string(a), " is not supported yet"));
   }
 
   const ast::Block& block_;
@@ -263,6 +266,30 @@ class Decoder {
 };
 
 }  // namespace
+
+AddressMap::AddressMap(const DialectTable& table, const MachineConfig& machine) {
+  using S = Slot;
+  // The named slots, in the order the decoder used to try them: a machine axis comes first
+  // (a lathe's or a fifth axis named like a data address takes the letter), then the line
+  // angle of dialects that have one.
+  constexpr std::pair<char, Slot> kNamed[] = {{'I', S::I}, {'J', S::J}, {'K', S::K}, {'R', S::R},
+                                              {'F', S::F}, {'S', S::S}, {'P', S::P}, {'L', S::L},
+                                              {'Q', S::Q}, {'H', S::H}, {'D', S::D}, {'M', S::M},
+                                              {'T', S::T}};
+  axes_.fill(-1);
+  for (const auto& [letter, slot] : kNamed) slots_[static_cast<size_t>(letter - 'A')] = slot;
+  const std::string_view angle = table.behaviour.line_angle_address;
+  if (angle.size() == 1 && angle[0] >= 'A' && angle[0] <= 'Z') {
+    const size_t i = static_cast<size_t>(angle[0] - 'A');
+    if (slots_[i] == S::Other) slots_[i] = S::LineAngle;
+  }
+  for (char letter = 'A'; letter <= 'Z'; ++letter) {
+    const int axis = machine.axisIndex(std::string_view(&letter, 1));
+    if (axis < 0 || axis >= kMaxAxes) continue;
+    slots_[static_cast<size_t>(letter - 'A')] = S::Axis;
+    axes_[static_cast<size_t>(letter - 'A')] = static_cast<int8_t>(axis);
+  }
+}
 
 bool decodeBlock(const ast::Block& block, const DecodeContext& ctx, DecodedBlock& out) {
   return Decoder(block, ctx, out).run();

@@ -23,7 +23,9 @@ struct WordValue {
   bool point = false;
   SourceLocation loc;
   ir::DistanceMode mode = ir::DistanceMode::Absolute;  // G90/G91 in force for this word
-  std::string address;
+  // The address as written (the syntax tree's word, or a machine axis name): both outlive the
+  // block's lowering, the only time a WordValue lives.
+  std::string_view address;
   int order = 0;  // position among the block's words (Mazak reads `X5. G04` differently)
 };
 
@@ -46,7 +48,7 @@ struct DecodedBlock {
   std::vector<WordValue> t, m;
   std::optional<WordValue> corner;  // ,C (chamfer) or ,R (rounding)
   std::optional<WordValue> line_angle;  // Mazak A (not an axis): the angle of a G01 line
-  std::string corner_kind() const { return corner ? corner->address : std::string(); }
+  std::string_view corner_kind() const { return corner ? corner->address : std::string_view(); }
   std::optional<SourceLocation> first_axis_loc;
 
   const std::optional<GWord>& group(GGroup g) const { return modal[static_cast<size_t>(g)]; }
@@ -57,9 +59,30 @@ struct DecodedBlock {
   }
 };
 
+// Where each one-letter address goes in a DecodedBlock, for one dialect and machine: built
+// once, so that sorting a word is an index, not a row of name comparisons.
+class AddressMap {
+ public:
+  enum class Slot : uint8_t { Other, Axis, I, J, K, R, F, S, P, L, Q, H, D, M, T, LineAngle };
+  AddressMap(const DialectTable& table, const MachineConfig& machine);
+  // Slot::Other for an address that is not one letter or that no slot takes (it is then
+  // reported by name).
+  Slot slot(std::string_view address) const {
+    if (address.size() != 1) return Slot::Other;
+    const unsigned i = static_cast<unsigned>(address[0] - 'A');
+    return i < 26 ? slots_[i] : Slot::Other;
+  }
+  int axis(std::string_view address) const { return axes_[static_cast<unsigned>(address[0] - 'A')]; }
+
+ private:
+  std::array<Slot, 26> slots_{};
+  std::array<int8_t, 26> axes_{};
+};
+
 struct DecodeContext {
   const DialectTable& table;
   const MachineConfig& machine;
+  const AddressMap& addresses;
   SameGroupPolicy policy;
   ir::DistanceMode modal_distance;  // G90/G91 before the block
   DiagnosticEngine& diags;

@@ -197,7 +197,7 @@ void CornersPass::accept(ir::Block&& block) {
   take(std::move(block));
 }
 
-void CornersPass::take(ir::Block block) {
+void CornersPass::take(ir::Block&& block) {
   if (!block.corner || !table_ || block.corner->amount <= 0) {
     block.corner.reset();
     next_.accept(std::move(block));

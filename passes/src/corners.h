@@ -27,7 +27,7 @@ class CornersPass : public ir::BlockSink {
 
  private:
   // Takes a block that may carry a request: holds it, or passes it on.
-  void take(ir::Block block);
+  void take(ir::Block&& block);
   // Inserts the held block's corner before `next` (whose move then starts at `next_start`);
   // false after reporting an alarm.
   bool insertCorner(ir::Block& held, ir::Block& next, AxisValues& next_start);

@@ -15,7 +15,7 @@ void DecimalPointAudit::word(const WordValue& w, double as_read, const char* uni
   if (w.value == 0.0) return;
   if (integers_++ == 0) {
     first_ = w.loc;
-    first_text_ = absl::StrCat(w.address, absl::StrFormat("%.0f", w.value), " = ",
+    first_text_ = absl::StrCat(std::string(w.address), absl::StrFormat("%.0f", w.value), " = ",
                                absl::StrFormat("%g", as_read), " ", unit);
   }
 }

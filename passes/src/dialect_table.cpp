@@ -1,11 +1,42 @@
 #include "ncc/passes/dialect_table.h"
 
+#include <array>
+#include <vector>
+
 #include "absl/strings/str_cat.h"
 #include "dialect_tables.h"
 
 namespace ncc::passes {
 
+namespace {
+
+// Codes below G200 are found by index: findG runs for every G word of every block, and a table
+// holds about a hundred codes. Higher codes (none in the ISO tables today) are scanned.
+constexpr int kIndexedCodes = 2000;
+constexpr int kDialects = static_cast<int>(Dialect::SiemensDin) + 1;
+
+using CodeIndex = std::vector<const GCodeEntry*>;
+
+const std::array<CodeIndex, kDialects>& codeIndexes() {
+  static const std::array<CodeIndex, kDialects> indexes = [] {
+    std::array<CodeIndex, kDialects> out;
+    for (int d = 0; d < kDialects; ++d) {
+      const DialectTable* t = dialectTable(static_cast<Dialect>(d));
+      if (!t) continue;
+      out[d].assign(kIndexedCodes, nullptr);
+      for (const GCodeEntry& e : t->gcodes)
+        if (e.code10 >= 0 && e.code10 < kIndexedCodes && !out[d][e.code10]) out[d][e.code10] = &e;
+    }
+    return out;
+  }();
+  return indexes;
+}
+
+}  // namespace
+
 const GCodeEntry* DialectTable::findG(int code10) const {
+  if (code10 >= 0 && code10 < kIndexedCodes && dialectTable(dialect) == this)
+    return codeIndexes()[static_cast<size_t>(dialect)][static_cast<size_t>(code10)];
   for (const GCodeEntry& e : gcodes)
     if (e.code10 == code10) return &e;
   return nullptr;

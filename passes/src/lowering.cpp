@@ -89,12 +89,12 @@ void oneShot(BlockContext& ctx) {
 // Words no code of the block reads.
 void checkUnused(BlockContext& ctx) {
   if (ctx.failed) return;
-  std::string context =
-      ctx.words.one_shot ? gCodeName(ctx.words.one_shot->entry->code10) : "this block";
   auto unused = [&](const std::optional<WordValue>& w, bool used) {
     if (!w || used || ctx.failed) return;
+    const std::string context =
+        ctx.words.one_shot ? gCodeName(ctx.words.one_shot->entry->code10) : "this block";
     ctx.fail(Alarm::AddressWithoutMeaning, w->loc,
-             absl::StrCat("address ", w->address, " has no meaning in ", context));
+             absl::StrCat("address ", std::string(w->address), " has no meaning in ", context));
   };
   bool arc_block = !ctx.words.one_shot &&
                    (ctx.next.motion == GAction::ArcCW || ctx.next.motion == GAction::ArcCCW);
@@ -130,21 +130,23 @@ void commit(BlockContext& ctx) {
       case TableWrite::Target::RadiusWear: set(tables.radius_wear[w.number], w.values[0]); break;
     }
   }
-  ir::Block out;
   for (const TableWrite& w : ctx.table_writes)
     for (const ir::SetVariable& v : variablesOf(w, ctx.next, tables, ctx.table, ctx.axisCount()))
       ctx.ops.push_back(v);
-  out.loc = ctx.block.loc;
-  out.sequence = ctx.block.sequence.value_or(-1);
-  out.modal = ctx.next.modal;
-  out.modal.work_offset = ctx.next.work_name;
-  out.frame = frameOf(ctx.next, ctx.behaviour);
-  out.transform = transformOf(ctx);
-  out.exact_stop =
-      ctx.words.exact_stop.has_value() || ctx.next.modal.path == ir::PathControl::ExactStop;
-  out.ops = std::move(ctx.ops);
-  out.corner = ctx.corner;
-  out.comp = ctx.comp;
+  // Built in place: a default block would first build its modal state's strings.
+  ir::Block out{
+      .loc = ctx.block.loc,
+      .sequence = ctx.block.sequence.value_or(-1),
+      .modal = ctx.next.modal,
+      .frame = frameOf(ctx.next, ctx.behaviour),
+      .transform = transformOf(ctx),
+      .exact_stop =
+          ctx.words.exact_stop.has_value() || ctx.next.modal.path == ir::PathControl::ExactStop,
+      .ops = std::move(ctx.ops),
+      .corner = ctx.corner,
+      .comp = ctx.comp,
+  };
+  if (out.modal.work_offset != ctx.next.work_name) out.modal.work_offset = ctx.next.work_name;
   // While something is unknown (only after an error: the run fails anyway) targets may rest
   // on it; later passes would judge them (travel limits) and report consequences.
   const bool unknown = ctx.next.unknown.any();
@@ -198,8 +200,8 @@ LowerResult settleSilent(BlockContext& ctx, LowerResult result) {
 LowerResult lowerBlock(LoweringCore& core, const ast::Block& block) {
   BlockContext ctx(core, block);
   LowerResult result;
-  DecodeContext decode{ctx.table, *core.machine, ctx.settings.policy, core.cs.modal.distance,
-                       core.diags};
+  DecodeContext decode{ctx.table,           *core.machine,           *core.addresses,
+                       ctx.settings.policy, core.cs.modal.distance, core.diags};
   decode.cycle_in_force = core.cs.cycle.code10 != 0;
   if (!decodeBlock(block, decode, ctx.words)) return reject(ctx);
 
@@ -301,7 +303,8 @@ bool Lowering::skips(const ast::Block& block) const {
 bool Lowering::checkStatically(const ast::Block& block) const {
   const State& st = *state_;
   if (!st.table || skips(block)) return true;
-  DecodeContext decode{*st.table, *st.machine, st.settings.policy, st.cs.modal.distance, st.diags};
+  DecodeContext decode{*st.table,          *st.machine,           *st.addresses,
+                       st.settings.policy, st.cs.modal.distance, st.diags};
   decode.statically = true;
   return decodeBlock(block, decode).has_value();
 }

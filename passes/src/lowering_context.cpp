@@ -37,6 +37,7 @@ LoweringCore::LoweringCore(LoweringOptions o, DiagnosticEngine& d, ir::BlockSink
   machine = options.machine ? options.machine : &fallback_machine;
   table = dialectTable(options.dialect);
   if (!table) return;
+  addresses.emplace(*table, *machine);
   settings = LoweringSettings::resolve(*table, *machine);
   for (int s = 0; s < 3; ++s) {
     const int i = machine->axisIndex(std::string(1, "XYZ"[s]));
@@ -88,7 +89,7 @@ void BlockContext::needRunTime(SourceLocation loc, std::string why) {
 std::optional<int64_t> BlockContext::integer(const WordValue& w) {
   if (w.point && behaviour.integer_point_is_error) {
     fail(Alarm::DecimalPointNotAllowed, w.loc,
-         absl::StrCat("address ", w.address, " takes an integer; a decimal point is not allowed"));
+         absl::StrCat("address ", std::string(w.address), " takes an integer; a decimal point is not allowed"));
     return std::nullopt;
   }
   if (!integerFits(w)) return std::nullopt;
@@ -99,7 +100,7 @@ bool BlockContext::integerFits(const WordValue& w) {
   const ValueRules& v = settings.values;
   if (std::fabs(std::trunc(w.value)) <= v.maxCount()) return true;  // also rejects NaN
   fail(Alarm::TooManyDigits, w.loc,
-       absl::StrCat("address ", w.address, " has more than ", v.digits, " digits (at most ",
+       absl::StrCat("address ", std::string(w.address), " has more than ", v.digits, " digits (at most ",
                     absl::StrFormat("%.0f", v.maxCount()), ")"));
   return false;
 }
@@ -116,7 +117,7 @@ void BlockContext::checkFormats() {
     if (count <= v.maxCount() + 0.5) return;  // also rejects NaN
     int decimals = std::max(0, static_cast<int>(std::lround(-std::log10(increment))));
     fail(Alarm::TooManyDigits, w->loc,
-         absl::StrCat("address ", w->address, ": the value exceeds the ", v.digits,
+         absl::StrCat("address ", std::string(w->address), ": the value exceeds the ", v.digits,
                       "-digit format (at most ±",
                       absl::StrFormat("%.*f", decimals, v.maxCount() * increment), " ", unit, ")"));
   };

@@ -65,6 +65,7 @@ struct LoweringCore {
   MachineConfig fallback_machine;
   const MachineConfig* machine = nullptr;
   const DialectTable* table = nullptr;
+  std::optional<AddressMap> addresses;  // with the table
   LoweringSettings settings;
   ControllerState cs;
   OffsetTables tables;

@@ -115,7 +115,7 @@ void resetShift(BlockContext& ctx, const GWord&) {
     if (!ctx.words.axes[i]) continue;
     if (ctx.axisValue(i, *ctx.words.axes[i]) != 0.0) {
       ctx.fail(Alarm::ValueOutOfRange, ctx.words.axes[i]->loc,
-               absl::StrCat("G92.1 resets an axis with the value 0; ", ctx.words.axes[i]->address,
+               absl::StrCat("G92.1 resets an axis with the value 0; ", std::string(ctx.words.axes[i]->address),
                             " is given another value"));
       return;
     }

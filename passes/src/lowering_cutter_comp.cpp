@@ -100,7 +100,7 @@ std::optional<std::array<double, 3>> vectorOf(BlockContext& ctx, std::array<bool
     const char* kPlaneWords[] = {"J K", "I K", "I J"};  // by the slot left out
     const int out = !use[0] ? 0 : !use[1] ? 1 : 2;
     ctx.fail(Alarm::AddressWithoutMeaning, (*words[n])->loc,
-             absl::StrCat("address ", (*words[n])->address, " has no meaning in ",
+             absl::StrCat("address ", std::string((*words[n])->address), " has no meaning in ",
                           planeCode(ctx.next.modal.plane), ": the vector of ", what, " is ",
                           kPlaneWords[out]));
     return std::nullopt;
@@ -193,7 +193,7 @@ void special(BlockContext& ctx, const CompRules& rules, bool arc, ir::CutterComp
     for (int i = 0; i < ctx.axisCount(); ++i) {
       if (!ctx.words.axes[i]) continue;
       ctx.fail(Alarm::CompCornerArcMove, ctx.words.axes[i]->loc,
-               absl::StrCat("G39 (corner arc) cannot move: address ", ctx.words.axes[i]->address,
+               absl::StrCat("G39 (corner arc) cannot move: address ", std::string(ctx.words.axes[i]->address),
                             " is not allowed in its block"));
       return;
     }

@@ -192,7 +192,7 @@ void lowerCycle(BlockContext& ctx) {
     if (!n) return;
     if (*n < 0 || *n > kMaxRepeats) {
       ctx.fail(Alarm::ValueOutOfRange, kw->loc,
-               absl::StrCat("the repeat count ", kw->address, " must be 0 to ", kMaxRepeats));
+               absl::StrCat("the repeat count ", std::string(kw->address), " must be 0 to ", kMaxRepeats));
       return;
     }
     repeats = *n;

@@ -30,9 +30,9 @@ std::optional<std::pair<SourceLocation, std::string>> otherThanDwell(const Block
     if (g) consider(g->loc, g->order, gCodeName(g->entry->code10));
   if (w.exact_stop) consider(w.exact_stop->loc, w.exact_stop->order, "G09");
   for (const auto* v : {&w.f, &w.s, &w.h, &w.d})
-    if (*v) consider((*v)->loc, (*v)->order, (*v)->address);
+    if (*v) consider((*v)->loc, (*v)->order, std::string((*v)->address));
   for (const auto* list : {&w.t, &w.m})
-    for (const WordValue& v : *list) consider(v.loc, v.order, v.address);
+    for (const WordValue& v : *list) consider(v.loc, v.order, std::string(v.address));
   return first;
 }
 
@@ -52,7 +52,7 @@ void dwell(BlockContext& ctx, const GWord& g) {
   for (int i = 0; i < ctx.axisCount(); ++i) {
     if (ctx.words.axes[i] && i != x) {
       ctx.fail(Alarm::AddressWithoutMeaning, ctx.words.axes[i]->loc,
-               absl::StrCat("address ", ctx.words.axes[i]->address,
+               absl::StrCat("address ", std::string(ctx.words.axes[i]->address),
                             " has no meaning in a dwell (G04) block"));
       return;
     }

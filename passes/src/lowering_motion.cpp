@@ -222,7 +222,7 @@ bool arc(BlockContext& ctx, const AxisValues& start, const AxisValues& target,
   } else if (has_centre) {
     if (pl.normal->has_value()) {
       ctx.fail(Alarm::AddressWithoutMeaning, (*pl.normal)->loc,
-               absl::StrCat("address ", (*pl.normal)->address, " is not a centre word of the ",
+               absl::StrCat("address ", std::string((*pl.normal)->address), " is not a centre word of the ",
                             pl.names, " plane (", pl.code, ")"));
       return false;
     }
@@ -334,7 +334,7 @@ void cornerRequest(BlockContext& ctx, GAction kind, bool moves, const AxisValues
   if (ctx.failed) return;
   if (kind != GAction::Linear && kind != GAction::ArcCW && kind != GAction::ArcCCW) {
     ctx.fail(Alarm::AddressWithoutMeaning, w.loc,
-             absl::StrCat("address ", w.address, " (", w.address == ",C" ? "chamfer" : "rounding",
+             absl::StrCat("address ", std::string(w.address), " (", w.address == ",C" ? "chamfer" : "rounding",
                           ") needs a G01, G02 or G03 move in its block"));
     return;
   }

@@ -122,13 +122,13 @@ bool checkArcAndCorner(BlockContext& ctx, const PolarRules& rules) {
       if (!*c) continue;
       ctx.fail(Alarm::PolarNotAllowed, (*c)->loc,
                absl::StrCat("an arc in the polar coordinate mode (G16) takes its radius by R, "
-                            "not by the centre (", (*c)->address, ")"));
+                            "not by the centre (", std::string((*c)->address), ")"));
       return false;
     }
   }
   if (w.corner && !rules.corners_allowed) {
     ctx.fail(Alarm::PolarNotAllowed, w.corner->loc,
-             absl::StrCat(w.corner->address,
+             absl::StrCat(std::string(w.corner->address),
                           " (chamfer / corner rounding) cannot be used in the polar coordinate "
                           "mode (G16)"));
     return false;

@@ -120,7 +120,7 @@ void checkSkipDependence(BlockContext& ctx) {
       const WordValue& word = *w.axes[i];
       if (word.mode == ir::DistanceMode::Incremental || set_shift) {
         ctx.needRunTime(word.loc,
-                        absl::StrCat(set_shift ? "G92 " : "the incremental ", word.address,
+                        absl::StrCat(set_shift ? "G92 " : "the incremental ", std::string(word.address),
                                      set_shift ? " sets the shift from" : " starts from",
                                      " the position where G31 stopped"));
         return;

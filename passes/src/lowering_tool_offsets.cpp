@@ -120,7 +120,7 @@ void dataSetRegister(BlockContext& ctx, const GWord& g, int l, bool add) {
   for (int i = 0; i < ctx.axisCount(); ++i) {
     if (ctx.words.axes[i]) {
       ctx.fail(Alarm::AddressWithoutMeaning, ctx.words.axes[i]->loc,
-               absl::StrCat("address ", ctx.words.axes[i]->address, " has no meaning in G10 L", l));
+               absl::StrCat("address ", std::string(ctx.words.axes[i]->address), " has no meaning in G10 L", l));
       return;
     }
   }

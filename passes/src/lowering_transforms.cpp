@@ -43,7 +43,7 @@ bool onlyXyzWords(BlockContext& ctx, const char* code) {
     for (int s = 0; s < 3; ++s) slot = slot || xyz(ctx)[s] == i;
     if (!slot) {
       ctx.fail(Alarm::AddressWithoutMeaning, ctx.words.axes[i]->loc,
-               absl::StrCat("address ", ctx.words.axes[i]->address, " has no meaning in ", code,
+               absl::StrCat("address ", std::string(ctx.words.axes[i]->address), " has no meaning in ", code,
                             " (it acts on X, Y and Z)"));
       return false;
     }
@@ -147,7 +147,7 @@ void rotation2d(BlockContext& ctx, const GWord& g) {
     const auto* w = slotWord(ctx, s);
     if (s == sl[2] && w && *w) {
       ctx.fail(Alarm::AddressWithoutMeaning, (*w)->loc,
-               absl::StrCat("address ", (*w)->address, " has no meaning in a G68 rotation in the ",
+               absl::StrCat("address ", std::string((*w)->address), " has no meaning in a G68 rotation in the ",
                             kSlotName[sl[0]], kSlotName[sl[1]], " plane (I J K make it 3-D)"));
       return;
     }
@@ -193,7 +193,7 @@ bool checkFactor(BlockContext& ctx, const WordValue& w, double& f, bool may_be_n
   if (std::isfinite(f) && sign_ok && f != 0.0 && std::fabs(f) <= r.scale_factor_max + 1e-9)
     return true;
   ctx.fail(Alarm::ScaleFactorRange, w.loc,
-           absl::StrCat("G51 ", w.address, w.value, ": the scale factor must be ",
+           absl::StrCat("G51 ", std::string(w.address), w.value, ": the scale factor must be ",
                         may_be_negative ? "non-zero" : "positive", " and at most ",
                         r.scale_factor_max));
   return false;
@@ -216,7 +216,7 @@ void scale(BlockContext& ctx, const GWord& g) {
   const std::optional<WordValue>* ijk[] = {&ctx.words.i, &ctx.words.j, &ctx.words.k};
   auto ignored = [&](const WordValue& w, const char* why) {
     ctx.core.diags.warning(std::string(ctx.table.alarm(Alarm::AddressWithoutMeaning)), w.loc,
-                           absl::StrCat("G51 ", w.address, " is ignored: ", why));
+                           absl::StrCat("G51 ", std::string(w.address), " is ignored: ", why));
   };
   if (ctx.settings.scale_per_axis) {
     ctx.used_ijk = true;
