@@ -202,6 +202,7 @@ std::optional<ast::Block> Evaluator::Impl::next() {
     }
     if (!block->empty()) f.seen_content = true;
     if (options.skipped && options.skipped(*block)) return block;  // lowering skips it
+    if (plain(*block)) return block;  // most blocks: nothing to evaluate, nothing to move
     std::optional<ast::Block> out = evaluateBlock(std::move(*block), at);
     if (end != ProgramEnd::Running) return std::nullopt;
     if (!out) continue;
@@ -211,17 +212,17 @@ std::optional<ast::Block> Evaluator::Impl::next() {
   return std::nullopt;
 }
 
+bool Evaluator::Impl::plain(const ast::Block& block) const {
+  if (!block.statements.empty() || !modal_calls.empty()) return false;
+  for (const ast::Word& w : block.words)
+    if (!isLiteral(w.value) || isCallWord(w)) return false;
+  return true;
+}
+
 std::optional<ast::Block> Evaluator::Impl::evaluateBlock(ast::Block block,
                                                          const ProgramPoint& at) {
   Frame& frame = frames.back();
-  bool plain = block.statements.empty() && modal_calls.empty();
-  for (const ast::Word& w : block.words) {
-    if (!isLiteral(w.value) || isCallWord(w)) {
-      plain = false;
-      break;
-    }
-  }
-  if (plain) return block;
+  if (plain(block)) return block;
 
   // Statements read the values from before the block (Mazak §13-6: `#1=200 #2=#1+200` adds to
   // the old #1); their writes take effect together at the end of the block.

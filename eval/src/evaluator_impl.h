@@ -89,6 +89,9 @@ struct Evaluator::Impl {
   std::optional<ast::Block> next();
   // Evaluates a block with statements, expressions or call words; nullopt when nothing is
   // left for lowering (a pure statement block, a G65 call).
+  // A block without statements, expressions or calls, and no modal call in force: it goes to
+  // lowering as read.
+  bool plain(const ast::Block& block) const;
   std::optional<ast::Block> evaluateBlock(ast::Block block, const ProgramPoint& at);
   // Reports the failure with the dialect's alarm number and stops the program.
   void fail(const Failure& failure);

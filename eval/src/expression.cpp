@@ -116,7 +116,7 @@ class Evaluator {
   std::optional<Value> unary(const ast::Expr& e) {
     auto v = eval(e.args[0]);
     if (!v || v->vacant) return v;
-    return Value::of(e.op == "-" ? -v->number : v->number);
+    return Value::of(std::string_view(e.op) == "-" ? -v->number : v->number);
   }
 
   std::optional<Value> result(double v, const ast::Expr& e) {
@@ -142,7 +142,8 @@ class Evaluator {
     if (!lhs) return std::nullopt;
     auto rhs = eval(e.args[1]);
     if (!rhs) return std::nullopt;
-    const std::string& op = e.op;
+    // A view: its comparisons with the literals below are inlined (a string's are calls).
+    const std::string_view op = e.op;
     // EQ and NE tell vacant from 0 (vacant equals only vacant); the other comparisons and
     // the arithmetic read vacant as 0.
     if (op == "EQ" || op == "NE") {
@@ -172,14 +173,14 @@ class Evaluator {
       auto y = bits32(b);
       if (!x || !y) {
         fail(failure_, EvalError::ValueRange, e.loc,
-             absl::StrCat(op, " works on 32-bit integers; ", formatNumber(x ? b : a),
+             absl::StrCat(e.op, " works on 32-bit integers; ", formatNumber(x ? b : a),
                           " is outside them"));
         return std::nullopt;
       }
       const int32_t r = op == "OR" ? (*x | *y) : op == "XOR" ? (*x ^ *y) : (*x & *y);
       return Value::of(static_cast<double>(r));
     }
-    fail(failure_, EvalError::Domain, e.loc, absl::StrCat("unknown operator '", op, "'"));
+    fail(failure_, EvalError::Domain, e.loc, absl::StrCat("unknown operator '", e.op, "'"));
     return std::nullopt;
   }
 
@@ -196,7 +197,7 @@ class Evaluator {
       if (!v) return std::nullopt;
       x[i] = v->arithmetic();  // a vacant argument counts as 0
     }
-    const std::string& f = e.op;
+    const std::string_view f = e.op;
     const double a = x[0];
     if (f == "SIN") return result(sinDegrees(a), e);
     if (f == "COS") return result(cosDegrees(a), e);
@@ -246,7 +247,7 @@ class Evaluator {
     }
     if (f == "ADP") return result(a * context_.adp_scale, e);
     if (f == "BIN" || f == "BCD") return bcd(e, a);
-    fail(failure_, EvalError::Domain, e.loc, absl::StrCat("unknown function '", f, "'"));
+    fail(failure_, EvalError::Domain, e.loc, absl::StrCat("unknown function '", e.op, "'"));
     return std::nullopt;
   }
 
@@ -256,7 +257,7 @@ class Evaluator {
     const double r = snapToInteger(a);
     if (r != std::trunc(r) || r < 0.0)
       return domain(e, a, "a whole number from 0 is needed");
-    if (e.op == "BIN") {
+    if (std::string_view(e.op) == "BIN") {
       if (r > 4294967295.0) return domain(e, a, "more than 32 bits");
       uint64_t bits = static_cast<uint64_t>(r);
       int64_t value = 0, scale = 1;
