@@ -20,23 +20,23 @@ class ReaderCursor final : public eval::BlockCursor {
                frontend::ReaderOptions options)
       : reader_(sources, file, diags, options) {}
 
-  std::optional<ast::Block> next() override {
-    if (!replaying_) return reader_.next();
+  const ast::Block* next() override {
+    if (!replaying_) return reader_.next(current_) ? &current_ : nullptr;
     if (const Cached* hit = find(at_)) {
       last_ = hit->at;
       at_ = hit->after;
-      return hit->block;
+      return &hit->block;  // stays until the next call: only a later insert may move it
     }
     syncReader();
     const frontend::BlockPosition from = at_;
-    std::optional<ast::Block> block = reader_.next();
+    const bool read = reader_.next(current_);
     last_.reset();
     at_ = reader_.position();
-    if (!block) return block;
+    if (!read) return nullptr;
     if (cache_.size() >= kMaxCached) cache_.clear();
     cache_.insert_or_assign(key(from), Cached{from, reader_.lastPosition(), at_,
-                                              reader_.language(), *block});
-    return block;
+                                              reader_.language(), current_});
+    return &current_;
   }
   eval::ProgramPoint lastPoint() const override {
     return {reader_.file(), last_ ? *last_ : reader_.lastPosition()};
@@ -86,6 +86,7 @@ class ReaderCursor final : public eval::BlockCursor {
   frontend::BlockPosition at_;
   bool synced_ = true;
   std::optional<frontend::BlockPosition> last_;  // lastPoint() of a block from the cache
+  ast::Block current_;  // the block last read from the file, refilled by each read
   absl::flat_hash_map<uint64_t, Cached> cache_;
 };
 

@@ -602,10 +602,10 @@ class StoredProgramStore::Cursor final : public BlockCursor {
   Cursor(StoredProgramStore& owner, const StoredFile* file, uint32_t id)
       : owner_(owner), file_(file), id_(id) {}
 
-  std::optional<ast::Block> next() override {
-    if (refused_ || !file_ || i_ >= file_->blocks.size()) return std::nullopt;
+  const ast::Block* next() override {
+    if (refused_ || !file_ || i_ >= file_->blocks.size()) return nullptr;
     last_ = file_->blocks[i_].position;
-    return file_->blocks[i_++].block;
+    return &file_->blocks[i_++].block;
   }
   ProgramPoint lastPoint() const override { return {id_, last_}; }
   void seek(const ProgramPoint& point) override {

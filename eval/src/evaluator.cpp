@@ -153,7 +153,7 @@ void Evaluator::Impl::programFinished() {
   perform(p);
 }
 
-std::optional<ast::Block> Evaluator::Impl::next() {
+const ast::Block* Evaluator::Impl::next() {
   while (end == ProgramEnd::Running) {
     if (!pending.empty()) {
       Pending p = std::move(pending.front());
@@ -162,7 +162,7 @@ std::optional<ast::Block> Evaluator::Impl::next() {
       continue;
     }
     Frame& f = frames.back();
-    std::optional<ast::Block> block = f.cursor->next();
+    const ast::Block* block = f.cursor->next();
     if (!block) {
       programFinished();
       continue;
@@ -180,7 +180,7 @@ std::optional<ast::Block> Evaluator::Impl::next() {
       // The next program in the file: this one has ended.
       if (f.is_main) {
         end = ProgramEnd::NextProgram;
-        return std::nullopt;
+        return nullptr;
       }
       programFinished();
       continue;
@@ -192,7 +192,7 @@ std::optional<ast::Block> Evaluator::Impl::next() {
     if (block->percent) {
       if (f.is_main && f.seen_content) {
         end = ProgramEnd::EndOfRecord;
-        return std::nullopt;
+        return nullptr;
       }
       if (!f.is_main) {
         programFinished();
@@ -203,13 +203,13 @@ std::optional<ast::Block> Evaluator::Impl::next() {
     if (!block->empty()) f.seen_content = true;
     if (options.skipped && options.skipped(*block)) return block;  // lowering skips it
     if (plain(*block)) return block;  // most blocks: nothing to evaluate, nothing to move
-    std::optional<ast::Block> out = evaluateBlock(std::move(*block), at);
-    if (end != ProgramEnd::Running) return std::nullopt;
+    const ast::Block* out = evaluateBlock(*block, at);
+    if (end != ProgramEnd::Running) return nullptr;
     if (!out) continue;
     modalCallAfter(*out, at);
     return out;
   }
-  return std::nullopt;
+  return nullptr;
 }
 
 bool Evaluator::Impl::plain(const ast::Block& block) const {
@@ -219,10 +219,9 @@ bool Evaluator::Impl::plain(const ast::Block& block) const {
   return true;
 }
 
-std::optional<ast::Block> Evaluator::Impl::evaluateBlock(ast::Block block,
-                                                         const ProgramPoint& at) {
+const ast::Block* Evaluator::Impl::evaluateBlock(const ast::Block& block, const ProgramPoint& at) {
   Frame& frame = frames.back();
-  if (plain(block)) return block;
+  if (plain(block)) return &block;
 
   // Statements read the values from before the block (Mazak §13-6: `#1=200 #2=#1+200` adds to
   // the old #1); their writes take effect together at the end of the block.
@@ -255,26 +254,26 @@ std::optional<ast::Block> Evaluator::Impl::evaluateBlock(ast::Block block,
     using K = ast::Statement::Kind;
     switch (st.kind) {
       case K::Assign:
-        if (!assign(st)) return std::nullopt;
+        if (!assign(st)) return nullptr;
         break;
       case K::IfThen: {
         std::optional<Value> c = value(st.value, 1);
-        if (!c) return std::nullopt;
-        if (isTrue(*c) && st.then_assign && !assign(*st.then_assign)) return std::nullopt;
+        if (!c) return nullptr;
+        if (isTrue(*c) && st.then_assign && !assign(*st.then_assign)) return nullptr;
         break;
       }
       case K::IfGoto:
       case K::Goto: {
         if (st.kind == K::IfGoto) {
           std::optional<Value> c = value(st.value, 1);
-          if (!c) return std::nullopt;
+          if (!c) return nullptr;
           if (!isTrue(*c)) break;
         }
         std::optional<int64_t> n = integerOf(st.target, st.loc, "the GOTO target");
-        if (!n) return std::nullopt;
+        if (!n) return nullptr;
         if (*n < 0 || *n > 99999) {
           fail(EvalError::GotoTarget, st.loc, absl::StrCat("GOTO ", *n, ": no such sequence number"));
-          return std::nullopt;
+          return nullptr;
         }
         flow = Flow::Goto;
         goto_target = *n;
@@ -285,10 +284,10 @@ std::optional<ast::Block> Evaluator::Impl::evaluateBlock(ast::Block block,
         if (st.loop_id < 1 || st.loop_id > rules.max_do_id) {
           fail(EvalError::DoNumber, st.loc,
                absl::StrCat("DO ", st.loop_id, ": loop numbers are 1 to ", rules.max_do_id));
-          return std::nullopt;
+          return nullptr;
         }
         std::optional<Value> c = value(st.value, 1);
-        if (!c) return std::nullopt;
+        if (!c) return nullptr;
         loop_id = st.loop_id;
         flow_loc = st.loc;
         // Coming back to this WHILE (END or a GOTO) re-enters the same loop.
@@ -301,7 +300,7 @@ std::optional<ast::Block> Evaluator::Impl::evaluateBlock(ast::Block block,
           if (static_cast<int>(frame.loops.size()) >= rules.max_do_nesting) {
             fail(EvalError::DoNesting, st.loc,
                  absl::StrCat("WHILE ... DO nested more than ", rules.max_do_nesting, " deep"));
-            return std::nullopt;
+            return nullptr;
           }
           frame.loops.push_back({st.loop_id, at});
         } else {
@@ -316,7 +315,7 @@ std::optional<ast::Block> Evaluator::Impl::evaluateBlock(ast::Block block,
         if (i == 0) {
           fail(EvalError::EndWithoutDo, st.loc,
                absl::StrCat("END ", st.loop_id, " without WHILE ... DO ", st.loop_id));
-          return std::nullopt;
+          return nullptr;
         }
         frame.loops.resize(i);
         flow = Flow::LoopBack;
@@ -328,16 +327,24 @@ std::optional<ast::Block> Evaluator::Impl::evaluateBlock(ast::Block block,
     if (flow != Flow::None) break;  // a jump ends the block
   }
 
-  // The words, with the values from before the block's assignments.
-  std::vector<ast::Word> words;
-  words.reserve(block.words.size());
-  for (ast::Word& w : block.words) {
+  // The block as lowering gets it, built before anything below reads the cursor again (a
+  // skipped loop does: `block` is the cursor's): the words with the values from before the
+  // block's assignments, no statements.
+  ast::Block& out = evaluated.emplace();
+  out.loc = block.loc;
+  out.skip_level = block.skip_level;
+  out.sequence = block.sequence;
+  out.program_number = block.program_number;
+  out.percent = block.percent;
+  out.comments = block.comments;
+  out.words.reserve(block.words.size());
+  for (const ast::Word& w : block.words) {
     if (isLiteral(w.value)) {
-      words.push_back(std::move(w));
+      out.words.push_back(w);
       continue;
     }
     std::optional<Value> v = value(w.value);
-    if (!v) return std::nullopt;
+    if (!v) return nullptr;
     const AddressShape shape = addressShape(w.address);
     AddressLimits limits;
     limits.digits = options.address_digits;
@@ -347,23 +354,24 @@ std::optional<ast::Block> Evaluator::Impl::evaluateBlock(ast::Block block,
     std::optional<AddressValue> a = addressValue(*v, shape, rules, limits, w.loc, failure);
     if (!a) {
       fail(failure);
-      return std::nullopt;
+      return nullptr;
     }
     if (a->dropped) continue;  // an address whose variable is vacant is not there at all
     // A computed value is a number in the input unit, as if written with its decimal point;
     // an integer address takes it as the integer it is.
-    w.value = ast::Expr::literal(std::abs(a->value), shape == AddressShape::Real, w.value.loc);
+    ast::Word& computed = out.words.emplace_back();
+    computed.address = w.address;
+    computed.loc = w.loc;
+    computed.value = ast::Expr::literal(std::abs(a->value), shape == AddressShape::Real, w.value.loc);
     if (a->value < 0) {
       ast::Expr neg;
       neg.kind = ast::Expr::Kind::Unary;
       neg.op = "-";
-      neg.loc = w.value.loc;
-      neg.args.push_back(std::move(w.value));
-      w.value = std::move(neg);
+      neg.loc = computed.value.loc;
+      neg.args.push_back(std::move(computed.value));
+      computed.value = std::move(neg);
     }
-    words.push_back(std::move(w));
   }
-  block.words = std::move(words);
 
   for (const Write& w : writes) {
     if (w.number == kUserAlarmVariable) {
@@ -373,26 +381,26 @@ std::optional<ast::Block> Evaluator::Impl::evaluateBlock(ast::Block block,
       if (!code) {
         fail(EvalError::AddressValue, w.loc,
              absl::StrCat("#3000 = ", n, ": the alarm number is out of range"));
-        return std::nullopt;
+        return nullptr;
       }
-      std::string message = messageOf(block);
+      std::string message = messageOf(out);
       fail(Failure{EvalError::UserAlarm, w.loc,
                    message.empty() ? absl::StrCat("user alarm #3000 = ", n)
                                    : absl::StrCat("user alarm #3000 = ", n, ": ", message),
                    *code});
-      return std::nullopt;
+      return nullptr;
     }
     if (w.number == kUserStopVariable) {
       // The control stops with the message; the run goes on as after cycle start.
       diags.warning(std::string(rules.alarm(EvalError::UserStop)), w.loc,
                     absl::StrCat("program stop #3006: ",
-                                 messageOf(block).empty() ? "(no message)" : messageOf(block)));
+                                 messageOf(out).empty() ? "(no message)" : messageOf(out)));
       continue;
     }
     Failure failure;
     if (!variables.write(w.number, w.value, w.loc, failure)) {
       fail(failure);
-      return std::nullopt;
+      return nullptr;
     }
   }
 
@@ -401,11 +409,11 @@ std::optional<ast::Block> Evaluator::Impl::evaluateBlock(ast::Block block,
     case Flow::Goto:
       if (!jumpToSequence(frame, goto_target, at, rules.goto_search, flow_loc,
                           EvalError::GotoTarget))
-        return std::nullopt;
+        return nullptr;
       break;
     case Flow::LoopBack: {
       const Loop& loop = frame.loops.back();
-      if (!countBackJump(flow_loc)) return std::nullopt;
+      if (!countBackJump(flow_loc)) return nullptr;
       frame.cursor->seek(loop.at);
       break;
     }
@@ -414,12 +422,12 @@ std::optional<ast::Block> Evaluator::Impl::evaluateBlock(ast::Block block,
       // same number.
       int depth = 0;
       while (true) {
-        std::optional<ast::Block> b = frame.cursor->next();
+        const ast::Block* b = frame.cursor->next();
         ++blocks_read;
         if (!b || b->program_number) {
           fail(EvalError::LoopNotClosed, flow_loc,
                absl::StrCat("WHILE ... DO ", loop_id, " has no END ", loop_id));
-          return std::nullopt;
+          return nullptr;
         }
         bool done = false;
         for (const ast::Statement& st : b->statements) {
@@ -434,11 +442,10 @@ std::optional<ast::Block> Evaluator::Impl::evaluateBlock(ast::Block block,
   }
 
   bool consumed = false;
-  if (!callWords(block, at, consumed)) return std::nullopt;
-  if (consumed) return std::nullopt;
-  block.statements.clear();
-  if (block.words.empty() && !block.sequence) return std::nullopt;
-  return block;
+  if (!callWords(out, at, consumed)) return nullptr;
+  if (consumed) return nullptr;
+  if (out.words.empty() && !out.sequence) return nullptr;
+  return &out;
 }
 
 // ---- the public class ----
@@ -450,7 +457,7 @@ Evaluator::Evaluator(EvaluatorOptions options, ProgramStore& store,
 
 Evaluator::~Evaluator() = default;
 
-std::optional<ast::Block> Evaluator::next() { return impl_->next(); }
+const ast::Block* Evaluator::next() { return impl_->next(); }
 
 void Evaluator::setLimits(const LoopLimits& limits) { impl_->options.limits = limits; }
 

@@ -86,13 +86,16 @@ struct Evaluator::Impl {
   uint64_t rejected_closed = 0;  // unreadable blocks of cursors already closed
 
   // ---- evaluator.cpp ----
-  std::optional<ast::Block> next();
+  const ast::Block* next();
   // Evaluates a block with statements, expressions or call words; nullopt when nothing is
   // left for lowering (a pure statement block, a G65 call).
   // A block without statements, expressions or calls, and no modal call in force: it goes to
   // lowering as read.
   bool plain(const ast::Block& block) const;
-  std::optional<ast::Block> evaluateBlock(ast::Block block, const ProgramPoint& at);
+  // The block as lowering gets it (the cursor's own when it is plain, else `evaluated`);
+  // nullptr when nothing of it goes on (a jump, a call, an error).
+  const ast::Block* evaluateBlock(const ast::Block& block, const ProgramPoint& at);
+  std::optional<ast::Block> evaluated;  // the last block evaluateBlock made
   // Reports the failure with the dialect's alarm number and stops the program.
   void fail(const Failure& failure);
   void fail(EvalError error, SourceLocation loc, std::string message);

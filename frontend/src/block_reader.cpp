@@ -69,31 +69,40 @@ BlockReader::BlockReader(const SourceManager& sources, uint32_t file, Diagnostic
 BlockReader::~BlockReader() = default;
 
 std::optional<ast::Block> BlockReader::next() {
+  ast::Block block;
+  if (!next(block)) return std::nullopt;
+  return block;
+}
+
+bool BlockReader::next(ast::Block& out) {
   Impl& r = *impl_;
   BlockCursor::Segment s;
   while (r.nextSegment(s)) {
     const std::string_view segment = s.text;
     if (isBlankText(segment) && !s.annotation) continue;  // blank lines are not blocks
     const SourceLocation where{r.file, s.at.line, s.at.column};
-    std::optional<ast::Block> block;
     bool fast = false;
+    bool read = false;
     if (r.language == Language::Din) {
       if (isBlankText(segment)) continue;  // a DIN comment line
-      block = r.readDin(segment, where);
+      if (std::optional<ast::Block> din = r.readDin(segment, where)) {
+        out = std::move(*din);
+        read = true;
+      }
     } else {
-      block = r.parser.parse(segment, where, r.diags, r.options.parser, &fast);
+      read = r.parser.parse(segment, where, r.diags, r.options.parser, out, &fast);
     }
-    if (!block) {
+    if (!read) {
       ++r.stats.rejected_blocks;
       continue;
     }
-    if (s.annotation) block->comments.emplace_back(*s.annotation);
+    if (s.annotation) out.comments.emplace_back(*s.annotation);
     r.last = s.at;
     ++r.stats.blocks;
     if (fast) ++r.stats.fast_path_blocks;
-    return block;
+    return true;
   }
-  return std::nullopt;
+  return false;
 }
 
 std::optional<BlockReader::Text> BlockReader::nextText() {

@@ -15,9 +15,16 @@ class PlainScanner {
  public:
   PlainScanner(std::string_view text, SourceLocation start) : text_(text), start_(start) {}
 
-  std::optional<ast::Block> run() {
-    ast::Block b;
+  // Fills `b`, cleared first (its vectors keep their capacity); false to decline.
+  bool run(ast::Block& b) {
     b.loc = start_;
+    b.skip_level = -1;
+    b.sequence.reset();
+    b.program_number.reset();
+    b.percent = false;
+    b.words.clear();
+    b.statements.clear();
+    b.comments.clear();
     skipBlanks();
     if (peek() == '%') {
       ++pos_;
@@ -28,7 +35,7 @@ class PlainScanner {
       b.skip_level = 1;
       if (startsNumber()) {
         std::string_view level = numberToken();
-        if (level.size() != 1 || !isDigit(level[0])) return std::nullopt;
+        if (level.size() != 1 || !isDigit(level[0])) return false;
         b.skip_level = level[0] - '0';
       }
     }
@@ -39,7 +46,7 @@ class PlainScanner {
       const char c = text_[pos_];
       if (c == '(') {
         size_t close = text_.find(')', pos_);
-        if (close == std::string_view::npos) return std::nullopt;
+        if (close == std::string_view::npos) return false;
         b.comments.emplace_back(text_.substr(pos_ + 1, close - pos_ - 1));
         pos_ = close + 1;
       } else if (isLetter(c)) {
@@ -47,32 +54,32 @@ class PlainScanner {
         const SourceLocation where = here();
         ++pos_;
         if (letter == 'N' || letter == 'O') {
-          if (!blockNumber(letter == 'N' ? b.sequence : b.program_number)) return std::nullopt;
+          if (!blockNumber(letter == 'N' ? b.sequence : b.program_number)) return false;
           continue;
         }
         ast::Word& w = b.words.emplace_back();
         w.address.push_back(letter);
         w.loc = where;
-        if (!value(w.value)) return std::nullopt;
+        if (!value(w.value)) return false;
       } else if (c == ',') {
         const SourceLocation where = here();
         ++pos_;
         skipBlanks();
         const char letter = upperAscii(peek());
-        if (!isCommaAddressLetter(letter)) return std::nullopt;
+        if (!isCommaAddressLetter(letter)) return false;
         ++pos_;
         ast::Word& w = b.words.emplace_back();
         w.address = {',', letter};
         w.loc = where;
-        if (!value(w.value)) return std::nullopt;
+        if (!value(w.value)) return false;
       } else if (c == ':') {
         ++pos_;
-        if (!blockNumber(b.program_number)) return std::nullopt;
+        if (!blockNumber(b.program_number)) return false;
       } else {
-        return std::nullopt;
+        return false;
       }
     }
-    return b;
+    return true;
   }
 
  private:
@@ -140,8 +147,14 @@ class PlainScanner {
 
 }  // namespace
 
+bool parsePlainBlock(std::string_view text, SourceLocation start, ast::Block& out) {
+  return PlainScanner(text, start).run(out);
+}
+
 std::optional<ast::Block> parsePlainBlock(std::string_view text, SourceLocation start) {
-  return PlainScanner(text, start).run();
+  ast::Block b;
+  if (!parsePlainBlock(text, start, b)) return std::nullopt;
+  return b;
 }
 
 }  // namespace ncc::frontend

@@ -13,5 +13,9 @@ namespace ncc::frontend {
 
 // The block, or nullopt when the text is not a plain word block.
 std::optional<ast::Block> parsePlainBlock(std::string_view text, SourceLocation start);
+// The same into `out`, cleared first: its vectors keep their capacity, so a reader that
+// refills one block allocates nothing for a plain block. False (and `out` unspecified) when
+// the text is not a plain word block.
+bool parsePlainBlock(std::string_view text, SourceLocation start, ast::Block& out);
 
 }  // namespace ncc::frontend

@@ -4,17 +4,25 @@
 
 namespace ncc::frontend {
 
+bool IsoBlockParser::parse(std::string_view text, SourceLocation start, DiagnosticEngine& diags,
+                           ParserChoice choice, ast::Block& out, bool* fast) {
+  if (choice == ParserChoice::Auto && parsePlainBlock(text, start, out)) {
+    if (fast) *fast = true;
+    return true;
+  }
+  if (fast) *fast = false;
+  std::optional<ast::Block> block = antlr_.parse(text, start, diags);
+  if (!block) return false;
+  out = std::move(*block);
+  return true;
+}
+
 std::optional<ast::Block> IsoBlockParser::parse(std::string_view text, SourceLocation start,
                                                 DiagnosticEngine& diags, ParserChoice choice,
                                                 bool* fast) {
-  if (choice == ParserChoice::Auto) {
-    if (std::optional<ast::Block> block = parsePlainBlock(text, start)) {
-      if (fast) *fast = true;
-      return block;
-    }
-  }
-  if (fast) *fast = false;
-  return antlr_.parse(text, start, diags);
+  ast::Block block;
+  if (!parse(text, start, diags, choice, block, fast)) return std::nullopt;
+  return block;
 }
 
 std::optional<ast::Block> parseIsoBlock(std::string_view text, uint32_t file, uint32_t line,

@@ -15,6 +15,9 @@ class IsoBlockParser {
   std::optional<ast::Block> parse(std::string_view text, SourceLocation start,
                                   DiagnosticEngine& diags, ParserChoice choice,
                                   bool* fast = nullptr);
+  // The same into `out` (see parsePlainBlock): false after reporting a syntax error.
+  bool parse(std::string_view text, SourceLocation start, DiagnosticEngine& diags,
+             ParserChoice choice, ast::Block& out, bool* fast = nullptr);
 
  private:
   AntlrBlockParser antlr_;

@@ -128,7 +128,7 @@ bool BlockLoop::ProgressTap::advances(const ir::Operation& op) {
 }
 
 Step BlockLoop::step() {
-  std::optional<ast::Block> block = evaluator_->next();
+  const ast::Block* block = evaluator_->next();
   if (!block) {
     if (evaluator_->end() == eval::ProgramEnd::RunTime) {
       // The writes of the block that stopped: it is evaluated again where it runs.

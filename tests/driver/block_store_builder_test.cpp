@@ -266,8 +266,8 @@ TEST(BlockStoreBuilder, StoredStoreAnswersAsTheSourceStore) {
     std::unique_ptr<eval::BlockCursor> b = stored.open(f.id);
     EXPECT_EQ(a->lastPoint(), b->lastPoint());
     size_t count = 0;
-    while (std::optional<ast::Block> y = b->next()) {
-      std::optional<ast::Block> x = a->next();
+    while (const ast::Block* y = b->next()) {
+      const ast::Block* x = a->next();
       ASSERT_TRUE(x) << f.name;
       EXPECT_EQ(eval::test::diffBlock(*x, *y, f.name), "");
       EXPECT_EQ(a->lastPoint(), b->lastPoint()) << f.name;
@@ -280,9 +280,9 @@ TEST(BlockStoreBuilder, StoredStoreAnswersAsTheSourceStore) {
     for (size_t i = points.size(); i-- > 0;) {  // backwards: every seek goes back
       a->seek(points[i]);
       b->seek(points[i]);
-      std::optional<ast::Block> y = b->next();
+      const ast::Block* y = b->next();
       if (!y) continue;  // after the last stored block (the source would read on past '%')
-      std::optional<ast::Block> x = a->next();
+      const ast::Block* x = a->next();
       ASSERT_TRUE(x);
       EXPECT_EQ(eval::test::diffBlock(*x, *y, f.name), "");
       EXPECT_EQ(a->lastPoint(), b->lastPoint());
@@ -334,7 +334,7 @@ std::vector<ast::Block> evaluate(eval::ProgramStore& store, uint32_t main, Diagn
   options.repeat = eval::RepeatEncoding::HighDigitsOfP;
   eval::Evaluator evaluator(options, store, store.open(main), variables, diags);
   std::vector<ast::Block> out;
-  while (std::optional<ast::Block> b = evaluator.next()) {
+  while (const ast::Block* b = evaluator.next()) {
     out.push_back(*b);
     for (const ast::Word& w : b->words)
       if (w.address == "M" && w.value.number == 30) evaluator.programEndCode();

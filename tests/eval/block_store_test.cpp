@@ -409,7 +409,7 @@ TEST(StoredProgramStore, CursorsReadSeekAndShareTheBlocks) {
   std::unique_ptr<BlockCursor> c = programs.open(1);
   EXPECT_EQ(c->file(), 1u);
   EXPECT_EQ(c->lastPoint(), (ProgramPoint{1, {0, 1, 1}}));  // before the first block
-  std::optional<ast::Block> b = c->next();
+  const ast::Block* b = c->next();
   ASSERT_TRUE(b);
   EXPECT_EQ(b->program_number, 1);
   EXPECT_EQ(c->lastPoint(), lineOf(1));

@@ -57,7 +57,7 @@ EvalRun run(std::string_view program, Dialect dialect = Dialect::FanucM, uint64_
   options.limits.max_back_jumps = max_back_jumps;
   options.is_axis = [](std::string_view a) { return a == "X" || a == "Y" || a == "Z"; };
   Evaluator evaluator(options, store, store.open(main), variables, diags);
-  while (std::optional<ast::Block> b = evaluator.next()) {
+  while (const ast::Block* b = evaluator.next()) {
     out.blocks.push_back(frontend::printBlock(*b));
     for (const ast::Word& w : b->words)
       if (w.address == "M" && (w.value.number == 30 || w.value.number == 2)) evaluator.programEndCode();

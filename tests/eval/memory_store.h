@@ -24,10 +24,10 @@ class MemoryStore final : public ProgramStore {
   class Cursor final : public BlockCursor {
    public:
     Cursor(const std::vector<ast::Block>& blocks, uint32_t file) : blocks_(blocks), file_(file) {}
-    std::optional<ast::Block> next() override {
-      if (i_ >= blocks_.size()) return std::nullopt;
+    const ast::Block* next() override {
+      if (i_ >= blocks_.size()) return nullptr;
       last_ = i_;
-      return blocks_[i_++];
+      return &blocks_[i_++];
     }
     ProgramPoint lastPoint() const override { return point(file_, last_); }
     void seek(const ProgramPoint& p) override { i_ = p.position.offset; }

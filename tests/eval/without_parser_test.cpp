@@ -62,7 +62,7 @@ TEST(WithoutParser, EvaluationFeedsLowering) {
   eval::EvaluatorOptions eo;
   eo.rules = &rules;
   eval::Evaluator evaluator(eo, store, store.open(file), variables, diags);
-  while (std::optional<ast::Block> b = evaluator.next()) {
+  while (const ast::Block* b = evaluator.next()) {
     if (!writes.empty()) lowering.variablesWritten(b->loc, std::exchange(writes, {}));
     if (lowering.lower(*b).program_end) evaluator.programEndCode();
   }

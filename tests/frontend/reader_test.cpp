@@ -23,6 +23,36 @@ std::vector<std::string> readAll(const std::string& text, ReaderOptions options,
   return out;
 }
 
+// The compiler refills one block (next(out)): nothing of a block may stay in the next, whichever
+// parser read either, and the result is what a fresh block would hold.
+TEST(Reader, RefillingOneBlockGivesWhatFreshBlocksGive) {
+  const std::string text =
+      "%\n/3 N10 G1 X1. Y2. (first) ,C1.\nX3.\n:20 #1=5 (macro: the ANTLR path)\n"
+      "G0 Z5.\nN30 M30 (end)\n";
+  SourceManager sm;
+  DiagnosticEngine diags(&sm);
+  const uint32_t f = sm.addBuffer("t.nc", text);
+  BlockReader fresh(sm, f, diags), refilled(sm, f, diags);
+  ast::Block reused;
+  size_t count = 0;
+  while (std::optional<ast::Block> expected = fresh.next()) {
+    ASSERT_TRUE(refilled.next(reused));
+    EXPECT_EQ(printBlock(reused), printBlock(*expected));
+    EXPECT_EQ(reused.loc, expected->loc);
+    EXPECT_EQ(reused.skip_level, expected->skip_level);
+    EXPECT_EQ(reused.sequence, expected->sequence);
+    EXPECT_EQ(reused.program_number, expected->program_number);
+    EXPECT_EQ(reused.percent, expected->percent);
+    EXPECT_EQ(reused.words.size(), expected->words.size());
+    EXPECT_EQ(reused.statements.size(), expected->statements.size());
+    EXPECT_EQ(reused.comments, expected->comments);
+    ++count;
+  }
+  EXPECT_EQ(count, 6u);
+  EXPECT_FALSE(refilled.next(reused));
+  EXPECT_TRUE(diags.diagnostics().empty());
+}
+
 TEST(Reader, NextTextReturnsUnparsedBlocksWithoutDiagnostics) {
   SourceManager sm;
   DiagnosticEngine diags(&sm);

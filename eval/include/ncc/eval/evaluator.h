@@ -80,8 +80,9 @@ class Evaluator {
   Evaluator(const Evaluator&) = delete;
   Evaluator& operator=(const Evaluator&) = delete;
 
-  // The next block for lowering, or nullopt when the program has ended (end()).
-  std::optional<ast::Block> next();
+  // The next block for lowering, or nullptr when the program has ended (end()). The block is
+  // the evaluator's (or its cursor's): valid until the next call.
+  const ast::Block* next();
   // Lowering saw M02/M30 in the block last returned: the program ends there.
   void programEndCode();
   // G290/G291 in the block last returned: the current file's language for the next blocks.

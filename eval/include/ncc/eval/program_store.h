@@ -26,9 +26,10 @@ struct ProgramPoint {
 class BlockCursor {
  public:
   virtual ~BlockCursor() = default;
-  // The next block; nullopt at the end of the file. Unreadable blocks are reported and
-  // skipped (rejectedBlocks() counts them).
-  virtual std::optional<ast::Block> next() = 0;
+  // The next block; nullptr at the end of the file. The block is the cursor's: it stays valid
+  // until the next call of next() or seek() (a replayed loop body is not copied each turn).
+  // Unreadable blocks are reported and skipped (rejectedBlocks() counts them).
+  virtual const ast::Block* next() = 0;
   // Where the block last returned by next() starts.
   virtual ProgramPoint lastPoint() const = 0;
   // Continues at `point` (in this cursor's file).

@@ -53,6 +53,9 @@ class BlockReader {
   // The next block, or nullopt at end of input. Blocks with syntax errors are reported and
   // skipped (their words are not returned, so nothing half-parsed reaches semantics).
   std::optional<ast::Block> next();
+  // The same into `out`, which a reader of many blocks reuses (a plain block then allocates
+  // nothing); false at end of input.
+  bool next(ast::Block& out);
 
   // The next block's text, not parsed (so nothing is reported), and where it starts; nullopt
   // at end of input. For text that is never executed: after the end of the program or the
