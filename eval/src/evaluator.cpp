@@ -221,7 +221,6 @@ bool Evaluator::Impl::plain(const ast::Block& block) const {
 
 const ast::Block* Evaluator::Impl::evaluateBlock(const ast::Block& block, const ProgramPoint& at) {
   Frame& frame = frames.back();
-  if (plain(block)) return &block;
 
   // Statements read the values from before the block (Mazak §13-6: `#1=200 #2=#1+200` adds to
   // the old #1); their writes take effect together at the end of the block.

@@ -92,7 +92,7 @@ struct Evaluator::Impl {
   // A block without statements, expressions or calls, and no modal call in force: it goes to
   // lowering as read.
   bool plain(const ast::Block& block) const;
-  // The block as lowering gets it (the cursor's own when it is plain, else `evaluated`);
+  // A block that is not plain, evaluated into `evaluated` (next() lets plain ones through);
   // nullptr when nothing of it goes on (a jump, a call, an error).
   const ast::Block* evaluateBlock(const ast::Block& block, const ProgramPoint& at);
   std::optional<ast::Block> evaluated;  // the last block evaluateBlock made

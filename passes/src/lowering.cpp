@@ -146,7 +146,7 @@ void commit(BlockContext& ctx) {
       .corner = ctx.corner,
       .comp = ctx.comp,
   };
-  if (out.modal.work_offset != ctx.next.work_name) out.modal.work_offset = ctx.next.work_name;
+  out.modal.work_offset = ctx.next.work_name;
   // While something is unknown (only after an error: the run fails anyway) targets may rest
   // on it; later passes would judge them (travel limits) and report consequences.
   const bool unknown = ctx.next.unknown.any();
