@@ -209,6 +209,9 @@ uint32_t instructionSize(Opcode op, int axis_count) {
   return s.fixed + s.vectors * 8u * static_cast<uint32_t>(axis_count);
 }
 
-uint32_t maxInstructionSize() { return largestSize(); }
+uint32_t maxInstructionSize() {
+  static constexpr uint32_t kLargest = largestSize();
+  return kLargest;
+}
 
 }  // namespace ncc::bytecode

@@ -57,10 +57,16 @@ void StreamWriter::writeBytes(const uint8_t* data, size_t size) {
 }
 
 uint32_t StreamWriter::emit(const Instruction& instruction) {
-  std::array<uint8_t, 128> buffer;
   const uint32_t at = code_size_;
-  uint32_t size = encode(instruction, axisCount(), buffer.data());
-  emitRaw(buffer.data(), size);
+  // Encoded straight into the buffer.
+  if (code_buffered_ + maxInstructionSize() > code_buffer_.size()) flushCode();
+  const uint32_t size = encode(instruction, axisCount(), code_buffer_.data() + code_buffered_);
+  if (uint64_t{header_size_} + code_size_ + size > std::numeric_limits<uint32_t>::max() / 2) {
+    fail("NCC7010", "program too large for the bytecode format (code over 2 GiB)");
+    return at;
+  }
+  code_buffered_ += size;
+  code_size_ += size;
   return at;
 }
 
@@ -70,8 +76,18 @@ void StreamWriter::emitRaw(const uint8_t* data, size_t size) {
     fail("NCC7010", "program too large for the bytecode format (code over 2 GiB)");
     return;
   }
-  writeHashed(data, size);
   code_size_ += static_cast<uint32_t>(size);
+  if (code_buffered_ + size > code_buffer_.size()) {
+    flushCode();
+    if (size > code_buffer_.size()) return writeHashed(data, size);
+  }
+  std::copy_n(data, size, code_buffer_.data() + code_buffered_);
+  code_buffered_ += size;
+}
+
+void StreamWriter::flushCode() {
+  writeHashed(code_buffer_.data(), code_buffered_);
+  code_buffered_ = 0;
 }
 
 void StreamWriter::addLine(uint32_t file, uint32_t line, uint32_t column) {
@@ -106,6 +122,7 @@ std::optional<Error> StreamWriter::finish(const std::vector<std::string>& string
                                           std::span<const uint8_t> blocks) {
   if (finished_) return error_;
   finished_ = true;
+  flushCode();
   SectionTable sections;
   uint64_t at = uint64_t{header_size_};
   sections[0] = {static_cast<uint32_t>(at), code_size_};

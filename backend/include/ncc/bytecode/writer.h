@@ -1,10 +1,12 @@
 #pragma once
 // Writes a bytecode file to a seekable stream without holding the program in memory: the
-// header is written first with an empty section table, code goes straight to the stream, the
-// line table is spooled to a temporary file, and finish() appends line table, string pool and
-// units, then seeks back to patch the section table and the checksum (checksum.h), which is
-// hashed as the bytes go out. Code already written is therefore never rewritten. Memory use is independent of program
-// length (the string pool and units are small and supplied at the end).
+// header is written first with an empty section table, code goes to the stream through a
+// fixed-size buffer, the line table is spooled to a temporary file, and finish() appends line
+// table, string pool and units, then seeks back to patch the section table and the checksum
+// (checksum.h), which is hashed as the bytes go out. Code already written is therefore never
+// rewritten. Memory use is independent of program length (the string pool and units are small
+// and supplied at the end).
+#include <array>
 #include <cstdint>
 #include <cstdio>
 #include <optional>
@@ -53,6 +55,7 @@ class StreamWriter {
   void fail(std::string code, std::string message);
   void writeBytes(const uint8_t* data, size_t size);
   void writeHashed(const uint8_t* data, size_t size);  // bytes after the fixed header
+  void flushCode();  // the buffered code bytes to the stream
   void spoolLine(const LineEntry& entry, bool replace_last);
 
   std::ostream& out_;
@@ -60,6 +63,9 @@ class StreamWriter {
   std::ostream::pos_type start_;  // stream position of the header
   uint32_t header_size_ = 0;
   uint32_t code_size_ = 0;
+  // Code bytes not yet written: one stream write per buffer, not per instruction.
+  std::array<uint8_t, 1 << 16> code_buffer_;
+  size_t code_buffered_ = 0;
   std::FILE* spool_ = nullptr;      // line table entries, kLineEntrySize bytes each
   std::string memory_spool_;        // used only if no temporary file can be created
   uint64_t line_count_ = 0;
