@@ -16,10 +16,12 @@ namespace {
 enum class CallCode : uint8_t { None, M98, M99, G65, G66, G661, G67 };
 
 CallCode callCode(const ast::Word& w) {
-  if (w.address.size() != 1 || !isLiteral(w.value)) return CallCode::None;
+  // The address first: most words are axis words, and a literal is not free to tell.
+  if (w.address.size() != 1 || (w.address[0] != 'M' && w.address[0] != 'G') ||
+      !isLiteral(w.value))
+    return CallCode::None;
   const double v = literalValue(w.value);
   if (w.address[0] == 'M') return v == 98 ? CallCode::M98 : v == 99 ? CallCode::M99 : CallCode::None;
-  if (w.address[0] != 'G') return CallCode::None;
   if (v == 65) return CallCode::G65;
   if (v == 66) return CallCode::G66;
   if (std::abs(v - 66.1) < 1e-9) return CallCode::G661;

@@ -37,10 +37,12 @@ std::string groupLabel(const GCodeEntry& e) {
 
 // Addresses of features ncc does not implement yet, with what they are for.
 const char* unsupportedAddress(std::string_view a) {
-  if (a == "E") return "precise thread lead";
-  if (a == ",A") return "drawing angle";
+  if (a.size() == 1 && a[0] == 'E') return "precise thread lead";
+  if (a.size() == 2 && a[0] == ',' && a[1] == 'A') return "drawing angle";
   return nullptr;
 }
+
+bool isG(const ast::Word& w) { return w.address.size() == 1 && w.address[0] == 'G'; }
 
 class Decoder {
  public:
@@ -53,11 +55,11 @@ class Decoder {
         fail(Alarm::MacroNotSupported, st.loc,
              "macro expressions/statements are not supported yet (macro statement)");
     for (size_t n = 0; n < block_.words.size(); ++n)
-      if (block_.words[n].address == "G") gWord(block_.words[n], static_cast<int>(n));
+      if (isG(block_.words[n])) gWord(block_.words[n], static_cast<int>(n));
     initialDistance();
     for (size_t n = 0; n < block_.words.size(); ++n) {
       const ast::Word& w = block_.words[n];
-      if (w.address == "G") {
+      if (isG(w)) {
         trackDistance(w);
         continue;
       }
@@ -73,6 +75,11 @@ class Decoder {
   }
 
   bool literal(const ast::Word& w, double& v, bool& point) {
+    if (w.value.kind == ast::Expr::Kind::Number) {  // nearly every word: a number as written
+      v = w.value.number;
+      point = w.value.has_point;
+      return true;
+    }
     if (foldLiteral(w.value, v, point)) return true;
     if (ctx_.statically) return false;  // its value is known at run time
     fail(Alarm::MacroNotSupported, w.loc,
@@ -148,7 +155,7 @@ class Decoder {
   std::optional<ir::DistanceMode> distanceOf(const ast::Word& w) const {
     double v;
     bool point;
-    if (w.address != "G" || !foldLiteral(w.value, v, point) || !(v >= 0 && v < kMaxGCode))
+    if (!isG(w) || !foldLiteral(w.value, v, point) || !(v >= 0 && v < kMaxGCode))
       return std::nullopt;
     const GCodeEntry* e = ctx_.table.findG(static_cast<int>(std::lround(v * 10.0)));
     if (!e || e->group != GGroup::Distance) return std::nullopt;

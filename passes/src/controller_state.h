@@ -6,6 +6,7 @@
 #include <array>
 #include <cstdint>
 #include <map>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -87,6 +88,10 @@ struct TransformState {
   std::optional<AxisValues> tool_at;
 
   bool mirrorsAny() const { return mirrored[0] || mirrored[1] || mirrored[2]; }
+  // A stage or G92.5 is in force (tool_at alone is not a transform).
+  bool inForce() const {
+    return work_rotation || figure || scaling || mirrorsAny() || !rotations.empty();
+  }
 };
 
 // Cutter radius compensation in force (lowering_cutter_comp.cpp): what the next block's
@@ -102,6 +107,28 @@ struct CompState {
   std::optional<std::array<double, 3>> direction_3d;
 
   bool active() const { return side != ir::CutterComp::Side::Off; }
+};
+
+// A part of the state that blocks nearly always only read: a copy of the state shares it, and
+// the first write through edit() in a block copies it then (copy on write). A block is lowered
+// on a copy of the whole state, so a large part written rarely (the transforms) should not be
+// copied with every block. Reads of a part never written give the default value.
+template <class T>
+class CopyOnWrite {
+ public:
+  const T& operator*() const { return p_ ? *p_ : kDefault; }
+  const T* operator->() const { return &**this; }
+  T& edit() {
+    if (!p_)
+      p_ = std::make_shared<T>();
+    else if (p_.use_count() > 1)
+      p_ = std::make_shared<T>(*p_);
+    return *p_;
+  }
+
+ private:
+  static inline const T kDefault{};
+  std::shared_ptr<T> p_;
 };
 
 struct ControllerState {
@@ -129,7 +156,7 @@ struct ControllerState {
   int last_g10_l2_p = 1;               // Mazak: G10 L2 without P reuses the last P
   UnknownState unknown;                // nothing after power-on; see UnknownState
   CycleState cycle;                    // the canned hole cycle in force
-  TransformState transforms;           // G68, G51, G51.1, G92.5, figure rotation
+  CopyOnWrite<TransformState> transforms;  // G68, G51, G51.1, G92.5, figure rotation
   int spindle_direction = 0;           // +1 M03, -1 M04, 0 stopped (M05, power-on)
   // Axes whose commanded position is where a G31 stopped: known when the program runs, not
   // here (`position` holds G31's end point for them). An absolute word makes one known again

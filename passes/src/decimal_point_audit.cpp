@@ -7,35 +7,36 @@
 
 namespace ncc::passes {
 
-void DecimalPointAudit::word(const WordValue& w, double as_read, const char* unit) {
+// Most words have a point, or another integer word came first: only the first integer word is
+// converted and written out, for the warning.
+void DecimalPointAudit::word(const WordValue& w, const ValueRules& values, ir::Units units,
+                             bool rotary) {
   if (w.point) {
     any_point_ = true;
     return;
   }
   if (w.value == 0.0) return;
-  if (integers_++ == 0) {
-    first_ = w.loc;
-    first_text_ = absl::StrCat(std::string(w.address), absl::StrFormat("%.0f", w.value), " = ",
-                               absl::StrFormat("%g", as_read), " ", unit);
-  }
+  if (integers_++ != 0) return;
+  first_ = w.loc;
+  const double as_read = rotary ? values.rotary(w.value, w.point)
+                                : values.linear(w.value, w.point, units);
+  first_text_ = absl::StrCat(std::string(w.address), absl::StrFormat("%.0f", w.value), " = ",
+                             absl::StrFormat("%g", as_read), " ", rotary ? "deg" : "mm");
 }
 
 void DecimalPointAudit::block(const DecodedBlock& words, const ValueRules& values,
                               ir::Units units, const MachineConfig& machine, int angle_axis) {
   if (!values.standard) return;  // calculator notation: `Z3` is 3 mm, as meant
-  bool dwell = words.one_shot && words.one_shot->entry->action == GAction::Dwell;
-  int x = machine.axisIndex("X");
-  int count = std::min(machine.axisCount(), kMaxAxes);
+  const bool dwell = words.one_shot && words.one_shot->entry->action == GAction::Dwell;
+  const int x = dwell ? machine.axisIndex("X") : -1;  // G04 X is a time
+  const int count = std::min(machine.axisCount(), kMaxAxes);
   for (int i = 0; i < count; ++i) {
     const auto& w = words.axes[i];
-    if (!w || (dwell && i == x)) continue;
-    if (machine.axes[i].kind == AxisKind::Rotary || i == angle_axis)
-      word(*w, values.rotary(w->value, w->point), "deg");
-    else
-      word(*w, values.linear(w->value, w->point, units), "mm");
+    if (!w || i == x) continue;
+    word(*w, values, units, machine.axes[i].kind == AxisKind::Rotary || i == angle_axis);
   }
   for (const auto* w : {&words.i, &words.j, &words.k, &words.r, &words.q})
-    if (*w) word(**w, values.linear((*w)->value, (*w)->point, units), "mm");
+    if (*w) word(**w, values, units, false);
 }
 
 void DecimalPointAudit::finish(DiagnosticEngine& diags, const ValueRules& values) const {

@@ -29,7 +29,7 @@ class DecimalPointAudit {
   void finish(DiagnosticEngine& diags, const ValueRules& values) const;
 
  private:
-  void word(const WordValue& w, double as_read, const char* unit);
+  void word(const WordValue& w, const ValueRules& values, ir::Units units, bool rotary);
 
   bool any_point_ = false;
   size_t integers_ = 0;

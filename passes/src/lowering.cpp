@@ -150,7 +150,7 @@ void commit(BlockContext& ctx) {
   // While something is unknown (only after an error: the run fails anyway) targets may rest
   // on it; later passes would judge them (travel limits) and report consequences.
   const bool unknown = ctx.next.unknown.any();
-  ctx.core.cs = std::move(ctx.next);  // the block's state is the controller's (ctx is done)
+  ctx.core.commitBlock();  // the block's state is the controller's (ctx is done)
   if (unknown) return;
   ctx.core.out.accept(std::move(out));
 }
@@ -184,7 +184,7 @@ void rejectParallelAxisPlane(BlockContext& ctx, const MachineConfig& machine) {
 }
 
 LowerResult reject(BlockContext& ctx) {
-  forgetRejected(ctx.core.cs, ctx.block, ctx.table, *ctx.core.machine);
+  forgetRejected(ctx.core.cs(), ctx.block, ctx.table, *ctx.core.machine);
   return LowerResult{};
 }
 
@@ -192,7 +192,7 @@ LowerResult reject(BlockContext& ctx) {
 // writes; the state takes what the block determines (relearn).
 LowerResult settleSilent(BlockContext& ctx, LowerResult result) {
   relearn(ctx);
-  ctx.core.cs = ctx.next;
+  ctx.core.commitBlock();
   return result;
 }
 
@@ -201,8 +201,8 @@ LowerResult lowerBlock(LoweringCore& core, const ast::Block& block) {
   BlockContext ctx(core, block);
   LowerResult result;
   DecodeContext decode{ctx.table,           *core.machine,           *core.addresses,
-                       ctx.settings.policy, core.cs.modal.distance, core.diags};
-  decode.cycle_in_force = core.cs.cycle.code10 != 0;
+                       ctx.settings.policy, core.cs().modal.distance, core.diags};
+  decode.cycle_in_force = core.cs().cycle.code10 != 0;
   if (!decodeBlock(block, decode, ctx.words)) return reject(ctx);
 
   applyModalCodes(ctx, result);
@@ -304,7 +304,7 @@ bool Lowering::checkStatically(const ast::Block& block) const {
   const State& st = *state_;
   if (!st.table || skips(block)) return true;
   DecodeContext decode{*st.table,          *st.machine,           *st.addresses,
-                       st.settings.policy, st.cs.modal.distance, st.diags};
+                       st.settings.policy, st.cs().modal.distance, st.diags};
   decode.statically = true;
   return decodeBlock(block, decode).has_value();
 }
@@ -313,14 +313,14 @@ eval::SystemVariables& Lowering::systemVariables() { return state_->system_varia
 
 void Lowering::variablesWritten(SourceLocation loc, std::vector<ir::SetVariable> writes) {
   State& st = *state_;
-  if (writes.empty() || !st.table || st.cs.unknown.any()) return;
+  if (writes.empty() || !st.table || st.cs().unknown.any()) return;
   ir::Block out;
   out.loc = loc;
-  out.modal = st.cs.modal;
-  out.modal.work_offset = st.cs.work_name;
-  out.frame = frameOf(st.cs, st.table->behaviour);
+  out.modal = st.cs().modal;
+  out.modal.work_offset = st.cs().work_name;
+  out.frame = frameOf(st.cs(), st.table->behaviour);
   out.ops.assign(writes.begin(), writes.end());
-  out.comp = compensationInForce(st, st.cs, loc);
+  out.comp = compensationInForce(st, st.cs(), loc);
   st.out.accept(std::move(out));
 }
 
@@ -334,12 +334,12 @@ double Lowering::argumentValue(const ast::Word& word) const {
   const bool length = st.machine->axisIndex(word.address) >= 0 ||
                       (word.address.size() == 1 &&
                        kLengthAddresses.find(word.address[0]) != std::string_view::npos);
-  return length ? v * st.settings.values.lengthIncrement(st.cs.modal.units) : v;
+  return length ? v * st.settings.values.lengthIncrement(st.cs().modal.units) : v;
 }
 
 double Lowering::leastIncrement() const {
   const State& st = *state_;
-  return st.settings.values.lengthIncrement(st.cs.modal.units);
+  return st.settings.values.lengthIncrement(st.cs().modal.units);
 }
 
 int Lowering::addressDigits() const { return state_->settings.values.digits; }
@@ -357,7 +357,7 @@ void Lowering::figureRotationEnd() {
 }
 
 void Lowering::blockUnreadable() {
-  if (state_->table) forgetEverything(state_->cs);
+  if (state_->table) forgetEverything(state_->cs());
 }
 
 void Lowering::finish() {

@@ -16,12 +16,13 @@ std::string mm(double v) { return absl::StrFormat("%.3f", v); }
 ir::Frame frameOf(const ControllerState& cs, const DialectBehaviour& b) {
   ir::Frame f;
   for (int i = 0; i < kMaxAxes; ++i) f.work_offset[i] = cs.work_value[i] + cs.external[i];
-  AxisValues local = cs.local;
+  static constexpr AxisValues kNone{};
+  const AxisValues* local = &cs.local;
   if (b.local_shift_per_work_offset) {
     auto it = cs.local_by_work.find(cs.work_name);
-    local = it == cs.local_by_work.end() ? AxisValues{} : it->second;
+    local = it == cs.local_by_work.end() ? &kNone : &it->second;
   }
-  for (int i = 0; i < kMaxAxes; ++i) f.shift[i] = cs.g92[i] + local[i];
+  for (int i = 0; i < kMaxAxes; ++i) f.shift[i] = cs.g92[i] + (*local)[i];
   if (cs.tool_length_axis >= 0) f.tool_length[cs.tool_length_axis] = cs.tool_length;
   return f;
 }
@@ -50,18 +51,18 @@ LoweringCore::LoweringCore(LoweringOptions o, DiagnosticEngine& d, ir::BlockSink
 }
 
 void LoweringCore::resolveSkip() {
-  if (!running() || cs.skip_axes == 0) return;
+  if (!running() || cs().skip_axes == 0) return;
   const AxisValues at = running()->machinePosition();
   for (int i = 0; i < machine->axisCount(); ++i)
-    if (cs.skip_axes & (1u << i)) cs.position[i] = at[i];
-  cs.skip_axes = 0;
+    if (cs().skip_axes & (1u << i)) cs().position[i] = at[i];
+  cs().skip_axes = 0;
 }
 
 void LoweringCore::powerOn() {
-  ir::Modal& m = cs.modal;
+  ir::Modal& m = cs().modal;
   m.units = settings.reset_unit;
   m.plane = settings.reset_plane;
-  cs.motion = settings.reset_motion;
+  cs().motion = settings.reset_motion;
   if (const GCodeEntry* e = table->powerOnDefault(GGroup::Distance))
     m.distance = e->action == GAction::Incremental ? ir::DistanceMode::Incremental
                                                    : ir::DistanceMode::Absolute;
@@ -70,9 +71,9 @@ void LoweringCore::powerOn() {
         e->action == GAction::PerRevolution ? ir::FeedMode::PerRevolution : ir::FeedMode::PerMinute;
   m.path = ir::PathControl::Continuous;
   m.work_offset = "G54";
-  cs.work_name = "G54";
-  cs.work_value = tables.workOffset("G54");
-  cs.position = machine->start_position;
+  cs().work_name = "G54";
+  cs().work_value = tables.workOffset("G54");
+  cs().position = machine->start_position;
 }
 
 // ---- BlockContext: diagnostics and values ---------------------------------------------------

@@ -23,7 +23,7 @@
 //   lowering_context.cpp           the helpers below, shared by all of them
 //
 // A block is lowered on a copy of the controller state (BlockContext::next); the driver
-// replaces LoweringCore::cs with it only when no concept reported an error.
+// makes it LoweringCore::cs() only when no concept reported an error.
 #include <array>
 #include <cstdint>
 #include <optional>
@@ -67,7 +67,17 @@ struct LoweringCore {
   const DialectTable* table = nullptr;
   std::optional<AddressMap> addresses;  // with the table
   LoweringSettings settings;
-  ControllerState cs;
+  // The controller state between blocks.
+  ControllerState& cs() { return states_[current_]; }
+  const ControllerState& cs() const { return states_[current_]; }
+  // The state a block is lowered on (BlockContext::next): cs() copied into the other buffer.
+  ControllerState& beginBlock() {
+    states_[current_ ^ 1u] = states_[current_];
+    return states_[current_ ^ 1u];
+  }
+  // beginBlock()'s state becomes cs(): the buffers swap roles, so a block costs one copy of
+  // the state into storage it reuses, not a copy, a move and a destruction.
+  void commitBlock() { current_ ^= 1u; }
   OffsetTables tables;
   DecimalPointAudit decimal_points;  // coordinate words without a point, over the file
   bool reported_dialect = false;
@@ -94,6 +104,10 @@ struct LoweringCore {
   const RunTimeState* running() const {
     return options.run_time && options.run_time->running() ? options.run_time : nullptr;
   }
+
+ private:
+  std::array<ControllerState, 2> states_;
+  unsigned current_ = 0;
 };
 
 // One block being lowered: its decoded words, the state it produces, the IR it emits and the
@@ -105,14 +119,14 @@ struct BlockContext {
         table(*st.table),
         behaviour(table.behaviour),
         settings(st.settings),
-        next(st.cs) {}
+        next(st.beginBlock()) {}
 
   LoweringCore& core;
   const ast::Block& block;
   const DialectTable& table;
   const DialectBehaviour& behaviour;
   const LoweringSettings& settings;
-  ControllerState next;  // the controller state after the block
+  ControllerState& next;  // the controller state after the block (LoweringCore::beginBlock)
   DecodedBlock words;
   std::vector<ir::Operation> ops;
   std::vector<TableWrite> table_writes;

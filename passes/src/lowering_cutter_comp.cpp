@@ -130,7 +130,7 @@ bool hasPlaneVector(const BlockContext& ctx, std::array<bool, 3> use) {
 // G40/G41/G42 and D: `now`). Reports the first fault.
 void checkBlock(BlockContext& ctx, const CompRules& rules, Side was, Side now,
                 const std::optional<GWord>& code) {
-  const ControllerState& before = ctx.core.cs;
+  const ControllerState& before = ctx.core.cs();
   const bool startup = was == Side::Off && now != Side::Off;
   const bool cancel = was != Side::Off && now == Side::Off;
   const bool one_shot = ctx.words.one_shot.has_value();
@@ -215,7 +215,7 @@ void applyCutterComp(BlockContext& ctx) {
   const CompRules* rules = ctx.table.comp;
   if (!rules || ctx.failed) return;
   CompState& state = ctx.next.comp;
-  const Side was = ctx.core.cs.comp.side;
+  const Side was = ctx.core.cs().comp.side;
   const auto& code = ctx.words.group(GGroup::CutterComp);
   Side now = was;
   if (code)

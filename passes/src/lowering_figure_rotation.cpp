@@ -11,8 +11,8 @@
 namespace ncc::passes {
 
 bool figureRotationBegin(LoweringCore& core, const std::array<std::optional<double>, 3>& ijk) {
-  ControllerState& cs = core.cs;
-  TransformState& t = cs.transforms;
+  ControllerState& cs = core.cs();
+  TransformState& t = cs.transforms.edit();
   if (!t.rotations.empty()) return false;  // 850: "COMMANDE G68 AVEC M98"
   TransformState::FigureCall call;
   call.plane = cs.modal.plane;
@@ -33,9 +33,9 @@ bool figureRotationBegin(LoweringCore& core, const std::array<std::optional<doub
 }
 
 void figureRotationRun(LoweringCore& core, int64_t run) {
-  ControllerState& cs = core.cs;
-  TransformState& t = cs.transforms;
-  if (!t.figure_call) return;
+  ControllerState& cs = core.cs();
+  if (!cs.transforms->figure_call) return;
+  TransformState& t = cs.transforms.edit();
   TransformState::FigureCall& call = *t.figure_call;
   const auto sl = planeSlots(call.plane);
   if (run == 1) {
@@ -59,9 +59,9 @@ void figureRotationRun(LoweringCore& core, int64_t run) {
 }
 
 void figureRotationEnd(LoweringCore& core) {
-  ControllerState& cs = core.cs;
-  TransformState& t = cs.transforms;
-  if (!t.figure_call) return;
+  ControllerState& cs = core.cs();
+  if (!cs.transforms->figure_call) return;
+  TransformState& t = cs.transforms.edit();
   // The programmed point becomes where the tool is: the next call or move starts there.
   cs.position = imageOf(core, cs, cs.position);
   t.figure_call.reset();

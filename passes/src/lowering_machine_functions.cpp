@@ -4,6 +4,7 @@
 // None of them moves an axis or changes the frame.
 #include <cmath>
 #include <optional>
+#include <span>
 #include <string>
 #include <utility>
 
@@ -112,14 +113,14 @@ void applySpindleAndToolWords(BlockContext& ctx) {
 
 void machineFunctions(BlockContext& ctx, LowerResult& result) {
   using K = ir::MachineFunction::Kind;
-  std::vector<WordValue> ms = ctx.words.m;
+  std::span<const WordValue> ms = ctx.words.m;
   if (static_cast<int>(ms.size()) > ctx.behaviour.max_m_codes) {
     if (ctx.behaviour.m_overflow_keeps_last) {
       ctx.core.diags.warning(std::string(ctx.table.alarm(Alarm::TooManyMCodes)), ms.front().loc,
                              absl::StrCat("more than ", ctx.behaviour.max_m_codes,
                                           " M codes in a block: only the last ",
                                           ctx.behaviour.max_m_codes, " are effective"));
-      ms.erase(ms.begin(), ms.end() - ctx.behaviour.max_m_codes);
+      ms = ms.last(static_cast<size_t>(ctx.behaviour.max_m_codes));
     } else {
       ctx.fail(
           Alarm::TooManyMCodes, ms[ctx.behaviour.max_m_codes].loc,
@@ -192,9 +193,8 @@ void machineFunctions(BlockContext& ctx, LowerResult& result) {
   }
   // Spindle, tool and coolant start before the block's motion; stops, ends and the other
   // (machine-builder) M codes after it.
-  before.insert(before.end(), ctx.ops.begin(), ctx.ops.end());
-  before.insert(before.end(), after.begin(), after.end());
-  ctx.ops = std::move(before);
+  ctx.ops.insert(ctx.ops.begin(), before.begin(), before.end());
+  ctx.ops.insert(ctx.ops.end(), after.begin(), after.end());
 }
 
 }  // namespace ncc::passes

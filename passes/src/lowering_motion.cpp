@@ -29,7 +29,7 @@ const char* feedUnit(const ir::Modal& m) {
 // G94 and G95 the F is kept (docs/semantics.md, Feed).
 void leaveInverseTime(BlockContext& ctx) {
   ir::Modal& m = ctx.next.modal;
-  if (ctx.core.cs.modal.feed_mode != ir::FeedMode::InverseTime ||
+  if (ctx.core.cs().modal.feed_mode != ir::FeedMode::InverseTime ||
       m.feed_mode == ir::FeedMode::InverseTime)
     return;
   m.feed = 0.0;

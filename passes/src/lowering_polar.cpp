@@ -162,7 +162,7 @@ void convertPolarWords(BlockContext& ctx) {
   if (!ctx.table.polar || ctx.failed) return;
   // After a rejected block G16 may be unknown: the block's plane words are then neither known
   // polar nor Cartesian; it is lowered silently and its plane axes stay unknown.
-  const bool unknown = ctx.core.cs.unknown.group(GGroup::Polar) && !ctx.words.group(GGroup::Polar);
+  const bool unknown = ctx.core.cs().unknown.group(GGroup::Polar) && !ctx.words.group(GGroup::Polar);
   if (!ctx.next.polar && !unknown) return;
   const Plane p = planeOf(ctx);
   if (p.first < 0 || p.second < 0) return;  // reported at the G16 or plane code

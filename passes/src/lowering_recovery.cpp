@@ -123,7 +123,7 @@ bool motionDepends(const BlockContext& ctx, const U& before, uint32_t groups) {
 }  // namespace
 
 Dependence dependsOnUnknown(const BlockContext& ctx) {
-  const U& before = ctx.core.cs.unknown;
+  const U& before = ctx.core.cs().unknown;
   if (!before.any()) return {};
   const DecodedBlock& w = ctx.words;
   uint32_t groups = before.groups & ~carriedGroups(w);

@@ -74,9 +74,9 @@ void skipMove(BlockContext& ctx, const GWord& g) {
       return;
     }
     feed = m.feed;
-    if (m.feed_mode == ctx.core.cs.modal.feed_mode) {
-      m.feed = ctx.core.cs.modal.feed;
-      ctx.next.feed_programmed = ctx.core.cs.feed_programmed;
+    if (m.feed_mode == ctx.core.cs().modal.feed_mode) {
+      m.feed = ctx.core.cs().modal.feed;
+      ctx.next.feed_programmed = ctx.core.cs().feed_programmed;
     }
   }
   const ir::Frame frame = frameOf(ctx.next, ctx.behaviour);
@@ -104,7 +104,7 @@ void skipMove(BlockContext& ctx, const GWord& g) {
 }
 
 void checkSkipDependence(BlockContext& ctx) {
-  const AxisMask unknown = ctx.core.cs.skip_axes;
+  const AxisMask unknown = ctx.core.cs().skip_axes;
   if (ctx.failed || ctx.silent) return;
   if (unknown == 0) {
     ctx.next.skip_axes = ctx.skip_moved;

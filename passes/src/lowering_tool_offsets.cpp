@@ -74,8 +74,8 @@ void changeLengthOffset(BlockContext& ctx) {
     }
     length = sign * ctx.core.tables.toolLength(ctx.next.h_selected);
   }
-  double old = ctx.core.cs.tool_length_axis >= 0 ? ctx.core.cs.tool_length : 0.0;
-  int changed_axis = axis >= 0 ? axis : ctx.core.cs.tool_length_axis;
+  double old = ctx.core.cs().tool_length_axis >= 0 ? ctx.core.cs().tool_length : 0.0;
+  int changed_axis = axis >= 0 ? axis : ctx.core.cs().tool_length_axis;
   if (changed_axis >= 0 && length != old) {
     if (ctx.settings.length_change_moves) {
       ctx.length_delta_axis = changed_axis;

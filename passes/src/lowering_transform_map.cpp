@@ -20,13 +20,13 @@ ir::Transform transformOf(const BlockContext& ctx, const ControllerState& cs) {
 }
 
 ir::Transform transformOf(const LoweringCore& core, const ControllerState& cs) {
-  ir::Transform out;
   const TransformRules* rules = core.table->transforms;
-  if (!rules) return out;
+  const TransformState& t = *cs.transforms;
+  // Nothing in force (nearly every block of a program): nothing to compose.
+  if (!rules || !t.inForce()) return {};
   const std::array<int8_t, 3>& xyz = core.xyz;
-  const TransformState& t = cs.transforms;
+  ir::Transform out;
   if (t.work_rotation) out.machine = *t.work_rotation;
-  // No stage in force (nearly every block of a program): nothing to compose.
   if (!t.figure && !t.mirrorsAny() && !t.scaling && t.rotations.empty()) return out;
   ir::Affine map = identityAffine(xyz);
   for (Stage stage : rules->order) {
@@ -74,17 +74,17 @@ AxisValues imageOf(const LoweringCore& core, const ControllerState& cs, const Ax
 }
 
 bool movesUnderTransforms(const BlockContext& ctx, const AxisValues& target, bool moves) {
-  const std::optional<AxisValues>& tool_at = ctx.core.cs.transforms.tool_at;
+  const std::optional<AxisValues>& tool_at = ctx.core.cs().transforms->tool_at;
   // A block without axis words moves nothing, whatever changed (G69 or G50 alone).
   if (!ctx.words.anyAxis() || (!tool_at && !transformOf(ctx).any())) return moves;
   const AxisValues total = frameOf(ctx.next, ctx.behaviour).total();
   AxisValues to = target;
   for (int i = 0; i < ctx.axisCount(); ++i) to[i] += total[i];
-  return !ctx.samePosition(tool_at ? *tool_at : ctx.core.cs.position, imageOf(ctx.core, ctx.next, to));
+  return !ctx.samePosition(tool_at ? *tool_at : ctx.core.cs().position, imageOf(ctx.core, ctx.next, to));
 }
 
 bool arcUnderTransforms(BlockContext& ctx, const ir::Arc& arc) {
-  const std::optional<AxisValues>& tool_at = ctx.core.cs.transforms.tool_at;
+  const std::optional<AxisValues>& tool_at = ctx.core.cs().transforms->tool_at;
   const ir::Transform after = transformOf(ctx);
   if (!tool_at && !after.any()) return true;
   const AxisValues total = frameOf(ctx.next, ctx.behaviour).total();
@@ -96,7 +96,7 @@ bool arcUnderTransforms(BlockContext& ctx, const ir::Arc& arc) {
              "(a 3-D rotation tilts its plane)");
     return false;
   }
-  AxisValues start = tool_at ? *tool_at : ctx.core.cs.position, end = arc.to, centre = arc.center;
+  AxisValues start = tool_at ? *tool_at : ctx.core.cs().position, end = arc.to, centre = arc.center;
   for (int i = 0; i < ctx.axisCount(); ++i) start[i] -= total[i];
   applyPoint(map, end);
   applyPoint(map, centre);
@@ -123,11 +123,11 @@ void trackTool(BlockContext& ctx) {
     moved = moved || ir::isMove(op) || std::holds_alternative<ir::HoleCycle>(op);
   if (!moved) return;
   const AxisValues at = imageOf(ctx.core, ctx.next, ctx.next.position);
-  std::optional<AxisValues>& tool_at = ctx.next.transforms.tool_at;
-  if (ctx.samePosition(at, ctx.next.position))
-    tool_at.reset();
-  else
-    tool_at = at;
+  // Written only when it changes: the transform state is shared until written.
+  if (!ctx.samePosition(at, ctx.next.position))
+    ctx.next.transforms.edit().tool_at = at;
+  else if (ctx.next.transforms->tool_at)
+    ctx.next.transforms.edit().tool_at.reset();
 }
 
 AxisValues programmedAt(const BlockContext& ctx, const AxisValues& machine) {

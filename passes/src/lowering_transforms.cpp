@@ -64,7 +64,7 @@ bool angleInRange(BlockContext& ctx, const WordValue& w, double degrees, const c
 
 // ---- G68 ----------------------------------------------------------------------------------
 void pushRotation(BlockContext& ctx, const GWord& g, const ir::Affine& r, bool stacks) {
-  TransformState& t = ctx.next.transforms;
+  TransformState& t = ctx.next.transforms.edit();
   if (t.figure_call) {  // Mazak §13-8 6., §13-7 note 4
     ctx.fail(Alarm::FigureRotationWithRotation, g.loc,
              "G68 cannot be given during a figure rotation (M98 with I J K)");
@@ -135,13 +135,13 @@ void rotation3d(BlockContext& ctx, const GWord& g) {
     turn = rotation(xyz(ctx), {}, v, deg);
     turn.t = {centre[0], centre[1], centre[2]};
   }
-  ctx.next.transforms.rotation_3d = true;
+  ctx.next.transforms.edit().rotation_3d = true;
   pushRotation(ctx, g, turn, r.rotation_stacks_3d);
 }
 
 void rotation2d(BlockContext& ctx, const GWord& g) {
   const TransformRules& r = rules(ctx);
-  TransformState& t = ctx.next.transforms;
+  TransformState& t = ctx.next.transforms.edit();
   const auto sl = planeSlots(ctx.next.modal.plane);
   for (int s = 0; s < 3; ++s) {
     const auto* w = slotWord(ctx, s);
@@ -202,7 +202,7 @@ bool checkFactor(BlockContext& ctx, const WordValue& w, double& f, bool may_be_n
 void scale(BlockContext& ctx, const GWord& g) {
   const TransformRules& r = rules(ctx);
   if (!onlyXyzWords(ctx, "G51")) return;
-  TransformState& t = ctx.next.transforms;
+  TransformState& t = ctx.next.transforms.edit();
   const bool adds = r.rescale_adds_axes && t.scaling;
   if (!adds) {
     t.scaled = {};
@@ -277,7 +277,7 @@ void scale(BlockContext& ctx, const GWord& g) {
 
 // ---- G51.1 / G50.1 ------------------------------------------------------------------------
 bool mirrorAllowed(BlockContext& ctx, const GWord& g) {
-  const TransformState& t = ctx.next.transforms;
+  const TransformState& t = *ctx.next.transforms;
   if (!rules(ctx).mirror_only_outside_others || (!t.scaling && t.rotations.empty())) return true;
   ctx.fail(Alarm::TransformOrder, g.loc,
            absl::StrCat(gCodeName(g.entry->code10), " cannot be given while ",
@@ -289,7 +289,7 @@ bool mirrorAllowed(BlockContext& ctx, const GWord& g) {
 
 void mirror(BlockContext& ctx, const GWord& g) {
   if (!onlyXyzWords(ctx, "G51.1") || !mirrorAllowed(ctx, g)) return;
-  TransformState& t = ctx.next.transforms;
+  TransformState& t = ctx.next.transforms.edit();
   const Vec3 here = programmed(ctx);
   bool any = false;
   for (int s = 0; s < 3; ++s) {
@@ -309,7 +309,7 @@ void mirror(BlockContext& ctx, const GWord& g) {
 
 void mirrorCancel(BlockContext& ctx, const GWord& g) {
   if (!onlyXyzWords(ctx, "G50.1") || !mirrorAllowed(ctx, g)) return;
-  TransformState& t = ctx.next.transforms;
+  TransformState& t = ctx.next.transforms.edit();
   bool any = false;
   for (int s = 0; s < 3; ++s) {
     const auto* w = slotWord(ctx, s);
@@ -357,7 +357,8 @@ bool transformTakesAxisWords(const BlockContext& ctx) {
 
 void applyTransformCodes(BlockContext& ctx) {
   if (!ctx.table.transforms) return;
-  TransformState& t = ctx.next.transforms;
+  // Read here, written (edit()) only by the codes that change it: most blocks have none.
+  const TransformState& t = *ctx.next.transforms;
   // Mazak ch. 22 §2 and the §5.1 table: scaling and the work systems G54-G59 are refused while
   // a 3-D G68 is in force (943).
   if (t.rotation_3d && rules(ctx).rotation_3d_restricted) {
@@ -393,7 +394,7 @@ void applyTransformCodes(BlockContext& ctx) {
       return;
     // Mazak ch. 22 §5.2: a 3-D G68 (or the G69 of one) holds no other G code than the plane.
     const bool three_d = (a == GAction::Rotation && (ctx.words.i || ctx.words.j || ctx.words.k)) ||
-                         (a == GAction::RotationCancel && t.rotation_3d);
+                         (a == GAction::RotationCancel && ctx.next.transforms->rotation_3d);
     if (three_d && rules(ctx).rotation_3d_restricted && !alone(ctx, *w, true)) return;
     switch (a) {
       case GAction::Rotation:
@@ -402,37 +403,41 @@ void applyTransformCodes(BlockContext& ctx) {
         else
           rotation2d(ctx, *w);
         break;
-      case GAction::RotationCancel:
-        t.rotations.clear();
-        t.angle_2d = 0.0;
-        t.rotation_3d = false;
+      case GAction::RotationCancel: {
+        TransformState& edited = ctx.next.transforms.edit();
+        edited.rotations.clear();
+        edited.angle_2d = 0.0;
+        edited.rotation_3d = false;
         break;
+      }
       case GAction::Scaling: scale(ctx, *w); break;
-      case GAction::ScalingCancel:
-        t.scaling = false;
-        t.scaled = {};
+      case GAction::ScalingCancel: {
+        TransformState& edited = ctx.next.transforms.edit();
+        edited.scaling = false;
+        edited.scaled = {};
         break;
+      }
       case GAction::Mirror: mirror(ctx, *w); break;
       case GAction::MirrorCancel: mirrorCancel(ctx, *w); break;
       default: break;
     }
   }
   // Mazak 817: the move after G92.5 is a line; an arc would start off its circle.
-  if (!ctx.failed && t.work_rotation_just_set && !ctx.words.one_shot && ctx.words.anyAxis() &&
-      !taker) {
+  if (!ctx.failed && ctx.next.transforms->work_rotation_just_set && !ctx.words.one_shot &&
+      ctx.words.anyAxis() && !taker) {
     if (ctx.next.motion == GAction::ArcCW || ctx.next.motion == GAction::ArcCCW) {
       ctx.fail(Alarm::ArcAfterWorkRotation, ctx.motionLoc(),
                "the move after G92.5 must be G00 or G01, not an arc");
       return;
     }
-    t.work_rotation_just_set = false;
+    ctx.next.transforms.edit().work_rotation_just_set = false;
   }
 }
 
 void scalingCancelMove(BlockContext& ctx) {
   if (ctx.failed || !ctx.table.transforms || !rules(ctx).scale_cancel_moves) return;
   const auto& g = ctx.words.group(GGroup::Scaling);
-  if (!g || g->entry->action != GAction::ScalingCancel || !ctx.core.cs.transforms.scaling) return;
+  if (!g || g->entry->action != GAction::ScalingCancel || !ctx.core.cs().transforms->scaling) return;
   for (const ir::Operation& op : ctx.ops)
     if (std::holds_alternative<ir::Rapid>(op) || std::holds_alternative<ir::Linear>(op) ||
         std::holds_alternative<ir::Arc>(op))
@@ -448,14 +453,17 @@ void scalingCancelMove(BlockContext& ctx) {
 
 void cancelScalingAfterReference(BlockContext& ctx) {
   if (ctx.table.transforms && rules(ctx).reference_return_cancels_scaling) {
-    ctx.next.transforms.scaling = false;
-    ctx.next.transforms.scaled = {};
+    if (ctx.next.transforms->scaling) {
+      TransformState& t = ctx.next.transforms.edit();
+      t.scaling = false;
+      t.scaled = {};
+    }
   }
 }
 
 void workRotation(BlockContext& ctx, const GWord& g) {
   if (!onlyXyzWords(ctx, "G92.5")) return;
-  TransformState& t = ctx.next.transforms;
+  TransformState& t = ctx.next.transforms.edit();
   const auto sl = planeSlots(ctx.next.modal.plane);
   // The centre: machine coordinates, each kept when omitted; the one off the plane is kept for
   // a later G92.5 in another plane (§14-13 3. (9): `G19 G92.5 J2. K3.` turns about Y20 Z30).

@@ -48,7 +48,7 @@ WorkSlot workSlot(const SystemVariableRange& r, int64_t number, const DialectTab
 // The value of the G code in force in a group, as the manual numbers the group (#4001 + n-1).
 std::optional<double> modalCode(const LoweringCore& core, int group_number) {
   const DialectTable& table = *core.table;
-  const ControllerState& cs = core.cs;
+  const ControllerState& cs = core.cs();
   const GCodeEntry* any = nullptr;
   for (const GCodeEntry& e : table.gcodes)
     if (e.group_number == group_number && e.group != GGroup::OneShot) {
@@ -86,11 +86,11 @@ std::optional<double> modalCode(const LoweringCore& core, int group_number) {
                     : cs.modal.path == ir::PathControl::Tapping        ? GAction::TappingMode
                                                                        : GAction::ContinuousMode);
     case GGroup::Rotation:
-      return codeOf(cs.transforms.rotations.empty() ? GAction::RotationCancel : GAction::Rotation);
+      return codeOf(cs.transforms->rotations.empty() ? GAction::RotationCancel : GAction::Rotation);
     case GGroup::Scaling:
-      return codeOf(cs.transforms.scaling ? GAction::Scaling : GAction::ScalingCancel);
+      return codeOf(cs.transforms->scaling ? GAction::Scaling : GAction::ScalingCancel);
     case GGroup::Mirror:
-      return codeOf(cs.transforms.mirrorsAny() ? GAction::Mirror : GAction::MirrorCancel);
+      return codeOf(cs.transforms->mirrorsAny() ? GAction::Mirror : GAction::MirrorCancel);
     case GGroup::Polar: return codeOf(cs.polar ? GAction::PolarOn : GAction::PolarOff);
     case GGroup::CutterComp:  // the side in force (Mazak: D00 cancels it)
       return codeOf(cs.comp.side == ir::CutterComp::Side::Left    ? GAction::CompLeft
@@ -112,7 +112,7 @@ std::optional<double> modalCode(const LoweringCore& core, int group_number) {
 
 // #4101 + n-1: the modal word of argument letter n (B 2, D 7, F 9, H 11, S 19, T 20, P 30).
 std::optional<eval::Value> modalWord(const LoweringCore& core, int n) {
-  const ControllerState& cs = core.cs;
+  const ControllerState& cs = core.cs();
   switch (n) {
     case 7: return eval::Value::of(cs.d_selected);
     case 9:
@@ -175,7 +175,7 @@ std::optional<eval::Value> ControllerVariables::read(int64_t number, SourceLocat
                                                      eval::Failure& failure) {
   core_.resolveSkip();
   const DialectTable& table = *core_.table;
-  const ControllerState& cs = core_.cs;
+  const ControllerState& cs = core_.cs();
   const SystemVariableRange* r = findRange(table, number);
   auto unknown = [&](std::string message) -> std::optional<eval::Value> {
     failure = {eval::EvalError::VariableNumber, loc, std::move(message), 0};
@@ -287,7 +287,7 @@ std::optional<eval::Value> ControllerVariables::read(int64_t number, SourceLocat
 bool ControllerVariables::write(int64_t number, const eval::Value& value, SourceLocation loc,
                                 eval::Failure& failure) {
   const DialectTable& table = *core_.table;
-  ControllerState& cs = core_.cs;
+  ControllerState& cs = core_.cs();
   const SystemVariableRange* r = findRange(table, number);
   const double v = value.arithmetic() * unitScale(cs);
   auto readOnly = [&]() {
