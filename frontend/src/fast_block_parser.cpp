@@ -15,14 +15,14 @@ class PlainScanner {
  public:
   PlainScanner(std::string_view text, SourceLocation start) : text_(text), start_(start) {}
 
-  // Fills `b`, cleared first (its vectors keep their capacity); false to decline.
+  // Fills `b`, cleared first (its vectors keep their capacity, its words are reused in
+  // place); false to decline.
   bool run(ast::Block& b) {
     b.loc = start_;
     b.skip_level = -1;
     b.sequence.reset();
     b.program_number.reset();
     b.percent = false;
-    b.words.clear();
     b.statements.clear();
     b.comments.clear();
     skipBlanks();
@@ -42,6 +42,7 @@ class PlainScanner {
     // One allocation for the words of a usual block: a word takes two characters at least,
     // and a CAM block has fewer than eight.
     b.words.reserve(std::min<size_t>(8, (text_.size() - pos_ + 1) / 2));
+    size_t used = 0;  // the words of `b` filled so far
     for (skipBlanks(); pos_ < text_.size(); skipBlanks()) {
       const char c = text_[pos_];
       if (c == '(') {
@@ -57,8 +58,8 @@ class PlainScanner {
           if (!blockNumber(letter == 'N' ? b.sequence : b.program_number)) return false;
           continue;
         }
-        ast::Word& w = b.words.emplace_back();
-        w.address.push_back(letter);
+        ast::Word& w = word(b, used);
+        w.address.assign(1, letter);
         w.loc = where;
         if (!value(w.value)) return false;
       } else if (c == ',') {
@@ -68,7 +69,7 @@ class PlainScanner {
         const char letter = upperAscii(peek());
         if (!isCommaAddressLetter(letter)) return false;
         ++pos_;
-        ast::Word& w = b.words.emplace_back();
+        ast::Word& w = word(b, used);
         w.address = {',', letter};
         w.loc = where;
         if (!value(w.value)) return false;
@@ -79,10 +80,23 @@ class PlainScanner {
         return false;
       }
     }
+    b.words.resize(used);
     return true;
   }
 
  private:
+  // The next word of `b`: one left from the block filled before (its strings and vectors
+  // keep their storage; value() sets the rest), else a new one.
+  static ast::Word& word(ast::Block& b, size_t& used) {
+    if (used == b.words.size()) {
+      b.words.emplace_back();
+    } else {
+      b.words[used].value.op.clear();
+      b.words[used].value.args.clear();
+    }
+    return b.words[used++];
+  }
+
   char peek() const { return pos_ < text_.size() ? text_[pos_] : '\0'; }
   void skipBlanks() {
     while (pos_ < text_.size() && isBlank(text_[pos_])) ++pos_;

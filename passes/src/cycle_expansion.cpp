@@ -223,7 +223,7 @@ void CycleExpansionPass::accept(ir::Block&& block) {
   // The operations go on in blocks of at most kMaxOperations, each with the block's modal state
   // and frame: memory stays flat however many holes (K) and pecks a block has. The corner
   // request, if any, belongs to the block's end: the last part.
-  std::vector<ir::Operation> source = std::move(block.ops);
+  ir::Operations source = std::move(block.ops);
   block.ops.clear();
   ir::Block header = block;
   header.corner.reset();

@@ -124,10 +124,10 @@ void BlockContext::checkFormats() {
   };
   const char* length_unit = units == ir::Units::Inch ? "in" : "mm";
   double length = v.lengthIncrement(units);
-  int x = axisNamed("X");
+  const int x = one_shot == GAction::Dwell ? axisNamed("X") : -1;  // G04 X is a time
   const int angle = polarAngleAxis(*this);  // G16: the angle word has the rotary format
   for (int i = 0; i < axisCount(); ++i) {
-    if (one_shot == GAction::Dwell && i == x)
+    if (i == x)
       value(words.axes[i], v.time_increment, "s");
     else if (isRotary(i) || i == angle)
       value(words.axes[i], v.deg_increment * v.x10, "deg");
@@ -189,8 +189,10 @@ AxisValues BlockContext::toMachine(const AxisValues& work, const ir::Frame& f) c
   return m;
 }
 
-AxisValues BlockContext::baseWork() const {
-  AxisValues t = frameOf(next, behaviour).total(), w{};
+AxisValues BlockContext::baseWork() const { return baseWork(frameOf(next, behaviour)); }
+
+AxisValues BlockContext::baseWork(const ir::Frame& frame) const {
+  AxisValues t = frame.total(), w{};
   for (int i = 0; i < axisCount(); ++i) w[i] = next.position[i] - t[i];
   if (length_delta_axis >= 0 && length_delta_axis < axisCount()) {
     const auto& word = words.axes[length_delta_axis];

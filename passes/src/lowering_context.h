@@ -128,7 +128,7 @@ struct BlockContext {
   const LoweringSettings& settings;
   ControllerState& next;  // the controller state after the block (LoweringCore::beginBlock)
   DecodedBlock words;
-  std::vector<ir::Operation> ops;
+  ir::Operations ops;
   std::vector<TableWrite> table_writes;
   // A length-offset change not yet traversed on the length axis: axis and amount. It moves
   // the axis when the axis is programmed incrementally or, unless `length_delta_deferred`
@@ -187,6 +187,7 @@ struct BlockContext {
   // when the change moves now: the axis not programmed (G43 H alone) or programmed
   // incrementally (Mazak §12-2: move = ±z + (new length − old length)).
   AxisValues baseWork() const;
+  AxisValues baseWork(const ir::Frame& frame) const;  // frame: frameOf(next), already at hand
   // The block programs the length axis of a pending length change: it is taken up.
   void lengthChangeTraversed();
   // Work-space targets: programmed axes absolute or incremental per word, others unchanged.

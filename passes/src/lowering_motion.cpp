@@ -363,7 +363,7 @@ void cornerRequest(BlockContext& ctx, GAction kind, bool moves, const AxisValues
 
 void lowerMotion(BlockContext& ctx) {
   ir::Frame frame = frameOf(ctx.next, ctx.behaviour);
-  AxisValues start = ctx.baseWork();
+  AxisValues start = ctx.baseWork(frame);
   AxisValues target = ctx.workTargets(start);
   applyPositionOffset(ctx, start, target);  // G45-G48
   if (ctx.words.line_angle && ctx.next.motion == GAction::Linear && !lineAngle(ctx, start, target))

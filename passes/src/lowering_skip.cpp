@@ -35,7 +35,7 @@ bool wordsArePositions(const DecodedBlock& w) {
   }
 }
 
-bool moves(const std::vector<ir::Operation>& ops) {
+bool moves(const ir::Operations& ops) {
   for (const ir::Operation& op : ops)
     if (ir::isMove(op)) return true;
   return false;

@@ -20,12 +20,12 @@ ir::Transform transformOf(const BlockContext& ctx, const ControllerState& cs) {
 }
 
 ir::Transform transformOf(const LoweringCore& core, const ControllerState& cs) {
+  ir::Transform out;  // one object for every return: `return {}` zeroed it first
   const TransformRules* rules = core.table->transforms;
   const TransformState& t = *cs.transforms;
   // Nothing in force (nearly every block of a program): nothing to compose.
-  if (!rules || !t.inForce()) return {};
+  if (!rules || !t.inForce()) return out;
   const std::array<int8_t, 3>& xyz = core.xyz;
-  ir::Transform out;
   if (t.work_rotation) out.machine = *t.work_rotation;
   if (!t.figure && !t.mirrorsAny() && !t.scaling && t.rotations.empty()) return out;
   ir::Affine map = identityAffine(xyz);
@@ -66,6 +66,7 @@ ir::Transform transformOf(const LoweringCore& core, const ControllerState& cs) {
 // The machine point the tool goes to for the programmed point `position` (machine coordinates
 // of the programmed point, ControllerState::position) under the state's transforms.
 AxisValues imageOf(const LoweringCore& core, const ControllerState& cs, const AxisValues& position) {
+  if (!cs.transforms->inForce()) return position;
   const ir::Transform t = transformOf(core, cs);
   if (!t.any()) return position;
   AxisValues image = position;
@@ -121,7 +122,7 @@ void trackTool(BlockContext& ctx) {
   bool moved = false;
   for (const ir::Operation& op : ctx.ops)
     moved = moved || ir::isMove(op) || std::holds_alternative<ir::HoleCycle>(op);
-  if (!moved) return;
+  if (!moved || (!ctx.next.transforms->inForce() && !ctx.next.transforms->tool_at)) return;
   const AxisValues at = imageOf(ctx.core, ctx.next, ctx.next.position);
   // Written only when it changes: the transform state is shared until written.
   if (!ctx.samePosition(at, ctx.next.position))

@@ -18,7 +18,7 @@ using MF = ir::MachineFunction;
 
 std::vector<uint8_t> bytesOf(const std::string& s) { return {s.begin(), s.end()}; }
 
-ir::Block block(uint32_t file, uint32_t line, std::vector<ir::Operation> ops,
+ir::Block block(uint32_t file, uint32_t line, ir::Operations ops,
                 bool exact_stop = false) {
   ir::Block b;
   b.loc = SourceLocation{file, line, 1};

@@ -16,7 +16,7 @@
 namespace ncc {
 namespace {
 
-ir::Block block(uint32_t file, uint32_t line, std::vector<ir::Operation> ops) {
+ir::Block block(uint32_t file, uint32_t line, ir::Operations ops) {
   ir::Block b;
   b.loc = SourceLocation{file, line, 1};
   b.ops = std::move(ops);

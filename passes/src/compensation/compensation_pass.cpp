@@ -830,7 +830,7 @@ void CompensationPass::release(uint64_t before) {
     Pending p = std::move(window_.front());
     window_.pop_front();
     ++first_;
-    std::vector<ir::Operation> ops;
+    ir::Operations ops;
     for (size_t i = 0; i < p.block.ops.size(); ++i) {
       for (ir::Operation& o : p.before[i]) ops.push_back(std::move(o));
       ops.push_back(std::move(p.block.ops[i]));

@@ -16,6 +16,7 @@
 #include <variant>
 #include <vector>
 
+#include "absl/container/inlined_vector.h"
 #include "ncc/machine/axes.h"
 #include "ncc/support/source_location.h"
 
@@ -288,6 +289,10 @@ struct CutterComp {
   friend bool operator==(const CutterComp&, const CutterComp&) = default;
 };
 
+// A block's operations: nearly every block has one, held in place (a vector would take a heap
+// allocation per block on the compiler's hottest path).
+using Operations = absl::InlinedVector<Operation, 1>;
+
 struct Block {
   SourceLocation loc;
   int64_t sequence = -1;  // N number, -1 if none
@@ -295,7 +300,7 @@ struct Block {
   Frame frame;
   Transform transform;       // lowering -> transform pass only
   bool exact_stop = false;   // G09 in this block, or G61 in force
-  std::vector<Operation> ops;
+  Operations ops;
   std::optional<CornerRequest> corner;  // lowering -> corners pass only
   std::optional<CutterComp> comp;       // lowering -> compensation pass only
 };
