@@ -1,8 +1,9 @@
 #include "ncc/passes/coordinate_transform.h"
 
 #include <algorithm>
-#include <type_traits>
 #include <variant>
+
+#include "ncc/ir/visit.h"
 
 namespace ncc::passes {
 
@@ -12,25 +13,31 @@ void WorkToMachinePass::accept(ir::Block&& block) {
   auto shift = [&](AxisValues& v) {
     for (int i = 0; i < n; ++i) v[i] += total[i];
   };
+  auto toMachine = [&](AxisValues& to, ir::Space& space) {
+    if (space == ir::Space::Work) shift(to);
+    space = ir::Space::Machine;
+  };
   for (ir::Operation& op : block.ops) {
-    std::visit(
-        [&](auto& o) {
-          using T = std::decay_t<decltype(o)>;
-          if constexpr (std::is_same_v<T, ir::Rapid> || std::is_same_v<T, ir::Linear> ||
-                        std::is_same_v<T, ir::Skip>) {
-            if (o.space == ir::Space::Work) shift(o.to);
-            o.space = ir::Space::Machine;
-          } else if constexpr (std::is_same_v<T, ir::Arc>) {
-            if (o.space == ir::Space::Work) {
-              shift(o.to);
-              shift(o.center);
-            }
-            o.space = ir::Space::Machine;
-          }
-          // ir::HoleCycle: the cycles pass (registered before this one) replaced it; one left
-          // here stays in work space and the verifier / backend report it.
-        },
-        op);
+    std::visit(ir::Overloaded{
+                   [&](ir::Rapid& o) { toMachine(o.to, o.space); },
+                   [&](ir::Linear& o) { toMachine(o.to, o.space); },
+                   [&](ir::Skip& o) { toMachine(o.to, o.space); },
+                   [&](ir::Arc& o) {
+                     if (o.space == ir::Space::Work) shift(o.center);
+                     toMachine(o.to, o.space);
+                   },
+                   // The cycles pass (registered before this one) replaced it; one left here
+                   // stays in work space and the verifier / backend report it.
+                   [](ir::HoleCycle&) {},
+                   // Machine coordinates already.
+                   [](ir::ReferenceCheck&) {},
+                   // No point.
+                   [](ir::Dwell&) {},
+                   [](ir::MachineFunction&) {},
+                   [](ir::SetVariable&) {},
+                   [](ir::Prepare&) {},
+               },
+               op);
   }
   next_.accept(std::move(block));
 }

@@ -4,11 +4,11 @@
 #include <cmath>
 #include <numbers>
 #include <utility>
-#include <type_traits>
 #include <variant>
 
 #include "absl/strings/str_cat.h"
 #include "arc_geometry.h"
+#include "ncc/ir/visit.h"
 
 namespace ncc::passes {
 
@@ -340,14 +340,25 @@ bool CornersPass::insertCorner(ir::Block& held, ir::Block& next, AxisValues& nex
   double feed = 0.0;
   bool per_rev = false;
   ir::Plane plane = held.modal.plane;
-  std::visit([&](auto& op) {
-    using T = std::decay_t<decltype(op)>;
-    if constexpr (std::is_same_v<T, ir::Linear> || std::is_same_v<T, ir::Arc>) {
-      op.to = end;
-      feed = op.feed;
-      per_rev = op.feed_per_rev;
-    }
-  }, *hop);
+  auto cut = [&](auto& op) {
+    op.to = end;
+    feed = op.feed;
+    per_rev = op.feed_per_rev;
+  };
+  std::visit(ir::Overloaded{
+                 [&](ir::Linear& op) { cut(op); },
+                 [&](ir::Arc& op) { cut(op); },
+                 // Lowering requests a corner on G01-G03 moves only: nothing to shorten here.
+                 [](ir::Rapid&) {},
+                 [](ir::Skip&) {},
+                 [](ir::HoleCycle&) {},
+                 [](ir::ReferenceCheck&) {},
+                 [](ir::Dwell&) {},
+                 [](ir::MachineFunction&) {},
+                 [](ir::SetVariable&) {},
+                 [](ir::Prepare&) {},
+             },
+             *hop);
   AxisValues to = corner_at;
   pl.set(to, p2);
   size_t at = static_cast<size_t>(hop - held.ops.data()) + 1;

@@ -2,12 +2,12 @@
 
 #include <algorithm>
 #include <cmath>
-#include <type_traits>
 #include <variant>
 
 #include "absl/strings/str_cat.h"
 #include "affine.h"
 #include "ncc/ir/printer.h"
+#include "ncc/ir/visit.h"
 
 namespace ncc::passes {
 
@@ -27,20 +27,29 @@ void TransformPass::accept(ir::Block&& block) {
   block.transform = {};
   for (ir::Operation& op : block.ops) {
     bool ok = true;
-    std::visit(
-        [&](auto& o) {
-          using T = std::decay_t<decltype(o)>;
-          if constexpr (std::is_same_v<T, ir::Rapid> || std::is_same_v<T, ir::Linear> ||
-                        std::is_same_v<T, ir::Skip>) {
-            if (any && o.space == ir::Space::Work) applyPoint(map, o.to);
-            track(o.to, o.space);
-          } else if constexpr (std::is_same_v<T, ir::Arc>) {
-            if (any && o.space == ir::Space::Work) ok = mapArc(block, map, o);
-            track(o.to, o.space);
-          }
-          // Non-motion operations stay; a hole cycle was expanded by the cycles pass before.
-        },
-        op);
+    auto point = [&](AxisValues& to, ir::Space space) {
+      if (any && space == ir::Space::Work) applyPoint(map, to);
+      track(to, space);
+    };
+    std::visit(ir::Overloaded{
+                   [&](ir::Rapid& o) { point(o.to, o.space); },
+                   [&](ir::Linear& o) { point(o.to, o.space); },
+                   [&](ir::Skip& o) { point(o.to, o.space); },
+                   [&](ir::Arc& o) {
+                     if (any && o.space == ir::Space::Work) ok = mapArc(block, map, o);
+                     track(o.to, o.space);
+                   },
+                   // Expanded into moves by the cycles pass, which runs first.
+                   [](ir::HoleCycle&) {},
+                   // A machine position, checked as reached: no transform applies.
+                   [](ir::ReferenceCheck&) {},
+                   // No point to map.
+                   [](ir::Dwell&) {},
+                   [](ir::MachineFunction&) {},
+                   [](ir::SetVariable&) {},
+                   [](ir::Prepare&) {},
+               },
+               op);
     if (!ok) return;  // the block is refused: nothing of it goes on
   }
   next_.accept(std::move(block));

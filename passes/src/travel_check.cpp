@@ -5,18 +5,11 @@
 #include <utility>
 #include <variant>
 
+#include "ncc/ir/visit.h"
+
 namespace ncc::passes {
 
 namespace {
-
-// A visitor made of one lambda per alternative.
-template <class... Cases>
-struct Overloaded : Cases... {
-  using Cases::operator()...;
-};
-// Clang before 17 does not deduce aggregate template arguments (the fuzz build uses clang).
-template <class... Cases>
-Overloaded(Cases...) -> Overloaded<Cases...>;
 
 // The machine's indices of an arc plane's two axes (G17: X Y, G18: Z X, G19: Y Z), as the
 // backend finds them; -1 where the machine lacks one (the backend reports that).
@@ -39,7 +32,7 @@ void TravelCheckPass::accept(ir::Block&& block) {
     // operation kind added to the IR without its case here does not compile.
     std::optional<TravelViolation> beyond;
     const AxisValues* to = nullptr;
-    std::visit(Overloaded{
+    std::visit(ir::Overloaded{
                    [&](const ir::Rapid& r) {
                      to = &r.to;
                      beyond = travelViolation(machine_.axes, *to);

@@ -32,43 +32,59 @@ bool sameAxes(const AxisValues& a, const AxisValues& b, int count) {
   return true;
 }
 
-MachineEvent::Kind eventKind(Opcode op) {
+// The event of a machine-function opcode: its kind and the M number it stands for (the
+// operand's T or M for TOOL_SELECT and M_CODE; 0 for S). One case per opcode and no default,
+// so an opcode added to the format without its answer here draws -Wswitch.
+struct FunctionEvent {
+  MachineEvent::Kind kind;
+  int64_t code;
+};
+FunctionEvent functionEvent(const Instruction& in) {
   using K = MachineEvent::Kind;
-  switch (op) {
-    case Opcode::SpindleSpeed: return K::SpindleSpeed;
-    case Opcode::SpindleCW: return K::SpindleCW;
-    case Opcode::SpindleCCW: return K::SpindleCCW;
-    case Opcode::SpindleStop: return K::SpindleStop;
-    case Opcode::SpindleOrient: return K::SpindleOrient;
-    case Opcode::ToolSelect: return K::ToolSelect;
-    case Opcode::ToolChange: return K::ToolChange;
-    case Opcode::CoolantOn: return K::CoolantOn;
-    case Opcode::CoolantOff: return K::CoolantOff;
-    case Opcode::ProgramStop: return K::ProgramStop;
-    case Opcode::OptionalStop: return K::OptionalStop;
-    case Opcode::ProgramEnd: return K::ProgramEnd;
-    case Opcode::ProgramEndRewind: return K::ProgramEndRewind;
-    default: return K::MCode;
-  }
-}
-
-// The M number a fixed-function opcode stands for (events carry it for printing).
-int64_t eventCode(const Instruction& in) {
   switch (in.op) {
-    case Opcode::ProgramStop: return 0;
-    case Opcode::OptionalStop: return 1;
-    case Opcode::ProgramEnd: return 2;
-    case Opcode::SpindleCW: return 3;
-    case Opcode::SpindleCCW: return 4;
-    case Opcode::SpindleStop: return 5;
-    case Opcode::ToolChange: return 6;
-    case Opcode::CoolantOn: return 8;
-    case Opcode::CoolantOff: return 9;
-    case Opcode::SpindleOrient: return 19;
-    case Opcode::ProgramEndRewind: return 30;
-    case Opcode::SpindleSpeed: return 0;
-    default: return in.code;  // TOOL_SELECT, M_CODE
+    case Opcode::SpindleSpeed: return {K::SpindleSpeed, 0};
+    case Opcode::SpindleCW: return {K::SpindleCW, 3};
+    case Opcode::SpindleCCW: return {K::SpindleCCW, 4};
+    case Opcode::SpindleStop: return {K::SpindleStop, 5};
+    case Opcode::SpindleOrient: return {K::SpindleOrient, 19};
+    case Opcode::ToolSelect: return {K::ToolSelect, in.code};
+    case Opcode::ToolChange: return {K::ToolChange, 6};
+    case Opcode::CoolantOn: return {K::CoolantOn, 8};
+    case Opcode::CoolantOff: return {K::CoolantOff, 9};
+    case Opcode::ProgramStop: return {K::ProgramStop, 0};
+    case Opcode::OptionalStop: return {K::OptionalStop, 1};
+    case Opcode::ProgramEnd: return {K::ProgramEnd, 2};
+    case Opcode::ProgramEndRewind: return {K::ProgramEndRewind, 30};
+    case Opcode::MCode: return {K::MCode, in.code};
+    // Not machine functions: the dispatch below never asks for their event.
+    case Opcode::End:
+    case Opcode::Rapid:
+    case Opcode::Line:
+    case Opcode::Arc:
+    case Opcode::Dwell:
+    case Opcode::Skip:
+    case Opcode::RefCheck:
+    case Opcode::Push:
+    case Opcode::PushVacant:
+    case Opcode::Load:
+    case Opcode::Store:
+    case Opcode::Pop:
+    case Opcode::Add:
+    case Opcode::Sub:
+    case Opcode::Mul:
+    case Opcode::Div:
+    case Opcode::Neg:
+    case Opcode::CmpEq:
+    case Opcode::CmpNe:
+    case Opcode::CmpLt:
+    case Opcode::CmpLe:
+    case Opcode::CmpGt:
+    case Opcode::CmpGe:
+    case Opcode::Jump:
+    case Opcode::JumpIfFalse:
+    case Opcode::Prepare: break;
   }
+  return {K::MCode, in.code};
 }
 
 // FANUC Macro B: a vacant operand counts as 0 in arithmetic and ordering; EQ/NE tell a vacant
@@ -313,8 +329,9 @@ bool Executor::next(Event& out) {
       case Opcode::ProgramEndRewind:
       case Opcode::MCode: {
         MachineEvent& e = out.machine;
-        e.kind = eventKind(in.op);
-        e.code = eventCode(in);
+        const FunctionEvent f = functionEvent(in);
+        e.kind = f.kind;
+        e.code = f.code;
         e.value = in.op == Opcode::SpindleSpeed ? in.value : 0.0;
         e.where = where(at);
         out.kind = Event::Kind::Machine;
@@ -390,7 +407,8 @@ bool Executor::next(Event& out) {
           case Opcode::CmpLt: r = a < b ? 1.0 : 0.0; break;
           case Opcode::CmpLe: r = a <= b ? 1.0 : 0.0; break;
           case Opcode::CmpGt: r = a > b ? 1.0 : 0.0; break;
-          default: r = a >= b ? 1.0 : 0.0; break;
+          case Opcode::CmpGe: r = a >= b ? 1.0 : 0.0; break;
+          default: break;  // only the opcodes of the case above reach this switch
         }
         if (!std::isfinite(r)) return raise("NCC7203", "arithmetic overflow", at);
         if (!push(Value{r, false}, at)) return false;

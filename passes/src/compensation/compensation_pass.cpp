@@ -2,13 +2,13 @@
 
 #include <cmath>
 #include <numbers>
-#include <type_traits>
 #include <utility>
 #include <variant>
 
 #include "absl/strings/str_cat.h"
 #include "absl/strings/str_format.h"
 #include "ncc/ir/printer.h"
+#include "ncc/ir/visit.h"
 
 namespace ncc::passes {
 
@@ -26,16 +26,25 @@ using Startup = ir::CutterComp::Startup;
 // The target of a move (G00, G01, G02/G03, G31), its space; null for other operations.
 AxisValues* target(ir::Operation& op, ir::Space& space) {
   AxisValues* to = nullptr;
-  std::visit(
-      [&](auto& o) {
-        using T = std::decay_t<decltype(o)>;
-        if constexpr (std::is_same_v<T, ir::Rapid> || std::is_same_v<T, ir::Linear> ||
-                      std::is_same_v<T, ir::Arc> || std::is_same_v<T, ir::Skip>) {
-          to = &o.to;
-          space = o.space;
-        }
-      },
-      op);
+  auto move = [&](AxisValues& t, ir::Space s) {
+    to = &t;
+    space = s;
+  };
+  std::visit(ir::Overloaded{
+                 [&](ir::Rapid& o) { move(o.to, o.space); },
+                 [&](ir::Linear& o) { move(o.to, o.space); },
+                 [&](ir::Arc& o) { move(o.to, o.space); },
+                 [&](ir::Skip& o) { move(o.to, o.space); },
+                 // Expanded into moves by the cycles pass, which runs first.
+                 [](ir::HoleCycle&) {},
+                 // Not moves: the tool stays where it is.
+                 [](ir::ReferenceCheck&) {},
+                 [](ir::Dwell&) {},
+                 [](ir::MachineFunction&) {},
+                 [](ir::SetVariable&) {},
+                 [](ir::Prepare&) {},
+             },
+             op);
   return to;
 }
 
@@ -641,13 +650,21 @@ void CompensationPass::finishMove(const Open& a, Vec2 end) {
       length > kLengthTolerance) {
     const double arc_programmed =
         a.e.arc ? std::fabs(a.e.sweep()) * a.e.radius() : programmed;
-    std::visit(
-        [&](auto& o) {
-          using T = std::decay_t<decltype(o)>;
-          if constexpr (std::is_same_v<T, ir::Linear> || std::is_same_v<T, ir::Arc>)
-            o.feed *= length / arc_programmed;
-        },
-        op);
+    const double scale = length / arc_programmed;
+    std::visit(ir::Overloaded{
+                   [&](ir::Linear& o) { o.feed *= scale; },
+                   [&](ir::Arc& o) { o.feed *= scale; },
+                   // G93 applies to the cutting moves only (`op` is the compensated move).
+                   [](ir::Rapid&) {},
+                   [](ir::Skip&) {},
+                   [](ir::HoleCycle&) {},
+                   [](ir::ReferenceCheck&) {},
+                   [](ir::Dwell&) {},
+                   [](ir::MachineFunction&) {},
+                   [](ir::SetVariable&) {},
+                   [](ir::Prepare&) {},
+               },
+               op);
   }
 }
 
