@@ -26,16 +26,11 @@ void WorkToMachinePass::accept(ir::Block&& block) {
                      if (o.space == ir::Space::Work) shift(o.center);
                      toMachine(o.to, o.space);
                    },
-                   // The cycles pass (registered before this one) replaced it; one left here
-                   // stays in work space and the verifier / backend report it.
-                   [](ir::HoleCycle&) {},
-                   // Machine coordinates already.
-                   [](ir::ReferenceCheck&) {},
-                   // No point.
-                   [](ir::Dwell&) {},
-                   [](ir::MachineFunction&) {},
-                   [](ir::SetVariable&) {},
-                   [](ir::Prepare&) {},
+                   // The cycles pass (registered before this one) replaced a hole cycle; one
+                   // left here stays in work space and the verifier / backend report it. A
+                   // reference check is in machine coordinates already.
+                   ir::Leave<ir::HoleCycle, ir::ReferenceCheck>{},
+                   ir::NoPoint{},
                },
                op);
   }

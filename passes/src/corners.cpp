@@ -349,14 +349,8 @@ bool CornersPass::insertCorner(ir::Block& held, ir::Block& next, AxisValues& nex
                  [&](ir::Linear& op) { cut(op); },
                  [&](ir::Arc& op) { cut(op); },
                  // Lowering requests a corner on G01-G03 moves only: nothing to shorten here.
-                 [](ir::Rapid&) {},
-                 [](ir::Skip&) {},
-                 [](ir::HoleCycle&) {},
-                 [](ir::ReferenceCheck&) {},
-                 [](ir::Dwell&) {},
-                 [](ir::MachineFunction&) {},
-                 [](ir::SetVariable&) {},
-                 [](ir::Prepare&) {},
+                 ir::Leave<ir::Rapid, ir::Skip, ir::HoleCycle, ir::ReferenceCheck>{},
+                 ir::NoPoint{},
              },
              *hop);
   AxisValues to = corner_at;

@@ -39,15 +39,10 @@ void TransformPass::accept(ir::Block&& block) {
                      if (any && o.space == ir::Space::Work) ok = mapArc(block, map, o);
                      track(o.to, o.space);
                    },
-                   // Expanded into moves by the cycles pass, which runs first.
-                   [](ir::HoleCycle&) {},
-                   // A machine position, checked as reached: no transform applies.
-                   [](ir::ReferenceCheck&) {},
-                   // No point to map.
-                   [](ir::Dwell&) {},
-                   [](ir::MachineFunction&) {},
-                   [](ir::SetVariable&) {},
-                   [](ir::Prepare&) {},
+                   // Expanded into moves by the cycles pass, which runs first; a machine
+                   // position, checked as reached: no transform applies.
+                   ir::Leave<ir::HoleCycle, ir::ReferenceCheck>{},
+                   ir::NoPoint{},
                },
                op);
     if (!ok) return;  // the block is refused: nothing of it goes on

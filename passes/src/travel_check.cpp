@@ -59,13 +59,11 @@ void TravelCheckPass::accept(ir::Block&& block) {
                      to = &s.to;
                      beyond = travelViolation(machine_.axes, *to);
                    },
-                   [](const ir::Dwell&) {},
-                   [](const ir::MachineFunction&) {},
-                   [](const ir::ReferenceCheck&) {},  // checks the position, does not move
-                   [](const ir::SetVariable&) {},
-                   [](const ir::Prepare&) {},  // the blocks after it are checked as they run
-                   // Expanded by the cycles pass before work-to-machine: never seen here.
-                   [](const ir::HoleCycle&) {},
+                   // A reference check checks the position and does not move; a hole cycle
+                   // was expanded by the cycles pass before work-to-machine: never seen here.
+                   // After a PREPARE the blocks are checked as they run.
+                   ir::Leave<ir::ReferenceCheck, ir::HoleCycle>{},
+                   ir::NoPoint{},
                },
                op);
     if (beyond && !reported) {

@@ -35,14 +35,10 @@ AxisValues* target(ir::Operation& op, ir::Space& space) {
                  [&](ir::Linear& o) { move(o.to, o.space); },
                  [&](ir::Arc& o) { move(o.to, o.space); },
                  [&](ir::Skip& o) { move(o.to, o.space); },
-                 // Expanded into moves by the cycles pass, which runs first.
-                 [](ir::HoleCycle&) {},
-                 // Not moves: the tool stays where it is.
-                 [](ir::ReferenceCheck&) {},
-                 [](ir::Dwell&) {},
-                 [](ir::MachineFunction&) {},
-                 [](ir::SetVariable&) {},
-                 [](ir::Prepare&) {},
+                 // Expanded into moves by the cycles pass, which runs first; a reference
+                 // check is no move: the tool stays where it is.
+                 ir::Leave<ir::HoleCycle, ir::ReferenceCheck>{},
+                 ir::NoPoint{},
              },
              op);
   return to;
@@ -655,14 +651,8 @@ void CompensationPass::finishMove(const Open& a, Vec2 end) {
                    [&](ir::Linear& o) { o.feed *= scale; },
                    [&](ir::Arc& o) { o.feed *= scale; },
                    // G93 applies to the cutting moves only (`op` is the compensated move).
-                   [](ir::Rapid&) {},
-                   [](ir::Skip&) {},
-                   [](ir::HoleCycle&) {},
-                   [](ir::ReferenceCheck&) {},
-                   [](ir::Dwell&) {},
-                   [](ir::MachineFunction&) {},
-                   [](ir::SetVariable&) {},
-                   [](ir::Prepare&) {},
+                   ir::Leave<ir::Rapid, ir::Skip, ir::HoleCycle, ir::ReferenceCheck>{},
+                   ir::NoPoint{},
                },
                op);
   }
