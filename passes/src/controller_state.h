@@ -116,7 +116,7 @@ struct CompState {
 template <class T>
 class CopyOnWrite {
  public:
-  const T& operator*() const { return p_ ? *p_ : kDefault; }
+  const T& operator*() const { return p_ ? *p_ : defaultValue(); }
   const T* operator->() const { return &**this; }
   T& edit() {
     if (!p_)
@@ -127,7 +127,12 @@ class CopyOnWrite {
   }
 
  private:
-  static inline const T kDefault{};
+  // A function's static, not a static member: initialised on first use, whatever the order of
+  // the program's static initialisers.
+  static const T& defaultValue() {
+    static const T value{};
+    return value;
+  }
   std::shared_ptr<T> p_;
 };
 
