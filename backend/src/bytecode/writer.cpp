@@ -61,21 +61,22 @@ uint32_t StreamWriter::emit(const Instruction& instruction) {
   // Encoded straight into the buffer.
   if (code_buffered_ + maxInstructionSize() > code_buffer_.size()) flushCode();
   const uint32_t size = encode(instruction, axisCount(), code_buffer_.data() + code_buffered_);
-  if (uint64_t{header_size_} + code_size_ + size > std::numeric_limits<uint32_t>::max() / 2) {
-    fail("NCC7010", "program too large for the bytecode format (code over 2 GiB)");
-    return at;
-  }
+  if (!codeFits(size)) return at;
   code_buffered_ += size;
   code_size_ += size;
   return at;
 }
 
-void StreamWriter::emitRaw(const uint8_t* data, size_t size) {
+bool StreamWriter::codeFits(size_t size) {
   // Every offset in the file is a u32: the whole file must stay below 4 GiB.
-  if (uint64_t{header_size_} + code_size_ + size > std::numeric_limits<uint32_t>::max() / 2) {
-    fail("NCC7010", "program too large for the bytecode format (code over 2 GiB)");
-    return;
-  }
+  if (uint64_t{header_size_} + code_size_ + size <= std::numeric_limits<uint32_t>::max() / 2)
+    return true;
+  fail("NCC7010", "program too large for the bytecode format (code over 2 GiB)");
+  return false;
+}
+
+void StreamWriter::emitRaw(const uint8_t* data, size_t size) {
+  if (!codeFits(size)) return;
   code_size_ += static_cast<uint32_t>(size);
   if (code_buffered_ + size > code_buffer_.size()) {
     flushCode();

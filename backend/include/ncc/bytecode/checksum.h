@@ -16,9 +16,9 @@ namespace ncc::bytecode {
 class Fnv1a64 {
  public:
   void update(std::span<const uint8_t> bytes) {
-    // A local state: through the byte pointer (which may alias anything) the member would be
-    // stored and reloaded at every byte.
-    // Eight bytes a turn: the loop's own count and branch no longer cost as much as the hash.
+    // A local state (through the byte pointer, which may alias anything, the member would be
+    // stored and reloaded at every byte), eight bytes a turn (the loop's own count and branch
+    // no longer cost as much as the hash).
     uint64_t s = state_;
     const uint8_t* p = bytes.data();
     const size_t n = bytes.size();

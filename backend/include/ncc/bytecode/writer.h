@@ -56,6 +56,7 @@ class StreamWriter {
   void writeBytes(const uint8_t* data, size_t size);
   void writeHashed(const uint8_t* data, size_t size);  // bytes after the fixed header
   void flushCode();  // the buffered code bytes to the stream
+  bool codeFits(size_t size);  // false (NCC7010 reported) if `size` more code bytes do not fit
   void spoolLine(const LineEntry& entry, bool replace_last);
 
   std::ostream& out_;
