@@ -109,7 +109,7 @@ void writeLoc(Writer& w, const SourceLocation& loc, const LineBase& base) {
 }
 
 // An address: one byte for a letter 'A'..'Z' (nearly every word), else 0 and the string.
-void writeAddress(Writer& w, const std::string& address) {
+void writeAddress(Writer& w, const ast::Address& address) {
   if (address.size() == 1 && address[0] >= 'A' && address[0] <= 'Z') {
     w.u8(static_cast<uint8_t>(address[0]));
     return;
@@ -129,7 +129,7 @@ void writeExpr(Writer& w, const ast::Expr& e, const LineBase& base) {
                                                                   : kExprDecimal;
   header |= form;
   if (e.has_point) header |= kExprPoint;
-  if (!e.op.empty()) header |= kExprOp;
+  if (e.op != ast::Op::None) header |= kExprOp;
   if (!e.args.empty()) header |= kExprArgs;
   w.u8(header);
   if (form == kExprBits) w.fixed64(bits);
@@ -137,7 +137,8 @@ void writeExpr(Writer& w, const ast::Expr& e, const LineBase& base) {
   if (form == kExprDecimal) w.u8(static_cast<uint8_t>(decimals));
   w.u8(e.digits);
   writeLoc(w, e.loc, base);
-  if (!e.op.empty()) w.str(e.op);
+  // The operator's text (format v2 wrote the string the AST held then).
+  if (e.op != ast::Op::None) w.str(ast::opText(e.op));
   if (!e.args.empty()) {
     w.varint(e.args.size());
     for (const ast::Expr& a : e.args) writeExpr(w, a, base.at(e.loc));
@@ -298,12 +299,18 @@ bool readLoc(Reader& r, SourceLocation& loc, const LineBase& base) {
   return r.u32(loc.file, "file id") && r.u32(loc.line, "line");
 }
 
-bool readAddress(Reader& r, std::string& address) {
+bool readAddress(Reader& r, ast::Address& address) {
   uint8_t letter = 0;
   if (!r.u8(letter)) return false;
-  if (letter == 0) return r.str(address);
+  if (letter == 0) {
+    std::string text;
+    if (!r.str(text)) return false;
+    if (text.size() > ast::Address::kCapacity) return r.fail("bad address");
+    address = ast::Address(text);
+    return true;
+  }
   if (letter < 'A' || letter > 'Z') return r.fail("bad address");
-  address.assign(1, static_cast<char>(letter));
+  address = ast::Address(static_cast<char>(letter));
   return true;
 }
 
@@ -329,7 +336,14 @@ bool readExpr(Reader& r, ast::Expr& e, const LineBase& base, int depth) {
     e.number = static_cast<double>(m) / kPowersOf10[k];
   }
   if (!r.u8(e.digits) || !readLoc(r, e.loc, base)) return false;
-  if ((header & kExprOp) && !r.str(e.op)) return false;
+  e.op = ast::Op::None;
+  if (header & kExprOp) {
+    std::string text;
+    if (!r.str(text)) return false;
+    std::optional<ast::Op> op = ast::opNamed(text);
+    if (!op) return r.fail("unknown operator");
+    e.op = *op;
+  }
   if (header & kExprArgs) {
     uint64_t n = 0;
     if (!r.count(n, 3)) return false;  // an expression takes 3 bytes at least

@@ -71,7 +71,7 @@ std::string codeName(const ast::Word& w) {
   if (w.address.size() != 1 || !isLiteral(w.value)) return {};
   const double v = literalValue(w.value);
   if (v < 0 || v != std::floor(v) || v > 99999999) return {};
-  return absl::StrCat(w.address, static_cast<int64_t>(v));
+  return absl::StrCat(w.address.c_str(), static_cast<int64_t>(v));
 }
 
 }  // namespace
@@ -158,7 +158,7 @@ std::optional<Variables::Locals> Evaluator::Impl::arguments(const std::vector<as
     }
     if (number == 0 || number > rules.local_count) {
       fail(EvalError::AddressValue, w.loc,
-           absl::StrCat("address ", w.address, " is not an argument of a macro call"));
+           absl::StrCat("address ", w.address.c_str(), " is not an argument of a macro call"));
       return std::nullopt;
     }
     const double v = options.argument_value ? options.argument_value(w) : literalValue(w.value);
@@ -289,7 +289,7 @@ bool Evaluator::Impl::callWords(ast::Block& block, const ProgramPoint& at, bool&
         if (!w) continue;
         if (!rules.figure_rotation || !options.figure_rotation.begin) {
           fail(EvalError::AddressValue, w->loc,
-               absl::StrCat("address ", w->address, " has no meaning in M98"));
+               absl::StrCat("address ", w->address.c_str(), " has no meaning in M98"));
           return false;
         }
         ijk[static_cast<size_t>(a - 'I')] =

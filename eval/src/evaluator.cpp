@@ -27,12 +27,13 @@ std::string messageOf(const ast::Block& block) {
 bool isLiteral(const ast::Expr& e) {
   if (e.kind == ast::Expr::Kind::Number) return true;
   return e.kind == ast::Expr::Kind::Unary && e.args.size() == 1 &&
-         e.args[0].kind == ast::Expr::Kind::Number && (e.op == "-" || e.op == "+");
+         e.args[0].kind == ast::Expr::Kind::Number &&
+         (e.op == ast::Op::Minus || e.op == ast::Op::Plus);
 }
 
 double literalValue(const ast::Expr& e) {
   if (e.kind == ast::Expr::Kind::Number) return e.number;
-  return e.op == "-" ? -e.args[0].number : e.args[0].number;
+  return e.op == ast::Op::Minus ? -e.args[0].number : e.args[0].number;
 }
 
 bool before(const ProgramPoint& a, const ProgramPoint& b) {
@@ -365,7 +366,7 @@ const ast::Block* Evaluator::Impl::evaluateBlock(const ast::Block& block, const 
     if (a->value < 0) {
       ast::Expr neg;
       neg.kind = ast::Expr::Kind::Unary;
-      neg.op = "-";
+      neg.op = ast::Op::Minus;
       neg.loc = computed.value.loc;
       neg.args.push_back(std::move(computed.value));
       computed.value = std::move(neg);

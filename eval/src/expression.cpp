@@ -116,7 +116,7 @@ class Evaluator {
   std::optional<Value> unary(const ast::Expr& e) {
     auto v = eval(e.args[0]);
     if (!v || v->vacant) return v;
-    return Value::of(std::string_view(e.op) == "-" ? -v->number : v->number);
+    return Value::of(e.op == ast::Op::Minus ? -v->number : v->number);
   }
 
   std::optional<Value> result(double v, const ast::Expr& e) {
@@ -133,8 +133,14 @@ class Evaluator {
   }
 
   static std::string describe(const ast::Expr& e) {
-    if (e.kind == ast::Expr::Kind::Call) return e.op;
-    return absl::StrCat("'", e.op, "'");
+    if (e.kind == ast::Expr::Kind::Call) return ast::opText(e.op);
+    return absl::StrCat("'", ast::opText(e.op), "'");
+  }
+
+  std::optional<Value> unknown(const ast::Expr& e, const char* what) {
+    fail(failure_, EvalError::Domain, e.loc,
+         absl::StrCat("unknown ", what, " '", ast::opText(e.op), "'"));
+    return std::nullopt;
   }
 
   std::optional<Value> binary(const ast::Expr& e) {
@@ -142,51 +148,55 @@ class Evaluator {
     if (!lhs) return std::nullopt;
     auto rhs = eval(e.args[1]);
     if (!rhs) return std::nullopt;
-    // A view: its comparisons with the literals below are inlined (a string's are calls).
-    const std::string_view op = e.op;
+    using O = ast::Op;
+    const O op = e.op;
     // EQ and NE tell vacant from 0 (vacant equals only vacant); the other comparisons and
     // the arithmetic read vacant as 0.
-    if (op == "EQ" || op == "NE") {
+    if (op == O::Eq || op == O::Ne) {
       const bool equal = lhs->vacant || rhs->vacant ? lhs->vacant == rhs->vacant
                                                     : lhs->number == rhs->number;
-      return Value::of((op == "EQ") == equal ? 1.0 : 0.0);
+      return Value::of((op == O::Eq) == equal ? 1.0 : 0.0);
     }
     const double a = lhs->arithmetic();
     const double b = rhs->arithmetic();
-    if (op == "GT") return Value::of(a > b ? 1.0 : 0.0);
-    if (op == "LT") return Value::of(a < b ? 1.0 : 0.0);
-    if (op == "GE") return Value::of(a >= b ? 1.0 : 0.0);
-    if (op == "LE") return Value::of(a <= b ? 1.0 : 0.0);
-    if (op == "+") return result(a + b, e);
-    if (op == "-") return result(a - b, e);
-    if (op == "*") return result(a * b, e);
-    if (op == "/" || op == "MOD") {
-      if (b == 0.0) {
-        fail(failure_, EvalError::DivisionByZero, e.loc,
-             absl::StrCat(op == "/" ? "division" : "MOD", " by zero"));
-        return std::nullopt;
+    switch (op) {
+      case O::Gt: return Value::of(a > b ? 1.0 : 0.0);
+      case O::Lt: return Value::of(a < b ? 1.0 : 0.0);
+      case O::Ge: return Value::of(a >= b ? 1.0 : 0.0);
+      case O::Le: return Value::of(a <= b ? 1.0 : 0.0);
+      case O::Plus: return result(a + b, e);
+      case O::Minus: return result(a - b, e);
+      case O::Times: return result(a * b, e);
+      case O::Divide:
+      case O::Mod:
+        if (b == 0.0) {
+          fail(failure_, EvalError::DivisionByZero, e.loc,
+               absl::StrCat(op == O::Divide ? "division" : "MOD", " by zero"));
+          return std::nullopt;
+        }
+        return result(op == O::Divide ? a / b : std::fmod(a, b), e);
+      case O::Or:
+      case O::Xor:
+      case O::And: {
+        auto x = bits32(a);
+        auto y = bits32(b);
+        if (!x || !y) {
+          fail(failure_, EvalError::ValueRange, e.loc,
+               absl::StrCat(ast::opText(op), " works on 32-bit integers; ",
+                            formatNumber(x ? b : a), " is outside them"));
+          return std::nullopt;
+        }
+        const int32_t r = op == O::Or ? (*x | *y) : op == O::Xor ? (*x ^ *y) : (*x & *y);
+        return Value::of(static_cast<double>(r));
       }
-      return result(op == "/" ? a / b : std::fmod(a, b), e);
+      default:
+        return unknown(e, "operator");
     }
-    if (op == "OR" || op == "XOR" || op == "AND") {
-      auto x = bits32(a);
-      auto y = bits32(b);
-      if (!x || !y) {
-        fail(failure_, EvalError::ValueRange, e.loc,
-             absl::StrCat(e.op, " works on 32-bit integers; ", formatNumber(x ? b : a),
-                          " is outside them"));
-        return std::nullopt;
-      }
-      const int32_t r = op == "OR" ? (*x | *y) : op == "XOR" ? (*x ^ *y) : (*x & *y);
-      return Value::of(static_cast<double>(r));
-    }
-    fail(failure_, EvalError::Domain, e.loc, absl::StrCat("unknown operator '", e.op, "'"));
-    return std::nullopt;
   }
 
   std::optional<Value> domain(const ast::Expr& e, double x, std::string_view why) {
     fail(failure_, EvalError::Domain, e.loc,
-         absl::StrCat(e.op, "[", formatNumber(x), "]: ", std::string(why)));
+         absl::StrCat(ast::opText(e.op), "[", formatNumber(x), "]: ", std::string(why)));
     return std::nullopt;
   }
 
@@ -197,58 +207,58 @@ class Evaluator {
       if (!v) return std::nullopt;
       x[i] = v->arithmetic();  // a vacant argument counts as 0
     }
-    const std::string_view f = e.op;
+    using O = ast::Op;
     const double a = x[0];
-    if (f == "SIN") return result(sinDegrees(a), e);
-    if (f == "COS") return result(cosDegrees(a), e);
-    if (f == "TAN") {
-      // TAN is SIN/COS (Mazak §13-9-5 note): at an odd multiple of 90 degrees it has no value.
-      const double c = cosDegrees(a);
-      if (c == 0.0) return domain(e, a, "the tangent of an odd multiple of 90 degrees");
-      return result(sinDegrees(a) / c, e);
+    switch (e.op) {
+      case O::Sin: return result(sinDegrees(a), e);
+      case O::Cos: return result(cosDegrees(a), e);
+      case O::Tan: {
+        // TAN is SIN/COS (Mazak §13-9-5 note): at an odd multiple of 90 degrees it has no value.
+        const double c = cosDegrees(a);
+        if (c == 0.0) return domain(e, a, "the tangent of an odd multiple of 90 degrees");
+        return result(sinDegrees(a) / c, e);
+      }
+      case O::Asin:
+      case O::Acos:
+        if (a < -1.0 || a > 1.0) return domain(e, a, "the argument must be in [-1, 1]");
+        return result((e.op == O::Asin ? std::asin(a) : std::acos(a)) / kDegree, e);
+      case O::Atan: {
+        if (e.args.size() == 1) return result(std::atan(a) / kDegree, e);
+        // ATAN[y]/[x] and ATAN[y,x]: the angle of (x, y) from 0 to 360 degrees.
+        const double y = a, xx = x[1];
+        if (y == 0.0 && xx == 0.0) return domain(e, 0.0, "ATAN[0]/[0] has no angle");
+        double deg = std::atan2(y, xx) / kDegree;
+        if (deg < 0.0) deg += 360.0;
+        return result(deg, e);
+      }
+      case O::Sqrt:
+        if (a < 0.0) return domain(e, a, "the square root of a negative number");
+        return result(std::sqrt(a), e);
+      case O::Abs: return result(std::fabs(a), e);
+      // ROUND[-14/3] = -5, FIX[-14/3] = -4, FUP[-14/3] = -5 (Mazak §13-9-5 rows 17-19).
+      case O::Round: return result(std::round(a), e);
+      case O::Fix: return result(std::trunc(snapToInteger(a)), e);
+      case O::Fup: {
+        const double s = snapToInteger(a);
+        return result(s >= 0.0 ? std::ceil(s) : std::floor(s), e);
+      }
+      case O::Ln:
+        if (a <= 0.0) return domain(e, a, "the logarithm needs a number greater than 0");
+        return result(std::log(a), e);
+      case O::Exp: return result(std::exp(a), e);
+      case O::Pow: {
+        const double b = x[1];
+        if (a == 0.0 && b < 0.0) return domain(e, a, "0 to a negative power");
+        if (a < 0.0 && b != std::trunc(b))
+          return domain(e, a, "a negative number to a fractional power");
+        return result(std::pow(a, b), e);
+      }
+      case O::Adp: return result(a * context_.adp_scale, e);
+      case O::Bin:
+      case O::Bcd: return bcd(e, a);
+      default:
+        return unknown(e, "function");
     }
-    if (f == "ASIN" || f == "ACOS") {
-      if (a < -1.0 || a > 1.0) return domain(e, a, "the argument must be in [-1, 1]");
-      return result((f == "ASIN" ? std::asin(a) : std::acos(a)) / kDegree, e);
-    }
-    if (f == "ATAN") {
-      if (e.args.size() == 1) return result(std::atan(a) / kDegree, e);
-      // ATAN[y]/[x] and ATAN[y,x]: the angle of (x, y) from 0 to 360 degrees.
-      const double y = a, xx = x[1];
-      if (y == 0.0 && xx == 0.0)
-        return domain(e, 0.0, "ATAN[0]/[0] has no angle");
-      double deg = std::atan2(y, xx) / kDegree;
-      if (deg < 0.0) deg += 360.0;
-      return result(deg, e);
-    }
-    if (f == "SQRT") {
-      if (a < 0.0) return domain(e, a, "the square root of a negative number");
-      return result(std::sqrt(a), e);
-    }
-    if (f == "ABS") return result(std::fabs(a), e);
-    // ROUND[-14/3] = -5, FIX[-14/3] = -4, FUP[-14/3] = -5 (Mazak §13-9-5 rows 17-19).
-    if (f == "ROUND") return result(std::round(a), e);
-    if (f == "FIX") return result(std::trunc(snapToInteger(a)), e);
-    if (f == "FUP") {
-      const double s = snapToInteger(a);
-      return result(s >= 0.0 ? std::ceil(s) : std::floor(s), e);
-    }
-    if (f == "LN") {
-      if (a <= 0.0) return domain(e, a, "the logarithm needs a number greater than 0");
-      return result(std::log(a), e);
-    }
-    if (f == "EXP") return result(std::exp(a), e);
-    if (f == "POW") {
-      const double b = x[1];
-      if (a == 0.0 && b < 0.0) return domain(e, a, "0 to a negative power");
-      if (a < 0.0 && b != std::trunc(b))
-        return domain(e, a, "a negative number to a fractional power");
-      return result(std::pow(a, b), e);
-    }
-    if (f == "ADP") return result(a * context_.adp_scale, e);
-    if (f == "BIN" || f == "BCD") return bcd(e, a);
-    fail(failure_, EvalError::Domain, e.loc, absl::StrCat("unknown function '", e.op, "'"));
-    return std::nullopt;
   }
 
   // BIN: the BCD digits in the bits of x, as a number (BIN[100] = 64: 100 = 0x64).
@@ -257,7 +267,7 @@ class Evaluator {
     const double r = snapToInteger(a);
     if (r != std::trunc(r) || r < 0.0)
       return domain(e, a, "a whole number from 0 is needed");
-    if (std::string_view(e.op) == "BIN") {
+    if (e.op == ast::Op::Bin) {
       if (r > 4294967295.0) return domain(e, a, "more than 32 bits");
       uint64_t bits = static_cast<uint64_t>(r);
       int64_t value = 0, scale = 1;

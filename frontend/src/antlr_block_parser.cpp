@@ -234,12 +234,12 @@ class Builder {
           blockNumber(b, letter, at(w->getStart()), w->value());
           break;
         }
-        b.words.push_back(ast::Word{std::string(1, letter), value(w->value()), at(w->getStart())});
+        b.words.push_back(ast::Word{ast::Address(letter), value(w->value()), at(w->getStart())});
         break;
       }
       case IsoLexer::COMMA: {
         auto* cw = static_cast<IsoParser::CommaWordItemContext*>(item);
-        b.words.push_back(ast::Word{absl::StrCat(",", str(upper(cw->LETTER()))),
+        b.words.push_back(ast::Word{ast::Address(absl::StrCat(",", str(upper(cw->LETTER())))),
                                     value(cw->value()), at(cw->getStart())});
         break;
       }
@@ -292,7 +292,7 @@ class Builder {
     if (!sign) return inner;
     ast::Expr e;
     e.kind = ast::Expr::Kind::Unary;
-    e.op.assign(1, sign->getType() == IsoLexer::MINUS ? '-' : '+');
+    e.op = sign->getType() == IsoLexer::MINUS ? ast::Op::Minus : ast::Op::Plus;
     e.loc = at(sign);
     e.args.push_back(std::move(inner.expr));
     return node(std::move(e), inner.depth + 1);
@@ -328,7 +328,8 @@ class Builder {
   Node binary(Node lhs, antlr4::ParserRuleContext* op, Node rhs) {
     ast::Expr e;
     e.kind = ast::Expr::Kind::Binary;
-    e.op = std::string(upper(op->getStart()));
+    // The grammar's operator tokens are the table's binary operators.
+    e.op = ast::opNamed(upper(op->getStart())).value_or(ast::Op::None);
     e.loc = at(op->getStart());
     e.args.push_back(std::move(lhs.expr));
     e.args.push_back(std::move(rhs.expr));
@@ -382,7 +383,9 @@ class Builder {
     e.kind = ast::Expr::Kind::Call;
     const Token* name = ctx->getStart();
     e.loc = at(name);
-    e.op = canonicalFunctionName(upper(name));
+    const std::string fn = canonicalFunctionName(upper(name));
+    // The grammar's function names are the table's functions (or their aliases).
+    e.op = ast::opNamed(fn).value_or(ast::Op::None);
     int deepest = 0;
     for (auto* arg : ctx->expr()) {
       Node a = expr(arg);
@@ -390,13 +393,13 @@ class Builder {
       e.args.push_back(std::move(a.expr));
     }
     // ATAN has one argument, or two written [a]/[b] or [a,b]; the others a fixed count.
-    const size_t expected = functionArity(e.op);
-    const bool ok = e.op == "ATAN" ? e.args.size() <= 2 : e.args.size() == expected;
+    const size_t expected = ast::opInfo(e.op).arity;
+    const bool ok = e.op == ast::Op::Atan ? e.args.size() <= 2 : e.args.size() == expected;
     if (!ok)
       fail(codes::kArity, at(name),
-           e.op == "ATAN" ? std::string("ATAN takes [a], [a]/[b] or [a,b]")
-                          : absl::StrCat("function '", e.op, "' takes ", expected,
-                                         expected == 1 ? " argument" : " arguments"));
+           e.op == ast::Op::Atan ? std::string("ATAN takes [a], [a]/[b] or [a,b]")
+                                 : absl::StrCat("function '", fn, "' takes ", expected,
+                                                expected == 1 ? " argument" : " arguments"));
     return node(std::move(e), deepest + 1);
   }
 

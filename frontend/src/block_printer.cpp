@@ -27,13 +27,11 @@ namespace {
 
 std::string print(const ast::Expr& e);
 
-bool isKeywordOperator(const std::string& op) { return !op.empty() && op[0] >= 'A' && op[0] <= 'Z'; }
-
 // An expression without the brackets a binary operation would get at top level.
 std::string bare(const ast::Expr& e) {
   if (e.kind != ast::Expr::Kind::Binary || e.args.size() != 2) return print(e);
-  const char* space = isKeywordOperator(e.op) ? " " : "";
-  return absl::StrCat(print(e.args[0]), space, e.op, space, print(e.args[1]));
+  const char* space = ast::isWordOperator(e.op) ? " " : "";
+  return absl::StrCat(print(e.args[0]), space, ast::opText(e.op), space, print(e.args[1]));
 }
 
 std::string print(const ast::Expr& e) {
@@ -48,13 +46,13 @@ std::string print(const ast::Expr& e) {
       return absl::StrCat("#[", bare(n), "]");
     }
     case K::Unary:
-      return absl::StrCat(e.op, e.args.empty() ? "" : print(e.args[0]));
+      return absl::StrCat(ast::opText(e.op), e.args.empty() ? "" : print(e.args[0]));
     case K::Binary:
       return absl::StrCat("[", bare(e), "]");
     case K::Call: {
       std::vector<std::string> args;
       for (const ast::Expr& a : e.args) args.push_back(bare(a));
-      return absl::StrCat(e.op, "[", absl::StrJoin(args, ","), "]");
+      return absl::StrCat(ast::opText(e.op), "[", absl::StrJoin(args, ","), "]");
     }
     case K::Bracket:
       return absl::StrCat("[", e.args.empty() ? "" : bare(e.args[0]), "]");
@@ -92,7 +90,7 @@ std::string printBlock(const ast::Block& block) {
   if (block.percent) parts.push_back("%");
   if (block.program_number) parts.push_back(absl::StrCat("O", *block.program_number));
   if (block.sequence) parts.push_back(absl::StrCat("N", *block.sequence));
-  for (const ast::Word& w : block.words) parts.push_back(absl::StrCat(w.address, print(w.value)));
+  for (const ast::Word& w : block.words) parts.push_back(absl::StrCat(w.address.c_str(), print(w.value)));
   for (const ast::Statement& s : block.statements) parts.push_back(print(s));
   for (const std::string& c : block.comments) parts.push_back(absl::StrCat("(", c, ")"));
   return absl::StrJoin(parts, " ");

@@ -59,7 +59,7 @@ class PlainScanner {
           continue;
         }
         ast::Word& w = word(b, used);
-        w.address.assign(1, letter);
+        w.address = ast::Address(letter);
         w.loc = where;
         if (!value(w.value)) return false;
       } else if (c == ',') {
@@ -70,7 +70,8 @@ class PlainScanner {
         if (!isCommaAddressLetter(letter)) return false;
         ++pos_;
         ast::Word& w = word(b, used);
-        w.address = {',', letter};
+        const char comma_address[2] = {',', letter};
+        w.address = ast::Address(std::string_view(comma_address, 2));
         w.loc = where;
         if (!value(w.value)) return false;
       } else if (c == ':') {
@@ -91,7 +92,7 @@ class PlainScanner {
     if (used == b.words.size()) {
       b.words.emplace_back();
     } else {
-      b.words[used].value.op.clear();
+      b.words[used].value.op = ast::Op::None;
       b.words[used].value.args.clear();
     }
     return b.words[used++];

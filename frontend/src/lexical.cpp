@@ -26,6 +26,4 @@ std::string canonicalFunctionName(std::string_view name) {
   return std::string(name);
 }
 
-size_t functionArity(std::string_view name) { return name == "POW" ? 2 : 1; }
-
 }  // namespace ncc::frontend

@@ -27,8 +27,5 @@ inline bool isCommaAddressLetter(char upper) {
 // Function names are kept in one spelling: the Mazak short forms ATN, SQR, RND become
 // ATAN, SQRT, ROUND.
 std::string canonicalFunctionName(std::string_view written_upper);
-// Number of arguments of a canonical function name (ATAN: 1; its two-argument forms are
-// checked separately).
-size_t functionArity(std::string_view canonical);
 
 }  // namespace ncc::frontend

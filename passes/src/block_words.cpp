@@ -83,7 +83,7 @@ class Decoder {
     if (foldLiteral(w.value, v, point)) return true;
     if (ctx_.statically) return false;  // its value is known at run time
     fail(Alarm::MacroNotSupported, w.loc,
-         absl::StrCat("macro expressions/statements are not supported yet: ", w.address,
+         absl::StrCat("macro expressions/statements are not supported yet: ", w.address.c_str(),
                       exprText(w.value)));
     return false;
   }

@@ -14,12 +14,12 @@ std::string exprText(const ast::Expr& e) {
       return s;
     }
     case K::Variable: return absl::StrCat("#", e.args.empty() ? "" : exprText(e.args[0]));
-    case K::Unary: return absl::StrCat(e.op, e.args.empty() ? "" : exprText(e.args[0]));
+    case K::Unary: return absl::StrCat(ast::opText(e.op), e.args.empty() ? "" : exprText(e.args[0]));
     case K::Binary:
-      if (e.args.size() != 2) return e.op;
-      return absl::StrCat(exprText(e.args[0]), e.op, exprText(e.args[1]));
+      if (e.args.size() != 2) return ast::opText(e.op);
+      return absl::StrCat(exprText(e.args[0]), ast::opText(e.op), exprText(e.args[1]));
     case K::Call: {
-      std::string s = absl::StrCat(e.op, "[");
+      std::string s = absl::StrCat(ast::opText(e.op), "[");
       for (size_t i = 0; i < e.args.size(); ++i)
         absl::StrAppend(&s, i ? "," : "", exprText(e.args[i]));
       return s + "]";
@@ -36,9 +36,9 @@ bool foldLiteral(const ast::Expr& e, double& value, bool& has_point) {
     has_point = e.has_point;
     return true;
   }
-  if (e.kind == ast::Expr::Kind::Unary && e.args.size() == 1 && (e.op == "-" || e.op == "+") &&
+  if (e.kind == ast::Expr::Kind::Unary && e.args.size() == 1 && (e.op == ast::Op::Minus || e.op == ast::Op::Plus) &&
       foldLiteral(e.args[0], value, has_point)) {
-    if (e.op == "-") value = -value;
+    if (e.op == ast::Op::Minus) value = -value;
     return true;
   }
   return false;

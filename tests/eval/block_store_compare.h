@@ -23,7 +23,7 @@ inline std::string diffExpr(const ast::Expr& a, const ast::Expr& b, const std::s
     return absl::StrCat(at, ": number ", a.number, " vs ", b.number);
   if (a.has_point != b.has_point) return at + ": has_point";
   if (a.digits != b.digits) return at + ": digits";
-  if (a.op != b.op) return at + ": op " + a.op + " vs " + b.op;
+  if (a.op != b.op) return absl::StrCat(at, ": op ", ast::opText(a.op), " vs ", ast::opText(b.op));
   if (!(a.loc == b.loc)) return at + ": loc " + locText(a.loc) + " vs " + locText(b.loc);
   if (a.args.size() != b.args.size()) return at + ": argument count";
   for (size_t i = 0; i < a.args.size(); ++i)

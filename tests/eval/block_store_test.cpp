@@ -22,10 +22,11 @@ ast::Expr num(double v, bool point, SourceLocation loc, uint8_t digits = 0) {
   e.digits = digits;
   return e;
 }
-ast::Expr node(Kind kind, std::string op, std::vector<ast::Expr> args, SourceLocation loc) {
+// `op` as the table spells it ("" for none).
+ast::Expr node(Kind kind, std::string_view op, std::vector<ast::Expr> args, SourceLocation loc) {
   ast::Expr e;
   e.kind = kind;
-  e.op = std::move(op);
+  e.op = ast::opNamed(op).value_or(ast::Op::None);
   e.args = std::move(args);
   e.loc = loc;
   return e;

@@ -300,7 +300,7 @@ TEST(Errors, BracketNestingFiveLevelsIncludingFunctions) {
 TEST(Errors, MalformedTreeIsRefusedNotRead) {
   ast::Expr e;
   e.kind = ast::Expr::Kind::Binary;
-  e.op = "+";
+  e.op = ast::Op::Plus;
   e.args.push_back(ast::Expr::literal(1.0, false, {}));
   MapVariables vars;
   Failure f;
@@ -318,7 +318,7 @@ ast::Expr chainOfOnes(int terms) {
   for (int i = 1; i < terms; ++i) {
     ast::Expr sum;
     sum.kind = ast::Expr::Kind::Binary;
-    sum.op = "+";
+    sum.op = ast::Op::Plus;
     sum.loc = SourceLocation{0, 1, static_cast<uint32_t>(2 * i)};
     sum.args.push_back(std::move(e));
     sum.args.push_back(ast::Expr::literal(1.0, false, {}));

@@ -16,7 +16,7 @@ using testing::TempDir;
 std::string describe(const ast::Block& b) {
   std::string out = printBlock(b);
   absl::StrAppend(&out, " @", b.loc.file, ":", b.loc.line, ":", b.loc.column);
-  for (const ast::Word& w : b.words) absl::StrAppend(&out, " ", w.address, w.loc.line, ":", w.loc.column);
+  for (const ast::Word& w : b.words) absl::StrAppend(&out, " ", w.address.c_str(), w.loc.line, ":", w.loc.column);
   for (const ast::Statement& s : b.statements) absl::StrAppend(&out, " s", s.loc.line, ":", s.loc.column);
   return out;
 }

@@ -31,7 +31,7 @@ std::string describe(const ast::Block& b) {
   std::string out = printBlock(b);
   absl::StrAppend(&out, " | b", b.loc.file, ":", b.loc.line, ":", b.loc.column);
   for (const ast::Word& w : b.words) {
-    absl::StrAppend(&out, " w", w.address, w.loc.line, ":", w.loc.column);
+    absl::StrAppend(&out, " w", w.address.c_str(), w.loc.line, ":", w.loc.column);
     dumpLocations(w.value, out);
   }
   for (const ast::Statement& s : b.statements) dumpLocations(s, out);

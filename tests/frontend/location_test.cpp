@@ -49,7 +49,7 @@ TEST(LocationsAntlr, Expressions) {
   EXPECT_EQ(s.loc.column, 1u);
   EXPECT_EQ(s.target.loc.column, 1u);
   const ast::Expr& mul = s.value;
-  EXPECT_EQ(mul.op, "*");
+  EXPECT_EQ(mul.op, ast::Op::Times);
   EXPECT_EQ(mul.loc.column, 17u);                   // the operator
   EXPECT_EQ(mul.args[0].loc.column, 8u);            // '['
   EXPECT_EQ(mul.args[0].args[0].args[0].loc.column, 9u);  // #1

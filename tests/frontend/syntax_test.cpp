@@ -107,7 +107,7 @@ TEST(Syntax, ExpressionValues) {
   ASSERT_TRUE(p.block);
   const ast::Expr& v = p.block->words[0].value;
   EXPECT_EQ(v.kind, ast::Expr::Kind::Unary);
-  EXPECT_EQ(v.op, "-");
+  EXPECT_EQ(v.op, ast::Op::Minus);
   EXPECT_EQ(v.args[0].kind, ast::Expr::Kind::Variable);
 }
 
@@ -125,8 +125,8 @@ TEST(Syntax, Precedence) {
   ASSERT_TRUE(p.block);
   const ast::Expr& e = p.block->statements[0].value;
   ASSERT_EQ(e.kind, ast::Expr::Kind::Binary);
-  EXPECT_EQ(e.op, "+");
-  EXPECT_EQ(e.args[1].op, "*");
+  EXPECT_EQ(e.op, ast::Op::Plus);
+  EXPECT_EQ(e.args[1].op, ast::Op::Times);
 }
 
 TEST(Syntax, Functions) {
