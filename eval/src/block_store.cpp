@@ -4,7 +4,10 @@
 #include <bit>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <set>
+#include <tuple>
+#include <type_traits>
 #include <unordered_map>
 
 #include "absl/strings/str_cat.h"
@@ -14,7 +17,7 @@ namespace ncc::eval {
 namespace {
 
 constexpr uint8_t kMagic[4] = {'N', 'C', 'B', 'S'};
-constexpr uint16_t kVersion = 2;  // 2: the loop limits (max_idle_blocks)
+constexpr uint16_t kVersion = 3;  // 2: the loop limits; 3: the tree written by its schema
 
 uint64_t zigzag(int64_t v) { return (static_cast<uint64_t>(v) << 1) ^ static_cast<uint64_t>(v >> 63); }
 int64_t unzigzag(uint64_t u) { return static_cast<int64_t>((u >> 1) ^ (~(u & 1) + 1)); }
@@ -52,34 +55,9 @@ struct LineBase {
   LineBase at(const SourceLocation& loc) const { return {file, line, loc.column}; }
 };
 
-// Expression header bits.
-constexpr uint8_t kExprKindMask = 0x07;
-constexpr uint8_t kExprPoint = 0x08;
-// How the number is written: two bits.
-constexpr uint8_t kExprFormMask = 0x30;
-constexpr uint8_t kExprZero = 0x00;     // +0.0, nothing written
-constexpr uint8_t kExprBits = 0x10;     // its IEEE bit pattern
-constexpr uint8_t kExprInteger = 0x30;  // a zigzag varint
-constexpr uint8_t kExprDecimal = 0x20;  // m / 10^k: a zigzag varint m, then k (1..15)
-constexpr uint8_t kExprOp = 0x40;
-constexpr uint8_t kExprArgs = 0x80;
-
-// Statement header bits.
-constexpr uint8_t kStatementKindMask = 0x07;
-constexpr uint8_t kStatementThen = 0x08;
-
-// Block header bits.
-constexpr uint8_t kBlockSequence = 0x01;
-constexpr uint8_t kBlockProgram = 0x02;
-constexpr uint8_t kBlockPercent = 0x04;
-constexpr uint8_t kBlockSkip = 0x08;
-constexpr int kBlockStartShift = 4;  // two bits: StoredBlock::Start
-constexpr uint8_t kBlockStatements = 0x40;
-constexpr uint8_t kBlockComments = 0x80;
-
-constexpr int kMaxDecimals = 15;
-constexpr double kPowersOf10[kMaxDecimals + 1] = {1e0, 1e1, 1e2,  1e3,  1e4,  1e5,  1e6,  1e7,
-                                                  1e8, 1e9, 1e10, 1e11, 1e12, 1e13, 1e14, 1e15};
+constexpr int kMaxDecimals = 14;
+constexpr double kPowersOf10[kMaxDecimals + 1] = {1e0, 1e1, 1e2,  1e3,  1e4,  1e5,  1e6, 1e7,
+                                                  1e8, 1e9, 1e10, 1e11, 1e12, 1e13, 1e14};
 
 bool sameBits(double a, double b) { return std::bit_cast<uint64_t>(a) == std::bit_cast<uint64_t>(b); }
 
@@ -108,85 +86,116 @@ void writeLoc(Writer& w, const SourceLocation& loc, const LineBase& base) {
   w.varint(loc.line);
 }
 
-// An address: one byte for a letter 'A'..'Z' (nearly every word), else 0 and the string.
-void writeAddress(Writer& w, const ast::Address& address) {
-  if (address.size() == 1 && address[0] >= 'A' && address[0] <= 'Z') {
-    w.u8(static_cast<uint8_t>(address[0]));
-    return;
-  }
-  w.u8(0);
-  w.str(address);
+// ---- The syntax tree, by its schema (ast.h) -------------------------------------------------
+// Every node is written member by member in its Schema's order, each member by its type, so a
+// member added to a node's schema is written, read, compared and counted in the nesting
+// without a line here. A masked node starts with a varint of one bit per member: set when the
+// member differs from its default (a bool member is its bit); only those members follow.
+// Locations are coded relative to a base that a node's own location moves (its members after
+// it are near it), and the elements of a list relative to the previous element's.
+
+using ast::fieldCount;
+using ast::forEachField;
+template <class T>
+concept Node = ast::SchemaNode<T>;
+template <class T>
+concept Located = requires(const T& t) { t.loc; };
+
+// Whether a member differs from the default a masked node is read into. A member that is a
+// node is always written.
+template <class T>
+bool differs(const T& v, const T& initial) {
+  if constexpr (Node<T>) return true;
+  else if constexpr (std::is_same_v<T, double>) return !sameBits(v, initial);
+  else if constexpr (ast::kIsList<T>) return !v.empty();
+  else if constexpr (ast::kIsOptional<T> || ast::kIsBox<T>) return static_cast<bool>(v);
+  else return !(v == initial);
 }
 
-void writeExpr(Writer& w, const ast::Expr& e, const LineBase& base) {
-  uint8_t header = static_cast<uint8_t>(e.kind) & kExprKindMask;
-  int64_t mantissa = 0;
-  int decimals = 0;
-  const uint64_t bits = std::bit_cast<uint64_t>(e.number);
-  const uint8_t form = bits == 0                                  ? kExprZero
-                       : !asDecimal(e.number, mantissa, decimals) ? kExprBits
-                       : decimals == 0                            ? kExprInteger
-                                                                  : kExprDecimal;
-  header |= form;
-  if (e.has_point) header |= kExprPoint;
-  if (e.op != ast::Op::None) header |= kExprOp;
-  if (!e.args.empty()) header |= kExprArgs;
-  w.u8(header);
-  if (form == kExprBits) w.fixed64(bits);
-  if (form == kExprInteger || form == kExprDecimal) w.svarint(mantissa);
-  if (form == kExprDecimal) w.u8(static_cast<uint8_t>(decimals));
-  w.u8(e.digits);
-  writeLoc(w, e.loc, base);
-  // The operator's text (format v2 wrote the string the AST held then).
-  if (e.op != ast::Op::None) w.str(ast::opText(e.op));
-  if (!e.args.empty()) {
-    w.varint(e.args.size());
-    for (const ast::Expr& a : e.args) writeExpr(w, a, base.at(e.loc));
+template <class N>
+const N& defaultNode() {
+  static const N node{};
+  return node;
+}
+
+// A number: m / 10^k (k 0..14) as one varint (zigzag(m) << 4 | k), else the escape 15 and its
+// IEEE bit pattern.
+constexpr uint64_t kNumberBits = 15;
+
+template <Node N>
+void writeNode(Writer& w, const N& node, LineBase base);
+
+template <class T>
+void writeValue(Writer& w, const T& v, LineBase& base) {
+  if constexpr (Node<T>) {
+    writeNode(w, v, base);
+  } else if constexpr (ast::kIsBox<T>) {
+    writeNode(w, *v, base);
+  } else if constexpr (ast::kIsList<T>) {
+    w.varint(v.size());
+    LineBase element = base;
+    for (const auto& e : v) {
+      writeValue(w, e, element);
+      if constexpr (Located<typename T::value_type>) element = base.at(e.loc);
+    }
+  } else if constexpr (ast::kIsOptional<T>) {
+    writeValue(w, *v, base);
+  } else if constexpr (std::is_same_v<T, SourceLocation>) {
+    writeLoc(w, v, base);
+    base = base.at(v);
+  } else if constexpr (std::is_same_v<T, double>) {
+    int64_t m = 0;
+    int k = 0;
+    if (asDecimal(v, m, k)) {
+      w.varint(zigzag(m) << 4 | static_cast<uint64_t>(k));
+    } else {
+      w.varint(kNumberBits);
+      w.fixed64(std::bit_cast<uint64_t>(v));
+    }
+  } else if constexpr (std::is_same_v<T, std::string>) {
+    w.str(v);
+  } else if constexpr (ast::kIsInline<T>) {
+    // One byte for a letter 'A'..'Z' (nearly every address), else 0 and the text.
+    if (v.size() == 1 && v[0] >= 'A' && v[0] <= 'Z') {
+      w.u8(static_cast<uint8_t>(v[0]));
+    } else {
+      w.u8(0);
+      w.str(v.view());
+    }
+  } else if constexpr (std::is_enum_v<T> || std::is_same_v<T, uint8_t>) {
+    w.u8(static_cast<uint8_t>(v));
+  } else if constexpr (std::is_same_v<T, int> || std::is_same_v<T, int64_t>) {
+    w.svarint(v);
+  } else {
+    static_assert(sizeof(T) == 0, "a member type the block store cannot write");
   }
 }
 
-void writeStatement(Writer& w, const ast::Statement& s, const LineBase& base) {
-  uint8_t header = static_cast<uint8_t>(s.kind) & kStatementKindMask;
-  if (s.then_assign) header |= kStatementThen;
-  w.u8(header);
-  writeLoc(w, s.loc, base);
-  writeExpr(w, s.target, base.at(s.loc));
-  writeExpr(w, s.value, base.at(s.loc));
-  w.svarint(s.loop_id);
-  if (s.then_assign) writeStatement(w, *s.then_assign, base.at(s.loc));
+template <Node N>
+void writeNode(Writer& w, const N& node, LineBase base) {
+  if constexpr (ast::Schema<N>::masked) {
+    uint64_t mask = 0;
+    int bit = 0;
+    forEachField<N>([&](const auto& f) {
+      if (differs(node.*f.member, defaultNode<N>().*f.member)) mask |= uint64_t{1} << bit;
+      ++bit;
+    });
+    w.varint(mask);
+    bit = 0;
+    forEachField<N>([&](const auto& f) {
+      using T = std::remove_cvref_t<decltype(node.*f.member)>;
+      if constexpr (!std::is_same_v<T, bool>)
+        if (mask & (uint64_t{1} << bit)) writeValue(w, node.*f.member, base);
+      ++bit;
+    });
+  } else {
+    forEachField<N>([&](const auto& f) { writeValue(w, node.*f.member, base); });
+  }
 }
 
 void writeBlock(Writer& w, const StoredBlock& stored, uint32_t file) {
-  const ast::Block& b = stored.block;
-  const LineBase base{file, stored.position.line, stored.position.column};
-  uint8_t header = static_cast<uint8_t>(static_cast<uint8_t>(stored.start) << kBlockStartShift);
-  if (b.sequence) header |= kBlockSequence;
-  if (b.program_number) header |= kBlockProgram;
-  if (b.percent) header |= kBlockPercent;
-  if (b.skip_level != -1) header |= kBlockSkip;
-  if (!b.statements.empty()) header |= kBlockStatements;
-  if (!b.comments.empty()) header |= kBlockComments;
-  w.u8(header);
-  writeLoc(w, b.loc, base);
-  if (b.skip_level != -1) w.svarint(b.skip_level);
-  if (b.sequence) w.svarint(*b.sequence);
-  if (b.program_number) w.svarint(*b.program_number);
-  w.varint(b.words.size());
-  LineBase previous = base.at(b.loc);
-  for (const ast::Word& word : b.words) {
-    writeAddress(w, word.address);
-    writeLoc(w, word.loc, previous);
-    writeExpr(w, word.value, base.at(word.loc));
-    previous = base.at(word.loc);
-  }
-  if (!b.statements.empty()) {
-    w.varint(b.statements.size());
-    for (const ast::Statement& s : b.statements) writeStatement(w, s, base.at(b.loc));
-  }
-  if (!b.comments.empty()) {
-    w.varint(b.comments.size());
-    for (const std::string& c : b.comments) w.str(c);
-  }
+  w.u8(static_cast<uint8_t>(stored.start));
+  writeNode(w, stored.block, LineBase{file, stored.position.line, stored.position.column});
 }
 
 void writePosition(Writer& w, const frontend::BlockPosition& p) {
@@ -299,127 +308,139 @@ bool readLoc(Reader& r, SourceLocation& loc, const LineBase& base) {
   return r.u32(loc.file, "file id") && r.u32(loc.line, "line");
 }
 
-bool readAddress(Reader& r, ast::Address& address) {
-  uint8_t letter = 0;
-  if (!r.u8(letter)) return false;
-  if (letter == 0) {
-    std::string text;
-    if (!r.str(text)) return false;
-    if (text.size() > ast::Address::kCapacity) return r.fail("bad address");
-    address = ast::Address(text);
-    return true;
+template <Node N>
+bool readNode(Reader& r, N& node, LineBase base, int depth);
+
+// The fewest bytes a value of each type takes: a count of them is checked against the rest,
+// so a damaged count cannot make the reader allocate more than the input could hold.
+template <class T>
+constexpr size_t minimumSize() {
+  if constexpr (Node<T>) {
+    if constexpr (ast::Schema<T>::masked) {
+      return 1;
+    } else {
+      size_t sum = 0;
+      std::apply([&](const auto&... f) { ((sum += minimumSize<std::remove_cvref_t<decltype(T{}.*f.member)>>()), ...); },
+                 ast::Schema<T>::fields);
+      return sum;
+    }
+  } else {
+    return 1;
   }
-  if (letter < 'A' || letter > 'Z') return r.fail("bad address");
-  address = ast::Address(static_cast<char>(letter));
-  return true;
 }
 
-bool readExpr(Reader& r, ast::Expr& e, const LineBase& base, int depth) {
-  if (depth > kMaxStoredNesting) return r.fail("expressions nested too deep");
-  uint8_t header = 0;
-  if (!r.u8(header)) return false;
-  const uint8_t kind = header & kExprKindMask;
-  if (kind > static_cast<uint8_t>(ast::Expr::Kind::Vacant)) return r.fail("unknown expression kind");
-  e.kind = static_cast<ast::Expr::Kind>(kind);
-  e.has_point = (header & kExprPoint) != 0;
-  e.number = 0.0;
-  const uint8_t form = header & kExprFormMask;
-  if (form == kExprBits) {
-    uint64_t bits = 0;
-    if (!r.fixed64(bits)) return false;
-    e.number = std::bit_cast<double>(bits);
-  } else if (form == kExprInteger || form == kExprDecimal) {
-    int64_t m = 0;
-    uint8_t k = 0;  // stays 0 for an integer
-    if (!r.svarint(m) || (form == kExprDecimal && !r.u8(k))) return false;
-    if (form == kExprDecimal && (k < 1 || k > kMaxDecimals)) return r.fail("bad decimal scale");
-    e.number = static_cast<double>(m) / kPowersOf10[k];
-  }
-  if (!r.u8(e.digits) || !readLoc(r, e.loc, base)) return false;
-  e.op = ast::Op::None;
-  if (header & kExprOp) {
-    std::string text;
-    if (!r.str(text)) return false;
-    std::optional<ast::Op> op = ast::opNamed(text);
-    if (!op) return r.fail("unknown operator");
-    e.op = *op;
-  }
-  if (header & kExprArgs) {
+template <class T>
+bool readValue(Reader& r, T& v, LineBase& base, int depth) {
+  if constexpr (Node<T>) {
+    return readNode(r, v, base, depth);
+  } else if constexpr (ast::kIsBox<T>) {
+    return readNode(r, v.emplace(), base, depth);
+  } else if constexpr (ast::kIsList<T>) {
     uint64_t n = 0;
-    if (!r.count(n, 3)) return false;  // an expression takes 3 bytes at least
-    for (uint64_t i = 0; i < n; ++i)
-      if (!readExpr(r, e.args.emplace_back(), base.at(e.loc), depth + 1)) return false;
+    if (!r.count(n, minimumSize<typename T::value_type>())) return false;
+    if (n == 0) return r.fail("an empty list written");
+    LineBase element = base;
+    for (uint64_t i = 0; i < n; ++i) {
+      auto& e = v.emplace_back();
+      if (!readValue(r, e, element, depth)) return false;
+      if constexpr (Located<typename T::value_type>) element = base.at(e.loc);
+    }
+    return true;
+  } else if constexpr (ast::kIsOptional<T>) {
+    return readValue(r, v.emplace(), base, depth);
+  } else if constexpr (std::is_same_v<T, SourceLocation>) {
+    if (!readLoc(r, v, base)) return false;
+    base = base.at(v);
+    return true;
+  } else if constexpr (std::is_same_v<T, double>) {
+    uint64_t head = 0;
+    if (!r.varint(head)) return false;
+    const uint64_t k = head & 15;
+    if (k == kNumberBits) {
+      if (head != kNumberBits) return r.fail("bad number");
+      uint64_t bits = 0;
+      if (!r.fixed64(bits)) return false;
+      v = std::bit_cast<double>(bits);
+      return true;
+    }
+    if (k > kMaxDecimals) return r.fail("bad decimal scale");
+    v = static_cast<double>(unzigzag(head >> 4)) / kPowersOf10[k];
+    return true;
+  } else if constexpr (std::is_same_v<T, std::string>) {
+    return r.str(v);
+  } else if constexpr (ast::kIsInline<T>) {
+    uint8_t letter = 0;
+    if (!r.u8(letter)) return false;
+    if (letter == 0) {
+      std::string text;
+      if (!r.str(text)) return false;
+      if (text.size() > T::kCapacity || (text.size() == 1 && text[0] >= 'A' && text[0] <= 'Z'))
+        return r.fail("bad address");
+      v = T(text);
+      return true;
+    }
+    if (letter < 'A' || letter > 'Z') return r.fail("bad address");
+    v = T(static_cast<char>(letter));
+    return true;
+  } else if constexpr (std::is_enum_v<T>) {
+    uint8_t u = 0;
+    if (!r.u8(u)) return false;
+    if (u >= ast::kEnumValues<T>) return r.fail("unknown kind");
+    v = static_cast<T>(u);
+    return true;
+  } else if constexpr (std::is_same_v<T, uint8_t>) {
+    return r.u8(v);
+  } else if constexpr (std::is_same_v<T, int>) {
+    return r.int32(v, "number");
+  } else if constexpr (std::is_same_v<T, int64_t>) {
+    return r.svarint(v);
+  } else {
+    static_assert(sizeof(T) == 0, "a member type the block store cannot read");
   }
-  return true;
 }
 
-bool readStatement(Reader& r, ast::Statement& s, const LineBase& base, int depth) {
-  if (depth > kMaxStoredNesting) return r.fail("statements nested too deep");
-  uint8_t header = 0;
-  if (!r.u8(header)) return false;
-  const uint8_t kind = header & kStatementKindMask;
-  if (kind > static_cast<uint8_t>(ast::Statement::Kind::End) || (header & ~0x0f))
-    return r.fail("unknown statement kind");
-  s.kind = static_cast<ast::Statement::Kind>(kind);
-  if (!readLoc(r, s.loc, base) || !readExpr(r, s.target, base.at(s.loc), depth + 1) ||
-      !readExpr(r, s.value, base.at(s.loc), depth + 1) || !r.int32(s.loop_id, "loop id"))
-    return false;
-  if (header & kStatementThen) {
-    s.then_assign = std::make_unique<ast::Statement>();
-    return readStatement(r, *s.then_assign, base.at(s.loc), depth + 1);
+template <Node N>
+bool readNode(Reader& r, N& node, LineBase base, int depth) {
+  if constexpr (ast::Schema<N>::nests)
+    if (++depth > kMaxStoredNesting) return r.fail("expressions nested too deep");
+  bool ok = true;
+  if constexpr (ast::Schema<N>::masked) {
+    static_assert(fieldCount<N>() <= 63, "the mask is one varint");
+    uint64_t mask = 0;
+    if (!r.varint(mask)) return false;
+    if (mask >> fieldCount<N>()) return r.fail("unknown members");
+    int bit = 0;
+    forEachField<N>([&](const auto& f) {
+      using T = std::remove_cvref_t<decltype(node.*f.member)>;
+      const bool present = (mask & (uint64_t{1} << bit++)) != 0;
+      if (!ok) return;
+      if constexpr (std::is_same_v<T, bool>) {
+        node.*f.member = present;
+      } else if (present) {
+        // One encoding per tree: a member written must differ from its default.
+        ok = readValue(r, node.*f.member, base, depth) &&
+             (differs(node.*f.member, defaultNode<N>().*f.member) || r.fail("a default value written"));
+      }
+    });
+  } else {
+    forEachField<N>([&](const auto& f) { ok = ok && readValue(r, node.*f.member, base, depth); });
   }
-  return true;
+  return ok;
 }
 
 bool readBlock(Reader& r, StoredBlock& stored, uint32_t file) {
-  ast::Block& b = stored.block;
-  const LineBase base{file, stored.position.line, stored.position.column};
-  uint8_t header = 0;
-  if (!r.u8(header)) return false;
-  const uint8_t start = (header >> kBlockStartShift) & 3;
+  uint8_t start = 0;
+  if (!r.u8(start)) return false;
   if (start > static_cast<uint8_t>(StoredBlock::Start::Program)) return r.fail("unknown block start");
   stored.start = static_cast<StoredBlock::Start>(start);
-  if (!readLoc(r, b.loc, base)) return false;
-  b.skip_level = -1;
-  if ((header & kBlockSkip) && !r.int32(b.skip_level, "skip level")) return false;
-  if (header & kBlockSequence) {
-    int64_t n = 0;
-    if (!r.svarint(n)) return false;
-    b.sequence = n;
-  }
-  if (header & kBlockProgram) {
-    int64_t n = 0;
-    if (!r.svarint(n)) return false;
-    b.program_number = n;
-  }
-  b.percent = (header & kBlockPercent) != 0;
+  ast::Block& b = stored.block;
+  if (!readNode(r, b, LineBase{file, stored.position.line, stored.position.column}, 0)) return false;
   if ((stored.start == StoredBlock::Start::Sequence && !b.sequence) ||
       (stored.start == StoredBlock::Start::Program && !b.program_number))
     return r.fail("block start without its number");
-  uint64_t n = 0;
-  if (!r.count(n, 5)) return false;  // address, value (3), location
-  LineBase previous = base.at(b.loc);
-  for (uint64_t i = 0; i < n; ++i) {
-    ast::Word& w = b.words.emplace_back();
-    if (!readAddress(r, w.address) || !readLoc(r, w.loc, previous) ||
-        !readExpr(r, w.value, base.at(w.loc), 1))
-      return false;
-    previous = base.at(w.loc);
-  }
-  if (header & kBlockStatements) {
-    if (!r.count(n, 9)) return false;  // header, location, two expressions, loop id
-    if (n == 0) return r.fail("an empty list of statements");
-    for (uint64_t i = 0; i < n; ++i)
-      if (!readStatement(r, b.statements.emplace_back(), base.at(b.loc), 1)) return false;
-  }
-  if (header & kBlockComments) {
-    if (!r.count(n)) return false;
-    if (n == 0) return r.fail("an empty list of comments");
-    for (uint64_t i = 0; i < n; ++i)
-      if (!r.str(b.comments.emplace_back())) return false;
-  }
   return true;
 }
+
 
 bool readPosition(Reader& r, frontend::BlockPosition& p) {
   return r.varint(p.offset) && r.u32(p.line, "line") && r.u32(p.column, "column");
@@ -463,24 +484,28 @@ bool readFile(Reader& r, StoredFile& f) {
 // ---- Nesting ------------------------------------------------------------------------------
 
 namespace {
-int exprNesting(const ast::Expr& e) {
-  int deepest = 0;
-  for (const ast::Expr& a : e.args) deepest = std::max(deepest, exprNesting(a));
-  return deepest + 1;
-}
-int statementNesting(const ast::Statement& s) {
-  int deepest = std::max(exprNesting(s.target), exprNesting(s.value));
-  if (s.then_assign) deepest = std::max(deepest, statementNesting(*s.then_assign));
-  return deepest + 1;
+// The levels of nodes that nest (Schema::nests) on the deepest path below `v`, as the decoder
+// counts them.
+template <class T>
+int nesting(const T& v) {
+  if constexpr (Node<T>) {
+    int deepest = 0;
+    forEachField<T>([&](const auto& f) { deepest = std::max(deepest, nesting(v.*f.member)); });
+    return deepest + (ast::Schema<T>::nests ? 1 : 0);
+  } else if constexpr (ast::kIsBox<T>) {
+    return v ? nesting(*v) : 0;
+  } else if constexpr (ast::kIsList<T>) {
+    int deepest = 0;
+    for (const auto& e : v) deepest = std::max(deepest, nesting(e));
+    return deepest;
+  } else {
+    return 0;
+  }
 }
 }  // namespace
 
-int blockNesting(const ast::Block& block) {
-  int deepest = 0;
-  for (const ast::Word& w : block.words) deepest = std::max(deepest, exprNesting(w.value));
-  for (const ast::Statement& s : block.statements) deepest = std::max(deepest, statementNesting(s));
-  return deepest;
-}
+int blockNesting(const ast::Block& block) { return nesting(block); }
+
 
 // ---- Encoding -----------------------------------------------------------------------------
 

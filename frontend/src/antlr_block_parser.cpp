@@ -427,12 +427,11 @@ class Builder {
       auto* it = static_cast<IsoParser::IfThenStatementContext*>(ctx);
       s.kind = ast::Statement::Kind::IfThen;
       s.value = expr(it->bracket()->expr()).expr;
-      auto then = std::make_unique<ast::Statement>();
-      then->kind = ast::Statement::Kind::Assign;
-      then->loc = at(it->variable()->HASH());
-      then->target = variable(it->variable()).expr;
-      then->value = expr(it->expr()).expr;
-      s.then_assign = std::move(then);
+      ast::Statement& then = s.then_assign.emplace();
+      then.kind = ast::Statement::Kind::Assign;
+      then.loc = at(it->variable()->HASH());
+      then.target = variable(it->variable()).expr;
+      then.value = expr(it->expr()).expr;
     } else if (first == IsoLexer::WHILE) {
       auto* w = static_cast<IsoParser::WhileStatementContext*>(ctx);
       s.kind = ast::Statement::Kind::While;

@@ -35,15 +35,7 @@ bool LineSource::next(std::string& line) {
     line.assign(*buffer_, start, end - start);
     next_offset_ = end < buffer_->size() ? end + 1 : end;
   } else {
-    errno = 0;
-    if (!std::getline(stream_, line)) {
-      // A read error is not the end of the file (badbit, not eofbit).
-      if (stream_.bad()) throw SourceReadError(path_, errno ? std::strerror(errno) : "read error");
-      return false;
-    }
-    // The offset is counted, not asked of the stream: tellg() costs a system call per line.
-    // getline() sets eof only when the last line has no LF.
-    next_offset_ += line.size() + (stream_.eof() ? 0 : 1);
+    if (!streamedLine(line)) return false;
   }
   if (!line.empty() && line.back() == '\r') line.pop_back();
   // A UTF-8 byte order mark some editors write is not part of the first line.
@@ -51,10 +43,46 @@ bool LineSource::next(std::string& line) {
   return true;
 }
 
+// The line up to the next LF from the chunk, reading chunks as needed: one memchr per line
+// rather than getline's per-character stream calls. The offset is counted, not asked of the
+// stream (tellg() costs a system call).
+bool LineSource::streamedLine(std::string& line) {
+  line.clear();
+  bool read_any = false;
+  for (;;) {
+    if (chunk_pos_ == chunk_end_ && !fill()) return read_any;  // a last line without LF
+    read_any = true;
+    const char* from = chunk_.data() + chunk_pos_;
+    const size_t n = chunk_end_ - chunk_pos_;
+    const char* lf = static_cast<const char*>(std::memchr(from, '\n', n));
+    const size_t take = lf ? static_cast<size_t>(lf - from) : n;
+    line.append(from, take);
+    const size_t used = lf ? take + 1 : take;
+    chunk_pos_ += used;
+    next_offset_ += used;
+    if (lf) return true;
+  }
+}
+
+bool LineSource::fill() {
+  if (stream_eof_) return false;
+  if (chunk_.empty()) chunk_.resize(kChunk);
+  errno = 0;
+  stream_.read(chunk_.data(), static_cast<std::streamsize>(chunk_.size()));
+  // A read error is not the end of the file (badbit, not eofbit).
+  if (stream_.bad()) throw SourceReadError(path_, errno ? std::strerror(errno) : "read error");
+  chunk_pos_ = 0;
+  chunk_end_ = static_cast<size_t>(stream_.gcount());
+  if (!stream_) stream_eof_ = true;  // a short read: the end of the file
+  return chunk_end_ > 0;
+}
+
 void LineSource::seek(uint64_t offset) {
   if (!ok_) return;
   line_offset_ = next_offset_ = offset;
   if (buffer_) return;
+  chunk_pos_ = chunk_end_ = 0;
+  stream_eof_ = false;
   stream_.clear();
   stream_.seekg(static_cast<std::streamoff>(offset));
 }

@@ -11,6 +11,7 @@
 #include <fstream>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "ncc/support/source_manager.h"
 
@@ -37,9 +38,17 @@ class LineSource {
   void seek(uint64_t offset);
 
  private:
+  bool streamedLine(std::string& line);
+  bool fill();
+
+  static constexpr size_t kChunk = 64 * 1024;
   bool ok_ = false;
   const std::string* buffer_ = nullptr;
   std::ifstream stream_;
+  std::vector<char> chunk_;  // read ahead from stream_: [chunk_pos_, chunk_end_) not yet used
+  size_t chunk_pos_ = 0;
+  size_t chunk_end_ = 0;
+  bool stream_eof_ = false;
   std::filesystem::path path_;  // of the file streamed, for SourceReadError
   uint64_t line_offset_ = 0;
   uint64_t next_offset_ = 0;

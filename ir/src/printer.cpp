@@ -65,7 +65,7 @@ std::string modalText(const Modal& m) {
                                                         : "G62";
   const char* length = m.length_offset_sign > 0 ? "G43" : m.length_offset_sign < 0 ? "G44" : "G49";
   return absl::StrCat(planeCode(m.plane), " ", distance, " ", units, " ", feed_mode, " ", path, " ",
-                      m.work_offset, " ", length, " H", m.length_offset_h, " T", m.tool, " F",
+                      m.work_offset.c_str(), " ", length, " H", m.length_offset_h, " T", m.tool, " F",
                       num(m.feed), " S", num(m.spindle_speed));
 }
 

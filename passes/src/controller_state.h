@@ -142,12 +142,12 @@ struct ControllerState {
   bool feed_programmed = false;        // an F (or F1-F9) has been given since the start
   AxisValues position{};               // machine coordinates of the commanded point
 
-  std::string work_name = "G54";
+  ir::WorkOffsetName work_name = "G54";
   AxisValues work_value{};             // the selected work offset, as latched
   AxisValues external{};               // G10 L2 P0: added to every work offset
   AxisValues g92{};                    // G92 shift, shared by all work systems
   AxisValues local{};                  // G52 (dialects where it is shared)
-  std::map<std::string, AxisValues> local_by_work;  // G52 per work system (Mazak)
+  std::map<std::string, AxisValues, std::less<>> local_by_work;  // G52 per work system (Mazak)
 
   int h_selected = 0;                  // H number last programmed (modal even in G49)
   int d_selected = 0;
@@ -172,7 +172,7 @@ struct ControllerState {
 };
 
 struct OffsetTables {
-  std::map<std::string, AxisValues> work;   // "G54".., "G54.1P1".., "G54P1"..
+  std::map<std::string, AxisValues, std::less<>> work;  // "G54".., "G54.1P1".., "G54P1"..
   std::map<int, double> length, length_wear, radius, radius_wear;
 
   double toolLength(int h) const {
@@ -181,7 +181,7 @@ struct OffsetTables {
     if (auto it = length_wear.find(h); it != length_wear.end()) v += it->second;
     return v;
   }
-  AxisValues workOffset(const std::string& name) const {
+  AxisValues workOffset(std::string_view name) const {
     auto it = work.find(name);
     return it == work.end() ? AxisValues{} : it->second;
   }
@@ -191,7 +191,7 @@ struct OffsetTables {
 struct TableWrite {
   enum class Target : uint8_t { Work, External, Length, LengthWear, Radius, RadiusWear };
   Target target = Target::Work;
-  std::string work_name;  // Target::Work
+  ir::WorkOffsetName work_name;  // Target::Work
   int number = 0;         // register targets
   AxisValues values{};    // Work/External: per axis; registers: values[0]
   AxisMask axes = 0;

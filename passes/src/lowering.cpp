@@ -116,7 +116,7 @@ void commit(BlockContext& ctx) {
     auto set = [&](double& slot, double v) { slot = w.add ? slot + v : v; };
     switch (w.target) {
       case TableWrite::Target::Work: {
-        AxisValues& stored = tables.work[w.work_name];
+        AxisValues& stored = tables.work[w.work_name.str()];
         for (int i = 0; i < ctx.axisCount(); ++i)
           if (w.axes & (1u << i)) set(stored[i], w.values[i]);
         if (!ctx.behaviour.work_offset_write_on_reselect && w.work_name == ctx.next.work_name)

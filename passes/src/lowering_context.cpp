@@ -19,7 +19,7 @@ ir::Frame frameOf(const ControllerState& cs, const DialectBehaviour& b) {
   static constexpr AxisValues kNone{};
   const AxisValues* local = &cs.local;
   if (b.local_shift_per_work_offset) {
-    auto it = cs.local_by_work.find(cs.work_name);
+    auto it = cs.local_by_work.find(cs.work_name.view());
     local = it == cs.local_by_work.end() ? &kNone : &it->second;
   }
   for (int i = 0; i < kMaxAxes; ++i) f.shift[i] = cs.g92[i] + (*local)[i];
@@ -28,7 +28,7 @@ ir::Frame frameOf(const ControllerState& cs, const DialectBehaviour& b) {
 }
 
 AxisValues& localOf(ControllerState& cs, const DialectBehaviour& b) {
-  return b.local_shift_per_work_offset ? cs.local_by_work[cs.work_name] : cs.local;
+  return b.local_shift_per_work_offset ? cs.local_by_work[cs.work_name.str()] : cs.local;
 }
 
 // ---- LoweringCore ---------------------------------------------------------------------------
@@ -44,7 +44,7 @@ LoweringCore::LoweringCore(LoweringOptions o, DiagnosticEngine& d, ir::BlockSink
     const int i = machine->axisIndex(std::string(1, "XYZ"[s]));
     xyz[s] = static_cast<int8_t>(i >= 0 && i < kMaxAxes ? i : -1);
   }
-  tables.work = machine->work_offsets;
+  tables.work = {machine->work_offsets.begin(), machine->work_offsets.end()};
   tables.length = machine->tool_offsets.length;
   tables.radius = machine->tool_offsets.radius;
   powerOn();

@@ -14,7 +14,7 @@ std::string extendedName(const BlockContext& ctx, int64_t n) {
   return absl::StrCat(ctx.behaviour.extended_offset_is_g54_p ? "G54P" : "G54.1P", n);
 }
 
-bool isExtended(const std::string& name) {
+bool isExtended(std::string_view name) {
   return name.rfind("G54P", 0) == 0 || name.rfind("G54.1P", 0) == 0;
 }
 
@@ -83,7 +83,7 @@ void machineCoordinateMove(BlockContext& ctx, const GWord& g) {
 void localShift(BlockContext& ctx, const GWord& g) {
   if (ctx.behaviour.local_shift_in_extended_is_error && isExtended(ctx.next.work_name)) {
     ctx.fail(Alarm::LocalShiftInExtended, g.loc,
-             absl::StrCat("G52 cannot be given while ", ctx.next.work_name, " is selected"));
+             absl::StrCat("G52 cannot be given while ", ctx.next.work_name.c_str(), " is selected"));
     return;
   }
   AxisValues& local = localOf(ctx.next, ctx.behaviour);
@@ -171,7 +171,7 @@ void dataSetWork(BlockContext& ctx, const GWord& g, int l, bool add) {
     } else {
       ctx.fail(Alarm::ExtendedOffsetRequired, g.loc,
                absl::StrCat("G10 L20 without P needs an additional work system to be selected (",
-                            ctx.next.work_name, " is)"));
+                            ctx.next.work_name.c_str(), " is)"));
       return;
     }
     w.work_name = name;

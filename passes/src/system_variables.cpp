@@ -97,7 +97,7 @@ std::optional<double> modalCode(const LoweringCore& core, int group_number) {
                     : cs.comp.side == ir::CutterComp::Side::Right ? GAction::CompRight
                                                                   : GAction::CompCancel);
     case GGroup::WorkOffset: {
-      const std::string& w = cs.work_name;  // "G54".."G59", "G54.1P3", "G54P3"
+      const std::string w = cs.work_name.str();  // "G54".."G59", "G54.1P3", "G54P3"
       if (w.rfind("G54.1", 0) == 0) return 54.1;
       return std::stod(w.substr(1, 2));
     }
@@ -121,7 +121,7 @@ std::optional<eval::Value> modalWord(const LoweringCore& core, int n) {
     case 19: return eval::Value::of(cs.modal.spindle_speed);
     case 20: return eval::Value::of(cs.modal.tool);
     case 30: {
-      const std::string& w = cs.work_name;
+      const std::string w = cs.work_name.str();
       const size_t p = w.find('P');
       return p == std::string::npos ? eval::Value::none() : eval::Value::of(std::stod(w.substr(p + 1)));
     }

@@ -4,6 +4,7 @@
 // pattern (-0.0 is not 0.0).
 #include <bit>
 #include <string>
+#include <type_traits>
 
 #include "absl/strings/str_cat.h"
 #include "ncc/eval/block_store.h"
@@ -17,53 +18,40 @@ inline std::string posText(const frontend::BlockPosition& p) {
   return absl::StrCat("@", p.offset, "/", p.line, ":", p.column);
 }
 
-inline std::string diffExpr(const ast::Expr& a, const ast::Expr& b, const std::string& at) {
-  if (a.kind != b.kind) return at + ": kind";
-  if (std::bit_cast<uint64_t>(a.number) != std::bit_cast<uint64_t>(b.number))
-    return absl::StrCat(at, ": number ", a.number, " vs ", b.number);
-  if (a.has_point != b.has_point) return at + ": has_point";
-  if (a.digits != b.digits) return at + ": digits";
-  if (a.op != b.op) return absl::StrCat(at, ": op ", ast::opText(a.op), " vs ", ast::opText(b.op));
-  if (!(a.loc == b.loc)) return at + ": loc " + locText(a.loc) + " vs " + locText(b.loc);
-  if (a.args.size() != b.args.size()) return at + ": argument count";
-  for (size_t i = 0; i < a.args.size(); ++i)
-    if (std::string d = diffExpr(a.args[i], b.args[i], absl::StrCat(at, ".arg", i)); !d.empty())
-      return d;
-  return "";
-}
-
-inline std::string diffStatement(const ast::Statement& a, const ast::Statement& b,
-                                 const std::string& at) {
-  if (a.kind != b.kind) return at + ": kind";
-  if (a.loop_id != b.loop_id) return at + ": loop_id";
-  if (!(a.loc == b.loc)) return at + ": loc";
-  if (std::string d = diffExpr(a.target, b.target, at + ".target"); !d.empty()) return d;
-  if (std::string d = diffExpr(a.value, b.value, at + ".value"); !d.empty()) return d;
-  if (!a.then_assign != !b.then_assign) return at + ": then_assign presence";
-  if (a.then_assign) return diffStatement(*a.then_assign, *b.then_assign, at + ".then");
-  return "";
+// The first member that differs, walking the syntax tree by its schema (ast.h): a member added
+// to a node's schema is compared without a line here.
+template <class T>
+std::string diffValue(const T& a, const T& b, const std::string& at) {
+  if constexpr (ast::SchemaNode<T>) {
+    std::string d;
+    ast::forEachField<T>([&](const auto& f) {
+      if (d.empty()) d = diffValue(a.*f.member, b.*f.member, absl::StrCat(at, ".", f.name));
+    });
+    return d;
+  } else if constexpr (ast::kIsBox<T> || ast::kIsOptional<T>) {
+    if (!a != !b) return at + ": presence";
+    return a ? diffValue(*a, *b, at) : "";
+  } else if constexpr (ast::kIsList<T>) {
+    if (a.size() != b.size()) return absl::StrCat(at, ": ", a.size(), " vs ", b.size(), " items");
+    for (size_t i = 0; i < a.size(); ++i)
+      if (std::string d = diffValue(a[i], b[i], absl::StrCat(at, "[", i, "]")); !d.empty()) return d;
+    return "";
+  } else if constexpr (std::is_same_v<T, double>) {
+    if (std::bit_cast<uint64_t>(a) == std::bit_cast<uint64_t>(b)) return "";
+    return absl::StrCat(at, ": ", a, " vs ", b);
+  } else if constexpr (std::is_same_v<T, SourceLocation>) {
+    return a == b ? "" : at + ": " + locText(a) + " vs " + locText(b);
+  } else if constexpr (std::is_enum_v<T>) {
+    return a == b ? "" : absl::StrCat(at, ": ", static_cast<int>(a), " vs ", static_cast<int>(b));
+  } else if constexpr (ast::kIsInline<T>) {
+    return a == b ? "" : absl::StrCat(at, ": ", a.c_str(), " vs ", b.c_str());
+  } else {
+    return a == b ? "" : absl::StrCat(at, ": ", a, " vs ", b);
+  }
 }
 
 inline std::string diffBlock(const ast::Block& a, const ast::Block& b, const std::string& at) {
-  if (!(a.loc == b.loc)) return at + ": loc " + locText(a.loc) + " vs " + locText(b.loc);
-  if (a.skip_level != b.skip_level) return at + ": skip_level";
-  if (a.sequence != b.sequence) return at + ": sequence";
-  if (a.program_number != b.program_number) return at + ": program_number";
-  if (a.percent != b.percent) return at + ": percent";
-  if (a.comments != b.comments) return at + ": comments";
-  if (a.words.size() != b.words.size()) return at + ": word count";
-  for (size_t i = 0; i < a.words.size(); ++i) {
-    const std::string w = absl::StrCat(at, ".word", i);
-    if (a.words[i].address != b.words[i].address) return w + ": address";
-    if (!(a.words[i].loc == b.words[i].loc)) return w + ": loc";
-    if (std::string d = diffExpr(a.words[i].value, b.words[i].value, w); !d.empty()) return d;
-  }
-  if (a.statements.size() != b.statements.size()) return at + ": statement count";
-  for (size_t i = 0; i < a.statements.size(); ++i)
-    if (std::string d = diffStatement(a.statements[i], b.statements[i], absl::StrCat(at, ".stmt", i));
-        !d.empty())
-      return d;
-  return "";
+  return diffValue(a, b, at);
 }
 
 inline std::string diffStore(const BlockStore& a, const BlockStore& b) {

@@ -4,6 +4,7 @@
 // compiler's SourceProgramStore on real files is in tests/driver/block_store_builder_test.cpp.
 #include "ncc/eval/block_store.h"
 
+#include <cmath>
 #include <limits>
 #include <random>
 
@@ -16,6 +17,10 @@ namespace {
 using test::diffStore;
 using Kind = ast::Expr::Kind;
 using Start = StoredBlock::Start;
+
+// EncodingIsPinned: the size and FNV-1a hash of richStore() in version 3.
+constexpr size_t kPinnedSize = 528;
+constexpr uint64_t kPinnedHash = 2895376719415455483ull;
 
 ast::Expr num(double v, bool point, SourceLocation loc, uint8_t digits = 0) {
   ast::Expr e = ast::Expr::literal(v, point, loc);
@@ -112,8 +117,8 @@ BlockStore richStore() {
   ast::Statement if_then;
   if_then.kind = ast::Statement::Kind::IfThen;
   if_then.value = node(Kind::Binary, "EQ", {var(2, {3, 4, 40}), num(-1, false, {3, 4, 45})}, {3, 4, 40});
-  if_then.then_assign = std::make_unique<ast::Statement>(assign);
-  if_then.then_assign->then_assign = std::make_unique<ast::Statement>(go);  // nested: kept too
+  if_then.then_assign = assign;
+  if_then.then_assign->then_assign = go;  // nested: kept too
   statements.statements.push_back(if_then);
   ast::Statement loop;
   loop.kind = ast::Statement::Kind::While;
@@ -164,6 +169,119 @@ TEST(BlockStore, RoundTripKeepsEveryField) {
   BlockStore changed = original;
   changed.files[0].blocks[2].block.words[1].value.number = 0.0;
   EXPECT_NE(diffStore(original, changed), "");
+}
+
+// The bytes of version 3, pinned: a change to a node's schema or to the codec changes them.
+// Then raise kVersion (block_store.cpp) and write the new hash here.
+TEST(BlockStore, EncodingIsPinned) {
+  const std::vector<uint8_t> bytes = encodeBlockStore(richStore());
+  uint64_t hash = 0xCBF29CE484222325ull;  // FNV-1a 64
+  for (uint8_t b : bytes) hash = (hash ^ b) * 0x100000001B3ull;
+  EXPECT_EQ(bytes.size(), kPinnedSize);
+  EXPECT_EQ(hash, kPinnedHash) << std::hex << hash;
+}
+
+// Random trees (every node kind, operator, number form, location form and optional member)
+// come back member for member, and encode to the same bytes again.
+class RandomTree {
+ public:
+  explicit RandomTree(uint32_t seed) : rng_(seed) {}
+
+  ast::Block block(uint32_t file, uint32_t line) {
+    ast::Block b;
+    b.loc = loc(file, line);
+    if (chance(4)) b.skip_level = pick(0, 9);
+    if (chance(3)) b.sequence = integer();
+    if (chance(6)) b.program_number = integer();
+    b.percent = chance(8);
+    for (int i = pick(0, 6); i > 0; --i) {
+      ast::Word& w = b.words.emplace_back();
+      w.address = address();
+      w.loc = loc(file, line);
+      w.value = expr(file, line, pick(0, 4));
+    }
+    for (int i = chance(3) ? pick(1, 3) : 0; i > 0; --i)
+      b.statements.push_back(statement(file, line, 2));
+    for (int i = chance(4) ? pick(1, 2) : 0; i > 0; --i) {
+      std::string c;
+      for (int n = pick(0, 12); n > 0; --n) c.push_back(static_cast<char>(pick(1, 255)));
+      b.comments.push_back(c);
+    }
+    return b;
+  }
+
+ private:
+  int pick(int lo, int hi) { return std::uniform_int_distribution<int>(lo, hi)(rng_); }
+  bool chance(int one_in) { return pick(1, one_in) == 1; }
+  int64_t integer() {
+    return chance(2) ? pick(0, 99999) : static_cast<int64_t>(rng_()) << 20 | static_cast<int64_t>(rng_());
+  }
+  SourceLocation loc(uint32_t file, uint32_t line) {
+    switch (pick(0, 4)) {
+      case 0: return {};                                                  // none
+      case 1: return {file + 1, static_cast<uint32_t>(pick(1, 1 << 30)), 7};  // another file
+      default: return {file, line, static_cast<uint32_t>(pick(1, 5000))};
+    }
+  }
+  ast::Address address() {
+    switch (pick(0, 5)) {
+      case 0: return ast::Address(std::string(",") + static_cast<char>('A' + pick(0, 25)));
+      case 1: return ast::Address(std::string(static_cast<size_t>(pick(2, 14)), static_cast<char>('A' + pick(0, 25))));
+      case 2: return ast::Address(static_cast<char>('a' + pick(0, 25)));
+      default: return ast::Address(static_cast<char>('A' + pick(0, 25)));
+    }
+  }
+  double number() {
+    switch (pick(0, 6)) {
+      case 0: return 0.0;
+      case 1: return -0.0;
+      case 2: return std::bit_cast<double>(static_cast<uint64_t>(rng_()) << 32 | rng_());  // any bits
+      case 3: return static_cast<double>(pick(-100000, 100000)) / std::pow(10.0, pick(0, 16));
+      default: return static_cast<double>(pick(-99999, 99999)) / 1000.0;
+    }
+  }
+  ast::Expr expr(uint32_t file, uint32_t line, int depth) {
+    ast::Expr e;
+    e.kind = static_cast<Kind>(pick(0, ast::kEnumValues<Kind> - 1));
+    e.op = static_cast<ast::Op>(pick(0, ast::kEnumValues<ast::Op> - 1));
+    e.number = number();
+    e.has_point = chance(2);
+    e.digits = static_cast<uint8_t>(pick(0, 255));
+    e.loc = loc(file, line);
+    for (int i = depth > 0 ? pick(0, 3) : 0; i > 0; --i) e.args.push_back(expr(file, line, depth - 1));
+    return e;
+  }
+  ast::Statement statement(uint32_t file, uint32_t line, int depth) {
+    ast::Statement s;
+    s.kind = static_cast<ast::Statement::Kind>(pick(0, ast::kEnumValues<ast::Statement::Kind> - 1));
+    s.loc = loc(file, line);
+    s.target = expr(file, line, 1);
+    s.value = expr(file, line, 2);
+    s.loop_id = chance(2) ? pick(-3, 3) : static_cast<int>(rng_());
+    if (depth > 0 && chance(2)) s.then_assign = statement(file, line, depth - 1);
+    return s;
+  }
+  std::mt19937 rng_;
+};
+
+TEST(BlockStore, RandomTreesRoundTrip) {
+  for (uint32_t seed = 1; seed <= 300; ++seed) {
+    RandomTree random(seed);
+    BlockStore s;
+    s.main_file = 2;
+    StoredFile f;
+    f.id = 2;
+    for (uint32_t line = 1; line <= 8; ++line)
+      f.blocks.push_back(stored(line * 40, line, 1, random.block(2, line)));
+    f.record_end = {1000, 9, 1};
+    s.files.push_back(f);
+    const std::vector<uint8_t> bytes = encodeBlockStore(s);
+    std::string error;
+    std::optional<BlockStore> decoded = decodeBlockStore(bytes, error);
+    ASSERT_TRUE(decoded) << "seed " << seed << ": " << error;
+    ASSERT_EQ(diffStore(s, *decoded), "") << "seed " << seed;
+    ASSERT_EQ(encodeBlockStore(*decoded), bytes) << "seed " << seed;
+  }
 }
 
 TEST(BlockStore, EmptyStoreRoundTrips) {
@@ -256,15 +374,15 @@ TEST(BlockStore, CorruptedCopiesNeverCrash) {
 }
 
 TEST(BlockStore, HugeCountsAreRefusedBeforeAllocating) {
-  // "NCBS" v2, main 1, ahead 0, jumps 0, idle blocks 0, no variables, then 2^62 files.
-  std::vector<uint8_t> bytes = {'N', 'C', 'B', 'S', 2, 0, 1, 0, 0, 0, 0,
+  // "NCBS" v3, main 1, ahead 0, jumps 0, idle blocks 0, no variables, then 2^62 files.
+  std::vector<uint8_t> bytes = {'N', 'C', 'B', 'S', 3, 0, 1, 0, 0, 0, 0,
                                 0x80, 0x80, 0x80, 0x80, 0x80, 0x80, 0x80, 0x80, 0x40};
   std::string error;
   EXPECT_FALSE(decodeBlockStore(bytes, error));
   EXPECT_NE(error.find("count beyond the remaining bytes"), std::string::npos) << error;
-  bytes = {'N', 'C', 'B', 'S', 3, 0};
+  bytes = {'N', 'C', 'B', 'S', 4, 0};
   EXPECT_FALSE(decodeBlockStore(bytes, error));
-  EXPECT_NE(error.find("version 3"), std::string::npos) << error;
+  EXPECT_NE(error.find("version 4"), std::string::npos) << error;
   bytes = {'X', 'C', 'B', 'S', 1, 0};
   EXPECT_FALSE(decodeBlockStore(bytes, error));
   EXPECT_NE(error.find("NCBS"), std::string::npos) << error;

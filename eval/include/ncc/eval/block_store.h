@@ -6,13 +6,14 @@
 // folder gave at compile time; StoredProgramStore serves it to the evaluator with the same
 // semantics, without text or parser. The compiler builds it in driver/src/block_store_builder.h.
 //
-// Encoding (encodeBlockStore): little-endian, "NCBS" then a u16 version (2). Unsigned integers
+// Encoding (encodeBlockStore): little-endian, "NCBS" then a u16 version (3). Unsigned integers
 // are LEB128 varints, signed ones zigzag varints, strings a varint length and bytes; a number
-// is written as m / 10^k (varint m and k) when that gives its double back bit for bit, as
-// every decimal literal of a program does, else as its IEEE bit pattern (-0.0, NaN payloads,
-// computed values round-trip exactly). Block positions are delta-coded within a file and
-// source locations of words and expressions relative to their block's line, which keeps a CAM
-// program's store near the size of its text.
+// is written as m / 10^k (one varint: zigzag(m) << 4 | k) when that gives its double back bit
+// for bit, as every decimal literal of a program does, else as its IEEE bit pattern (-0.0, NaN
+// payloads, computed values round-trip exactly). The syntax tree is written by its schema
+// (ast::Schema): a node is a mask of the members that differ from their default, then those
+// members. Block positions are delta-coded within a file and source locations relative to the
+// node or list item before them, which keeps a CAM program's store near the size of its text.
 #include <cstdint>
 #include <map>
 #include <memory>

@@ -3,15 +3,17 @@
 // A block is one line. The tree says what was written, nothing more: values keep whether they
 // had a decimal point (the decimal-point rules are semantics, applied in lowering), addresses
 // keep their letter, and macro expressions stay unevaluated.
-#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <memory>
 #include <optional>
 #include <string>
 #include <string_view>
+#include <tuple>
+#include <type_traits>
 #include <vector>
 
+#include "ncc/support/inline_string.h"
 #include "ncc/support/source_location.h"
 
 namespace ncc::ast {
@@ -26,9 +28,34 @@ namespace ncc::ast {
 // (docs/macro.md, Expression depth).
 inline constexpr int kMaxExprDepth = 256;
 
+// An owned node that copies deeply: the recursive members of the tree (a statement inside a
+// statement). Empty, or holding one T.
+template <class T>
+class Box {
+ public:
+  Box() = default;
+  Box(T value) : p_(std::make_unique<T>(std::move(value))) {}
+  Box(const Box& o) : p_(o.p_ ? std::make_unique<T>(*o.p_) : nullptr) {}
+  Box(Box&&) noexcept = default;
+  Box& operator=(const Box& o) {
+    if (this != &o) p_ = o.p_ ? std::make_unique<T>(*o.p_) : nullptr;
+    return *this;
+  }
+  Box& operator=(Box&&) noexcept = default;
+
+  explicit operator bool() const { return p_ != nullptr; }
+  T& operator*() const { return *p_; }
+  T* operator->() const { return p_.get(); }
+  T& emplace() { p_ = std::make_unique<T>(); return *p_; }
+
+ private:
+  std::unique_ptr<T> p_;
+};
+
 // The operators and functions an expression can apply, one table for everything that reads or
 // writes them (both parsers, the printers, the evaluator, the block store): a new one is added
-// here and nowhere can forget it. `text` is the canonical spelling (aliases such as ATN or SQR
+// here and nowhere can forget it. The block store writes an operator as its index here: add
+// new ones at the end (and raise the store's version). `text` is the canonical spelling (aliases such as ATN or SQR
 // are resolved by the parser); `arity` is the argument count (ATAN takes 1 or 2: 0 here).
 enum class Op : uint8_t {
   None,  // a node that applies none (a literal, a variable, a bracket)
@@ -75,37 +102,7 @@ constexpr bool isWordOperator(Op op) {
 // An address as written: a letter (`X`), a comma address (`,C`), or a machine axis name of up
 // to 8 characters (`X1`); DIN's short names (`CR`, `I1`, `ADIS`) fit too. Held inline: a block
 // has a handful of words and copying them must not allocate.
-class Address {
- public:
-  static constexpr size_t kCapacity = 14;
-  constexpr Address() = default;
-  constexpr explicit Address(char letter) : size_(1) { text_[0] = letter; }
-  // Longer text is cut to kCapacity: callers check lengths that input controls (the block
-  // store's reader, the machine file's axis names).
-  constexpr Address(std::string_view text) : size_(static_cast<uint8_t>(std::min(text.size(), kCapacity))) {
-    for (size_t i = 0; i < size_; ++i) text_[i] = text[i];
-  }
-  constexpr Address(const char* text) : Address(std::string_view(text)) {}
-  Address(const std::string& text) : Address(std::string_view(text)) {}
-
-  constexpr std::string_view view() const { return {text_.data(), size_}; }
-  constexpr const char* c_str() const { return text_.data(); }  // for absl::StrCat
-  constexpr operator std::string_view() const { return view(); }
-  std::string str() const { return std::string(view()); }
-  constexpr size_t size() const { return size_; }
-  constexpr bool empty() const { return size_ == 0; }
-  constexpr char operator[](size_t i) const { return text_[i]; }
-  // One letter `c`: the common test in passes.
-  constexpr bool is(char c) const { return size_ == 1 && text_[0] == c; }
-
-  friend constexpr bool operator==(const Address& a, const Address& b) { return a.view() == b.view(); }
-  friend constexpr bool operator==(const Address& a, std::string_view b) { return a.view() == b; }
-  friend constexpr bool operator==(const Address& a, const char* b) { return a.view() == b; }
-
- private:
-  std::array<char, kCapacity + 1> text_{};  // NUL-terminated
-  uint8_t size_ = 0;
-};
+using Address = InlineString<14>;
 
 // An expression: a literal, a `#` variable, a bracketed expression, an operator or a function.
 struct Expr {
@@ -119,12 +116,12 @@ struct Expr {
     Vacant,    // #0 literal handled as Variable; Vacant reserved for an empty argument
   };
   Kind kind = Kind::Number;
-  double number = 0.0;
   bool has_point = false;  // literal written with a decimal point ("10." or "1.5")
   uint8_t digits = 0;      // count of digits written, for per-address digit-limit checks
   Op op = Op::None;
-  std::vector<Expr> args;
   SourceLocation loc;
+  double number = 0.0;
+  std::vector<Expr> args;
 
   static Expr literal(double v, bool point, SourceLocation l) {
     Expr e;
@@ -155,24 +152,11 @@ struct Statement {
     End,         // END id
   };
   Kind kind = Kind::Assign;
+  SourceLocation loc;
   Expr target;  // Assign: the variable (a Variable expr); Goto/IfGoto: the sequence number
   Expr value;   // Assign: the value; If*/While: the condition
   int loop_id = 0;  // DO m / END m
-  std::unique_ptr<Statement> then_assign;  // IfThen
-  SourceLocation loc;
-
-  // Copies are deep (the evaluator keeps parsed loop bodies).
-  Statement() = default;
-  Statement(const Statement& o)
-      : kind(o.kind), target(o.target), value(o.value), loop_id(o.loop_id),
-        then_assign(o.then_assign ? std::make_unique<Statement>(*o.then_assign) : nullptr),
-        loc(o.loc) {}
-  Statement(Statement&&) noexcept = default;
-  Statement& operator=(const Statement& o) {
-    if (this != &o) *this = Statement(o);
-    return *this;
-  }
-  Statement& operator=(Statement&&) noexcept = default;
+  Box<Statement> then_assign;  // IfThen (copies are deep: the evaluator keeps loop bodies)
 };
 
 struct Block {
@@ -188,5 +172,98 @@ struct Block {
     return words.empty() && statements.empty() && !sequence && !program_number && !percent;
   }
 };
+
+// ---- The schema: every member of every node, listed once ------------------------------------
+// The block store's codec (eval/src/block_store.cpp: writer, reader, nesting) and the tests'
+// deep comparison walk these lists rather than naming members, so a member listed here reaches
+// all of them. The size checks catch a member added to a node and not to its list. Members are
+// listed parents' location first: the codec codes the locations inside a node relative to it.
+template <class Node, class T>
+struct Field {
+  const char* name;
+  T Node::*member;
+};
+template <class Node, class T>
+constexpr Field<Node, T> field(const char* name, T Node::*member) {
+  return {name, member};
+}
+
+// Schema<Node>::fields; `masked`: whether the codec writes which members differ from their
+// default (false: every member is always written, for a node that has no optional members);
+// `nests`: whether the node is a level of nesting (the decoder bounds the levels, and the
+// evaluator and printer recurse once per level).
+template <class Node>
+struct Schema;
+template <>
+struct Schema<Expr> {
+  static constexpr bool masked = true;
+  static constexpr bool nests = true;
+  static constexpr auto fields =
+      std::tuple{field("kind", &Expr::kind), field("loc", &Expr::loc), field("has_point", &Expr::has_point),
+                 field("digits", &Expr::digits), field("op", &Expr::op), field("number", &Expr::number),
+                 field("args", &Expr::args)};
+};
+template <>
+struct Schema<Word> {
+  static constexpr bool masked = false;
+  static constexpr bool nests = false;
+  static constexpr auto fields = std::tuple{field("address", &Word::address), field("loc", &Word::loc),
+                                            field("value", &Word::value)};
+};
+template <>
+struct Schema<Statement> {
+  static constexpr bool masked = true;
+  static constexpr bool nests = true;
+  static constexpr auto fields =
+      std::tuple{field("kind", &Statement::kind), field("loc", &Statement::loc),
+                 field("target", &Statement::target), field("value", &Statement::value),
+                 field("loop_id", &Statement::loop_id), field("then_assign", &Statement::then_assign)};
+};
+template <>
+struct Schema<Block> {
+  static constexpr bool masked = true;
+  static constexpr bool nests = false;
+  static constexpr auto fields =
+      std::tuple{field("loc", &Block::loc), field("skip_level", &Block::skip_level),
+                 field("sequence", &Block::sequence), field("program_number", &Block::program_number),
+                 field("percent", &Block::percent), field("words", &Block::words),
+                 field("statements", &Block::statements), field("comments", &Block::comments)};
+};
+// A new member: list it above, then update the size here (x86-64, the platform CI builds).
+static_assert(sizeof(Expr) == 48, "Expr changed: update Schema<Expr>");
+static_assert(sizeof(Word) == 80, "Word changed: update Schema<Word>");
+static_assert(sizeof(Statement) == 128, "Statement changed: update Schema<Statement>");
+static_assert(sizeof(Block) == 128, "Block changed: update Schema<Block>");
+
+// Walking a schema: f(field) for each Field of node type N, in order.
+template <class T>
+concept SchemaNode = requires { Schema<T>::fields; };
+template <SchemaNode N, class F>
+constexpr void forEachField(F&& f) {
+  std::apply([&](const auto&... field) { (f(field), ...); }, Schema<N>::fields);
+}
+template <SchemaNode N>
+constexpr size_t fieldCount() {
+  return std::tuple_size_v<std::remove_cvref_t<decltype(Schema<N>::fields)>>;
+}
+// The member types a schema walker handles besides nodes, scalars and strings.
+template <class T> inline constexpr bool kIsList = false;
+template <class T> inline constexpr bool kIsList<std::vector<T>> = true;
+template <class T> inline constexpr bool kIsOptional = false;
+template <class T> inline constexpr bool kIsOptional<std::optional<T>> = true;
+template <class T> inline constexpr bool kIsBox = false;
+template <class T> inline constexpr bool kIsBox<Box<T>> = true;
+template <class T> inline constexpr bool kIsInline = false;
+template <size_t N> inline constexpr bool kIsInline<InlineString<N>> = true;
+
+// The number of values of each enum of the tree: the codec refuses others.
+template <class E>
+inline constexpr uint8_t kEnumValues = 0;
+template <>
+inline constexpr uint8_t kEnumValues<Expr::Kind> = static_cast<uint8_t>(Expr::Kind::Vacant) + 1;
+template <>
+inline constexpr uint8_t kEnumValues<Statement::Kind> = static_cast<uint8_t>(Statement::Kind::End) + 1;
+template <>
+inline constexpr uint8_t kEnumValues<Op> = static_cast<uint8_t>(kOps.size());
 
 }  // namespace ncc::ast

@@ -18,6 +18,7 @@
 
 #include "absl/container/inlined_vector.h"
 #include "ncc/machine/axes.h"
+#include "ncc/support/inline_string.h"
 #include "ncc/support/source_location.h"
 
 namespace ncc::ir {
@@ -31,13 +32,17 @@ enum class PathControl : uint8_t { Continuous, ExactStop, Tapping, CornerOverrid
 enum class RapidType : uint8_t { Linear, PerAxis };  // G00 interpolation type (parameter)
 
 // Modal state in force for the block (after its own G codes took effect).
+// A work offset's name, "G54" or "G54.1P300": inline, as every block carries it. The machine
+// file's names are at most 9 characters (G54.1P<n>, n <= 300).
+using WorkOffsetName = InlineString<15>;
+
 struct Modal {
   Plane plane = Plane::XY;
   DistanceMode distance = DistanceMode::Absolute;
   Units units = Units::Millimetre;
   FeedMode feed_mode = FeedMode::PerMinute;
   PathControl path = PathControl::Continuous;
-  std::string work_offset = "G54";  // name as in MachineConfig::work_offsets
+  WorkOffsetName work_offset = "G54";  // name as in MachineConfig::work_offsets
   int length_offset_h = 0;          // H register in force (0 = none)
   int length_offset_sign = 0;       // +1 G43, -1 G44, 0 G49
   double feed = 0.0;                // modal F, normalised (mm/min, or mm/rev in G95)
