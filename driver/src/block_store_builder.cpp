@@ -114,7 +114,6 @@ eval::StoredFile readFile(SourceProgramStore& store, uint32_t file,
   eval::StoredFile out;
   out.id = file;
   out.name = fileName(store.sources(), file);
-  out.language = store.readerOptions().initial_language;
   out.record_end = index.recordEnd();
   const frontend::ReaderOptions& options = store.readerOptions();
   frontend::BlockReader reader(store.sources(), file, diags, options);

@@ -36,6 +36,7 @@ frontend::ReaderOptions readerOptionsFor(Dialect dialect) {
   // FANUC and Mazak end a block at ';' (EOB); the Siemens ISO manual uses ';' to start an
   // annotation that runs to the end of the line.
   options.semicolon_ends_block = dialect != Dialect::SiemensIsoM;
+  options.language_switch = dialect == Dialect::SiemensIsoM;
   return options;
 }
 

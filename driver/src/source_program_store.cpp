@@ -34,8 +34,7 @@ class ReaderCursor final : public eval::BlockCursor {
     at_ = reader_.position();
     if (!read) return nullptr;
     if (cache_.size() >= kMaxCached) cache_.clear();
-    cache_.insert_or_assign(key(from), Cached{from, reader_.lastPosition(), at_,
-                                              reader_.language(), current_});
+    cache_.insert_or_assign(key(from), Cached{from, reader_.lastPosition(), at_, current_});
     return &current_;
   }
   eval::ProgramPoint lastPoint() const override {
@@ -47,7 +46,6 @@ class ReaderCursor final : public eval::BlockCursor {
     at_ = point.position;
     synced_ = false;
   }
-  void setLanguage(frontend::Language language) override { reader_.setLanguage(language); }
   uint64_t rejectedBlocks() const override { return reader_.stats().rejected_blocks; }
   uint32_t file() const override { return reader_.file(); }
 
@@ -63,15 +61,13 @@ class ReaderCursor final : public eval::BlockCursor {
     frontend::BlockPosition from;   // where reading stood (blank text may precede the block)
     frontend::BlockPosition at;     // where the block starts
     frontend::BlockPosition after;  // where reading goes on
-    frontend::Language language;    // read in (G290/G291 may read the same text otherwise)
     ast::Block block;
   };
   static uint64_t key(const frontend::BlockPosition& p) { return p.offset * 4096u + p.column; }
   const Cached* find(const frontend::BlockPosition& from) const {
     auto it = cache_.find(key(from));
-    if (it == cache_.end() || !(it->second.from == from) ||
-        it->second.language != reader_.language())
-      return nullptr;
+    // The language is part of a position: text read in another language is another block.
+    if (it == cache_.end() || !(it->second.from == from)) return nullptr;
     return &it->second;
   }
   void syncReader() {

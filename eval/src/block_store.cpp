@@ -198,10 +198,16 @@ void writeBlock(Writer& w, const StoredBlock& stored, uint32_t file) {
   writeNode(w, stored.block, LineBase{file, stored.position.line, stored.position.column});
 }
 
+// A position's column and language in one varint: column << 1 | (language is DIN).
+static_assert(static_cast<int>(frontend::Language::Din) == 1, "one bit holds the language");
+void writeColumn(Writer& w, const frontend::BlockPosition& p) {
+  w.varint(uint64_t{p.column} << 1 | static_cast<uint64_t>(p.language));
+}
+
 void writePosition(Writer& w, const frontend::BlockPosition& p) {
   w.varint(p.offset);
   w.varint(p.line);
-  w.varint(p.column);
+  writeColumn(w, p);
 }
 
 void writePoint(Writer& w, const ProgramPoint& p) {
@@ -442,8 +448,17 @@ bool readBlock(Reader& r, StoredBlock& stored, uint32_t file) {
 }
 
 
+bool readColumn(Reader& r, frontend::BlockPosition& p) {
+  uint64_t v = 0;
+  if (!r.varint(v)) return false;
+  if ((v >> 1) > std::numeric_limits<uint32_t>::max()) return r.fail("column out of range");
+  p.column = static_cast<uint32_t>(v >> 1);
+  p.language = static_cast<frontend::Language>(v & 1);
+  return true;
+}
+
 bool readPosition(Reader& r, frontend::BlockPosition& p) {
-  return r.varint(p.offset) && r.u32(p.line, "line") && r.u32(p.column, "column");
+  return r.varint(p.offset) && r.u32(p.line, "line") && readColumn(r, p);
 }
 
 bool readPoint(Reader& r, ProgramPoint& p) {
@@ -451,19 +466,16 @@ bool readPoint(Reader& r, ProgramPoint& p) {
 }
 
 bool readFile(Reader& r, StoredFile& f) {
-  uint8_t language = 0;
-  if (!r.u32(f.id, "file id") || !r.str(f.name) || !r.u8(language)) return false;
-  if (language > static_cast<uint8_t>(frontend::Language::Din)) return r.fail("unknown language");
-  f.language = static_cast<frontend::Language>(language);
+  if (!r.u32(f.id, "file id") || !r.str(f.name)) return false;
   uint64_t n = 0;
-  if (!r.count(n, 6)) return false;  // position (3), header, location, word count
+  if (!r.count(n, 5)) return false;  // position (3), start, mask
   frontend::BlockPosition previous{0, 0, 0};
   for (uint64_t i = 0; i < n; ++i) {
     StoredBlock& b = f.blocks.emplace_back();
     // Positions: offset and line as differences from the previous block's (wrapping), the
-    // column as it is. Order is checked below, so a difference cannot lie.
+    // column (and language) as it is. Order is checked below, so a difference cannot lie.
     int64_t offset_delta = 0, line_delta = 0;
-    if (!r.svarint(offset_delta) || !r.svarint(line_delta) || !r.u32(b.position.column, "column"))
+    if (!r.svarint(offset_delta) || !r.svarint(line_delta) || !readColumn(r, b.position))
       return false;
     b.position.offset = previous.offset + static_cast<uint64_t>(offset_delta);
     const int64_t line = int64_t{previous.line} + line_delta;
@@ -527,13 +539,12 @@ std::vector<uint8_t> encodeBlockStore(const BlockStore& store) {
   for (const StoredFile& f : store.files) {
     w.varint(f.id);
     w.str(f.name);
-    w.u8(static_cast<uint8_t>(f.language));
     w.varint(f.blocks.size());
     frontend::BlockPosition previous{0, 0, 0};
     for (const StoredBlock& b : f.blocks) {
       w.svarint(static_cast<int64_t>(b.position.offset - previous.offset));
       w.svarint(int64_t{b.position.line} - int64_t{previous.line});
-      w.varint(b.position.column);
+      writeColumn(w, b.position);
       previous = b.position;
       writeBlock(w, b, f.id);
     }
@@ -580,7 +591,7 @@ std::optional<BlockStore> decodeBlockStore(std::span<const uint8_t> bytes, std::
       return std::nullopt;
     }
   }
-  if (!r.count(n, 4)) return std::nullopt;  // id, name, language, block count
+  if (!r.count(n, 4)) return std::nullopt;  // id, name, block count, record end
   std::set<uint32_t> ids;
   for (uint64_t i = 0; i < n; ++i) {
     StoredFile& f = store.files.emplace_back();
@@ -638,11 +649,10 @@ struct StoredProgramStore::FileIndex {
 
 class StoredProgramStore::Cursor final : public BlockCursor {
  public:
-  Cursor(StoredProgramStore& owner, const StoredFile* file, uint32_t id)
-      : owner_(owner), file_(file), id_(id) {}
+  Cursor(const StoredFile* file, uint32_t id) : file_(file), id_(id) {}
 
   const ast::Block* next() override {
-    if (refused_ || !file_ || i_ >= file_->blocks.size()) return nullptr;
+    if (!file_ || i_ >= file_->blocks.size()) return nullptr;
     last_ = file_->blocks[i_].position;
     return &file_->blocks[i_++].block;
   }
@@ -654,22 +664,14 @@ class StoredProgramStore::Cursor final : public BlockCursor {
         [](const StoredBlock& b, const frontend::BlockPosition& p) { return b.position < p; });
     i_ = static_cast<size_t>(it - file_->blocks.begin());
   }
-  void setLanguage(frontend::Language language) override {
-    const frontend::Language stored = file_ ? file_->language : frontend::Language::Iso;
-    if (language == stored) return;
-    refused_ = true;
-    if (!owner_.refusal_) owner_.refusal_ = LanguageRefusal{lastPoint(), language, stored};
-  }
   uint64_t rejectedBlocks() const override { return 0; }  // every stored block was parsed
   uint32_t file() const override { return id_; }
 
  private:
-  StoredProgramStore& owner_;
   const StoredFile* file_;
   uint32_t id_;
   size_t i_ = 0;
   frontend::BlockPosition last_;  // {0, 1, 1} before the first block, as a BlockReader's
-  bool refused_ = false;
 };
 
 StoredProgramStore::StoredProgramStore(const BlockStore& store) : store_(store) {
@@ -691,7 +693,7 @@ StoredProgramStore::FileIndex* StoredProgramStore::fileIndex(uint32_t file) {
 
 std::unique_ptr<BlockCursor> StoredProgramStore::open(uint32_t file) {
   const FileIndex* index = fileIndex(file);
-  return std::make_unique<Cursor>(*this, index ? index->file : nullptr, file);
+  return std::make_unique<Cursor>(index ? index->file : nullptr, file);
 }
 
 std::optional<ProgramPoint> StoredProgramStore::findProgram(int64_t number, uint32_t calling_file) {

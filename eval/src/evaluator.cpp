@@ -1,12 +1,14 @@
 // The block loop of evaluation: reads the current program's blocks, keeps to the program's
 // bounds, runs statements and turns word expressions into values. Calls and returns are in
 // calls.cpp.
+#include <algorithm>
 #include <cmath>
 #include <utility>
 
 #include "absl/strings/str_cat.h"
 #include "evaluator_impl.h"
 #include "ncc/eval/address_value.h"
+#include "number_format.h"
 
 namespace ncc::eval {
 
@@ -357,6 +359,15 @@ const ast::Block* Evaluator::Impl::evaluateBlock(const ast::Block& block, const 
       return nullptr;
     }
     if (a->dropped) continue;  // an address whose variable is vacant is not there at all
+    if (w.address.is('G') &&
+        std::find(rules.text_g_codes.begin(), rules.text_g_codes.end(), a->value) !=
+            rules.text_g_codes.end()) {
+      fail(EvalError::AddressValue, w.loc,
+           absl::StrCat("G", formatNumber(a->value),
+                        " must be written as a number: the language it switches to is read "
+                        "from the program text, before any value is computed"));
+      return nullptr;
+    }
     // A computed value is a number in the input unit, as if written with its decimal point;
     // an integer address takes it as the integer it is.
     ast::Word& computed = out.words.emplace_back();
@@ -465,10 +476,6 @@ void Evaluator::madeProgress() { impl_->progress_at = impl_->blocks_read; }
 
 void Evaluator::programEndCode() {
   if (impl_->end == ProgramEnd::Running) impl_->end = ProgramEnd::ProgramEndCode;
-}
-
-void Evaluator::setLanguage(frontend::Language language) {
-  impl_->frames.back().cursor->setLanguage(language);
 }
 
 uint64_t Evaluator::rejectedBlocks() const {

@@ -16,12 +16,23 @@ bool isBlankText(std::string_view text) {
   return true;
 }
 
+bool isLiteralG(const ast::Word& w, double code) {
+  return w.address.is('G') && w.value.kind == ast::Expr::Kind::Number && w.value.number == code &&
+         !w.value.has_point;
+}
+
 // A block that only switches back to ISO mode (`G291`, with an optional N and comments) is
 // the same text in both languages, so it is read even in DIN mode.
 bool isG291Only(const ast::Block& b) {
-  return b.statements.empty() && b.words.size() == 1 && b.words[0].address == "G" &&
-         b.words[0].value.isLiteral() && b.words[0].value.number == 291.0 &&
-         !b.words[0].value.has_point;
+  return b.statements.empty() && b.words.size() == 1 && isLiteralG(b.words[0], 291.0);
+}
+
+// The language after `b`, read in `now` (G290 in ISO text, G291 in DIN text).
+Language languageAfter(const ast::Block& b, Language now) {
+  const double code = now == Language::Iso ? 290.0 : 291.0;
+  for (const ast::Word& w : b.words)
+    if (isLiteralG(w, code)) return now == Language::Iso ? Language::Din : Language::Iso;
+  return now;
 }
 
 }  // namespace
@@ -98,6 +109,8 @@ bool BlockReader::next(ast::Block& out) {
     }
     if (s.annotation) out.comments.emplace_back(*s.annotation);
     r.last = s.at;
+    r.last.language = r.language;
+    if (r.options.language_switch) r.language = languageAfter(out, r.language);
     ++r.stats.blocks;
     if (fast) ++r.stats.fast_path_blocks;
     return true;
@@ -114,13 +127,13 @@ std::optional<BlockReader::Text> BlockReader::nextText() {
     while (first < segment.size() && isBlank(segment[first])) ++first;
     if (first == segment.size()) continue;
     r.last = s.at;
+    r.last.language = r.language;
     return Text{segment.substr(first),
                 SourceLocation{r.file, s.at.line, s.at.column + static_cast<uint32_t>(first)}};
   }
   return std::nullopt;
 }
 
-void BlockReader::setLanguage(Language language) { impl_->language = language; }
 Language BlockReader::language() const { return impl_->language; }
 const ReaderStats& BlockReader::stats() const {
   impl_->stats.lines = impl_->cursor.linesRead();
@@ -128,8 +141,15 @@ const ReaderStats& BlockReader::stats() const {
 }
 
 BlockPosition BlockReader::lastPosition() const { return impl_->last; }
-BlockPosition BlockReader::position() const { return impl_->cursor.position(); }
-void BlockReader::seek(BlockPosition p) { impl_->cursor.seek(p); }
+BlockPosition BlockReader::position() const {
+  BlockPosition p = impl_->cursor.position();
+  p.language = impl_->language;
+  return p;
+}
+void BlockReader::seek(BlockPosition p) {
+  impl_->cursor.seek(p);
+  impl_->language = p.language;
+}
 uint32_t BlockReader::file() const { return impl_->file; }
 
 }  // namespace ncc::frontend

@@ -44,9 +44,6 @@ void applyModalCodes(BlockContext& ctx, LowerResult& result) {
              : *a == GAction::CornerOverride ? ir::PathControl::CornerOverride
              : *a == GAction::TappingMode    ? ir::PathControl::Tapping
                                              : ir::PathControl::Continuous;
-  if (auto a = action(GGroup::Language))
-    result.switch_language =
-        *a == GAction::LanguageDin ? frontend::Language::Din : frontend::Language::Iso;
   if (const auto& w = ctx.words.group(GGroup::WorkOffset)) selectWorkOffset(ctx, *w);
 }
 

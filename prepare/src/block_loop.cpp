@@ -156,7 +156,6 @@ Step BlockLoop::step() {
     return Step::RunTime;
   }
   ++steps_;
-  if (result.switch_language) evaluator_->setLanguage(*result.switch_language);
   if (result.program_end) {
     evaluator_->programEndCode();
     return Step::End;

@@ -71,7 +71,7 @@ inline std::string diffStore(const BlockStore& a, const BlockStore& b) {
     const StoredFile& x = a.files[f];
     const StoredFile& y = b.files[f];
     const std::string at = absl::StrCat("file ", x.id);
-    if (x.id != y.id || x.name != y.name || x.language != y.language) return at + ": header";
+    if (x.id != y.id || x.name != y.name) return at + ": header";
     if (!(x.record_end == y.record_end)) return at + ": record_end";
     if (x.blocks.size() != y.blocks.size()) return at + ": block count";
     for (size_t i = 0; i < x.blocks.size(); ++i) {

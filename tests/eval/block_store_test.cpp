@@ -19,8 +19,8 @@ using Kind = ast::Expr::Kind;
 using Start = StoredBlock::Start;
 
 // EncodingIsPinned: the size and FNV-1a hash of richStore() in version 3.
-constexpr size_t kPinnedSize = 528;
-constexpr uint64_t kPinnedHash = 2895376719415455483ull;
+constexpr size_t kPinnedSize = 525;
+constexpr uint64_t kPinnedHash = 6481837844705452983ull;
 
 ast::Expr num(double v, bool point, SourceLocation loc, uint8_t digits = 0) {
   ast::Expr e = ast::Expr::literal(v, point, loc);
@@ -64,7 +64,6 @@ BlockStore richStore() {
   StoredFile f;
   f.id = 3;
   f.name = "MAIN.nc";
-  f.language = frontend::Language::Iso;
   ast::Block open_mark = plain(3, 1);
   open_mark.percent = true;
   f.blocks.push_back(stored(0, 1, 1, open_mark));
@@ -142,7 +141,6 @@ BlockStore richStore() {
   StoredFile sub;
   sub.id = 7;
   sub.name = "O0012.nc";
-  sub.language = frontend::Language::Din;
   sub.blocks.push_back(stored(0, 1, 1, plain(7, 1, std::nullopt, 12), Start::Program));
   sub.record_end = {100, 5, 1};
   s.files.push_back(sub);
@@ -550,24 +548,23 @@ TEST(StoredProgramStore, CursorsReadSeekAndShareTheBlocks) {
   EXPECT_FALSE(programs.open(42)->next());  // a file not stored: no blocks
 }
 
-TEST(StoredProgramStore, ALanguageSwitchIsRefusedAndRecorded) {
-  const BlockStore s = labelledStore();
-  StoredProgramStore programs(s);
+TEST(StoredProgramStore, PositionsKeepTheLanguageTheirBlocksWereReadIn) {
+  // A file that switches to DIN and back: each stored position names its language, the
+  // encoding keeps it, and a cursor seeks to a DIN position as to any other.
+  BlockStore s = labelledStore();
+  s.files[0].blocks[1].position.language = frontend::Language::Din;
+  s.files[0].record_end.language = frontend::Language::Din;
+  std::string error;
+  std::optional<BlockStore> decoded = decodeBlockStore(encodeBlockStore(s), error);
+  ASSERT_TRUE(decoded) << error;
+  EXPECT_EQ(diffStore(s, *decoded), "");
+  EXPECT_EQ(decoded->files[0].blocks[1].position.language, frontend::Language::Din);
+  EXPECT_EQ(decoded->files[0].blocks[0].position.language, frontend::Language::Iso);
+  StoredProgramStore programs(*decoded);
   std::unique_ptr<BlockCursor> c = programs.open(1);
+  c->seek({1, decoded->files[0].blocks[1].position});
   ASSERT_TRUE(c->next());
-  ASSERT_TRUE(c->next());
-  c->setLanguage(frontend::Language::Iso);  // the file's own: accepted
-  EXPECT_FALSE(programs.languageRefusal());
-  ASSERT_TRUE(c->next());
-  c->setLanguage(frontend::Language::Din);
-  ASSERT_TRUE(programs.languageRefusal());
-  EXPECT_EQ(programs.languageRefusal()->at, lineOf(3));
-  EXPECT_EQ(programs.languageRefusal()->asked, frontend::Language::Din);
-  EXPECT_EQ(programs.languageRefusal()->stored, frontend::Language::Iso);
-  EXPECT_FALSE(c->next());  // no blocks read in the wrong language
-  c->setLanguage(frontend::Language::Iso);
-  EXPECT_FALSE(c->next());  // still refused: the blocks in between were never read
-  EXPECT_TRUE(programs.open(1)->next());  // other cursors go on
+  EXPECT_EQ(c->lastPoint().position, decoded->files[0].blocks[1].position);
 }
 
 }  // namespace

@@ -74,6 +74,19 @@ TEST(Evaluator, PlainBlocksPassThroughAndExpressionsBecomeNumbers) {
   EXPECT_TRUE(r.diagnostics.empty());
 }
 
+TEST(Evaluator, AComputedLanguageSwitchIsRefused) {
+  // The reader switches language on G290/G291 as written; a computed one it cannot see.
+  EvalRun r = run("#1=290\nG#1\nM30\n", Dialect::SiemensIsoM);
+  ASSERT_EQ(r.diagnostics.size(), 1u);
+  EXPECT_EQ(r.diagnostics[0].location.line, 2u);
+  EXPECT_NE(r.diagnostics[0].message.find("G290 must be written as a number"), std::string::npos)
+      << r.diagnostics[0].message;
+  // Elsewhere G290 is not a language code: the value goes on to lowering, which judges it.
+  EvalRun fanuc = run("#1=290\nG#1\nM30\n", Dialect::FanucM);
+  EXPECT_TRUE(fanuc.diagnostics.empty());
+  EXPECT_EQ(fanuc.blocks.front(), "G290");
+}
+
 TEST(Evaluator, LoopsAndJumps) {
   EvalRun r = run("#100=0\n#1=0\nN5 IF [#1 GE 3] GOTO 9\n#1=#1+1\n#100=#100+#1\nGOTO 5\n"
               "N9 WHILE [#1 GT 0] DO1\nX#1\n#1=#1-1\nEND1\nM30\n");

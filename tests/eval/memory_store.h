@@ -31,7 +31,6 @@ class MemoryStore final : public ProgramStore {
     }
     ProgramPoint lastPoint() const override { return point(file_, last_); }
     void seek(const ProgramPoint& p) override { i_ = p.position.offset; }
-    void setLanguage(frontend::Language) override {}
     uint64_t rejectedBlocks() const override { return 0; }
     uint32_t file() const override { return file_; }
 

@@ -152,21 +152,38 @@ TEST(BlockPosition, SeekToTheEndOfALineWithoutATerminator) {
   EXPECT_FALSE(reader.next());
 }
 
-TEST(BlockPosition, LanguageIsNotPartOfAPosition) {
-  // After G290 the reader is in DIN mode; seeking back does not switch it to ISO.
+TEST(BlockPosition, APositionSaysItsLanguage) {
+  // After G290 the reader is in DIN mode; seeking back to a block before it reads ISO again,
+  // and seeking to a DIN position reads DIN (a GOTO back across a G290, then forward).
   SourceManager sm;
-  const uint32_t f = sm.addBuffer("p.nc", "N1 G1 X1\nN2 G291\n");
+  const uint32_t f = sm.addBuffer("p.nc", "N1 G1 X1\nN2 G290\nN3 G291\nN4 X2\n");
   DiagnosticEngine diags(&sm);
-  BlockReader reader(sm, f, diags);
+  ReaderOptions options;
+  options.language_switch = true;
+  BlockReader reader(sm, f, diags, options);
   ASSERT_TRUE(reader.next());
   const BlockPosition first = reader.lastPosition();
-  reader.setLanguage(Language::Din);
+  ASSERT_TRUE(reader.next());  // N2 G290
+  const BlockPosition in_din = reader.position();
+  EXPECT_EQ(in_din.language, Language::Din);
+  ASSERT_TRUE(reader.next());  // N3 G291, read in DIN
+  EXPECT_EQ(reader.lastPosition(), in_din);
+  EXPECT_EQ(reader.language(), Language::Iso);
   reader.seek(first);
-  auto b = reader.next();  // N1 G1 X1 is read as a DIN block: reported, skipped
+  EXPECT_EQ(reader.language(), Language::Iso);
+  auto b = reader.next();
   ASSERT_TRUE(b);
-  EXPECT_EQ(printBlock(*b), "N2 G291");
+  EXPECT_EQ(printBlock(*b), "N1 G1 X1");
+  reader.seek(in_din);
   EXPECT_EQ(reader.language(), Language::Din);
-  EXPECT_EQ(diags.errorCount(), 1u);
+  ASSERT_TRUE((b = reader.next()));
+  EXPECT_EQ(printBlock(*b), "N3 G291");
+  // The same text read in another language is another position.
+  BlockPosition as_iso = in_din;
+  as_iso.language = Language::Iso;
+  EXPECT_FALSE(as_iso == in_din);
+  EXPECT_FALSE(as_iso < in_din || in_din < as_iso);  // text order is by offset and column
+  EXPECT_FALSE(diags.hasErrors());
 }
 
 }  // namespace

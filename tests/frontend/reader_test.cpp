@@ -102,15 +102,18 @@ TEST(Reader, DinBlocksAreReportedOnceEachUntilG291) {
   uint32_t f = sm.addBuffer("s.mpf", "G290\nR10=R10+1 ; din\n; comment only\n  DEF REAL A\nN5 G291\nG0 X1\n");
   ReaderOptions options;
   options.semicolon_ends_block = false;
+  options.language_switch = true;
   BlockReader reader(sm, f, diags, options);
   auto g290 = reader.next();
   ASSERT_TRUE(g290);
   EXPECT_EQ(printBlock(*g290), "G290");
-  reader.setLanguage(Language::Din);  // what lowering does after a G290 block
-  auto g291 = reader.next();          // the two DIN blocks are skipped with a diagnostic
+  EXPECT_EQ(reader.lastPosition().language, Language::Iso);
+  EXPECT_EQ(reader.language(), Language::Din);  // the reader switched itself
+  EXPECT_EQ(reader.position().language, Language::Din);
+  auto g291 = reader.next();  // the two DIN blocks are skipped with a diagnostic
   ASSERT_TRUE(g291);
   EXPECT_EQ(printBlock(*g291), "N5 G291");
-  reader.setLanguage(Language::Iso);
+  EXPECT_EQ(reader.lastPosition().language, Language::Din);
   auto g0 = reader.next();
   ASSERT_TRUE(g0);
   EXPECT_EQ(printBlock(*g0), "G0 X1");
@@ -119,6 +122,31 @@ TEST(Reader, DinBlocksAreReportedOnceEachUntilG291) {
             "s.mpf:2:1: error[NCC1090]: Siemens DIN blocks (after G290) are not supported yet");
   EXPECT_EQ(diags.diagnostics()[1].location, (SourceLocation{f, 4, 3}));
   EXPECT_EQ(reader.language(), Language::Iso);
+}
+
+TEST(Reader, LanguageSwitchesOnlyOnWrittenCodesWhereTheDialectHasThem) {
+  SourceManager sm;
+  DiagnosticEngine diags(&sm);
+  const uint32_t f = sm.addBuffer("p.nc", "G1 X1 G290\nG#1\nG290.\n");
+  ReaderOptions options;
+  options.language_switch = true;
+  {
+    BlockReader reader(sm, f, diags, options);
+    ASSERT_TRUE(reader.next());  // G290 with other words: switches (lowering judges the block)
+    EXPECT_EQ(reader.language(), Language::Din);
+  }
+  {
+    BlockReader reader(sm, f, diags, options);
+    reader.seek(BlockPosition{11, 2, 1});  // G#1: a computed code is never a switch here
+    ASSERT_TRUE(reader.next());
+    EXPECT_EQ(reader.language(), Language::Iso);
+    ASSERT_TRUE(reader.next());  // G290. (with a point) is not G290
+    EXPECT_EQ(reader.language(), Language::Iso);
+  }
+  BlockReader fanuc(sm, f, diags, ReaderOptions{});  // no G290/G291 in the dialect
+  ASSERT_TRUE(fanuc.next());
+  EXPECT_EQ(fanuc.language(), Language::Iso);
+  EXPECT_FALSE(diags.hasErrors());
 }
 
 long maxRssKb() {

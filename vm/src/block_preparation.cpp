@@ -94,7 +94,6 @@ struct BlockPreparation::Impl final : passes::RunTimeState, ir::BlockSink {
   passes::PassManager pipeline;
   prepare::BlockLoop loop;
   bool replaying = true;
-  bool refusal_reported = false;
   bool ended = false;
   std::optional<Alarm> pending_alarm;
   std::vector<PreparedInstruction>* out = nullptr;
@@ -159,13 +158,6 @@ bool BlockPreparation::next(std::vector<PreparedInstruction>& out, std::optional
     if (step != prepare::Step::Block) {
       p.ended = true;
       p.loop.finish();  // the last variable writes
-    }
-    if (const auto& refused = p.programs.languageRefusal(); refused && !p.refusal_reported) {
-      p.refusal_reported = true;
-      p.fail("NCC2010",
-             SourcePosition{refused->at.file, refused->at.position.line, refused->at.position.column},
-             "a block prepared while the program runs cannot switch the language (G290/G291): "
-             "the stored blocks were read in one language");
     }
     if (step == prepare::Step::RunTime)
       p.fail("NCC9001", p.loop.runTimeReason().loc,

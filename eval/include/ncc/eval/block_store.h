@@ -46,7 +46,6 @@ struct StoredBlock {
 struct StoredFile {
   uint32_t id = 0;    // the compiler's source file id (SourceLocation::file of its blocks)
   std::string name;   // file name without folders ("O0012.nc")
-  frontend::Language language = frontend::Language::Iso;  // the language its blocks were read in
   // Every block the reader returned up to the end of the record, in file order (strictly
   // increasing positions): the closing '%' block, when there is one, is the last; text after
   // it is not part of the program and is not stored.
@@ -90,12 +89,8 @@ std::optional<BlockStore> decodeBlockStore(std::span<const uint8_t> bytes, std::
 // the position. A program the compile never resolved in the folder (a call whose number is
 // computed) is not found here even if the folder held it: the store has only what the builder
 // put in.
-//
-// Language switches: a stored file holds blocks read in one language; its text cannot be read
-// again in another. A cursor asked setLanguage() with a language other than its file's records
-// the refusal (languageRefusal(), the first one of the store) and returns no more blocks
-// (next() is nullopt from then on, as at the end of the file): the caller raises the alarm.
-// Setting the file's own language is accepted and changes nothing.
+// A stored block was parsed in the language its position names (G290/G291 switch the reader),
+// so the blocks of a file that switches language are served as they were read.
 class StoredProgramStore final : public ProgramStore {
  public:
   // `store` must outlive this object and every cursor it opens; cursors share its blocks.
@@ -111,14 +106,6 @@ class StoredProgramStore final : public ProgramStore {
                                            const ProgramPoint& end) override;
   ProgramPoint programEnd(const ProgramPoint& start) override;
 
-  struct LanguageRefusal {
-    ProgramPoint at;               // the block after which the switch was asked (lastPoint())
-    frontend::Language asked;      // the language asked
-    frontend::Language stored;     // the language the file's blocks were read in
-  };
-  // The first language switch a cursor of this store refused, if any.
-  const std::optional<LanguageRefusal>& languageRefusal() const { return refusal_; }
-
  private:
   struct FileIndex;
   class Cursor;
@@ -126,7 +113,6 @@ class StoredProgramStore final : public ProgramStore {
 
   const BlockStore& store_;
   std::map<uint32_t, std::unique_ptr<FileIndex>> files_;
-  std::optional<LanguageRefusal> refusal_;
 };
 
 }  // namespace ncc::eval

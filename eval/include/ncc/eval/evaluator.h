@@ -85,8 +85,6 @@ class Evaluator {
   const ast::Block* next();
   // Lowering saw M02/M30 in the block last returned: the program ends there.
   void programEndCode();
-  // G290/G291 in the block last returned: the current file's language for the next blocks.
-  void setLanguage(frontend::Language language);
   // Whether evaluation may read `block`'s words as a call's arguments rather than as the
   // dialect's addresses: a call word or code macro in it, a G code computed only when it runs,
   // or a modal call (G66/G66.1) in force now or started by a block of `others`. A compile

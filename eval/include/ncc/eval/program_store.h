@@ -34,7 +34,6 @@ class BlockCursor {
   virtual ProgramPoint lastPoint() const = 0;
   // Continues at `point` (in this cursor's file).
   virtual void seek(const ProgramPoint& point) = 0;
-  virtual void setLanguage(frontend::Language language) = 0;
   virtual uint64_t rejectedBlocks() const = 0;
   virtual uint32_t file() const = 0;
 };

@@ -1,7 +1,11 @@
 #pragma once
 // Where a block starts in its source: what Macro B control flow (GOTO, WHILE loops, subprogram
-// calls and returns) needs to come back to a block already read or to jump ahead.
+// calls and returns) needs to come back to a block already read or to jump ahead. A position
+// says which language its text is read in, so that coming back to a block reads it as it was
+// read the first time (a GOTO back across a G290).
 #include <cstdint>
+
+#include "ncc/frontend/language.h"
 
 namespace ncc::frontend {
 
@@ -12,6 +16,9 @@ struct BlockPosition {
   // that ended the previous block on the same line. Blanks before the first word are part of
   // the block, so this is not always the column of the block's first word (Block::loc).
   uint32_t column = 1;
+  // The language the text from here is read in: the reader's when it stood here, switched by
+  // the G290 / G291 blocks before it in text order (block_reader.h).
+  Language language = Language::Iso;
   friend bool operator==(const BlockPosition&, const BlockPosition&) = default;
 };
 

@@ -30,6 +30,9 @@ enum class ParserChoice : uint8_t { Auto, AntlrOnly };
 struct ReaderOptions {
   Language initial_language = Language::Iso;
   bool semicolon_ends_block = true;  // FANUC EOB ';' (Siemens ISO: ';' starts an annotation)
+  // G290 / G291 switch the language from the next block (Siemens): the reader switches itself
+  // after a block that writes them as literals (`G290`, not `G#1`).
+  bool language_switch = false;
   ParserChoice parser = ParserChoice::Auto;
 };
 
@@ -66,22 +69,22 @@ class BlockReader {
   };
   std::optional<Text> nextText();
 
-  // Switches the language for the blocks after the current one (G290 / G291).
-  void setLanguage(Language language);
+  // The language the next block is read in: ReaderOptions::initial_language, switched by each
+  // G290 (in ISO text) and G291 (in DIN text) read, and by seek() to the position's.
   Language language() const;
 
   const ReaderStats& stats() const;
 
-  // Positions, for Macro B control flow. A position names a block of this file; it does not
-  // hold the language (ISO/DIN), which stays as set by setLanguage().
+  // Positions, for Macro B control flow. A position names a block of this file and the
+  // language it is read in.
   // Where the block last returned by next() (or nextText()) starts.
   BlockPosition lastPosition() const;
   // Where reading continues: the next block returned by next() starts here or after blank
   // text (also valid before the first next(); {offset: size, line: last + 1} at the end).
   BlockPosition position() const;
   // Continues reading at `p`, a position this reader or a ProgramIndex of the same file and
-  // ReaderOptions returned: the next next() returns the block starting there, with the same
-  // AST and locations as when read straight through.
+  // ReaderOptions returned, in p's language: the next next() returns the block starting
+  // there, with the same AST and locations as when read straight through.
   void seek(BlockPosition p);
   // The SourceManager id of the file read.
   uint32_t file() const;

@@ -31,8 +31,7 @@ struct LoweringOptions {
 
 // What the caller (the block loop) must do after a block.
 struct LowerResult {
-  std::optional<frontend::Language> switch_language;  // G290 / G291 seen
-  bool program_end = false;                           // M02 / M30: stop reading
+  bool program_end = false;  // M02 / M30: stop reading
   // The block needs a value known only when the program runs (it moves from where a G31
   // stopped): why. It produced no IR and changed no state; the rest of the program is
   // prepared at run time (docs/runtime.md). Never set with LoweringOptions::run_time.
