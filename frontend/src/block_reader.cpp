@@ -3,6 +3,7 @@
 #include "absl/strings/str_cat.h"
 #include "diagnostic_codes.h"
 #include "iso_block_parser.h"
+#include "language_switch.h"
 #include "lexical.h"
 #include "block_cursor.h"
 
@@ -16,24 +17,6 @@ bool isBlankText(std::string_view text) {
   return true;
 }
 
-bool isLiteralG(const ast::Word& w, double code) {
-  return w.address.is('G') && w.value.kind == ast::Expr::Kind::Number && w.value.number == code &&
-         !w.value.has_point;
-}
-
-// A block that only switches back to ISO mode (`G291`, with an optional N and comments) is
-// the same text in both languages, so it is read even in DIN mode.
-bool isG291Only(const ast::Block& b) {
-  return b.statements.empty() && b.words.size() == 1 && isLiteralG(b.words[0], 291.0);
-}
-
-// The language after `b`, read in `now` (G290 in ISO text, G291 in DIN text).
-Language languageAfter(const ast::Block& b, Language now) {
-  const double code = now == Language::Iso ? 290.0 : 291.0;
-  for (const ast::Word& w : b.words)
-    if (isLiteralG(w, code)) return now == Language::Iso ? Language::Din : Language::Iso;
-  return now;
-}
 
 }  // namespace
 

@@ -4,6 +4,7 @@
 
 #include "block_cursor.h"
 #include "block_start.h"
+#include "language_switch.h"
 
 namespace ncc::frontend {
 
@@ -21,10 +22,11 @@ struct Head {
   std::optional<int64_t> program_number;
 };
 
-Head readHead(BlockCursor& cursor, bool semicolon_ends_block) {
+Head readHead(BlockCursor& cursor, bool semicolon_ends_block, Language language) {
   Head head;
   BlockCursor::Segment s;
   while (cursor.next(s, semicolon_ends_block)) {
+    s.at.language = language;  // nothing before the first content can switch it
     const BlockStart start = blockStart(s.text);
     if (start.kind == BlockStart::Kind::Blank) continue;
     if (start.kind == BlockStart::Kind::Percent) {
@@ -61,12 +63,18 @@ size_t ProgramIndex::KeyHash::operator()(const Key& k) const {
 ProgramIndex::ProgramIndex(const SourceManager& sources, uint32_t file, ReaderOptions options)
     : sources_(sources),
       file_(file),
-      semicolon_ends_block_(semicolonEndsBlock(options)) {}
+      semicolon_ends_block_(semicolonEndsBlock(options)),
+      initial_language_(options.initial_language),
+      language_switch_(options.language_switch) {}
+
+Language ProgramIndex::languageAfterSegment(std::string_view text, Language now) const {
+  return language_switch_ ? languageAfterText(text, now) : now;
+}
 
 std::optional<int64_t> ProgramIndex::firstProgramNumberOf(const std::filesystem::path& path,
                                                           ReaderOptions options) {
   BlockCursor cursor(path);
-  return readHead(cursor, semicolonEndsBlock(options)).program_number;
+  return readHead(cursor, semicolonEndsBlock(options), options.initial_language).program_number;
 }
 
 void ProgramIndex::scanHead() {
@@ -74,7 +82,7 @@ void ProgramIndex::scanHead() {
   head_scanned_ = true;
   BlockCursor cursor(sources_, file_);
   ++stats_.scans;
-  const Head head = readHead(cursor, semicolon_ends_block_);
+  const Head head = readHead(cursor, semicolon_ends_block_, initial_language_);
   first_content_ = head.first_content;
   first_program_number_ = head.program_number;
   stats_.lines += cursor.linesRead();
@@ -90,7 +98,9 @@ std::optional<BlockPosition> ProgramIndex::scanFor(int64_t n, BlockPosition star
   cursor.seek(start);
   std::optional<BlockPosition> found;
   BlockCursor::Segment s;
-  while (cursor.next(s, semicolon_ends_block_)) {
+  for (Language now = start.language; cursor.next(s, semicolon_ends_block_);
+       now = languageAfterSegment(s.text, now)) {
+    s.at.language = now;
     if (end && !(s.at < *end)) break;
     if (through && *through < s.at) break;
     const BlockStart b = blockStart(s.text);
@@ -141,7 +151,9 @@ void ProgramIndex::scanPrograms() {
   ++stats_.scans;
   BlockCursor::Segment s;
   bool closed = false;
-  while (cursor.next(s, semicolon_ends_block_)) {
+  Language now = initial_language_;
+  for (; cursor.next(s, semicolon_ends_block_); now = languageAfterSegment(s.text, now)) {
+    s.at.language = now;
     const BlockStart b = blockStart(s.text);
     if (b.kind == BlockStart::Kind::Percent && first_content_ && *first_content_ < s.at) {
       record_end_ = s.at;
@@ -150,7 +162,10 @@ void ProgramIndex::scanPrograms() {
     }
     if (b.kind == BlockStart::Kind::Program) programs_.push_back(ProgramBlock{b.number, s.at});
   }
-  if (!closed) record_end_ = cursor.position();
+  if (!closed) {
+    record_end_ = cursor.position();
+    record_end_.language = now;
+  }
   stats_.lines += cursor.linesRead();
 }
 
@@ -174,7 +189,9 @@ std::vector<ProgramIndex::Label> ProgramIndex::labels() {
   ++stats_.scans;
   std::vector<Label> out;
   BlockCursor::Segment s;
-  while (cursor.next(s, semicolon_ends_block_)) {
+  for (Language now = initial_language_; cursor.next(s, semicolon_ends_block_);
+       now = languageAfterSegment(s.text, now)) {
+    s.at.language = now;
     const BlockStart b = blockStart(s.text);
     if (b.kind == BlockStart::Kind::Percent && first_content_ && *first_content_ < s.at) break;
     if (b.kind == BlockStart::Kind::Sequence || b.kind == BlockStart::Kind::Program)

@@ -65,6 +65,40 @@ TEST(ProgramIndex, FindsLabelsAsTheReaderReadsThem) {
   EXPECT_FALSE(index.findSequence(11, start, SequenceSearch::FromStart));
 }
 
+TEST(ProgramIndex, PositionsSayTheLanguageAsTheReaderReadsIt) {
+  // Siemens ISO mode: N2 switches to DIN, N4 (only G291) back. The DIN text between is skipped
+  // by the reader until the DIN grammar is built, but the index still finds its label, in DIN.
+  SourceManager sm;
+  const uint32_t f = sm.addBuffer(
+      "p.mpf", "N1 G1 X1\nN2 G90 G290 ; to DIN\nN3 R1=2\nN4 G291\nN5 X2\nN6 (G290 in a comment)\n");
+  ReaderOptions options;
+  options.semicolon_ends_block = false;
+  options.language_switch = true;
+  DiagnosticEngine diags(&sm);
+  BlockReader reader(sm, f, diags, options);
+  std::vector<BlockPosition> at;  // N1 N2 N4 N5 N6: N3 is a DIN block the reader reports
+  while (reader.next()) at.push_back(reader.lastPosition());
+  ASSERT_EQ(at.size(), 5u);
+  ProgramIndex index(sm, f, options);
+  const BlockPosition start{};
+  EXPECT_EQ(index.findSequence(1, start, SequenceSearch::FromStart), at[0]);
+  EXPECT_EQ(index.findSequence(2, start, SequenceSearch::FromStart), at[1]);
+  const std::optional<BlockPosition> n3 = index.findSequence(3, start, SequenceSearch::FromStart);
+  ASSERT_TRUE(n3);
+  EXPECT_EQ(n3->language, Language::Din);
+  EXPECT_EQ(index.findSequence(4, start, SequenceSearch::FromStart), at[2]);
+  EXPECT_EQ(at[2].language, Language::Din);
+  EXPECT_EQ(index.findSequence(5, start, SequenceSearch::FromStart), at[3]);
+  EXPECT_EQ(at[3].language, Language::Iso);
+  EXPECT_EQ(index.findSequence(6, start, SequenceSearch::FromStart), at[4]);
+  // Searching on from a DIN position keeps counting from its language.
+  EXPECT_EQ(index.findSequence(5, *n3, SequenceSearch::ForwardThenFromStart), at[3]);
+  EXPECT_EQ(index.recordEnd().language, Language::Iso);
+  // Without G290/G291 in the dialect the same text is all ISO.
+  ProgramIndex fanuc(sm, f, {});
+  EXPECT_EQ(fanuc.findSequence(3, start, SequenceSearch::FromStart)->language, Language::Iso);
+}
+
 TEST(ProgramIndex, ForwardThenFromStartAndFromStart) {
   SourceManager sm;
   const uint32_t f = sm.addBuffer("loop.nc", kLoop);

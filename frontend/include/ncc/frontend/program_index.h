@@ -118,9 +118,15 @@ class ProgramIndex {
   // file's first program number; read once.
   void scanHead();
 
+  // The language of the text after segment `text` read in `now` (G290 / G291 where the dialect
+  // has them): the positions the index returns say their language as the reader's do.
+  Language languageAfterSegment(std::string_view text, Language now) const;
+
   const SourceManager& sources_;
   uint32_t file_;
   bool semicolon_ends_block_;
+  Language initial_language_;
+  bool language_switch_;
   Stats stats_;
 
   std::unordered_map<Key, std::optional<BlockPosition>, KeyHash> sequences_;
