@@ -57,6 +57,11 @@ struct DecodedBlock {
       if (a) return true;
     return false;
   }
+  // The axis whose word is a time in this block, not a position (G04 X), or -1: the format
+  // checks and the decimal-point audit read it alike.
+  int timeAxis(const MachineConfig& machine) const {
+    return one_shot && one_shot->entry->action == GAction::Dwell ? machine.axisIndex("X") : -1;
+  }
 };
 
 // Where each one-letter address goes in a DecodedBlock, for one dialect and machine: built

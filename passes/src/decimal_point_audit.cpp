@@ -27,8 +27,7 @@ void DecimalPointAudit::word(const WordValue& w, const ValueRules& values, ir::U
 void DecimalPointAudit::block(const DecodedBlock& words, const ValueRules& values,
                               ir::Units units, const MachineConfig& machine, int angle_axis) {
   if (!values.standard) return;  // calculator notation: `Z3` is 3 mm, as meant
-  const bool dwell = words.one_shot && words.one_shot->entry->action == GAction::Dwell;
-  const int x = dwell ? machine.axisIndex("X") : -1;  // G04 X is a time
+  const int x = words.timeAxis(machine);
   const int count = std::min(machine.axisCount(), kMaxAxes);
   for (int i = 0; i < count; ++i) {
     const auto& w = words.axes[i];

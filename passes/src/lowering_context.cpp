@@ -124,7 +124,7 @@ void BlockContext::checkFormats() {
   };
   const char* length_unit = units == ir::Units::Inch ? "in" : "mm";
   double length = v.lengthIncrement(units);
-  const int x = one_shot == GAction::Dwell ? axisNamed("X") : -1;  // G04 X is a time
+  const int x = words.timeAxis(*core.machine);
   const int angle = polarAngleAxis(*this);  // G16: the angle word has the rotary format
   for (int i = 0; i < axisCount(); ++i) {
     if (i == x)
