@@ -216,6 +216,9 @@ const ast::Block* Evaluator::Impl::next() {
 }
 
 bool Evaluator::Impl::plain(const ast::Block& block) const {
+  // DIN text (after G290): M98/M99/G65/G66 calls and code macros are ISO-mode words, and the
+  // DIN blocks read so far are plain words (docs/din.md).
+  if (block.language == frontend::Language::Din) return true;
   if (!block.statements.empty() || !modal_calls.empty()) return false;
   for (const ast::Word& w : block.words)
     if (!isLiteral(w.value) || isCallWord(w)) return false;
@@ -338,6 +341,7 @@ const ast::Block* Evaluator::Impl::evaluateBlock(const ast::Block& block, const 
   out.sequence = block.sequence;
   out.program_number = block.program_number;
   out.percent = block.percent;
+  out.language = block.language;
   out.comments = block.comments;
   out.words.reserve(block.words.size());
   for (const ast::Word& w : block.words) {

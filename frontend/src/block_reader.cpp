@@ -30,16 +30,18 @@ struct BlockReader::Impl {
     return cursor.next(segment, language == Language::Iso && options.semicolon_ends_block);
   }
 
-  std::optional<ast::Block> readDin(std::string_view segment, SourceLocation where) {
-    DiagnosticEngine scratch;
-    std::optional<ast::Block> b = parser.parse(segment, where, scratch, options.parser);
-    if (b && isG291Only(*b)) return b;
+  // A DIN block (language_switch.h, readPlainDin); anything ncc does not read in DIN yet is
+  // reported once with NCC1090 and skipped. Which letters lowering takes in DIN is its table's
+  // business (passes/src/dialect_siemens_din.cpp).
+  bool readDin(std::string_view segment, SourceLocation where, ast::Block& out) {
+    if (readPlainDin(parser, segment, where, out)) return true;
     size_t first = 0;
     while (first < segment.size() && isBlank(segment[first])) ++first;
     where.column += static_cast<uint32_t>(first);
     diags.error(codes::kDinNotSupported, where,
-                "Siemens DIN blocks (after G290) are not supported yet");
-    return std::nullopt;
+                "this Siemens DIN block is not supported yet (ncc reads DIN blocks of plain "
+                "words so far: docs/din.md)");
+    return false;
   }
 
   uint32_t file;
@@ -79,10 +81,7 @@ bool BlockReader::next(ast::Block& out) {
     bool read = false;
     if (r.language == Language::Din) {
       if (isBlankText(segment)) continue;  // a DIN comment line
-      if (std::optional<ast::Block> din = r.readDin(segment, where)) {
-        out = std::move(*din);
-        read = true;
-      }
+      read = r.readDin(segment, where, out);
     } else {
       read = r.parser.parse(segment, where, r.diags, r.options.parser, out, &fast);
     }
@@ -91,6 +90,7 @@ bool BlockReader::next(ast::Block& out) {
       continue;
     }
     if (s.annotation) out.comments.emplace_back(*s.annotation);
+    out.language = r.language;
     r.last = s.at;
     r.last.language = r.language;
     if (r.options.language_switch) r.language = languageAfter(out, r.language);

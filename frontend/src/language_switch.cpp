@@ -1,6 +1,5 @@
 #include "language_switch.h"
 
-#include "ncc/frontend/block_reader.h"
 #include "ncc/support/diagnostics.h"
 
 namespace ncc::frontend {
@@ -12,10 +11,21 @@ bool isLiteralG(const ast::Word& w, double code) {
          !w.value.has_point;
 }
 
+bool isPlainDin(const ast::Block& b) {
+  if (!b.statements.empty() || !b.comments.empty() || b.program_number || b.percent) return false;
+  for (const ast::Word& w : b.words)
+    if (w.address.size() != 1) return false;  // `,C`: an ISO corner word
+  return true;
+}
+
 }  // namespace
 
-bool isG291Only(const ast::Block& b) {
-  return b.statements.empty() && b.words.size() == 1 && isLiteralG(b.words[0], 291.0);
+bool readPlainDin(IsoBlockParser& parser, std::string_view text, SourceLocation start,
+                  ast::Block& out) {
+  DiagnosticEngine scratch;
+  bool fast = false;
+  return parser.parse(text, start, scratch, ParserChoice::Auto, out, &fast) && fast &&
+         isPlainDin(out);
 }
 
 Language languageAfter(const ast::Block& b, Language now) {
@@ -27,10 +37,13 @@ Language languageAfter(const ast::Block& b, Language now) {
 
 Language languageAfterText(std::string_view text, Language now) {
   if (text.find("29") == std::string_view::npos) return now;
+  thread_local IsoBlockParser parser;
   DiagnosticEngine scratch;
-  std::optional<ast::Block> b = parseIsoBlock(text, 0, 1, scratch);
-  if (!b || (now == Language::Din && !isG291Only(*b))) return now;  // the reader skips it
-  return languageAfter(*b, now);
+  ast::Block b;
+  const bool read = now == Language::Iso
+                        ? parser.parse(text, SourceLocation{}, scratch, ParserChoice::Auto, b)
+                        : readPlainDin(parser, text, SourceLocation{}, b);
+  return read ? languageAfter(b, now) : now;  // a block the reader skips switches nothing
 }
 
 }  // namespace ncc::frontend

@@ -1,20 +1,26 @@
 #pragma once
-// G290 / G291: where the dialect has them (ReaderOptions::language_switch), a block that writes
-// G290 in ISO text switches the text after it to DIN, and a block that is only G291 in DIN
-// text switches back (docs/frontend.md, Languages). The reader, which parses every block, and
-// the program index, which scans text for labels without parsing, decide it here alike.
+// The two languages of a Siemens program (docs/frontend.md, Languages). Where the dialect has
+// G290/G291 (ReaderOptions::language_switch), a block that writes G290 in ISO text switches the
+// text after it to DIN, and one that writes G291 in DIN text switches back. The reader, which
+// parses every block, and the program index, which scans text for labels without parsing,
+// decide it here alike, and read a DIN block here alike.
 #include <string_view>
 
+#include "iso_block_parser.h"
 #include "ncc/frontend/ast.h"
 #include "ncc/frontend/language.h"
 
 namespace ncc::frontend {
 
-// A block that only switches back to ISO mode (`G291`, with an optional N and comments): the
-// same text in both languages, so the reader returns it even in DIN mode.
-bool isG291Only(const ast::Block& block);
+// A DIN block as far as ncc reads DIN so far: words of one letter and a number
+// (`N10 G1 X20 Y5 F200`, `G291`), the text DIN and ISO write alike, read by the ISO fast path.
+// False for anything else: DIN statements, expressions and `=` addresses not built yet, and
+// ISO forms DIN does not have (`#1`, `[..]`, `(comment)`, `,C`, `O`/`:` numbers). Reports
+// nothing: the caller says why a block is not read.
+bool readPlainDin(IsoBlockParser& parser, std::string_view text, SourceLocation start,
+                  ast::Block& out);
 
-// The language after `block`, a block the reader returned, read in `now`.
+// The language after `block`, a block read in `now`.
 Language languageAfter(const ast::Block& block, Language now);
 
 // The same for a block's text not parsed yet (the program index): the text is parsed only when

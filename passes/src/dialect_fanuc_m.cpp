@@ -284,6 +284,8 @@ constexpr DialectBehaviour kBehaviour{
     .skip_feed_is_modal = true,             // G31 takes F like G01
     .corner_with_arcs = true,
     .line_angle_address = "",
+    .data_addresses = "IJKRFSPLQHDMT",
+    .decimal_point_from_params = true,
 };
 // FANUC Series 0i-MD/30i-M custom macro system variables (tool offset memory C, up to 200
 // offsets: H wear #2001, H geometry #2201, D wear #2401, D geometry #2601). The project has no

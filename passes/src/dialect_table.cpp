@@ -48,6 +48,13 @@ const GCodeEntry* DialectTable::powerOnDefault(GGroup group) const {
   return nullptr;
 }
 
+LanguageTables languageTables(Dialect dialect) {
+  LanguageTables t;
+  t.iso = dialectTable(dialect);
+  if (dialect == Dialect::SiemensIsoM) t.din = &siemensDinTable();
+  return t;
+}
+
 const DialectTable* dialectTable(Dialect dialect) {
   switch (dialect) {
     case Dialect::FanucM: return &kFanucMTable;

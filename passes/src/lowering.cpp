@@ -19,7 +19,7 @@ namespace {
 
 // The block's modal G codes into the state (work-offset selection is a coordinate-system
 // concern and goes there).
-void applyModalCodes(BlockContext& ctx, LowerResult& result) {
+void applyModalCodes(BlockContext& ctx) {
   ir::Modal& m = ctx.next.modal;
   auto action = [&](GGroup g) -> std::optional<GAction> {
     if (const auto& w = ctx.words.group(g)) return w->entry->action;
@@ -202,7 +202,7 @@ LowerResult lowerBlock(LoweringCore& core, const ast::Block& block) {
   decode.cycle_in_force = core.cs().cycle.code10 != 0;
   if (!decodeBlock(block, decode, ctx.words)) return reject(ctx);
 
-  applyModalCodes(ctx, result);
+  applyModalCodes(ctx);
   applyPolarCode(ctx);
   applyCycleCodes(ctx);
   rejectParallelAxisPlane(ctx, *core.machine);
@@ -286,6 +286,13 @@ LowerResult Lowering::lower(const ast::Block& block) {
   }
   if (skips(block)) return {};
   if (block.words.empty() && block.statements.empty()) return {};
+  if (!st.useLanguage(block.language)) {
+    // The reader switches language only where the dialect has G290/G291 (languageTables).
+    st.diags.error("NCC2002", block.loc,
+                   absl::StrCat(std::string(dialectName(st.options.dialect)),
+                                " has no DIN language: the block cannot be lowered"));
+    return {};
+  }
   st.resolveSkip();
   return lowerBlock(st, block);
 }
@@ -300,8 +307,10 @@ bool Lowering::skips(const ast::Block& block) const {
 bool Lowering::checkStatically(const ast::Block& block) const {
   const State& st = *state_;
   if (!st.table || skips(block)) return true;
-  DecodeContext decode{*st.table,          *st.machine,           *st.addresses,
-                       st.settings.policy, st.cs().modal.distance, st.diags};
+  const LoweringCore::LanguageLowering& ll = st.languages[static_cast<size_t>(block.language)];
+  if (!ll.table) return false;
+  DecodeContext decode{*ll.table,          *st.machine,           *ll.addresses,
+                       ll.settings.policy, st.cs().modal.distance, st.diags};
   decode.statically = true;
   return decodeBlock(block, decode).has_value();
 }

@@ -36,10 +36,17 @@ LoweringCore::LoweringCore(LoweringOptions o, DiagnosticEngine& d, ir::BlockSink
     : options(std::move(o)), diags(d), out(s) {
   if (!options.machine) fallback_machine = defaultMachine();
   machine = options.machine ? options.machine : &fallback_machine;
-  table = dialectTable(options.dialect);
-  if (!table) return;
-  addresses.emplace(*table, *machine);
-  settings = LoweringSettings::resolve(*table, *machine);
+  const LanguageTables tables_by_language = languageTables(options.dialect);
+  for (frontend::Language l : {frontend::Language::Iso, frontend::Language::Din}) {
+    LanguageLowering& ll = languages[static_cast<size_t>(l)];
+    ll.table = tables_by_language.of(l);
+    if (!ll.table) continue;
+    ll.addresses.emplace(*ll.table, *machine);
+    ll.settings = LoweringSettings::resolve(*ll.table, *machine);
+  }
+  if (!languages[0].table) return;
+  language = frontend::Language::Din;  // so that useLanguage(Iso) sets the members
+  useLanguage(frontend::Language::Iso);
   for (int s = 0; s < 3; ++s) {
     const int i = machine->axisIndex(std::string(1, "XYZ"[s]));
     xyz[s] = static_cast<int8_t>(i >= 0 && i < kMaxAxes ? i : -1);
@@ -48,6 +55,17 @@ LoweringCore::LoweringCore(LoweringOptions o, DiagnosticEngine& d, ir::BlockSink
   tables.length = machine->tool_offsets.length;
   tables.radius = machine->tool_offsets.radius;
   powerOn();
+}
+
+bool LoweringCore::useLanguage(frontend::Language l) {
+  if (l == language) return true;
+  const LanguageLowering& ll = languages[static_cast<size_t>(l)];
+  if (!ll.table) return false;
+  table = ll.table;
+  addresses = &*ll.addresses;
+  settings = ll.settings;
+  language = l;
+  return true;
 }
 
 void LoweringCore::resolveSkip() {

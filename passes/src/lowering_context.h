@@ -64,9 +64,22 @@ struct LoweringCore {
   ir::BlockSink& out;
   MachineConfig fallback_machine;
   const MachineConfig* machine = nullptr;
+  // The table, address map and settings of the language of the block being lowered
+  // (useLanguage); null table: the dialect is not lowered.
   const DialectTable* table = nullptr;
-  std::optional<AddressMap> addresses;  // with the table
+  const AddressMap* addresses = nullptr;
   LoweringSettings settings;
+  // Each language the dialect reads (languageTables): its table, and what is built from it
+  // once. One controller state serves both: a switch keeps tool, offsets and frames.
+  struct LanguageLowering {
+    const DialectTable* table = nullptr;
+    std::optional<AddressMap> addresses;
+    LoweringSettings settings;
+  };
+  std::array<LanguageLowering, 2> languages;
+  frontend::Language language = frontend::Language::Iso;
+  // Lowers the next blocks with `l`'s table; false (nothing changed) when the dialect has none.
+  bool useLanguage(frontend::Language l);
   // The controller state between blocks.
   ControllerState& cs() { return states_[current_]; }
   const ControllerState& cs() const { return states_[current_]; }

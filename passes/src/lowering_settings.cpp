@@ -15,6 +15,7 @@ LoweringSettings LoweringSettings::resolve(const DialectTable& table,
              : policy == "per_word"  ? SameGroupPolicy::PerWord
                                      : SameGroupPolicy::LastWins;
   s.values = ValueRules::fromParams(p, b.decimal_point_default);
+  if (!b.decimal_point_from_params) s.values.standard = b.decimal_point_default == "standard";
   s.values.digits = b.format_digits;
   s.rapid_type = p.getString("rapid_type", std::string(b.rapid_type_default)) == "per_axis"
                      ? ir::RapidType::PerAxis

@@ -192,6 +192,7 @@ class RandomTree {
     if (chance(3)) b.sequence = integer();
     if (chance(6)) b.program_number = integer();
     b.percent = chance(8);
+    if (chance(3)) b.language = frontend::Language::Din;
     for (int i = pick(0, 6); i > 0; --i) {
       ast::Word& w = b.words.emplace_back();
       w.address = address();

@@ -64,8 +64,9 @@ std::string xyzMachine(const std::string& params, const std::string& extra) {
                       "\n[start]\nposition = { X = 0.0, Y = 0.0, Z = 0.0 }\n");
 }
 
-Lowered lower(Dialect dialect, const std::string& program, const std::string& machine_toml,
-              const RunTimeState* run_time) {
+namespace {
+Lowered lowerWith(Dialect dialect, const std::string& program, const std::string& machine_toml,
+                  const RunTimeState* run_time, bool with_reader) {
   Lowered run;
   SourceManager sources;
   DiagnosticEngine diags(&sources);
@@ -92,16 +93,26 @@ Lowered lower(Dialect dialect, const std::string& program, const std::string& ma
   Lowering lowering(options, diags, passes.entry());
   uint32_t line = 0;
   std::string_view rest = program;
-  while (!rest.empty()) {
-    size_t eol = rest.find('\n');
-    std::string_view text = rest.substr(0, eol);
-    rest = eol == std::string_view::npos ? std::string_view() : rest.substr(eol + 1);
-    ++line;
-    // The end-of-block ';' (FANUC) or the annotation after it (Siemens ISO) is the block
-    // reader's business; parseIsoBlock reads one block without it.
-    text = text.substr(0, text.find(';'));
-    auto block = frontend::parseIsoBlock(text, file, line, diags);
-    if (!block) continue;
+  frontend::ReaderOptions reader_options;
+  reader_options.semicolon_ends_block = dialect != Dialect::SiemensIsoM;
+  reader_options.language_switch = dialect == Dialect::SiemensIsoM;
+  frontend::BlockReader reader(sources, file, diags, reader_options);
+  for (;;) {
+    std::optional<ast::Block> block;
+    if (with_reader) {
+      if (!(block = reader.next())) break;
+    } else {
+      if (rest.empty()) break;
+      size_t eol = rest.find('\n');
+      std::string_view text = rest.substr(0, eol);
+      rest = eol == std::string_view::npos ? std::string_view() : rest.substr(eol + 1);
+      ++line;
+      // The end-of-block ';' (FANUC) or the annotation after it (Siemens ISO) is the block
+      // reader's business; parseIsoBlock reads one block without it.
+      text = text.substr(0, text.find(';'));
+      block = frontend::parseIsoBlock(text, file, line, diags);
+      if (!block) continue;
+    }
     LowerResult r = lowering.lower(*block);
     if (r.needs_run_time) {
       run.run_time = r.needs_run_time;
@@ -115,6 +126,16 @@ Lowered lower(Dialect dialect, const std::string& program, const std::string& ma
   lowering.finish();
   run.diags = diags.diagnostics();
   return run;
+}
+}  // namespace
+
+Lowered lower(Dialect dialect, const std::string& program, const std::string& machine_toml,
+              const RunTimeState* run_time) {
+  return lowerWith(dialect, program, machine_toml, run_time, false);
+}
+
+Lowered lowerRead(Dialect dialect, const std::string& program, const std::string& machine_toml) {
+  return lowerWith(dialect, program, machine_toml, nullptr, true);
 }
 
 }  // namespace ncc::passes::test

@@ -41,6 +41,9 @@ struct Lowered {
 // `run_time`: the running machine, as the VM's block preparation gives it (null: the compiler).
 Lowered lower(Dialect dialect, const std::string& program, const std::string& machine_toml = "",
               const RunTimeState* run_time = nullptr);
+// The same with the program read by frontend::BlockReader as the compiler reads it for the
+// dialect (';' and G290/G291 by the dialect's rules), not line by line.
+Lowered lowerRead(Dialect dialect, const std::string& program, const std::string& machine_toml);
 
 // A [machine] table with X Y Z, G54 at zero, and the given [machine.params] lines.
 std::string xyzMachine(const std::string& params = "", const std::string& extra = "");

@@ -13,6 +13,7 @@
 #include <type_traits>
 #include <vector>
 
+#include "ncc/frontend/language.h"
 #include "ncc/support/inline_string.h"
 #include "ncc/support/source_location.h"
 
@@ -165,6 +166,9 @@ struct Block {
   std::optional<int64_t> sequence;  // N number
   std::optional<int64_t> program_number;  // O number (or ':' on some controls)
   bool percent = false;             // the '%' tape start/end mark
+  // The language the block was read in (G290/G291, block_reader.h): lowering reads it with
+  // that language's table.
+  frontend::Language language = frontend::Language::Iso;
   std::vector<Word> words;          // in written order
   std::vector<Statement> statements;
   std::vector<std::string> comments;  // text inside ( ), kept for printing
@@ -227,9 +231,11 @@ struct Schema<Block> {
       std::tuple{field("loc", &Block::loc), field("skip_level", &Block::skip_level),
                  field("sequence", &Block::sequence), field("program_number", &Block::program_number),
                  field("percent", &Block::percent), field("words", &Block::words),
-                 field("statements", &Block::statements), field("comments", &Block::comments)};
+                 field("statements", &Block::statements), field("comments", &Block::comments),
+                 field("language", &Block::language)};
 };
 // A new member: list it above, then update the size here (x86-64, the platform CI builds).
+// (A member that fits in padding keeps the size: list it all the same.)
 static_assert(sizeof(Expr) == 48, "Expr changed: update Schema<Expr>");
 static_assert(sizeof(Word) == 80, "Word changed: update Schema<Word>");
 static_assert(sizeof(Statement) == 128, "Statement changed: update Schema<Statement>");
@@ -265,5 +271,7 @@ template <>
 inline constexpr uint8_t kEnumValues<Statement::Kind> = static_cast<uint8_t>(Statement::Kind::End) + 1;
 template <>
 inline constexpr uint8_t kEnumValues<Op> = static_cast<uint8_t>(kOps.size());
+template <>
+inline constexpr uint8_t kEnumValues<frontend::Language> = static_cast<uint8_t>(frontend::Language::Din) + 1;
 
 }  // namespace ncc::ast

@@ -11,6 +11,7 @@
 #include <string_view>
 
 #include "ncc/ir/ir.h"
+#include "ncc/frontend/language.h"
 #include "ncc/machine/dialect.h"
 
 namespace ncc::passes {
@@ -195,6 +196,14 @@ struct DialectBehaviour {
   // The address of the line angle (Mazak §13-12: `G01 Aa Zz`, the end point's other plane
   // coordinate computed from the angle; only where A is not an axis of the machine). Empty: none.
   std::string_view line_angle_address;
+  // The letters that are data addresses (not axes) and the slot each has: a letter not here
+  // and not an axis of the machine is "not supported yet". Siemens DIN gives R, L, P, H, T, D
+  // other meanings than ISO (a parameter, a subprogram call, a repeat count ...), so its table
+  // lists only the letters it reads as ISO does.
+  std::string_view data_addresses = "IJKRFSPLQHDMT";
+  // Whether [machine.params] decimal_point applies (MD10884 EXTERN_FLOATINGPOINT_PROG is an
+  // ISO-mode parameter: Siemens DIN always reads `X20` as 20 mm).
+  bool decimal_point_from_params = true;
 };
 
 // What a block of system variables (#1000 and up) holds; the controller model reads and
@@ -386,6 +395,18 @@ struct DialectTable {
 // The table of an ISO-milling dialect; nullptr for dialects lowering does not handle
 // (fanuc-t, siemens-din).
 const DialectTable* dialectTable(Dialect dialect);
+
+// The tables a dialect's blocks are lowered with, by the language they were read in
+// (ast::Block::language): siemens-iso-m reads ISO text and, after G290, DIN text; the other
+// dialects ISO only (din: nullptr).
+struct LanguageTables {
+  const DialectTable* iso = nullptr;
+  const DialectTable* din = nullptr;
+  const DialectTable* of(frontend::Language language) const {
+    return language == frontend::Language::Din ? din : iso;
+  }
+};
+LanguageTables languageTables(Dialect dialect);
 
 // "G54.1", "G01": the code as written in diagnostics.
 std::string gCodeName(int code10);
