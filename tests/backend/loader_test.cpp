@@ -23,6 +23,7 @@ std::string tamperedError(std::vector<uint8_t> bytes) {
 }
 
 void putU32(std::vector<uint8_t>& b, size_t at, uint32_t v) {
+  ASSERT_LE(at + 4, b.size());  // a test that edits past the file is itself wrong
   for (int i = 0; i < 4; ++i) b[at + i] = static_cast<uint8_t>(v >> (8 * i));
 }
 

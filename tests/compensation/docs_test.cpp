@@ -45,9 +45,10 @@ TEST(CompensationDocs, TheDrawingsAreTheGoldenCases) {
   }
   // No drawing is left of a case that is gone.
   for (const auto& entry : fs::directory_iterator(dir))
-    if (entry.path().extension() == ".svg")
+    if (entry.path().extension() == ".svg") {
       EXPECT_TRUE(names.count(entry.path().filename().string()))
           << entry.path() << " is no golden case's drawing";
+    }
 }
 
 }  // namespace

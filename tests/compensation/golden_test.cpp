@@ -28,7 +28,9 @@ TEST_P(Golden, MovesAndDiagnosticsAreTheHandWorkedOnes) {
   const GoldenCase& g = GetParam();
   CompProgram p = g.build();
   const std::string moves = p.run();
-  if (!g.expected.empty()) EXPECT_EQ(moves, g.expected) << g.title;
+  if (!g.expected.empty()) {
+    EXPECT_EQ(moves, g.expected) << g.title;
+  }
   EXPECT_EQ(codes(p.diagnostics(), Severity::Error), g.errors) << g.title;
   EXPECT_EQ(codes(p.diagnostics(), Severity::Warning), g.warnings) << g.title;
 }

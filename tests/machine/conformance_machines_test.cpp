@@ -31,7 +31,7 @@ TEST(ConformanceMachines, EveryCaseLoads) {
     SourceManager sources;
     DiagnosticEngine diags(&sources);
     auto m = loadMachineFile(path, sources, diags,
-                             MachineFileOptions{.ignore_other_top_level_keys = true});
+                             MachineFileOptions{.ignore_other_top_level_keys = true, .dialect = {}, .default_dialect = {}});
     std::string errors;
     for (const Diagnostic& d : diags.diagnostics()) errors += diags.format(d) + "\n";
     EXPECT_TRUE(m.has_value()) << errors;
@@ -45,7 +45,7 @@ TEST(ConformanceMachines, LatheWearAndGeometryCase) {
     SourceManager sources;
     DiagnosticEngine diags(&sources);
     auto m = loadMachineFile(path, sources, diags,
-                             MachineFileOptions{.ignore_other_top_level_keys = true});
+                             MachineFileOptions{.ignore_other_top_level_keys = true, .dialect = {}, .default_dialect = {}});
     ASSERT_TRUE(m) << path;
     if (m->lathe_offsets.wear.count(2)) {
       EXPECT_EQ(m->lathe_offsets.wear.at(2), (LatheOffset{0.4, -0.2, 0.0, 0})) << path;

@@ -206,7 +206,7 @@ TEST(MachineFile, UnknownTopLevelKeyUnlessIgnored) {
             "machine.toml:1:1: error[NCC0302]: unknown key 'title' in the machine file");
   EXPECT_EQ(strict.errors[1],
             "machine.toml:4:2: error[NCC0302]: unknown key 'expect' in the machine file");
-  Result lenient = parse(text, MachineFileOptions{.ignore_other_top_level_keys = true});
+  Result lenient = parse(text, MachineFileOptions{.ignore_other_top_level_keys = true, .dialect = {}, .default_dialect = {}});
   ASSERT_TRUE(lenient.machine);
   EXPECT_EQ(lenient.machine->axisCount(), 1);
 }
