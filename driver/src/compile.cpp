@@ -18,6 +18,7 @@
 #include "ncc/driver/variables_file.h"
 #include "ncc/frontend/block_reader.h"
 #include "ncc/ir/printer.h"
+#include "ncc/passes/dialect_table.h"
 #include "ncc/passes/lowering.h"
 #include "ncc/passes/pass_manager.h"
 #include "ncc/prepare/block_loop.h"
@@ -36,7 +37,7 @@ frontend::ReaderOptions readerOptionsFor(Dialect dialect) {
   // FANUC and Mazak end a block at ';' (EOB); the Siemens ISO manual uses ';' to start an
   // annotation that runs to the end of the line.
   options.semicolon_ends_block = dialect != Dialect::SiemensIsoM;
-  options.language_switch = dialect == Dialect::SiemensIsoM;
+  options.language_switch = passes::languageTables(dialect).din != nullptr;
   return options;
 }
 

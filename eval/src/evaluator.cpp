@@ -1,7 +1,6 @@
 // The block loop of evaluation: reads the current program's blocks, keeps to the program's
 // bounds, runs statements and turns word expressions into values. Calls and returns are in
 // calls.cpp.
-#include <algorithm>
 #include <cmath>
 #include <utility>
 
@@ -363,9 +362,8 @@ const ast::Block* Evaluator::Impl::evaluateBlock(const ast::Block& block, const 
       return nullptr;
     }
     if (a->dropped) continue;  // an address whose variable is vacant is not there at all
-    if (w.address.is('G') &&
-        std::find(rules.text_g_codes.begin(), rules.text_g_codes.end(), a->value) !=
-            rules.text_g_codes.end()) {
+    if (options.language_switch && w.address.is('G') &&
+        (a->value == frontend::kSwitchToDin || a->value == frontend::kSwitchToIso)) {
       fail(EvalError::AddressValue, w.loc,
            absl::StrCat("G", formatNumber(a->value),
                         " must be written as a number: the language it switches to is read "

@@ -42,7 +42,6 @@ constinit const MacroRules kFanucRules{
     .user_alarms = kUserAlarms,
     .argument_spec1 = kArgumentSpec1,
     .program_file_names = kIsoProgramFiles,
-    .text_g_codes = {},  // no G code switches the reader
 };
 
 }  // namespace ncc::eval::tables

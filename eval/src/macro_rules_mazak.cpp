@@ -72,7 +72,6 @@ constinit const MacroRules kMazakRules{
     .user_alarms = kUserAlarms,
     .argument_spec1 = kArgumentSpec1,    // §13-9-4 table (G L N P only in G66.1, O never)
     .program_file_names = kIsoProgramFiles,
-    .text_g_codes = {},  // no G code switches the reader
 };
 
 }  // namespace ncc::eval::tables

@@ -13,8 +13,6 @@ constexpr MacroRules::UserAlarmRange kUserAlarms[] = {{0, 200, 3000}};
 // §2 / §4.11: "M98 P21 searches 21.mpf; in zero-pad mode P20012 is 0012.mpf"; subprograms
 // are .spf files (conformance: 1234.spf, 0010.spf).
 constexpr std::string_view kFiles[] = {"{:04}.spf", "{}.spf", "{:04}.mpf", "{}.mpf"};
-// §4.1: G290 switches to DIN, G291 back, from the next block.
-constexpr double kTextGCodes[] = {290.0, 291.0};
 
 }  // namespace
 
@@ -43,7 +41,6 @@ constinit const MacroRules kSiemensIsoRules{
     .user_alarms = kUserAlarms,
     .argument_spec1 = kArgumentSpec1,  // §4.10 type I: G L N O P are not arguments
     .program_file_names = kFiles,
-    .text_g_codes = kTextGCodes,
 };
 
 }  // namespace ncc::eval::tables

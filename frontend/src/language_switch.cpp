@@ -29,7 +29,7 @@ bool readPlainDin(IsoBlockParser& parser, std::string_view text, SourceLocation 
 }
 
 Language languageAfter(const ast::Block& b, Language now) {
-  const double code = now == Language::Iso ? 290.0 : 291.0;
+  const double code = now == Language::Iso ? kSwitchToDin : kSwitchToIso;
   for (const ast::Word& w : b.words)
     if (isLiteralG(w, code)) return now == Language::Iso ? Language::Din : Language::Iso;
   return now;

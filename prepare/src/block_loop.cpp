@@ -8,6 +8,7 @@
 
 #include "absl/strings/str_cat.h"
 #include "ncc/bytecode/format.h"
+#include "ncc/passes/dialect_table.h"
 
 namespace ncc::prepare {
 
@@ -86,6 +87,7 @@ BlockLoop::BlockLoop(const Settings& settings, eval::ProgramStore& store, uint32
   options.real_increment = [this] { return lowering_.leastIncrement(); };
   options.address_digits = lowering_.addressDigits();
   options.code_macros = codeMacros(machine);
+  options.language_switch = passes::languageTables(settings.dialect).din != nullptr;
   options.figure_rotation.begin = [this](const std::array<std::optional<double>, 3>& ijk) {
     return lowering_.figureRotationBegin(ijk);
   };

@@ -55,6 +55,8 @@ EvalRun run(std::string_view program, Dialect dialect = Dialect::FanucM, uint64_
   options.rules = &rules;
   options.repeat = rules.repeat;
   options.limits.max_back_jumps = max_back_jumps;
+  // As the block loop sets it: siemens-iso-m reads DIN after G290 (passes::languageTables).
+  options.language_switch = dialect == Dialect::SiemensIsoM;
   options.is_axis = [](std::string_view a) { return a == "X" || a == "Y" || a == "Z"; };
   Evaluator evaluator(options, store, store.open(main), variables, diags);
   while (const ast::Block* b = evaluator.next()) {

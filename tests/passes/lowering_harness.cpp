@@ -6,6 +6,7 @@
 #include "absl/strings/str_cat.h"
 #include "ncc/frontend/block_reader.h"
 #include "ncc/machine/machine_file.h"
+#include "ncc/passes/dialect_table.h"
 #include "ncc/passes/lowering.h"
 #include "ncc/passes/pass_manager.h"
 
@@ -95,7 +96,7 @@ Lowered lowerWith(Dialect dialect, const std::string& program, const std::string
   std::string_view rest = program;
   frontend::ReaderOptions reader_options;
   reader_options.semicolon_ends_block = dialect != Dialect::SiemensIsoM;
-  reader_options.language_switch = dialect == Dialect::SiemensIsoM;
+  reader_options.language_switch = languageTables(dialect).din != nullptr;
   frontend::BlockReader reader(sources, file, diags, reader_options);
   for (;;) {
     std::optional<ast::Block> block;

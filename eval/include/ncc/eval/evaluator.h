@@ -46,6 +46,9 @@ struct EvaluatorOptions {
   // ("M6_MAKRO"). The block's other words are the arguments, as with G65; inside the macro a
   // code calls nothing and acts as the plain code.
   std::map<std::string, std::string> code_macros;
+  // The reader switches language on G290/G291 as written (ReaderOptions::language_switch):
+  // a value computed for G that is one of them is refused, since the reader cannot see it.
+  bool language_switch = false;
   // Mazak figure rotation (M98 P H I J K L, MacroRules::figure_rotation): the controller turns
   // run k (0 .. L-1) of the subprogram. `begin` when the call starts, with I J K as passed (mm;
   // nullopt where not written), false when the controller refuses (G68 in force); `run` before

@@ -81,9 +81,6 @@ struct MacroRules {
   // Subprogram files in the program folder, tried in order; `{}` is the program number,
   // `{:04}` zero-padded to four digits ("O{:04}.nc", "{}.nc", "{:04}.spf").
   std::span<const std::string_view> program_file_names;
-  // G codes that act when the text is read, before any value is computed (G290/G291 switch
-  // the reader's language: frontend/block_reader.h): a computed G (`G#1`) may not be one.
-  std::span<const double> text_g_codes;
 
   std::string_view alarm(EvalError e) const { return alarm_codes[static_cast<size_t>(e)]; }
   // The alarm number #3000 = n shows (n + offset of its range); nullopt outside every range.

@@ -8,4 +8,10 @@ namespace ncc::frontend {
 
 enum class Language : uint8_t { Iso, Din };
 
+// The G codes that switch: G290 to DIN, G291 back to ISO (siemens-840di-iso-milling-gcode.ja
+// §4.1), from the next block. The reader switches on them as written (language_switch.h); a
+// value computed for G cannot be one (the evaluator refuses it).
+inline constexpr double kSwitchToDin = 290.0;
+inline constexpr double kSwitchToIso = 291.0;
+
 }  // namespace ncc::frontend
