@@ -284,9 +284,9 @@ AddressMap::AddressMap(const DialectTable& table, const MachineConfig& machine) 
                                               {'Q', S::Q}, {'H', S::H}, {'D', S::D}, {'M', S::M},
                                               {'T', S::T}};
   axes_.fill(-1);
-  const std::string_view data = table.behaviour.data_addresses;
+  const std::string_view other = table.behaviour.other_meaning_addresses;
   for (const auto& [letter, slot] : kNamed)
-    if (data.find(letter) != std::string_view::npos) slots_[static_cast<size_t>(letter - 'A')] = slot;
+    if (other.find(letter) == std::string_view::npos) slots_[static_cast<size_t>(letter - 'A')] = slot;
   const std::string_view angle = table.behaviour.line_angle_address;
   if (angle.size() == 1 && angle[0] >= 'A' && angle[0] <= 'Z') {
     const size_t i = static_cast<size_t>(angle[0] - 'A');

@@ -284,7 +284,7 @@ constexpr DialectBehaviour kBehaviour{
     .skip_feed_is_modal = true,             // G31 takes F like G01
     .corner_with_arcs = true,
     .line_angle_address = "",
-    .data_addresses = "IJKRFSPLQHDMT",
+    .other_meaning_addresses = "",
     .decimal_point_from_params = true,
 };
 // FANUC Series 0i-MD/30i-M custom macro system variables (tool offset memory C, up to 200

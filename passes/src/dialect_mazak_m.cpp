@@ -276,7 +276,7 @@ constexpr DialectBehaviour kBehaviour{
     .skip_feed_is_modal = false,            // §4.10: K41 = 0, the modal F is not changed
     .corner_with_arcs = false,
     .line_angle_address = "A",   // §13-12 line angle
-    .data_addresses = "IJKRFSPLQHDMT",
+    .other_meaning_addresses = "",
     .decimal_point_from_params = true,
 };
 // §13-9-4 (notes §4.8, System variables); F96 bit 0 = 0 (the #2001 ranges, up to 200 offsets).

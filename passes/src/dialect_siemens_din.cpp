@@ -85,7 +85,7 @@ const DialectTable& siemensDinTable() {
     t.gcodes = kCodes;
     // R, L, P, H, T, D mean other things in DIN (a parameter, a subprogram call, a repeat
     // count, an auxiliary function, the tool and its edge): not read until they are built.
-    t.behaviour.data_addresses = "IJKFSM";
+    t.behaviour.other_meaning_addresses = "RLPQHDT";
     t.behaviour.decimal_point_from_params = false;  // `X20` is 20 mm in DIN
     t.behaviour.decimal_point_default = "calculator";
     return t;

@@ -244,7 +244,7 @@ constexpr DialectBehaviour kBehaviour{
     .skip_feed_is_modal = true,             // G31 X Y Z F: F as for G01
     .corner_with_arcs = true,
     .line_angle_address = "",
-    .data_addresses = "IJKRFSPLQHDMT",
+    .other_meaning_addresses = "",
     .decimal_point_from_params = true,  // MD10884 EXTERN_FLOATINGPOINT_PROG (ISO mode)
 };
 // Sinumerik ISO mode defines no FANUC system variables (notes §4.11: "the manual does not

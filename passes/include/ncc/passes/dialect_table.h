@@ -196,11 +196,11 @@ struct DialectBehaviour {
   // The address of the line angle (Mazak §13-12: `G01 Aa Zz`, the end point's other plane
   // coordinate computed from the angle; only where A is not an axis of the machine). Empty: none.
   std::string_view line_angle_address;
-  // The letters that are data addresses (not axes) and the slot each has: a letter not here
-  // and not an axis of the machine is "not supported yet". Siemens DIN gives R, L, P, H, T, D
-  // other meanings than ISO (a parameter, a subprogram call, a repeat count ...), so its table
-  // lists only the letters it reads as ISO does.
-  std::string_view data_addresses = "IJKRFSPLQHDMT";
+  // Data addresses (block_words.h, AddressMap) this language gives another meaning, not built
+  // yet: such a letter, unless it is an axis of the machine, is "not supported yet". Siemens
+  // DIN reads R as a parameter, L as a subprogram call, P as a repeat count, H as an auxiliary
+  // function, T and D as the tool and its edge. Empty: every data address as ISO reads it.
+  std::string_view other_meaning_addresses = "";
   // Whether [machine.params] decimal_point applies (MD10884 EXTERN_FLOATINGPOINT_PROG is an
   // ISO-mode parameter: Siemens DIN always reads `X20` as 20 mm).
   bool decimal_point_from_params = true;
