@@ -447,7 +447,6 @@ bool readBlock(Reader& r, StoredBlock& stored, uint32_t file) {
   return true;
 }
 
-
 bool readColumn(Reader& r, frontend::BlockPosition& p) {
   uint64_t v = 0;
   if (!r.varint(v)) return false;
@@ -517,7 +516,6 @@ int nesting(const T& v) {
 }  // namespace
 
 int blockNesting(const ast::Block& block) { return nesting(block); }
-
 
 // ---- Encoding -----------------------------------------------------------------------------
 

@@ -17,7 +17,6 @@ bool isBlankText(std::string_view text) {
   return true;
 }
 
-
 }  // namespace
 
 struct BlockReader::Impl {

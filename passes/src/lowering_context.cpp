@@ -45,8 +45,7 @@ LoweringCore::LoweringCore(LoweringOptions o, DiagnosticEngine& d, ir::BlockSink
     ll.settings = LoweringSettings::resolve(*ll.table, *machine);
   }
   if (!languages[0].table) return;
-  language = frontend::Language::Din;  // so that useLanguage(Iso) sets the members
-  useLanguage(frontend::Language::Iso);
+  bindLanguage(frontend::Language::Iso);
   for (int s = 0; s < 3; ++s) {
     const int i = machine->axisIndex(std::string(1, "XYZ"[s]));
     xyz[s] = static_cast<int8_t>(i >= 0 && i < kMaxAxes ? i : -1);
@@ -59,13 +58,17 @@ LoweringCore::LoweringCore(LoweringOptions o, DiagnosticEngine& d, ir::BlockSink
 
 bool LoweringCore::useLanguage(frontend::Language l) {
   if (l == language) return true;
+  if (!languages[static_cast<size_t>(l)].table) return false;
+  bindLanguage(l);
+  return true;
+}
+
+void LoweringCore::bindLanguage(frontend::Language l) {
   const LanguageLowering& ll = languages[static_cast<size_t>(l)];
-  if (!ll.table) return false;
   table = ll.table;
   addresses = &*ll.addresses;
   settings = ll.settings;
   language = l;
-  return true;
 }
 
 void LoweringCore::resolveSkip() {

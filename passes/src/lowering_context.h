@@ -80,6 +80,8 @@ struct LoweringCore {
   frontend::Language language = frontend::Language::Iso;
   // Lowers the next blocks with `l`'s table; false (nothing changed) when the dialect has none.
   bool useLanguage(frontend::Language l);
+  // table, addresses, settings and language from languages[l] (which has a table).
+  void bindLanguage(frontend::Language l);
   // The controller state between blocks.
   ControllerState& cs() { return states_[current_]; }
   const ControllerState& cs() const { return states_[current_]; }
