@@ -81,6 +81,7 @@ TEST(Evaluator, AComputedLanguageSwitchIsRefused) {
   EvalRun r = run("#1=290\nG#1\nM30\n", Dialect::SiemensIsoM);
   ASSERT_EQ(r.diagnostics.size(), 1u);
   EXPECT_EQ(r.diagnostics[0].location.line, 2u);
+  EXPECT_EQ(r.diagnostics[0].code, std::string(macroRules(Dialect::SiemensIsoM).alarm(EvalError::AddressValue)));
   EXPECT_NE(r.diagnostics[0].message.find("G290 must be written as a number"), std::string::npos)
       << r.diagnostics[0].message;
   // Elsewhere G290 is not a language code: the value goes on to lowering, which judges it.

@@ -54,6 +54,22 @@ TEST(PassManager, WorkSpaceWhenAskedAndMachineSpaceByDefault) {
   EXPECT_FALSE(diags.hasErrors());
 }
 
+TEST(Lowering, ADinBlockInADialectWithoutDinIsRefused) {
+  // The reader never reads DIN for fanuc-m; a block store could still carry such a block.
+  DiagnosticEngine diags;
+  Keep keep;
+  MachineConfig m = defaultMachine();
+  Lowering lowering({Dialect::FanucM, &m, {}}, diags, keep);
+  ast::Block b = *frontend::parseIsoBlock("G1 X1 F100", 1, 7, diags);
+  b.language = frontend::Language::Din;
+  lowering.lower(b);
+  ASSERT_EQ(diags.diagnostics().size(), 1u);
+  EXPECT_EQ(diags.diagnostics()[0].code, "NCC2002");
+  EXPECT_EQ(diags.diagnostics()[0].location.line, 7u);
+  EXPECT_EQ(diags.diagnostics()[0].message, "fanuc-m has no DIN language: the block cannot be lowered");
+  EXPECT_TRUE(keep.blocks.empty());
+}
+
 TEST(Lowering, AcceptsLanguageSwitchesAndReportsProgramEnd) {
   DiagnosticEngine diags;
   Keep keep;
