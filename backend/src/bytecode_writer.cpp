@@ -62,6 +62,8 @@ void BytecodeWriter::accept(ir::Block&& block) {
 
 void BytecodeWriter::encode(const ir::Operation& op, const ir::Block& block) {
   if (const auto* prepare = std::get_if<ir::Prepare>(&op)) blocks_ = prepare->store;
+  if (const auto* set = std::get_if<ir::SetVariable>(&op); set && !set->name.empty())
+    variable_names_.try_emplace(set->number, set->name);
   const EncodedOperation code = encodeOperation(op, block, machine_);
   if (code.error) {
     error(code.error->first, block.loc, code.error->second);
@@ -96,7 +98,14 @@ void BytecodeWriter::finish() {
   if (main >= strings.size()) main = 0;
   std::span<const uint8_t> blocks;
   if (blocks_) blocks = *blocks_;
-  if (std::optional<bytecode::Error> e = writer_.finish(strings, {bytecode::Unit{0, main}}, blocks))
+  // Named variables (DIN): their names follow the file names in the pool.
+  std::vector<bytecode::VariableName> names;
+  for (const auto& [number, name] : variable_names_) {
+    names.push_back({number, static_cast<uint32_t>(strings.size())});
+    strings.push_back(name);
+  }
+  if (std::optional<bytecode::Error> e =
+          writer_.finish(strings, {bytecode::Unit{0, main}}, blocks, names))
     error(e->code, {}, e->message);
 }
 

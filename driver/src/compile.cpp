@@ -33,11 +33,13 @@ namespace ncc::driver {
 namespace {
 
 frontend::ReaderOptions readerOptionsFor(Dialect dialect) {
+  const passes::LanguageTables tables = passes::languageTables(dialect);
   frontend::ReaderOptions options;
-  // FANUC and Mazak end a block at ';' (EOB); the Siemens ISO manual uses ';' to start an
-  // annotation that runs to the end of the line.
-  options.semicolon_ends_block = dialect != Dialect::SiemensIsoM;
-  options.language_switch = passes::languageTables(dialect).din != nullptr;
+  // FANUC and Mazak end a block at ';' (EOB); the Siemens controls (the dialects with DIN)
+  // read ';' as the start of an annotation that runs to the end of the line.
+  options.semicolon_ends_block = tables.din == nullptr;
+  options.language_switch = tables.din != nullptr;
+  options.initial_language = tables.initial;
   return options;
 }
 

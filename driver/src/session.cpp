@@ -13,7 +13,7 @@
 namespace ncc::driver {
 
 bool dialectSupported(Dialect d) {
-  return d == Dialect::FanucM || d == Dialect::MazakM || d == Dialect::SiemensIsoM;
+  return d != Dialect::FanucT;
 }
 
 namespace {
@@ -73,7 +73,7 @@ std::optional<SetupError> Session::open(const std::filesystem::path& input,
   if (!dialectSupported(dialect_)) {
     return SetupError{"NCC0002", absl::StrCat("dialect '", std::string(dialectName(dialect_)),
                                               "' is not supported yet (supported: fanuc-m, "
-                                              "mazak-m, siemens-iso-m)")};
+                                              "mazak-m, siemens-iso-m, siemens-din)")};
   }
   if (from_stdin) {
     program_dir_ = options.program_dir.value_or(std::filesystem::path("."));

@@ -87,8 +87,13 @@ class ReaderCursor final : public eval::BlockCursor {
 };
 
 frontend::SequenceSearch toFrontend(eval::SequenceSearch order) {
-  return order == eval::SequenceSearch::FromStart ? frontend::SequenceSearch::FromStart
-                                                  : frontend::SequenceSearch::ForwardThenFromStart;
+  switch (order) {
+    case eval::SequenceSearch::ForwardThenFromStart: return frontend::SequenceSearch::ForwardThenFromStart;
+    case eval::SequenceSearch::FromStart: return frontend::SequenceSearch::FromStart;
+    case eval::SequenceSearch::Forward: return frontend::SequenceSearch::Forward;
+    case eval::SequenceSearch::Backward: return frontend::SequenceSearch::Backward;
+  }
+  return frontend::SequenceSearch::FromStart;
 }
 
 }  // namespace
@@ -148,6 +153,15 @@ std::optional<eval::ProgramPoint> SourceProgramStore::findSequence(
     const eval::ProgramPoint& begin, const eval::ProgramPoint& end) {
   std::optional<frontend::BlockPosition> p = library_.index(from.file).findSequence(
       n, from.position, toFrontend(order), frontend::BlockRange{begin.position, end.position});
+  if (!p) return std::nullopt;
+  return eval::ProgramPoint{from.file, *p};
+}
+
+std::optional<eval::ProgramPoint> SourceProgramStore::findLabel(
+    std::string_view label, const eval::ProgramPoint& from, eval::SequenceSearch order,
+    const eval::ProgramPoint& begin, const eval::ProgramPoint& end) {
+  std::optional<frontend::BlockPosition> p = library_.index(from.file).findLabel(
+      label, from.position, toFrontend(order), frontend::BlockRange{begin.position, end.position});
   if (!p) return std::nullopt;
   return eval::ProgramPoint{from.file, *p};
 }

@@ -30,6 +30,10 @@ class SourceProgramStore final : public eval::ProgramStore {
                                                  eval::SequenceSearch order,
                                                  const eval::ProgramPoint& begin,
                                                  const eval::ProgramPoint& end) override;
+  std::optional<eval::ProgramPoint> findLabel(std::string_view label, const eval::ProgramPoint& from,
+                                              eval::SequenceSearch order,
+                                              const eval::ProgramPoint& begin,
+                                              const eval::ProgramPoint& end) override;
   eval::ProgramPoint programEnd(const eval::ProgramPoint& start) override;
 
   // The reader under a cursor this store opened (for the text after the program's end).

@@ -17,7 +17,7 @@ namespace ncc::eval {
 namespace {
 
 constexpr uint8_t kMagic[4] = {'N', 'C', 'B', 'S'};
-constexpr uint16_t kVersion = 3;  // 2: the loop limits; 3: the tree written by its schema
+constexpr uint16_t kVersion = 4;  // 2: the loop limits; 3: the tree written by its schema; 4: DIN nodes
 
 uint64_t zigzag(int64_t v) { return (static_cast<uint64_t>(v) << 1) ^ static_cast<uint64_t>(v >> 63); }
 int64_t unzigzag(uint64_t u) { return static_cast<int64_t>((u >> 1) ^ (~(u & 1) + 1)); }
@@ -130,7 +130,7 @@ void writeValue(Writer& w, const T& v, LineBase& base) {
   if constexpr (Node<T>) {
     writeNode(w, v, base);
   } else if constexpr (ast::kIsBox<T>) {
-    writeNode(w, *v, base);
+    writeValue(w, *v, base);
   } else if constexpr (ast::kIsList<T>) {
     w.varint(v.size());
     LineBase element = base;
@@ -340,7 +340,7 @@ bool readValue(Reader& r, T& v, LineBase& base, int depth) {
   if constexpr (Node<T>) {
     return readNode(r, v, base, depth);
   } else if constexpr (ast::kIsBox<T>) {
-    return readNode(r, v.emplace(), base, depth);
+    return readValue(r, v.emplace(), base, depth);
   } else if constexpr (ast::kIsList<T>) {
     uint64_t n = 0;
     if (!r.count(n, minimumSize<typename T::value_type>())) return false;
@@ -641,6 +641,9 @@ struct StoredProgramStore::FileIndex {
   // Blocks that start with N n, by n, in file order: made on the first GOTO into the file.
   bool sequences_made = false;
   std::unordered_map<int64_t, std::vector<size_t>> sequences;
+  // Blocks with a DIN label, by label: made on the first jump to a label.
+  bool labels_made = false;
+  std::unordered_map<std::string, std::vector<size_t>> labels;
 
   const frontend::BlockPosition& at(size_t i) const { return file->blocks[i].position; }
 };
@@ -711,6 +714,49 @@ std::optional<ProgramPoint> StoredProgramStore::findProgramNamed(std::string_vie
   return it->second;
 }
 
+namespace {
+
+// The block of `candidates` (indices of the blocks that match, in file order) a jump from `from`
+// reaches, searching in `order` within [begin, end), as ProgramIndex::findSequence does.
+template <class At>
+std::optional<size_t> searchCandidates(const std::vector<size_t>& candidates, At at,
+                                       const ProgramPoint& from, SequenceSearch order,
+                                       const ProgramPoint& begin, const ProgramPoint& end) {
+  // The first candidate at or after `p` (strictly after when `after`).
+  const auto firstFrom = [&](const frontend::BlockPosition& p, bool after) {
+    return std::partition_point(candidates.begin(), candidates.end(), [&](size_t i) {
+      return after ? at(i) <= p : at(i) < p;
+    });
+  };
+  const auto within = [&](auto it) { return it != candidates.end() && at(*it) < end.position; };
+  const auto first = firstFrom(begin.position, false);
+  switch (order) {
+    case SequenceSearch::ForwardThenFromStart:
+    case SequenceSearch::Forward: {
+      const auto forward = std::max(first, firstFrom(from.position, true));
+      if (within(forward)) return *forward;
+      if (order == SequenceSearch::ForwardThenFromStart && within(first) &&
+          at(*first) <= from.position)
+        return *first;
+      return std::nullopt;
+    }
+    case SequenceSearch::Backward: {
+      // The last candidate at or before `from` (and at or after `begin`).
+      const auto past = firstFrom(from.position, true);
+      if (past == first) return std::nullopt;
+      const size_t i = *(past - 1);
+      if (at(i) < end.position) return i;
+      return std::nullopt;
+    }
+    case SequenceSearch::FromStart:
+      if (within(first)) return *first;
+      return std::nullopt;
+  }
+  return std::nullopt;
+}
+
+}  // namespace
+
 std::optional<ProgramPoint> StoredProgramStore::findSequence(int64_t n, const ProgramPoint& from,
                                                              SequenceSearch order,
                                                              const ProgramPoint& begin,
@@ -726,27 +772,33 @@ std::optional<ProgramPoint> StoredProgramStore::findSequence(int64_t n, const Pr
   }
   auto it = index->sequences.find(n);
   if (it == index->sequences.end()) return std::nullopt;
-  const std::vector<size_t>& candidates = it->second;  // in file order
-  // The first candidate at or after `p` (strictly after when `after`).
-  const auto firstFrom = [&](const frontend::BlockPosition& p, bool after) {
-    return std::partition_point(candidates.begin(), candidates.end(), [&](size_t i) {
-      return after ? index->at(i) <= p : index->at(i) < p;
-    });
-  };
-  const auto answer = [&](size_t i) { return ProgramPoint{from.file, index->at(i)}; };
-  // As ProgramIndex::findSequence: ForwardThenFromStart reads the blocks after `from` (and at
-  // or after `begin`) before `end`, then from `begin` up to and including `from`.
-  auto first = firstFrom(begin.position, false);
-  if (order == SequenceSearch::ForwardThenFromStart) {
-    const auto forward = std::max(first, firstFrom(from.position, true));
-    if (forward != candidates.end() && index->at(*forward) < end.position) return answer(*forward);
-    if (first != candidates.end() && index->at(*first) <= from.position &&
-        index->at(*first) < end.position)
-      return answer(*first);
-    return std::nullopt;
+  std::optional<size_t> i = searchCandidates(
+      it->second, [&](size_t k) { return index->at(k); }, from, order, begin, end);
+  if (!i) return std::nullopt;
+  return ProgramPoint{from.file, index->at(*i)};
+}
+
+std::optional<ProgramPoint> StoredProgramStore::findLabel(std::string_view label,
+                                                          const ProgramPoint& from,
+                                                          SequenceSearch order,
+                                                          const ProgramPoint& begin,
+                                                          const ProgramPoint& end) {
+  FileIndex* index = fileIndex(from.file);
+  if (!index) return std::nullopt;
+  if (!index->labels_made) {
+    index->labels_made = true;
+    const std::vector<StoredBlock>& blocks = index->file->blocks;
+    for (size_t i = 0; i < blocks.size(); ++i)
+      for (const ast::Statement& st : blocks[i].block.statements)
+        if (st.kind == ast::Statement::Kind::Label && st.target.text)
+          index->labels[*st.target.text].push_back(i);
   }
-  if (first != candidates.end() && index->at(*first) < end.position) return answer(*first);
-  return std::nullopt;
+  auto it = index->labels.find(std::string(label));
+  if (it == index->labels.end()) return std::nullopt;
+  std::optional<size_t> i = searchCandidates(
+      it->second, [&](size_t k) { return index->at(k); }, from, order, begin, end);
+  if (!i) return std::nullopt;
+  return ProgramPoint{from.file, index->at(*i)};
 }
 
 ProgramPoint StoredProgramStore::programEnd(const ProgramPoint& start) {

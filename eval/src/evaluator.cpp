@@ -68,11 +68,12 @@ void Evaluator::Impl::fail(EvalError error, SourceLocation loc, std::string mess
   fail(Failure{error, loc, std::move(message), 0});
 }
 
-std::optional<Value> Evaluator::Impl::value(const ast::Expr& e, int enclosing_brackets) {
+std::optional<Value> Evaluator::Impl::value(const ast::Expr& e, int enclosing_brackets, bool din) {
   Failure failure;
   ExpressionContext context{rules, variables};
   context.enclosing_brackets = enclosing_brackets;
   context.adp_scale = options.adp_scale;
+  context.din = din;
   std::optional<Value> v = evaluate(e, context, failure);
   if (!v) fail(failure);
   return v;
@@ -205,7 +206,9 @@ const ast::Block* Evaluator::Impl::next() {
     if (!block->empty()) f.seen_content = true;
     if (options.skipped && options.skipped(*block)) return block;  // lowering skips it
     if (plain(*block)) return block;  // most blocks: nothing to evaluate, nothing to move
-    const ast::Block* out = evaluateBlock(*block, at);
+    const ast::Block* out = block->language == frontend::Language::Din
+                                ? evaluateDin(*block, at)
+                                : evaluateBlock(*block, at);
     if (end != ProgramEnd::Running) return nullptr;
     if (!out) continue;
     modalCallAfter(*out, at);
@@ -215,12 +218,56 @@ const ast::Block* Evaluator::Impl::next() {
 }
 
 bool Evaluator::Impl::plain(const ast::Block& block) const {
-  // DIN text (after G290): M98/M99/G65/G66 calls and code macros are ISO-mode words, and the
-  // DIN blocks read so far are plain words (docs/din.md).
-  if (block.language == frontend::Language::Din) return true;
+  // DIN text has none of the ISO calls (M98/M99/G65/G66, code macros); its words name a
+  // variable when DEF declared one by the address (din.cpp).
+  if (block.language == frontend::Language::Din) return dinPlain(block);
   if (!block.statements.empty() || !modal_calls.empty()) return false;
   for (const ast::Word& w : block.words)
     if (!isLiteral(w.value) || isCallWord(w)) return false;
+  return true;
+}
+
+bool Evaluator::Impl::wordValue(const ast::Word& w, ast::Block& out, bool din) {
+  if (isLiteral(w.value)) {
+    out.words.push_back(w);
+    return true;
+  }
+  std::optional<Value> v = value(w.value, 0, din);
+  if (!v) return false;
+  const AddressShape shape = addressShape(w.address);
+  AddressLimits limits;
+  limits.digits = options.address_digits;
+  if (shape == AddressShape::Real && options.real_increment)
+    limits.increment = options.real_increment();
+  Failure failure;
+  std::optional<AddressValue> a = addressValue(*v, shape, rules, limits, w.loc, failure);
+  if (!a) {
+    fail(failure);
+    return false;
+  }
+  if (a->dropped) return true;  // an address whose variable is vacant is not there at all
+  if (options.language_switch && w.address.is('G') &&
+      (a->value == frontend::kSwitchToDin || a->value == frontend::kSwitchToIso)) {
+    fail(EvalError::AddressValue, w.loc,
+         absl::StrCat("G", formatNumber(a->value),
+                      " must be written as a number: the language it switches to is read "
+                      "from the program text, before any value is computed"));
+    return false;
+  }
+  // A computed value is a number in the input unit, as if written with its decimal point;
+  // an integer address takes it as the integer it is.
+  ast::Word& computed = out.words.emplace_back();
+  computed.address = w.address;
+  computed.loc = w.loc;
+  computed.value = ast::Expr::literal(std::abs(a->value), shape == AddressShape::Real, w.value.loc);
+  if (a->value < 0) {
+    ast::Expr neg;
+    neg.kind = ast::Expr::Kind::Unary;
+    neg.op = ast::Op::Minus;
+    neg.loc = computed.value.loc;
+    neg.args.push_back(std::move(computed.value));
+    computed.value = std::move(neg);
+  }
   return true;
 }
 
@@ -327,6 +374,13 @@ const ast::Block* Evaluator::Impl::evaluateBlock(const ast::Block& block, const 
         loop_id = st.loop_id;
         break;
       }
+      case K::Define:
+      case K::Label:
+      case K::Call:
+        // DIN statements: a DIN block goes to evaluateDin (din.cpp); an ISO block never has
+        // them (a tree from elsewhere, a damaged store).
+        fail(EvalError::NotSupported, st.loc, "a DIN statement in an ISO block");
+        return nullptr;
     }
     if (flow != Flow::None) break;  // a jump ends the block
   }
@@ -343,48 +397,8 @@ const ast::Block* Evaluator::Impl::evaluateBlock(const ast::Block& block, const 
   out.language = block.language;
   out.comments = block.comments;
   out.words.reserve(block.words.size());
-  for (const ast::Word& w : block.words) {
-    if (isLiteral(w.value)) {
-      out.words.push_back(w);
-      continue;
-    }
-    std::optional<Value> v = value(w.value);
-    if (!v) return nullptr;
-    const AddressShape shape = addressShape(w.address);
-    AddressLimits limits;
-    limits.digits = options.address_digits;
-    if (shape == AddressShape::Real && options.real_increment)
-      limits.increment = options.real_increment();
-    Failure failure;
-    std::optional<AddressValue> a = addressValue(*v, shape, rules, limits, w.loc, failure);
-    if (!a) {
-      fail(failure);
-      return nullptr;
-    }
-    if (a->dropped) continue;  // an address whose variable is vacant is not there at all
-    if (options.language_switch && w.address.is('G') &&
-        (a->value == frontend::kSwitchToDin || a->value == frontend::kSwitchToIso)) {
-      fail(EvalError::AddressValue, w.loc,
-           absl::StrCat("G", formatNumber(a->value),
-                        " must be written as a number: the language it switches to is read "
-                        "from the program text, before any value is computed"));
-      return nullptr;
-    }
-    // A computed value is a number in the input unit, as if written with its decimal point;
-    // an integer address takes it as the integer it is.
-    ast::Word& computed = out.words.emplace_back();
-    computed.address = w.address;
-    computed.loc = w.loc;
-    computed.value = ast::Expr::literal(std::abs(a->value), shape == AddressShape::Real, w.value.loc);
-    if (a->value < 0) {
-      ast::Expr neg;
-      neg.kind = ast::Expr::Kind::Unary;
-      neg.op = ast::Op::Minus;
-      neg.loc = computed.value.loc;
-      neg.args.push_back(std::move(computed.value));
-      computed.value = std::move(neg);
-    }
-  }
+  for (const ast::Word& w : block.words)
+    if (!wordValue(w, out)) return nullptr;
 
   for (const Write& w : writes) {
     if (w.number == kUserAlarmVariable) {

@@ -3,6 +3,7 @@
 //   evaluator.cpp  the block loop: program boundaries, statements (assignments, IF, GOTO,
 //                  WHILE/END), word values, the step limit
 //   calls.cpp      M98/M99, G65, G66/G66.1/G67: frames, arguments, repeats, returns
+//   din.cpp        DIN blocks: DEF, assignments in written order, R parameters, jumps
 #include <cstdint>
 #include <deque>
 #include <memory>
@@ -101,7 +102,10 @@ struct Evaluator::Impl {
   void fail(EvalError error, SourceLocation loc, std::string message);
   // `enclosing_brackets`: 1 for the bracketed condition of IF / WHILE (the parser keeps its
   // contents only).
-  std::optional<Value> value(const ast::Expr& e, int enclosing_brackets = 0);
+  std::optional<Value> value(const ast::Expr& e, int enclosing_brackets = 0, bool din = false);
+  // A word's value into `out`: as written, or computed and checked for its address (dropped
+  // when vacant); false after failing.
+  bool wordValue(const ast::Word& w, ast::Block& out, bool din = false);
   // The integer a word or target designates (GOTO n, P, L, H); nullopt after failing.
   std::optional<int64_t> integerOf(const ast::Expr& e, SourceLocation loc, const char* what);
   // Jumps to N n of the current program (GOTO, M99 P in the caller).
@@ -113,6 +117,14 @@ struct Evaluator::Impl {
   bool beyondEnd(Frame& frame, const ProgramPoint& at);
   // The current program ended without M99 (end of file, next O block, '%').
   void programFinished();
+
+  // ---- din.cpp ----
+  // A DIN block that goes to lowering as read: words of numbers, none naming a variable.
+  bool dinPlain(const ast::Block& block) const;
+  // A DIN block's statements and words, left to right; nullptr when nothing of it goes on.
+  const ast::Block* evaluateDin(const ast::Block& block, const ProgramPoint& at);
+  // A DIN jump (GOTOF, GOTOB, GOTO, GOTOC) to a label or block number of the current program.
+  bool dinJump(const ast::Statement& jump, const ProgramPoint& at);
 
   // ---- calls.cpp ----
   // Whether a literal word is a call word (M98, M99, G65, G66, G66.1, G67) or a code macro:

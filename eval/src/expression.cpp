@@ -83,6 +83,14 @@ class Evaluator {
         return binary(e);
       case ast::Expr::Kind::Call:
         return call(e);
+      case ast::Expr::Kind::RParam:
+        return rParameter(e);
+      case ast::Expr::Kind::Name:
+        return named(e);
+      case ast::Expr::Kind::String:
+        fail(failure_, EvalError::NotSupported, e.loc,
+             "DIN strings are not supported yet in expressions (docs/din.md)");
+        return std::nullopt;
     }
     fail(failure_, EvalError::Domain, e.loc, "unknown expression");
     return std::nullopt;
@@ -95,12 +103,28 @@ class Evaluator {
         return 2;
       case ast::Expr::Kind::Bracket:
       case ast::Expr::Kind::Variable:
+      case ast::Expr::Kind::RParam:
       case ast::Expr::Kind::Unary:
       case ast::Expr::Kind::Call:
         return 1;
       default:
         return 0;
     }
+  }
+
+  std::optional<Value> rParameter(const ast::Expr& e) {
+    auto index = eval(e.args[0]);
+    if (!index) return std::nullopt;
+    auto n = variableNumber(*index, rules_, e.loc, failure_);
+    if (!n) return std::nullopt;
+    return context_.variables.readR(*n, e.loc, failure_);
+  }
+
+  std::optional<Value> named(const ast::Expr& e) {
+    std::optional<std::vector<int64_t>> indices = indicesOf(e.args, context_, failure_);
+    if (!indices) return std::nullopt;
+    return context_.variables.readNamed(e.text ? std::string_view(*e.text) : std::string_view(),
+                                        *indices, e.loc, failure_);
   }
 
   std::optional<Value> variable(const ast::Expr& e) {
@@ -116,7 +140,23 @@ class Evaluator {
   std::optional<Value> unary(const ast::Expr& e) {
     auto v = eval(e.args[0]);
     if (!v || v->vacant) return v;
-    return Value::of(e.op == ast::Op::Minus ? -v->number : v->number);
+    switch (e.op) {
+      case ast::Op::Minus: return Value::of(-v->number);
+      case ast::Op::Not: return Value::of(v->number == 0.0 ? 1.0 : 0.0);
+      case ast::Op::BNot: {
+        auto x = bits32(v->number);
+        if (!x) return bitRange(e, v->number);
+        return Value::of(static_cast<double>(~*x));
+      }
+      default: return v;
+    }
+  }
+
+  std::optional<Value> bitRange(const ast::Expr& e, double outside) {
+    fail(failure_, EvalError::ValueRange, e.loc,
+         absl::StrCat(ast::opText(e.op), " works on 32-bit integers; ", formatNumber(outside),
+                      " is outside them"));
+    return std::nullopt;
   }
 
   std::optional<Value> result(double v, const ast::Expr& e) {
@@ -169,24 +209,32 @@ class Evaluator {
       case O::Times: return result(a * b, e);
       case O::Divide:
       case O::Mod:
+      case O::Div:
         if (b == 0.0) {
           fail(failure_, EvalError::DivisionByZero, e.loc,
-               absl::StrCat(op == O::Divide ? "division" : "MOD", " by zero"));
+               absl::StrCat(op == O::Divide ? "division" : ast::opText(op), " by zero"));
           return std::nullopt;
         }
+        // DIV: the integer part of the quotient (Fundamentals: 3 DIV 4 = 0).
+        if (op == O::Div) return result(std::trunc(snapToInteger(a / b)), e);
         return result(op == O::Divide ? a / b : std::fmod(a, b), e);
       case O::Or:
       case O::Xor:
-      case O::And: {
+      case O::And:
+        if (context_.din) {
+          const bool x = a != 0.0, y = b != 0.0;
+          const bool r = op == O::Or ? (x || y) : op == O::Xor ? (x != y) : (x && y);
+          return Value::of(r ? 1.0 : 0.0);
+        }
+        [[fallthrough]];
+      case O::BOr:
+      case O::BXor:
+      case O::BAnd: {
         auto x = bits32(a);
         auto y = bits32(b);
-        if (!x || !y) {
-          fail(failure_, EvalError::ValueRange, e.loc,
-               absl::StrCat(ast::opText(op), " works on 32-bit integers; ",
-                            formatNumber(x ? b : a), " is outside them"));
-          return std::nullopt;
-        }
-        const int32_t r = op == O::Or ? (*x | *y) : op == O::Xor ? (*x ^ *y) : (*x & *y);
+        if (!x || !y) return bitRange(e, x ? b : a);
+        const bool is_or = op == O::Or || op == O::BOr, is_xor = op == O::Xor || op == O::BXor;
+        const int32_t r = is_or ? (*x | *y) : is_xor ? (*x ^ *y) : (*x & *y);
         return Value::of(static_cast<double>(r));
       }
       default:
@@ -254,6 +302,15 @@ class Evaluator {
         return result(std::pow(a, b), e);
       }
       case O::Adp: return result(a * context_.adp_scale, e);
+      case O::Atan2: {
+        // ATAN2(y, x): the angle of (x, y), -180 to 180 degrees (Fundamentals).
+        if (a == 0.0 && x[1] == 0.0) return domain(e, 0.0, "ATAN2(0, 0) has no angle");
+        return result(std::atan2(a, x[1]) / kDegree, e);
+      }
+      case O::Pot: return result(a * a, e);
+      case O::Trunc: return result(std::trunc(snapToInteger(a)), e);
+      case O::MinVal: return result(std::min(a, x[1]), e);
+      case O::MaxVal: return result(std::max(a, x[1]), e);
       case O::Bin:
       case O::Bcd: return bcd(e, a);
       default:
@@ -375,5 +432,34 @@ std::optional<int64_t> assignmentTarget(const ast::Expr& target, const Expressio
 }
 
 bool isTrue(const Value& value) { return !value.vacant && value.number != 0.0; }
+
+std::optional<Value> VariableReader::readR(int64_t n, SourceLocation loc, Failure& failure) {
+  fail(failure, EvalError::UndefinedName, loc, absl::StrCat("R", n, " is not a variable here"));
+  return std::nullopt;
+}
+
+std::optional<Value> VariableReader::readNamed(std::string_view name, std::span<const int64_t>,
+                                               SourceLocation loc, Failure& failure) {
+  fail(failure, EvalError::UndefinedName, loc, absl::StrCat("'", std::string(name), "' is not defined"));
+  return std::nullopt;
+}
+
+std::optional<std::vector<int64_t>> indicesOf(const std::vector<ast::Expr>& args,
+                                              const ExpressionContext& context, Failure& failure) {
+  std::vector<int64_t> out;
+  out.reserve(args.size());
+  for (const ast::Expr& a : args) {
+    std::optional<Value> v = evaluate(a, context, failure);
+    if (!v) return std::nullopt;
+    const double r = std::round(snapToInteger(v->arithmetic()));
+    if (!(r >= -2147483648.0 && r <= 2147483647.0)) {
+      fail(failure, EvalError::ArrayIndex, a.loc,
+           absl::StrCat("index ", formatNumber(v->arithmetic()), " is out of range"));
+      return std::nullopt;
+    }
+    out.push_back(static_cast<int64_t>(r));
+  }
+  return out;
+}
 
 }  // namespace ncc::eval

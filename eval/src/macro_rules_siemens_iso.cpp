@@ -14,11 +14,25 @@ constexpr MacroRules::UserAlarmRange kUserAlarms[] = {{0, 200, 3000}};
 // are .spf files (conformance: 1234.spf, 0010.spf).
 constexpr std::string_view kFiles[] = {"{:04}.spf", "{}.spf", "{:04}.mpf", "{}.mpf"};
 
+// The DIN text of the same control (G290, or the siemens-din dialect) raises the Sinumerik NCK
+// alarms (Diagnostics Manual; the cycles notes §6 cite the 12xxx range): 12550 "name not
+// defined", 17020 "illegal array index", 14080 "jump destination not found", 12150 "operation
+// not compatible with data type". The ISO-mode errors keep the NCC codes (§6 numbers none).
+constexpr std::array<std::string_view, kNccCodes.size()> alarms() {
+  auto a = kNccCodes;
+  a[static_cast<size_t>(EvalError::UndefinedName)] = "12550";
+  a[static_cast<size_t>(EvalError::ArrayIndex)] = "17020";
+  a[static_cast<size_t>(EvalError::JumpTarget)] = "14080";
+  a[static_cast<size_t>(EvalError::TypeMismatch)] = "12150";
+  return a;
+}
+constexpr auto kAlarms = alarms();
+
 }  // namespace
 
 constinit const MacroRules kSiemensIsoRules{
     .dialect = Dialect::SiemensIsoM,
-    .alarm_codes = kNccCodes,  // §6: subprogram not found and nesting > 4 have no number
+    .alarm_codes = kAlarms,  // §6: subprogram not found and nesting > 4 have no number
     .local_count = 33,
     .commons = kCommons,
     .common_sets = {},

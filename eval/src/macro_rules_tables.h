@@ -37,6 +37,10 @@ inline constexpr std::array<std::string_view, static_cast<size_t>(EvalError::kCo
         "NCC2420",  // FigureRotationNested
         "NCC2421",  // FigureRotationWithRotation
         "NCC0023",  // RunTimeValue: never an error (the rest is prepared at run time)
+        "NCC2422",  // UndefinedName
+        "NCC2423",  // ArrayIndex
+        "NCC2424",  // JumpTarget
+        "NCC2425",  // TypeMismatch
 };
 
 // Argument specification I: A#1 B#2 C#3 I#4 J#5 K#6 D#7 E#8 F#9 H#11 M#13 Q#17 R#18 S#19

@@ -13,6 +13,9 @@ Variables::Variables(const MacroRules& rules, std::vector<VariableRange> commons
                      SystemVariables* system)
     : rules_(rules), commons_(std::move(commons)), system_(system) {
   locals_.push_back(freshLocals());  // level 0: the main program, no arguments
+  named_.on_write = [this](int64_t n, const Value& v, SourceLocation loc) {
+    if (on_write) on_write(n, v, loc);
+  };
 }
 
 bool Variables::isCommon(int64_t number) const {

@@ -9,6 +9,7 @@
 #include "IsoParser.h"
 #include "absl/strings/str_cat.h"
 #include "antlr4-runtime.h"
+#include "antlr_support.h"
 #include "diagnostic_codes.h"
 #include "lexical.h"
 #include "number_text.h"
@@ -21,36 +22,8 @@ using ncc_iso::IsoLexer;
 using ncc_iso::IsoParser;
 using antlr4::Token;
 
-// Deeper nesting than this is refused before parsing: the parser and the AST are recursive,
-// and no controller allows more than a handful of bracket levels (FANUC: 5).
-constexpr int kMaxNesting = 64;
-
-std::string tooDeep() {
-  return absl::StrCat("expression nested deeper than ", ast::kMaxExprDepth,
-                      " levels (each operator, sign, bracket and function is one)");
-}
-
-// Remembers the first error the parser reports; the message is ours, built from the token.
-class FirstErrorListener : public antlr4::BaseErrorListener {
- public:
-  void syntaxError(antlr4::Recognizer*, Token* offending, size_t, size_t, const std::string&,
-                   std::exception_ptr) override {
-    if (!seen) offending_token = offending;
-    seen = true;
-  }
-  void clear() {
-    seen = false;
-    offending_token = nullptr;
-  }
-  bool seen = false;
-  Token* offending_token = nullptr;
-};
-
 // absl::StrCat takes absl::string_view, which is not std::string_view in this abseil build.
 std::string str(std::string_view s) { return std::string(s); }
-
-// Thrown by the builder after it has reported a diagnostic; caught in parse().
-struct BlockRejected {};
 
 // Builds the AST of one successfully parsed block and performs the checks the grammar leaves
 // to the frontend. Every node gets the location of its first character in the original line.

@@ -14,6 +14,10 @@
 // - statements: `#n=expr`, `GOTO n`, `IF [c] GOTO n`, `IF [c] THEN #n=expr`,
 //   `WHILE [c] DO m`, `END m`;
 // - comments print as `(text)` after everything else (a Siemens `;` annotation too).
+// A DIN block prints in DIN: `( )` for brackets and function arguments, `==` `<>` `<` `>` `<=`
+// `>=` for comparisons, `X=expr` for a word whose value is not a number or whose address is
+// longer than a letter, names and R parameters as written (`COUNT`, `R[..]`), strings quoted,
+// statements `R1=expr`, `DEF INT A=1`, `MA1:`, `IF c GOTOB MA1`, `GOTOF N10`, `NAME(args)`.
 #include <cmath>
 
 #include "absl/strings/str_cat.h"
@@ -25,62 +29,131 @@ namespace ncc::frontend {
 
 namespace {
 
-std::string print(const ast::Expr& e);
+// Prints the nodes of one block in its language.
+class Printer {
+ public:
+  explicit Printer(Language language) : din_(language == Language::Din) {}
 
-// An expression without the brackets a binary operation would get at top level.
-std::string bare(const ast::Expr& e) {
-  if (e.kind != ast::Expr::Kind::Binary || e.args.size() != 2) return print(e);
-  const char* space = ast::isWordOperator(e.op) ? " " : "";
-  return absl::StrCat(print(e.args[0]), space, ast::opText(e.op), space, print(e.args[1]));
-}
-
-std::string print(const ast::Expr& e) {
-  using K = ast::Expr::Kind;
-  switch (e.kind) {
-    case K::Number:
-      return formatNumber(e.number, e.has_point);
-    case K::Variable: {
-      if (e.args.empty()) return "#";
-      const ast::Expr& n = e.args[0];
-      if (n.kind == K::Number && !std::signbit(n.number)) return absl::StrCat("#", print(n));
-      return absl::StrCat("#[", bare(n), "]");
-    }
-    case K::Unary:
-      return absl::StrCat(ast::opText(e.op), e.args.empty() ? "" : print(e.args[0]));
-    case K::Binary:
-      return absl::StrCat("[", bare(e), "]");
-    case K::Call: {
-      std::vector<std::string> args;
-      for (const ast::Expr& a : e.args) args.push_back(bare(a));
-      return absl::StrCat(ast::opText(e.op), "[", absl::StrJoin(args, ","), "]");
-    }
-    case K::Bracket:
-      return absl::StrCat("[", e.args.empty() ? "" : bare(e.args[0]), "]");
-    case K::Vacant:
-      return "";
+  // An expression without the brackets a binary operation would get at top level.
+  std::string bare(const ast::Expr& e) const {
+    if (e.kind != ast::Expr::Kind::Binary || e.args.size() != 2) return print(e);
+    const char* space = ast::isWordOperator(e.op) ? " " : "";
+    return absl::StrCat(print(e.args[0]), space, op(e.op), space, print(e.args[1]));
   }
-  return "";
-}
 
-std::string print(const ast::Statement& s) {
-  using K = ast::Statement::Kind;
-  switch (s.kind) {
-    case K::Assign:
-      return absl::StrCat(print(s.target), "=", print(s.value));
-    case K::Goto:
-      return absl::StrCat("GOTO ", print(s.target));
-    case K::IfGoto:
-      return absl::StrCat("IF [", bare(s.value), "] GOTO ", print(s.target));
-    case K::IfThen:
-      return absl::StrCat("IF [", bare(s.value), "] THEN ",
-                          s.then_assign ? print(*s.then_assign) : "");
-    case K::While:
-      return absl::StrCat("WHILE [", bare(s.value), "] DO ", s.loop_id);
-    case K::End:
-      return absl::StrCat("END ", s.loop_id);
+  std::string print(const ast::Expr& e) const {
+    using K = ast::Expr::Kind;
+    switch (e.kind) {
+      case K::Number:
+        return formatNumber(e.number, e.has_point);
+      case K::Variable: {
+        if (e.args.empty()) return "#";
+        const ast::Expr& n = e.args[0];
+        if (n.kind == K::Number && !std::signbit(n.number)) return absl::StrCat("#", print(n));
+        return absl::StrCat("#[", bare(n), "]");
+      }
+      case K::Unary: {
+        const char* space = e.op == ast::Op::Not || e.op == ast::Op::BNot ? " " : "";
+        return absl::StrCat(op(e.op), space, e.args.empty() ? "" : print(e.args[0]));
+      }
+      case K::Binary:
+        return absl::StrCat(open(), bare(e), close());
+      case K::Call:
+        return absl::StrCat(op(e.op), list(e.args, open(), close()));
+      case K::Bracket:
+        return absl::StrCat(open(), e.args.empty() ? "" : bare(e.args[0]), close());
+      case K::Vacant:
+        return "";
+      case K::Name:
+        return absl::StrCat(e.text ? *e.text : "", e.args.empty() ? "" : list(e.args, "[", "]"));
+      case K::RParam: {
+        if (e.args.empty()) return "R";
+        const ast::Expr& n = e.args[0];
+        if (n.kind == K::Number && !std::signbit(n.number)) return absl::StrCat("R", print(n));
+        return absl::StrCat("R[", bare(n), "]");
+      }
+      case K::String:
+        return absl::StrCat("\"", e.text ? *e.text : "", "\"");
+    }
+    return "";
   }
-  return "";
-}
+
+  std::string print(const ast::Statement& s) const {
+    using K = ast::Statement::Kind;
+    switch (s.kind) {
+      case K::Assign:
+        return absl::StrCat(print(s.target), "=", din_ ? bare(s.value) : print(s.value));
+      case K::Goto:
+        return absl::StrCat(jump(s.jump), " ", print(s.target));
+      case K::IfGoto:
+        if (din_) return absl::StrCat("IF ", bare(s.value), " ", jump(s.jump), " ", print(s.target));
+        return absl::StrCat("IF [", bare(s.value), "] GOTO ", print(s.target));
+      case K::IfThen:
+        return absl::StrCat("IF [", bare(s.value), "] THEN ",
+                            s.then_assign ? print(*s.then_assign) : "");
+      case K::While:
+        return absl::StrCat("WHILE [", bare(s.value), "] DO ", s.loop_id);
+      case K::End:
+        return absl::StrCat("END ", s.loop_id);
+      case K::Define:
+        return absl::StrCat("DEF ", ast::kDataTypeNames[static_cast<size_t>(s.type)], " ",
+                            print(s.target),
+                            s.value.kind == ast::Expr::Kind::Vacant ? "" : "=",
+                            bare(s.value));
+      case K::Label:
+        return absl::StrCat(print(s.target), ":");
+      case K::Call:
+        return absl::StrCat(s.target.text ? *s.target.text : "",
+                            s.target.args.empty() ? "" : list(s.target.args, "(", ")"));
+    }
+    return "";
+  }
+
+  std::string word(const ast::Word& w) const {
+    if (din_ && (w.address.size() > 1 || !w.value.isLiteral()))
+      return absl::StrCat(w.address.c_str(), "=", bare(w.value));
+    return absl::StrCat(w.address.c_str(), print(w.value));
+  }
+
+ private:
+  const char* open() const { return din_ ? "(" : "["; }
+  const char* close() const { return din_ ? ")" : "]"; }
+
+  std::string list(const std::vector<ast::Expr>& args, const char* open, const char* close) const {
+    std::vector<std::string> parts;
+    for (const ast::Expr& a : args) parts.push_back(bare(a));
+    return absl::StrCat(open, absl::StrJoin(parts, ","), close);
+  }
+
+  // DIN writes the comparisons as symbols; every other operator has one spelling.
+  const char* op(ast::Op o) const {
+    if (din_) {
+      switch (o) {
+        case ast::Op::Eq: return "==";
+        case ast::Op::Ne: return "<>";
+        case ast::Op::Lt: return "<";
+        case ast::Op::Gt: return ">";
+        case ast::Op::Le: return "<=";
+        case ast::Op::Ge: return ">=";
+        default: break;
+      }
+    }
+    return ast::opText(o);
+  }
+
+  static const char* jump(ast::Jump j) {
+    switch (j) {
+      case ast::Jump::Sequence:
+      case ast::Jump::Both: return "GOTO";
+      case ast::Jump::Forward: return "GOTOF";
+      case ast::Jump::Backward: return "GOTOB";
+      case ast::Jump::BothQuiet: return "GOTOC";
+    }
+    return "GOTO";
+  }
+
+  bool din_;
+};
 
 }  // namespace
 
@@ -90,8 +163,9 @@ std::string printBlock(const ast::Block& block) {
   if (block.percent) parts.push_back("%");
   if (block.program_number) parts.push_back(absl::StrCat("O", *block.program_number));
   if (block.sequence) parts.push_back(absl::StrCat("N", *block.sequence));
-  for (const ast::Word& w : block.words) parts.push_back(absl::StrCat(w.address.c_str(), print(w.value)));
-  for (const ast::Statement& s : block.statements) parts.push_back(print(s));
+  const Printer printer(block.language);
+  for (const ast::Word& w : block.words) parts.push_back(printer.word(w));
+  for (const ast::Statement& s : block.statements) parts.push_back(printer.print(s));
   for (const std::string& c : block.comments) parts.push_back(absl::StrCat("(", c, ")"));
   return absl::StrJoin(parts, " ");
 }

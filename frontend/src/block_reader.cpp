@@ -29,19 +29,6 @@ struct BlockReader::Impl {
     return cursor.next(segment, language == Language::Iso && options.semicolon_ends_block);
   }
 
-  // A DIN block (language_switch.h, readPlainDin); anything ncc does not read in DIN yet is
-  // reported once with NCC1090 and skipped. Which letters lowering takes in DIN is its table's
-  // business (passes/src/dialect_siemens_din.cpp).
-  bool readDin(std::string_view segment, SourceLocation where, ast::Block& out) {
-    if (readPlainDin(parser, segment, where, out)) return true;
-    size_t first = 0;
-    while (first < segment.size() && isBlank(segment[first])) ++first;
-    where.column += static_cast<uint32_t>(first);
-    diags.error(codes::kDinNotSupported, where,
-                "this Siemens DIN block is not supported yet (ncc reads DIN blocks of plain "
-                "words so far: docs/din.md)");
-    return false;
-  }
 
   uint32_t file;
   DiagnosticEngine& diags;
@@ -49,6 +36,7 @@ struct BlockReader::Impl {
   Language language;
   BlockCursor cursor;
   IsoBlockParser parser;
+  DinBlockParser din;
   ReaderStats stats;
   BlockPosition last;  // of the block last returned
 };
@@ -80,7 +68,7 @@ bool BlockReader::next(ast::Block& out) {
     bool read = false;
     if (r.language == Language::Din) {
       if (isBlankText(segment)) continue;  // a DIN comment line
-      read = r.readDin(segment, where, out);
+      read = readDin(r.parser, r.din, segment, where, r.diags, out);
     } else {
       read = r.parser.parse(segment, where, r.diags, r.options.parser, out, &fast);
     }
@@ -130,7 +118,9 @@ BlockPosition BlockReader::position() const {
 }
 void BlockReader::seek(BlockPosition p) {
   impl_->cursor.seek(p);
-  impl_->language = p.language;
+  // The start of the file is read in the file's first language, whatever position named it.
+  const bool file_start = p.offset == 0 && p.column <= 1;
+  impl_->language = file_start ? impl_->options.initial_language : p.language;
 }
 uint32_t BlockReader::file() const { return impl_->file; }
 

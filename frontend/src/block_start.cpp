@@ -42,4 +42,37 @@ BlockStart blockStart(std::string_view text) {
   return {letter == 'N' ? Kind::Sequence : Kind::Program, *n};
 }
 
+std::string_view blockLabel(std::string_view text) {
+  size_t i = 0;
+  const auto skipBlanks = [&] {
+    while (i < text.size() && isBlank(text[i])) ++i;
+  };
+  skipBlanks();
+  if (i < text.size() && text[i] == '/') {
+    ++i;
+    if (i < text.size() && isDigit(text[i])) ++i;
+    skipBlanks();
+  }
+  if (i < text.size() && (upperAscii(text[i]) == 'N' || text[i] == ':') && i + 1 < text.size() &&
+      isDigit(text[i + 1])) {
+    ++i;
+    while (i < text.size() && isDigit(text[i])) ++i;
+    skipBlanks();
+  }
+  const size_t first = i;
+  if (i >= text.size() || !(isLetter(text[i]) || text[i] == '_')) return {};
+  while (i < text.size() && (isLetter(text[i]) || isDigit(text[i]) || text[i] == '_')) ++i;
+  const size_t end = i;
+  skipBlanks();
+  if (i >= text.size() || text[i] != ':') return {};
+  return text.substr(first, end - first);
+}
+
+bool sameLabel(std::string_view written, std::string_view upper) {
+  if (written.size() != upper.size() || written.empty()) return false;
+  for (size_t i = 0; i < written.size(); ++i)
+    if (upperAscii(written[i]) != upper[i]) return false;
+  return true;
+}
+
 }  // namespace ncc::frontend

@@ -23,4 +23,10 @@ struct BlockStart {
 // `text`: one block (a line, or the part between ';' ends of block), without the ';'.
 BlockStart blockStart(std::string_view text);
 
+// The jump label of a DIN block (`MA1` of `N20 MA1: R3=R1`), as written: after blanks, a block
+// skip mark and the block number (N n or :n), a name and ':'. Empty when there is none.
+std::string_view blockLabel(std::string_view text);
+// Labels are names: upper and lower case are the same.
+bool sameLabel(std::string_view written, std::string_view upper);
+
 }  // namespace ncc::frontend

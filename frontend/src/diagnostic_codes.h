@@ -21,6 +21,8 @@ inline constexpr const char* kDuplicateNumber = "NCC1014";    // two N (or O) in
 inline constexpr const char* kNumberRange = "NCC1015";        // number does not fit
 inline constexpr const char* kNesting = "NCC1016";            // brackets or signs nested too deep
 inline constexpr const char* kExprDepth = "NCC1017";          // expression deeper than ast::kMaxExprDepth
-inline constexpr const char* kDinNotSupported = "NCC1090";    // G290 DIN block
+inline constexpr const char* kUnclosedString = "NCC1018";     // DIN '"' without '"'
+inline constexpr const char* kUnknownType = "NCC1019";        // DIN DEF of an unknown type
+inline constexpr const char* kDinNotSupported = "NCC1090";    // DIN construct not built yet
 
 }  // namespace ncc::frontend::codes

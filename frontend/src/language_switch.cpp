@@ -24,8 +24,16 @@ bool readPlainDin(IsoBlockParser& parser, std::string_view text, SourceLocation 
                   ast::Block& out) {
   DiagnosticEngine scratch;
   bool fast = false;
-  return parser.parse(text, start, scratch, ParserChoice::Auto, out, &fast) && fast &&
-         isPlainDin(out);
+  if (!parser.parse(text, start, scratch, ParserChoice::Auto, out, &fast) || !fast ||
+      !isPlainDin(out))
+    return false;
+  out.language = Language::Din;
+  return true;
+}
+
+bool readDin(IsoBlockParser& iso, DinBlockParser& din, std::string_view text,
+             SourceLocation start, DiagnosticEngine& diags, ast::Block& out) {
+  return readPlainDin(iso, text, start, out) || din.parse(text, start, diags, out);
 }
 
 Language languageAfter(const ast::Block& b, Language now) {
@@ -38,11 +46,12 @@ Language languageAfter(const ast::Block& b, Language now) {
 Language languageAfterText(std::string_view text, Language now) {
   if (text.find("29") == std::string_view::npos) return now;
   thread_local IsoBlockParser parser;
+  thread_local DinBlockParser din;
   DiagnosticEngine scratch;
   ast::Block b;
   const bool read = now == Language::Iso
                         ? parser.parse(text, SourceLocation{}, scratch, ParserChoice::Auto, b)
-                        : readPlainDin(parser, text, SourceLocation{}, b);
+                        : readDin(parser, din, text, SourceLocation{}, scratch, b);
   return read ? languageAfter(b, now) : now;  // a block the reader skips switches nothing
 }
 

@@ -6,19 +6,23 @@
 // decide it here alike, and read a DIN block here alike.
 #include <string_view>
 
+#include "din_block_parser.h"
 #include "iso_block_parser.h"
 #include "ncc/frontend/ast.h"
 #include "ncc/frontend/language.h"
 
 namespace ncc::frontend {
 
-// A DIN block as far as ncc reads DIN so far: words of one letter and a number
-// (`N10 G1 X20 Y5 F200`, `G291`), the text DIN and ISO write alike, read by the ISO fast path.
-// False for anything else: DIN statements, expressions and `=` addresses not built yet, and
-// ISO forms DIN does not have (`#1`, `[..]`, `(comment)`, `,C`, `O`/`:` numbers). Reports
-// nothing: the caller says why a block is not read.
+// The fast path of DIN: a block of words of one letter and a number (`N10 G1 X20 Y5 F200`,
+// `G291`), the text DIN and ISO write alike and most of a CAM program, read by the ISO fast
+// path into the tree the DIN parser makes of it (tests/frontend/din_parser_test.cpp compares
+// them). False for anything else, reporting nothing: the DIN parser reads it.
 bool readPlainDin(IsoBlockParser& parser, std::string_view text, SourceLocation start,
                   ast::Block& out);
+
+// A DIN block: the fast path, else the DIN parser (which reports what it cannot read).
+bool readDin(IsoBlockParser& iso, DinBlockParser& din, std::string_view text,
+             SourceLocation start, DiagnosticEngine& diags, ast::Block& out);
 
 // The language after `block`, a block read in `now`.
 Language languageAfter(const ast::Block& block, Language now);

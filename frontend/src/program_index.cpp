@@ -48,7 +48,7 @@ bool semicolonEndsBlock(const ReaderOptions& options) {
 }  // namespace
 
 size_t ProgramIndex::KeyHash::operator()(const Key& k) const {
-  size_t h = std::hash<int64_t>{}(k.n);
+  size_t h = std::hash<int64_t>{}(k.n) ^ std::hash<std::string>{}(k.label);
   h = mix(h, k.from_offset);
   h = mix(h, (uint64_t{k.from_column} << 8) | (static_cast<uint64_t>(k.order) << 1) | k.has_range);
   if (k.has_range) {
@@ -88,17 +88,20 @@ void ProgramIndex::scanHead() {
   stats_.lines += cursor.linesRead();
 }
 
-std::optional<BlockPosition> ProgramIndex::scanFor(int64_t n, BlockPosition start,
+std::optional<BlockPosition> ProgramIndex::scanFor(Target target, BlockPosition start,
                                                    std::optional<BlockPosition> after,
                                                    std::optional<BlockPosition> through,
-                                                   std::optional<BlockPosition> end) {
+                                                   std::optional<BlockPosition> end, bool last) {
   scanHead();
   BlockCursor cursor(sources_, file_);
   ++stats_.scans;
   cursor.seek(start);
   std::optional<BlockPosition> found;
   BlockCursor::Segment s;
-  for (Language now = start.language; cursor.next(s, semicolon_ends_block_);
+  // The start of the file is read in the file's first language, whatever position named it.
+  const bool file_start = start.offset == 0 && start.column <= 1;
+  for (Language now = file_start ? initial_language_ : start.language;
+       cursor.next(s, semicolon_ends_block_);
        now = languageAfterSegment(s.text, now)) {
     s.at.language = now;
     if (end && !(s.at < *end)) break;
@@ -106,10 +109,14 @@ std::optional<BlockPosition> ProgramIndex::scanFor(int64_t n, BlockPosition star
     const BlockStart b = blockStart(s.text);
     if (b.kind == BlockStart::Kind::Percent && first_content_ && *first_content_ < s.at)
       break;  // the end of the record
-    if (b.kind != BlockStart::Kind::Sequence || b.number != n) continue;
+    if (target.label.empty()) {
+      if (b.kind != BlockStart::Kind::Sequence || b.number != target.n) continue;
+    } else if (now != Language::Din || !sameLabel(blockLabel(s.text), target.label)) {
+      continue;
+    }
     if (after && s.at <= *after) continue;
     found = s.at;
-    break;
+    if (!last) break;
   }
   stats_.lines += cursor.linesRead();
   return found;
@@ -118,7 +125,21 @@ std::optional<BlockPosition> ProgramIndex::scanFor(int64_t n, BlockPosition star
 std::optional<BlockPosition> ProgramIndex::findSequence(int64_t n, BlockPosition from,
                                                         SequenceSearch order,
                                                         std::optional<BlockRange> within) {
-  const Key key{n,
+  return find(Target{n, {}}, from, order, within);
+}
+
+std::optional<BlockPosition> ProgramIndex::findLabel(std::string_view label, BlockPosition from,
+                                                     SequenceSearch order,
+                                                     std::optional<BlockRange> within) {
+  if (label.empty()) return std::nullopt;
+  return find(Target{0, label}, from, order, within);
+}
+
+std::optional<BlockPosition> ProgramIndex::find(Target target, BlockPosition from,
+                                                SequenceSearch order,
+                                                std::optional<BlockRange> within) {
+  const Key key{target.n,
+                std::string(target.label),
                 from.offset,
                 from.column,
                 order,
@@ -131,12 +152,20 @@ std::optional<BlockPosition> ProgramIndex::findSequence(int64_t n, BlockPosition
   const std::optional<BlockPosition> end =
       within ? std::optional<BlockPosition>(within->second) : std::nullopt;
   std::optional<BlockPosition> found;
-  if (order == SequenceSearch::ForwardThenFromStart) {
-    // After `from` to the end; `from` is a block of the file, so reading can start there.
-    found = scanFor(n, begin < from ? from : begin, from, std::nullopt, end);
-    if (!found) found = scanFor(n, begin, std::nullopt, from, end);  // then up to `from`
-  } else {
-    found = scanFor(n, begin, std::nullopt, std::nullopt, end);
+  switch (order) {
+    case SequenceSearch::ForwardThenFromStart:
+    case SequenceSearch::Forward:
+      // After `from` to the end; `from` is a block of the file, so reading can start there.
+      found = scanFor(target, begin < from ? from : begin, from, std::nullopt, end);
+      if (!found && order == SequenceSearch::ForwardThenFromStart)
+        found = scanFor(target, begin, std::nullopt, from, end);  // then up to `from`
+      break;
+    case SequenceSearch::Backward:
+      found = scanFor(target, begin, std::nullopt, from, end, /*last=*/true);
+      break;
+    case SequenceSearch::FromStart:
+      found = scanFor(target, begin, std::nullopt, std::nullopt, end);
+      break;
   }
   if (sequences_.size() >= kMaxCachedLookups) sequences_.clear();
   sequences_.emplace(key, found);
@@ -160,7 +189,9 @@ void ProgramIndex::scanPrograms() {
       closed = true;
       break;
     }
-    if (b.kind == BlockStart::Kind::Program) programs_.push_back(ProgramBlock{b.number, s.at});
+    // DIN has no O numbers: its `:n` is a main block's number (docs/din.md).
+    if (b.kind == BlockStart::Kind::Program && now == Language::Iso)
+      programs_.push_back(ProgramBlock{b.number, s.at});
   }
   if (!closed) {
     record_end_ = cursor.position();

@@ -149,7 +149,8 @@ struct OperationPrinter {
     return out;
   }
   std::string operator()(const SetVariable& v) const {
-    return absl::StrCat("set #", v.number, " = ", v.vacant ? "vacant" : num(v.value));
+    return absl::StrCat("set ", v.name.empty() ? absl::StrCat("#", v.number) : v.name, " = ",
+                        v.vacant ? "vacant" : num(v.value));
   }
 };
 

@@ -47,6 +47,8 @@ class BlockChecker {
   }
   void operator()(const SetVariable& v) {
     if (v.number == 0) add("assignment to #0 (always vacant)");
+    // ISO numbers end at #9999; a DIN variable above them has its name (named_variables.h).
+    if (v.number >= 10000 && v.name.empty()) add(absl::StrCat("variable #", v.number, " without a name"));
     if (!v.vacant && !std::isfinite(v.value)) add(absl::StrCat("variable value ", v.value, " is not finite"));
   }
   void operator()(const Prepare& p) {

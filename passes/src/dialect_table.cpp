@@ -50,8 +50,20 @@ const GCodeEntry* DialectTable::powerOnDefault(GGroup group) const {
 
 LanguageTables languageTables(Dialect dialect) {
   LanguageTables t;
-  t.iso = dialectTable(dialect);
-  if (dialect == Dialect::SiemensIsoM) t.din = &siemensDinTable();
+  switch (dialect) {
+    case Dialect::SiemensIsoM:
+      t.iso = &kSiemensIsoMTable;
+      t.din = &siemensDinTable();
+      break;
+    case Dialect::SiemensDin:
+      t.iso = &kSiemensIsoMTable;
+      t.din = &siemensDinTable();
+      t.initial = frontend::Language::Din;
+      break;
+    default:
+      t.iso = dialectTable(dialect);
+      break;
+  }
   return t;
 }
 
@@ -60,8 +72,8 @@ const DialectTable* dialectTable(Dialect dialect) {
     case Dialect::FanucM: return &kFanucMTable;
     case Dialect::MazakM: return &kMazakMTable;
     case Dialect::SiemensIsoM: return &kSiemensIsoMTable;
-    case Dialect::FanucT:
-    case Dialect::SiemensDin: return nullptr;
+    case Dialect::SiemensDin: return &siemensDinTable();
+    case Dialect::FanucT: return nullptr;
   }
   return nullptr;
 }

@@ -26,6 +26,9 @@ std::string exprText(const ast::Expr& e) {
     }
     case K::Bracket: return absl::StrCat("[", e.args.empty() ? "" : exprText(e.args[0]), "]");
     case K::Vacant: return "";
+    case K::Name: return e.text ? *e.text : "";
+    case K::RParam: return absl::StrCat("R", e.args.empty() ? "" : exprText(e.args[0]));
+    case K::String: return absl::StrCat("\"", e.text ? *e.text : "", "\"");
   }
   return "";
 }

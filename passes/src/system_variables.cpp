@@ -366,7 +366,7 @@ std::vector<ir::SetVariable> variablesOf(const TableWrite& write, const Controll
         if (write.target != target || n > r.last) break;
         const std::map<int, double>& t = *registerTable(tables, r.kind);
         auto it = t.find(write.number);
-        out.push_back({static_cast<uint32_t>(n), it == t.end() ? 0.0 : it->second / scale, false});
+        out.push_back({static_cast<uint32_t>(n), it == t.end() ? 0.0 : it->second / scale, false, {}});
         break;
       }
       case SystemVariable::WorkOffset:
@@ -377,7 +377,7 @@ std::vector<ir::SetVariable> variablesOf(const TableWrite& write, const Controll
           const AxisValues stored = tables.workOffset(write.work_name);
           for (int i = 0; i < axis_count; ++i)
             if (write.axes & (1u << i))
-              out.push_back({static_cast<uint32_t>(first + i), stored[i] / scale, false});
+              out.push_back({static_cast<uint32_t>(first + i), stored[i] / scale, false, {}});
         }
         break;
       }

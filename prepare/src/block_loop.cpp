@@ -65,9 +65,15 @@ BlockLoop::BlockLoop(const Settings& settings, eval::ProgramStore& store, uint32
   // Writes between two lowered blocks reach the IR as one block holding each variable's last
   // value: a loop of assignments that runs a million turns adds nothing per turn.
   variables_.on_write = [this](int64_t n, const eval::Value& v, SourceLocation loc) {
-    if (n <= 0 || n >= bytecode::kDefaultVariableCount) return;
+    if (n <= 0 || n > eval::NamedVariables::kLastNumber) return;
+    std::string name;
+    if (n >= bytecode::kDefaultVariableCount) {
+      name = variables_.named().nameOf(static_cast<uint32_t>(n));
+      if (name.empty()) return;
+    }
     writes_loc_ = loc;
-    const ir::SetVariable write{static_cast<uint32_t>(n), v.vacant ? 0.0 : v.number, v.vacant};
+    const ir::SetVariable write{static_cast<uint32_t>(n), v.vacant ? 0.0 : v.number, v.vacant,
+                                std::move(name)};
     auto [it, added] = write_index_.try_emplace(write.number, writes_.size());
     if (added)
       writes_.push_back(write);

@@ -51,7 +51,7 @@ TEST(Loader, HeaderBytesAreTheDocumentedLayout) {
   EXPECT_EQ(std::string(b.begin(), b.begin() + 4), "NCCB");
   EXPECT_EQ(b[4], 2);  // major, little-endian
   EXPECT_EQ(b[5], 0);
-  EXPECT_EQ(b[6], 2);  // minor (2.1: SKIP, 2.2: PREPARE and the block store)
+  EXPECT_EQ(b[6], 3);  // minor (2.1: SKIP, 2.2: PREPARE and the block store, 2.3: names)
   EXPECT_EQ(b[9], 3);  // axis count
   EXPECT_EQ(b[24], 64 + 3 * 16);  // code section offset = header size
   EXPECT_EQ(bytecode::storedChecksum(b), bytecode::fileChecksum(b));
@@ -90,12 +90,21 @@ TEST(Loader, RejectsBadMagic) {
 // does not know.
 TEST(Loader, ReadsOlderMinorRefusesNewer) {
   std::vector<uint8_t> b = test::serialise(test::smallProgram());
-  for (uint8_t minor : {0, 1}) {
-    b[6] = minor;
-    bytecode::sealChecksum(b);
-    EXPECT_EQ(loadError(b), "ok");
+  // Before 2.3 the unit section ends with the units: drop the (empty) name table, the file's
+  // last 4 bytes here (no block store), from the section.
+  std::vector<uint8_t> older(b.begin(), b.end() - 4);
+  const uint32_t units_size = older[52] | older[53] << 8 | older[54] << 16 | older[55] << 24;
+  older[52] = static_cast<uint8_t>(units_size - 4);
+  for (uint8_t minor : {0, 1, 2}) {
+    older[6] = minor;
+    bytecode::sealChecksum(older);
+    EXPECT_EQ(loadError(older), "ok");
   }
-  b[6] = 3;
+  // An older file with the 2.3 name table is one with bytes after its units.
+  b[6] = 2;
+  bytecode::sealChecksum(b);
+  EXPECT_EQ(loadError(b).substr(0, 7), "NCC7009");
+  b[6] = 4;
   bytecode::sealChecksum(b);
   EXPECT_EQ(loadError(b).substr(0, 7), "NCC7003");
 }
@@ -136,9 +145,9 @@ TEST(Loader, RejectsEveryChangedByte) {
       std::vector<uint8_t> flipped = b;
       flipped[i] ^= static_cast<uint8_t>(1u << bit);
       const std::string code = loadError(flipped).substr(0, 7);
-      // Clearing bit 1 of the minor makes a 2.0 header, a version this loader reads: the
-      // checksum refuses it.
-      const bool older_minor = i == 6 && bit == 1;
+      // Clearing bit 0 or 1 of the minor (3) makes a 2.2 or 2.1 header, a version this loader
+      // reads: the checksum refuses it.
+      const bool older_minor = i == 6 && bit <= 1;
       const char* expected = i < 4 ? "NCC7002" : i < 8 && !older_minor ? "NCC7003" : "NCC7016";
       ASSERT_EQ(code, expected) << "byte " << i << " bit " << bit;
     }

@@ -30,12 +30,12 @@ bytecode::Program compileAssignments(const MachineConfig& machine) {
   DiagnosticEngine diags(&sources);
   std::ostringstream out;
   backend::BytecodeWriter writer(out, machine, Dialect::FanucM, sources, &diags);
-  writer.accept(block(file, 1, {ir::SetVariable{100, 2.5, false}}));
-  writer.accept(block(file, 2, {ir::SetVariable{101, 7.0, false},
+  writer.accept(block(file, 1, {ir::SetVariable{100, 2.5, false, {}}}));
+  writer.accept(block(file, 2, {ir::SetVariable{101, 7.0, false, {}},
                                 ir::Rapid{{1.0, 2.0, 3.0}, ir::Space::Machine,
                                           ir::RapidType::Linear}}));
-  writer.accept(block(file, 3, {ir::SetVariable{101, 0.0, true},
-                                ir::SetVariable{102, -0.001, false}}));
+  writer.accept(block(file, 3, {ir::SetVariable{101, 0.0, true, {}},
+                                ir::SetVariable{102, -0.001, false, {}}}));
   writer.accept(block(file, 4, {ir::MachineFunction{ir::MachineFunction::Kind::ProgramEndRewind}}));
   writer.finish();
   EXPECT_TRUE(writer.ok());

@@ -76,9 +76,9 @@ class BytecodeCliTest(ScratchDirTest):
 
     def test_header_carries_the_documented_checksum(self):
         _, data = self.compile(GOOD)
-        self.assertEqual(struct.unpack_from("<HH", data, 4), (2, 2))  # version 2.2
+        self.assertEqual(struct.unpack_from("<HH", data, 4), (2, 3))  # version 2.3
         self.assertEqual(seal(data), data)
-        self.assertTrue(ncc("dis", self.write("b.ncb", data)).stdout.startswith("; ncc bytecode 2.2"))
+        self.assertTrue(ncc("dis", self.write("b.ncb", data)).stdout.startswith("; ncc bytecode 2.3"))
 
     def test_every_flipped_byte_is_rejected(self):
         ncb, data = self.compile(GOOD)

@@ -52,9 +52,11 @@ class CliTest(ScratchDirTest):
         proc = ncc("check", good, "--dialect", "fanuc-t")
         self.assertEqual(proc.returncode, 2)
         self.assertIn("dialect 'fanuc-t' is not supported yet", proc.stderr)
-        mpf = self.write("a.mpf", "G0 X1\nM30\n")
-        proc = ncc("check", mpf)  # .mpf defaults to siemens-din
-        self.assertIn("siemens-din", proc.stderr)
+        # .mpf defaults to siemens-din: DIN text (an R parameter) is read.
+        mpf = self.write("a.mpf", "R1=2\nG0 X=R1*2\nM30\n")
+        proc = ncc("run", mpf, "--emit=moves")
+        self.assertEqual(proc.returncode, 0, proc.stderr)
+        self.assertIn('"X": 4.0', proc.stdout)
 
     def test_check_clean_program(self):
         proc = ncc("check", self.write("a.nc", GOOD))

@@ -76,7 +76,7 @@ class SkipTest(ScratchDirTest):
         self.assertEqual(ncc("compile", prog, "-o", ncb).returncode, 0)
         dis = ncc("dis", ncb).stdout
         self.assertIn("SKIP X10 Y10 Z-50 F100 origin X0 Y0 Z0 #5061 exact-stop fixed-override", dis)
-        self.assertTrue(dis.startswith("; ncc bytecode 2.2"))
+        self.assertTrue(dis.startswith("; ncc bytecode 2.3"))
         self.assertEqual(self.run_vars("--probe", "Z=-12.25", ncb)["#5063"], -12.25)
         self.assertEqual(self.run_vars("--probe", "Z=-40", ncb)["#5063"], -40.0)
 

@@ -19,8 +19,8 @@ using Kind = ast::Expr::Kind;
 using Start = StoredBlock::Start;
 
 // EncodingIsPinned: the size and FNV-1a hash of richStore() in version 3.
-constexpr size_t kPinnedSize = 525;
-constexpr uint64_t kPinnedHash = 6481837844705452983ull;
+constexpr size_t kPinnedSize = 648;
+constexpr uint64_t kPinnedHash = 16810071205486217116ull;
 
 ast::Expr num(double v, bool point, SourceLocation loc, uint8_t digits = 0) {
   ast::Expr e = ast::Expr::literal(v, point, loc);
@@ -131,6 +131,37 @@ BlockStore richStore() {
   // Two blocks on one line (after a ';'): same offset, a later column.
   f.blocks.push_back(stored(60, 4, 1, statements));
   f.blocks.push_back(stored(60, 4, 30, plain(3, 4, 20), Start::Sequence));
+  // A DIN block: a label, DEF of an array, an R parameter, a name with indices, a string and a
+  // backward jump.
+  ast::Block din = plain(5, 1);
+  din.language = frontend::Language::Din;
+  ast::Statement label;
+  label.kind = ast::Statement::Kind::Label;
+  label.target = node(Kind::Name, "", {}, {5, 5, 1});
+  label.target.text = std::string("MA1");
+  din.statements.push_back(label);
+  ast::Statement def;
+  def.kind = ast::Statement::Kind::Define;
+  def.type = ast::DataType::Int;
+  def.target = node(Kind::Name, "", {num(3, false, {5, 5, 20})}, {5, 5, 16});
+  def.target.text = std::string("COUNT");
+  def.value = node(Kind::Vacant, "", {}, {5, 5, 16});
+  din.statements.push_back(def);
+  ast::Statement r;
+  r.kind = ast::Statement::Kind::Assign;
+  r.target = node(Kind::RParam, "", {num(10, false, {5, 5, 31})}, {5, 5, 30});
+  ast::Expr text = node(Kind::String, "", {}, {5, 5, 40});
+  text.text = std::string("T\xC3\xA9");
+  r.value = node(Kind::Binary, "DIV", {node(Kind::Name, "", {num(1, false, {5, 5, 36})}, {5, 5, 34}), text}, {5, 5, 38});
+  r.value.args[0].text = std::string("COUNT");
+  din.statements.push_back(r);
+  ast::Statement back;
+  back.kind = ast::Statement::Kind::IfGoto;
+  back.jump = ast::Jump::Backward;
+  back.value = node(Kind::Unary, "NOT", {num(0, false, {5, 5, 54})}, {5, 5, 50});
+  back.target = label.target;
+  din.statements.push_back(back);
+  f.blocks.push_back(stored(80, 5, 1, din));
   ast::Block close = plain(3, 9);
   close.percent = true;
   close.sequence = 5;  // `N5 %`: a number that is not a label
@@ -169,7 +200,7 @@ TEST(BlockStore, RoundTripKeepsEveryField) {
   EXPECT_NE(diffStore(original, changed), "");
 }
 
-// The bytes of version 3, pinned: a change to a node's schema or to the codec changes them.
+// The bytes of version 4, pinned: a change to a node's schema or to the codec changes them.
 // Then raise kVersion (block_store.cpp) and write the new hash here.
 TEST(BlockStore, EncodingIsPinned) {
   const std::vector<uint8_t> bytes = encodeBlockStore(richStore());
@@ -248,6 +279,7 @@ class RandomTree {
     e.digits = static_cast<uint8_t>(pick(0, 255));
     e.loc = loc(file, line);
     for (int i = depth > 0 ? pick(0, 3) : 0; i > 0; --i) e.args.push_back(expr(file, line, depth - 1));
+    if (chance(3)) e.text = std::string(static_cast<size_t>(pick(0, 40)), static_cast<char>(pick(32, 126)));
     return e;
   }
   ast::Statement statement(uint32_t file, uint32_t line, int depth) {
@@ -258,6 +290,8 @@ class RandomTree {
     s.value = expr(file, line, 2);
     s.loop_id = chance(2) ? pick(-3, 3) : static_cast<int>(rng_());
     if (depth > 0 && chance(2)) s.then_assign = statement(file, line, depth - 1);
+    s.type = static_cast<ast::DataType>(pick(0, ast::kEnumValues<ast::DataType> - 1));
+    s.jump = static_cast<ast::Jump>(pick(0, ast::kEnumValues<ast::Jump> - 1));
     return s;
   }
   std::mt19937 rng_;
@@ -373,15 +407,15 @@ TEST(BlockStore, CorruptedCopiesNeverCrash) {
 }
 
 TEST(BlockStore, HugeCountsAreRefusedBeforeAllocating) {
-  // "NCBS" v3, main 1, ahead 0, jumps 0, idle blocks 0, no variables, then 2^62 files.
-  std::vector<uint8_t> bytes = {'N', 'C', 'B', 'S', 3, 0, 1, 0, 0, 0, 0,
+  // "NCBS" v4, main 1, ahead 0, jumps 0, idle blocks 0, no variables, then 2^62 files.
+  std::vector<uint8_t> bytes = {'N', 'C', 'B', 'S', 4, 0, 1, 0, 0, 0, 0,
                                 0x80, 0x80, 0x80, 0x80, 0x80, 0x80, 0x80, 0x80, 0x40};
   std::string error;
   EXPECT_FALSE(decodeBlockStore(bytes, error));
   EXPECT_NE(error.find("count beyond the remaining bytes"), std::string::npos) << error;
-  bytes = {'N', 'C', 'B', 'S', 4, 0};
+  bytes = {'N', 'C', 'B', 'S', 5, 0};
   EXPECT_FALSE(decodeBlockStore(bytes, error));
-  EXPECT_NE(error.find("version 4"), std::string::npos) << error;
+  EXPECT_NE(error.find("version 5"), std::string::npos) << error;
   bytes = {'X', 'C', 'B', 'S', 1, 0};
   EXPECT_FALSE(decodeBlockStore(bytes, error));
   EXPECT_NE(error.find("NCBS"), std::string::npos) << error;

@@ -53,18 +53,19 @@ class MemoryStore final : public ProgramStore {
   std::optional<ProgramPoint> findSequence(int64_t n, const ProgramPoint& from, SequenceSearch order,
                                            const ProgramPoint& begin,
                                            const ProgramPoint& end) override {
-    const std::vector<ast::Block>& b = files_[from.file - 1];
-    const size_t first = begin.position.offset, last = end.position.offset;
-    std::vector<size_t> order_of;
-    if (order == SequenceSearch::ForwardThenFromStart) {
-      for (size_t i = from.position.offset + 1; i < last; ++i) order_of.push_back(i);
-      for (size_t i = first; i <= from.position.offset; ++i) order_of.push_back(i);
-    } else {
-      for (size_t i = first; i < last; ++i) order_of.push_back(i);
-    }
-    for (size_t i : order_of)
-      if (i < b.size() && b[i].sequence == n) return point(from.file, i);
-    return std::nullopt;
+    return find([n](const ast::Block& b) { return b.sequence == n; }, from, order, begin, end);
+  }
+  std::optional<ProgramPoint> findLabel(std::string_view label, const ProgramPoint& from,
+                                        SequenceSearch order, const ProgramPoint& begin,
+                                        const ProgramPoint& end) override {
+    return find(
+        [label](const ast::Block& b) {
+          for (const ast::Statement& st : b.statements)
+            if (st.kind == ast::Statement::Kind::Label && st.target.text && *st.target.text == label)
+              return true;
+          return false;
+        },
+        from, order, begin, end);
   }
   ProgramPoint programEnd(const ProgramPoint& start) override {
     const std::vector<ast::Block>& b = files_[start.file - 1];
@@ -74,6 +75,30 @@ class MemoryStore final : public ProgramStore {
   }
 
  private:
+  template <class Match>
+  std::optional<ProgramPoint> find(Match match, const ProgramPoint& from, SequenceSearch order,
+                                   const ProgramPoint& begin, const ProgramPoint& end) {
+    const std::vector<ast::Block>& b = files_[from.file - 1];
+    const size_t first = begin.position.offset, last = end.position.offset;
+    std::vector<size_t> order_of;
+    switch (order) {
+      case SequenceSearch::ForwardThenFromStart:
+      case SequenceSearch::Forward:
+        for (size_t i = from.position.offset + 1; i < last; ++i) order_of.push_back(i);
+        if (order == SequenceSearch::ForwardThenFromStart)
+          for (size_t i = first; i <= from.position.offset; ++i) order_of.push_back(i);
+        break;
+      case SequenceSearch::Backward:
+        for (size_t i = from.position.offset + 1; i-- > first;) order_of.push_back(i);
+        break;
+      case SequenceSearch::FromStart:
+        for (size_t i = first; i < last; ++i) order_of.push_back(i);
+        break;
+    }
+    for (size_t i : order_of)
+      if (i < b.size() && match(b[i])) return point(from.file, i);
+    return std::nullopt;
+  }
   static ProgramPoint point(uint32_t file, size_t i) {
     return ProgramPoint{file, frontend::BlockPosition{i, static_cast<uint32_t>(i + 1), 1}};
   }

@@ -55,7 +55,7 @@ TEST(WithoutParser, EvaluationFeedsLowering) {
                             &lowering.systemVariables());
   std::vector<ir::SetVariable> writes;
   variables.on_write = [&](int64_t n, const eval::Value& v, SourceLocation) {
-    writes.push_back({static_cast<uint32_t>(n), v.number, v.vacant});
+    writes.push_back({static_cast<uint32_t>(n), v.number, v.vacant, {}});
   };
   eval::test::MemoryStore store;
   const uint32_t file = store.add(std::move(program));

@@ -66,8 +66,8 @@ TEST(ProgramIndex, FindsLabelsAsTheReaderReadsThem) {
 }
 
 TEST(ProgramIndex, PositionsSayTheLanguageAsTheReaderReadsIt) {
-  // Siemens ISO mode: N2 switches to DIN, N4 (only G291) back. The DIN text between is skipped
-  // by the reader until the DIN grammar is built, but the index still finds its label, in DIN.
+  // Siemens ISO mode: N2 switches to DIN, N4 (only G291) back; the index finds the DIN blocks
+  // in DIN, as the reader reads them.
   SourceManager sm;
   const uint32_t f = sm.addBuffer(
       "p.mpf", "N1 G1 X1\nN2 G90 G290 ; to DIN\nN3 R1=2\nN4 G291\nN5 X2\nN6 (G290 in a comment)\n");
@@ -76,9 +76,9 @@ TEST(ProgramIndex, PositionsSayTheLanguageAsTheReaderReadsIt) {
   options.language_switch = true;
   DiagnosticEngine diags(&sm);
   BlockReader reader(sm, f, diags, options);
-  std::vector<BlockPosition> at;  // N1 N2 N4 N5 N6: N3 is a DIN block the reader reports
+  std::vector<BlockPosition> at;  // N1 .. N6
   while (reader.next()) at.push_back(reader.lastPosition());
-  ASSERT_EQ(at.size(), 5u);
+  ASSERT_EQ(at.size(), 6u);
   ProgramIndex index(sm, f, options);
   const BlockPosition start{};
   EXPECT_EQ(index.findSequence(1, start, SequenceSearch::FromStart), at[0]);
@@ -86,17 +86,46 @@ TEST(ProgramIndex, PositionsSayTheLanguageAsTheReaderReadsIt) {
   const std::optional<BlockPosition> n3 = index.findSequence(3, start, SequenceSearch::FromStart);
   ASSERT_TRUE(n3);
   EXPECT_EQ(n3->language, Language::Din);
-  EXPECT_EQ(index.findSequence(4, start, SequenceSearch::FromStart), at[2]);
-  EXPECT_EQ(at[2].language, Language::Din);
-  EXPECT_EQ(index.findSequence(5, start, SequenceSearch::FromStart), at[3]);
-  EXPECT_EQ(at[3].language, Language::Iso);
-  EXPECT_EQ(index.findSequence(6, start, SequenceSearch::FromStart), at[4]);
+  EXPECT_EQ(*n3, at[2]);
+  EXPECT_EQ(index.findSequence(4, start, SequenceSearch::FromStart), at[3]);
+  EXPECT_EQ(at[3].language, Language::Din);
+  EXPECT_EQ(index.findSequence(5, start, SequenceSearch::FromStart), at[4]);
+  EXPECT_EQ(at[4].language, Language::Iso);
+  EXPECT_EQ(index.findSequence(6, start, SequenceSearch::FromStart), at[5]);
   // Searching on from a DIN position keeps counting from its language.
-  EXPECT_EQ(index.findSequence(5, *n3, SequenceSearch::ForwardThenFromStart), at[3]);
+  EXPECT_EQ(index.findSequence(5, *n3, SequenceSearch::ForwardThenFromStart), at[4]);
   EXPECT_EQ(index.recordEnd().language, Language::Iso);
   // Without G290/G291 in the dialect the same text is all ISO.
   ProgramIndex fanuc(sm, f, {});
   EXPECT_EQ(fanuc.findSequence(3, start, SequenceSearch::FromStart)->language, Language::Iso);
+}
+
+TEST(ProgramIndex, DinLabelsAreFoundForwardBackwardAndInAnyCase) {
+  // GOTOF searches toward the end, GOTOB toward the start (the nearest label, the jump's own
+  // block included), GOTO forward then from the start; labels follow the block number.
+  SourceManager sm;
+  const uint32_t f = sm.addBuffer(
+      "p.mpf", "N10 MA1: R1=1\nN20 lbl: X1\nN30 X2 ; MA1: in a comment\nN40 MA1: X3\nN50 X4\n");
+  ReaderOptions options;
+  options.semicolon_ends_block = false;
+  options.initial_language = Language::Din;
+  const std::vector<BlockPosition> at = positions(sm, f, options);
+  ASSERT_EQ(at.size(), 5u);
+  ProgramIndex index(sm, f, options);
+  EXPECT_EQ(index.findLabel("MA1", at[2], SequenceSearch::Backward), at[0]);
+  EXPECT_EQ(index.findLabel("MA1", at[2], SequenceSearch::Forward), at[3]);
+  EXPECT_EQ(index.findLabel("MA1", at[4], SequenceSearch::Backward), at[3]);
+  EXPECT_EQ(index.findLabel("MA1", at[0], SequenceSearch::Backward), at[0]);
+  EXPECT_EQ(index.findLabel("MA1", at[3], SequenceSearch::Forward), std::nullopt);
+  EXPECT_EQ(index.findLabel("MA1", at[3], SequenceSearch::ForwardThenFromStart), at[0]);
+  EXPECT_EQ(index.findLabel("LBL", at[4], SequenceSearch::Backward), at[1]);
+  EXPECT_EQ(index.findLabel("LB", at[4], SequenceSearch::Backward), std::nullopt);
+  EXPECT_EQ(index.findSequence(20, at[4], SequenceSearch::Backward), at[1]);
+  EXPECT_EQ(index.findSequence(20, at[0], SequenceSearch::Backward), std::nullopt);
+  EXPECT_EQ(index.findSequence(50, at[0], SequenceSearch::Forward), at[4]);
+  // An ISO file has no labels.
+  ProgramIndex iso(sm, f, {});
+  EXPECT_EQ(iso.findLabel("MA1", at[2], SequenceSearch::Backward), std::nullopt);
 }
 
 TEST(ProgramIndex, ForwardThenFromStartAndFromStart) {

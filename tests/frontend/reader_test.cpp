@@ -96,10 +96,11 @@ TEST(Reader, ByteOrderMarkIsNotPartOfTheFirstLine) {
   EXPECT_EQ(readAll("\xEF\xBB\xBF%\nG0 X1\n", {}), (std::vector<std::string>{"%", "G0 X1"}));
 }
 
-TEST(Reader, DinBlocksAreReportedOnceEachUntilG291) {
+TEST(Reader, DinBlocksAreReadInDinUntilG291) {
   SourceManager sm;
   DiagnosticEngine diags(&sm);
-  uint32_t f = sm.addBuffer("s.mpf", "G290\nR10=R10+1 ; din\n; comment only\n  DEF REAL A\nN5 G291\nG0 X1\n");
+  uint32_t f = sm.addBuffer(
+      "s.mpf", "G290\nR10=R10+1 ; din\n; comment only\n  DEF REAL A\nX=(1+\nN5 G291\nG0 X1\n");
   ReaderOptions options;
   options.semicolon_ends_block = false;
   options.language_switch = true;
@@ -110,20 +111,26 @@ TEST(Reader, DinBlocksAreReportedOnceEachUntilG291) {
   EXPECT_EQ(reader.lastPosition().language, Language::Iso);
   EXPECT_EQ(reader.language(), Language::Din);  // the reader switched itself
   EXPECT_EQ(reader.position().language, Language::Din);
-  auto g291 = reader.next();  // the two DIN blocks are skipped with a diagnostic
+  auto assign = reader.next();  // the ';' text is an annotation, kept as a comment
+  ASSERT_TRUE(assign);
+  EXPECT_EQ(printBlock(*assign), "R10=R10+1 ( din)");
+  EXPECT_EQ(assign->language, Language::Din);
+  auto def = reader.next();  // the comment-only line is no block
+  ASSERT_TRUE(def);
+  EXPECT_EQ(printBlock(*def), "DEF REAL A");
+  EXPECT_EQ(def->statements.at(0).loc, (SourceLocation{f, 4, 12}));  // the name declared
+  auto g291 = reader.next();  // the broken DIN block is reported once and skipped
   ASSERT_TRUE(g291);
   EXPECT_EQ(printBlock(*g291), "N5 G291");
-  EXPECT_EQ(g291->language, Language::Din);  // a plain DIN block, read in DIN
+  EXPECT_EQ(g291->language, Language::Din);
   EXPECT_EQ(g290->language, Language::Iso);
   EXPECT_EQ(reader.lastPosition().language, Language::Din);
   auto g0 = reader.next();
   ASSERT_TRUE(g0);
   EXPECT_EQ(printBlock(*g0), "G0 X1");
-  ASSERT_EQ(diags.diagnostics().size(), 2u);
+  ASSERT_EQ(diags.diagnostics().size(), 1u);
   EXPECT_EQ(diags.format(diags.diagnostics()[0]),
-            "s.mpf:2:1: error[NCC1090]: this Siemens DIN block is not supported yet (ncc reads "
-            "DIN blocks of plain words so far: docs/din.md)");
-  EXPECT_EQ(diags.diagnostics()[1].location, (SourceLocation{f, 4, 3}));
+            "s.mpf:5:3: error[NCC1003]: unbalanced '('");
   EXPECT_EQ(reader.language(), Language::Iso);
 }
 

@@ -52,7 +52,17 @@ TEST(DialectTable, AlarmNumbersFromTheManuals) {
 
 TEST(DialectTable, DialectsWithoutIsoMillingLoweringHaveNoTable) {
   EXPECT_EQ(dialectTable(Dialect::FanucT), nullptr);
-  EXPECT_EQ(dialectTable(Dialect::SiemensDin), nullptr);
+}
+
+TEST(DialectTable, SiemensDinStartsInDinAndSwitchesToIsoMode) {
+  const LanguageTables t = languageTables(Dialect::SiemensDin);
+  EXPECT_EQ(t.initial, frontend::Language::Din);
+  ASSERT_NE(t.din, nullptr);
+  EXPECT_EQ(t.din, dialectTable(Dialect::SiemensDin));
+  EXPECT_EQ(t.iso, dialectTable(Dialect::SiemensIsoM));  // after G291
+  EXPECT_EQ(languageTables(Dialect::SiemensIsoM).initial, frontend::Language::Iso);
+  EXPECT_EQ(languageTables(Dialect::SiemensIsoM).din, t.din);
+  EXPECT_EQ(languageTables(Dialect::FanucM).din, nullptr);
 }
 
 TEST(DialectTable, GCodeNames) {

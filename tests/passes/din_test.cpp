@@ -45,8 +45,9 @@ TEST(Din, WhatDinReadsOtherwiseIsRefusedAtItsPosition) {
       {"G500", "NCC2010"},                // no settable frame
       {"R10 X1 F100", "address R is not supported yet"},  // R parameter in DIN
       {"T1", "address T is not supported yet"},
-      {"X=10", "NCC1090"},                // DIN syntax not read yet
-      {"N10 (comment) X1", "NCC1090"},    // no ( ) comments in DIN
+      {"X=IC(10)", "NCC1090"},            // incremental values: not read yet
+      {"WHILE R1<5", "NCC1090"},          // control structures: not read yet
+      {"N10 (comment) X1", "NCC1006"},    // no ( ) comments in DIN: unexpected '('
   };
   for (const Case& c : cases) {
     const Lowered r = lowerRead(Dialect::SiemensIsoM, std::string("G290\n") + c.block + "\n",

@@ -55,6 +55,8 @@ struct BlockPreparation::Impl final : passes::RunTimeState, ir::BlockSink {
     if (replaying) return;
     const SourcePosition where = block.loc;
     for (const ir::Operation& op : block.ops) {
+      if (const auto* set = std::get_if<ir::SetVariable>(&op); set && !set->name.empty())
+        variable_names.try_emplace(set->number, set->name);
       if (std::holds_alternative<ir::Prepare>(op)) {
         fail("NCC9001", where, "internal error: a block prepared at run time asks to be prepared at run time");
         return;
@@ -97,6 +99,7 @@ struct BlockPreparation::Impl final : passes::RunTimeState, ir::BlockSink {
   bool ended = false;
   std::optional<Alarm> pending_alarm;
   std::vector<PreparedInstruction>* out = nullptr;
+  std::map<uint32_t, std::string> variable_names;
 };
 
 BlockPreparation::BlockPreparation(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) {}
@@ -135,6 +138,10 @@ std::unique_ptr<BlockPreparation> BlockPreparation::create(const bytecode::Progr
   }
   impl->replaying = false;
   return std::unique_ptr<BlockPreparation>(new BlockPreparation(std::move(impl)));
+}
+
+const std::map<uint32_t, std::string>& BlockPreparation::variableNames() const {
+  return impl_->variable_names;
 }
 
 void BlockPreparation::boundIdleBlocks(uint64_t max_steps) {

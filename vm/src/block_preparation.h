@@ -21,6 +21,9 @@
 #include "ncc/machine/machine_config.h"
 #include "ncc/vm/events.h"
 
+#include <map>
+#include <string>
+
 namespace ncc::vm {
 
 struct PreparedInstruction {
@@ -52,6 +55,9 @@ class BlockPreparation {
   // The run's instruction budget (--max-steps, 0: none) bounds the blocks it prepares without
   // a move or a dwell too, as they execute no instruction: a damaged or endless store ends.
   void boundIdleBlocks(uint64_t max_steps);
+  // The names of the DIN variables the prepared blocks wrote (named_variables.h), which the
+  // bytecode's name table could not list: they were declared after PREPARE.
+  const std::map<uint32_t, std::string>& variableNames() const;
 
  private:
   struct Impl;

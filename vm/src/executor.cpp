@@ -360,6 +360,11 @@ bool Executor::next(Event& out) {
         continue;
       case Opcode::Store: {
         Value v;
+        // A block prepared at run time may write a DIN variable declared after PREPARE, above
+        // the count the file declared (its number comes from the compiler's own code).
+        if (preparing_ && in.variable >= variables_.size() &&
+            in.variable < bytecode::kMaxVariableCount)
+          variables_.resize(in.variable + 1);
         if (in.variable == 0 || in.variable >= variables_.size())
           return raise("NCC7205", "variable number out of range (unverified code)", at);
         if (!pop(v, at)) return false;
@@ -445,8 +450,24 @@ std::optional<double> Executor::variable(uint32_t number) const {
 
 std::vector<std::pair<std::string, double>> Executor::variables() const {
   std::vector<std::pair<std::string, double>> out;
-  for (uint32_t n = 0; n < variables_.size(); ++n)
-    if (!variables_[n].vacant) out.emplace_back(absl::StrCat("#", n), variables_[n].number);
+  const std::vector<bytecode::VariableName>& names = program_.variable_names;
+  auto name = names.begin();
+  for (uint32_t n = 0; n < variables_.size(); ++n) {
+    while (name != names.end() && name->number < n) ++name;
+    if (variables_[n].vacant) continue;
+    if (name != names.end() && name->number == n && name->name < program_.strings.size()) {
+      out.emplace_back(program_.strings[name->name], variables_[n].number);
+      continue;
+    }
+    if (preparation_) {
+      const std::map<uint32_t, std::string>& prepared = preparation_->variableNames();
+      if (auto it = prepared.find(n); it != prepared.end()) {
+        out.emplace_back(it->second, variables_[n].number);
+        continue;
+      }
+    }
+    out.emplace_back(absl::StrCat("#", n), variables_[n].number);
+  }
   return out;
 }
 

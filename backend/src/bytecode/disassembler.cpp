@@ -163,6 +163,9 @@ void disassemble(const Program& program, std::ostream& out) {
         << " " << (u.name < program.strings.size() ? quoted(program.strings[u.name]) : "?")
         << "\n";
   }
+  for (const VariableName& n : program.variable_names)
+    out << "; variable   #" << n.number << " "
+        << (n.name < program.strings.size() ? program.strings[n.name] : "?") << "\n";
   if (!program.blocks.empty())
     out << "; blocks     " << program.blocks.size() << " bytes (the block store of PREPARE)\n";
   uint32_t offset = 0;

@@ -92,19 +92,34 @@ std::optional<Error> readLines(std::span<const uint8_t> s, std::vector<LineEntry
   return std::nullopt;
 }
 
-std::optional<Error> readUnits(std::span<const uint8_t> s, std::vector<Unit>& out) {
+// The unit table, and from 2.3 the variable names after it.
+std::optional<Error> readUnits(std::span<const uint8_t> s, uint16_t minor, std::vector<Unit>& out,
+                               std::vector<VariableName>& names) {
   if (s.size() < 4) return problem("NCC7009", "unit table: missing the unit count");
   const uint32_t count = bytes::getU32(s.data());
   if (count == 0) return problem("NCC7009", "unit table: no program unit");
-  if (uint64_t{count} * kUnitEntrySize != s.size() - 4)
-    return problem("NCC7009", absl::StrCat("unit table: ", count, " units need ",
-                                           uint64_t{count} * kUnitEntrySize + 4,
-                                           " bytes, the section has ", s.size()));
+  const uint64_t units_end = uint64_t{count} * kUnitEntrySize + 4;
+  const bool with_names = minor >= kFirstMinorWithNames;
+  if (with_names ? units_end + 4 > s.size() : units_end != s.size())
+    return problem("NCC7009", absl::StrCat("unit table: ", count, " units need ", units_end,
+                                           " bytes", with_names ? " and the name count" : "",
+                                           ", the section has ", s.size()));
   out.clear();
   out.reserve(count);
   for (uint32_t i = 0; i < count; ++i) {
     const uint8_t* p = s.data() + 4 + kUnitEntrySize * i;
     out.push_back(Unit{bytes::getU32(p), bytes::getU32(p + 4)});
+  }
+  names.clear();
+  if (!with_names) return std::nullopt;
+  const uint32_t name_count = bytes::getU32(s.data() + units_end);
+  if (units_end + 4 + uint64_t{name_count} * kVariableNameEntrySize != s.size())
+    return problem("NCC7009", absl::StrCat("variable names: ", name_count, " names do not fill ",
+                                           "the rest of the unit section (", s.size(), " bytes)"));
+  names.reserve(name_count);
+  for (uint32_t i = 0; i < name_count; ++i) {
+    const uint8_t* p = s.data() + units_end + 4 + kVariableNameEntrySize * i;
+    names.push_back(VariableName{bytes::getU32(p), bytes::getU32(p + 4)});
   }
   return std::nullopt;
 }
@@ -239,7 +254,9 @@ std::optional<Error> load(std::span<const uint8_t> bytes, Program& program) {
   result.code.assign(code.begin(), code.end());
   if (std::optional<Error> e = readLines(section(Section::Lines), result.lines)) return e;
   if (std::optional<Error> e = readStrings(section(Section::Strings), result.strings)) return e;
-  if (std::optional<Error> e = readUnits(section(Section::Units), result.units)) return e;
+  if (std::optional<Error> e = readUnits(section(Section::Units), result.header.version_minor,
+                                         result.units, result.variable_names))
+    return e;
   std::span<const uint8_t> store = bytes.subspan(blocks.offset, blocks.size);
   result.blocks.assign(store.begin(), store.end());
   program = std::move(result);
@@ -274,7 +291,9 @@ std::optional<Error> loadPaged(std::shared_ptr<const ProgramFile> file, Program&
   if (!strings || !units || !store) return problem("NCC7015", "cannot read the file");
   result.blocks = std::move(*store);
   if (std::optional<Error> e = readStrings(*strings, result.strings)) return e;
-  if (std::optional<Error> e = readUnits(*units, result.units)) return e;
+  if (std::optional<Error> e = readUnits(*units, result.header.version_minor, result.units,
+                                         result.variable_names))
+    return e;
   const SectionRange& code = range(sections, Section::Code);
   result.paged = PagedSections{std::move(file), code.offset, code.size, lines.offset,
                                lines.size / kLineEntrySize};

@@ -43,11 +43,27 @@ class Verifier {
     if (auto e = scanBoundaries()) return e;
     if (auto e = checkJumps()) return e;
     if (auto e = checkUnits()) return e;
+    if (auto e = checkNames()) return e;
     if (auto e = checkStackAndFlow()) return e;
     return line_error_;
   }
 
  private:
+  // Each name: a variable of the program, in ascending order, named by a string of the pool.
+  std::optional<Error> checkNames() const {
+    uint32_t previous = 0;
+    for (const VariableName& n : program_.variable_names) {
+      if (n.number == 0 || n.number >= program_.header.variable_count || n.number <= previous)
+        return problem("NCC7117", absl::StrCat("variable name for #", n.number,
+                                               ": not a variable of the program, or out of order"));
+      if (n.name >= program_.strings.size() || program_.strings[n.name].empty())
+        return problem("NCC7117", absl::StrCat("variable name for #", n.number,
+                                               ": string ", n.name, " is not in the pool"));
+      previous = n.number;
+    }
+    return std::nullopt;
+  }
+
   std::optional<Error> checkMachine() {
     if (axis_count_ < 1 || axis_count_ > kMaxAxes)
       return problem("NCC7113", absl::StrCat("program has ", axis_count_, " axes"));

@@ -120,9 +120,12 @@ void StreamWriter::spoolLine(const LineEntry& entry, bool replace_last) {
 
 std::optional<Error> StreamWriter::finish(const std::vector<std::string>& strings,
                                           const std::vector<Unit>& units,
-                                          std::span<const uint8_t> blocks) {
+                                          std::span<const uint8_t> blocks,
+                                          const std::vector<VariableName>& names) {
   if (finished_) return error_;
   finished_ = true;
+  for (const VariableName& n : names)
+    header_.variable_count = std::max(header_.variable_count, n.number + 1);
   flushCode();
   SectionTable sections;
   uint64_t at = uint64_t{header_size_};
@@ -167,6 +170,11 @@ std::optional<Error> StreamWriter::finish(const std::vector<std::string>& string
   for (const Unit& unit : units) {
     put32(unit.entry);
     put32(unit.name);
+  }
+  put32(static_cast<uint32_t>(names.size()));
+  for (const VariableName& n : names) {
+    put32(n.number);
+    put32(n.name);
   }
   sections[3] = {static_cast<uint32_t>(at), static_cast<uint32_t>(tail.size() - strings_end)};
   at += tail.size() - strings_end;
@@ -216,7 +224,7 @@ std::optional<Error> write(const Program& program, std::ostream& out) {
     offset = next;
     if (offset == size && next_line >= program.lines.size()) break;
   }
-  return writer.finish(program.strings, program.units, program.blocks);
+  return writer.finish(program.strings, program.units, program.blocks, program.variable_names);
 }
 
 }  // namespace ncc::bytecode

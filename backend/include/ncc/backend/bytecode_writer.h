@@ -7,6 +7,7 @@
 // A value the verifier would refuse (a coordinate, arc centre, dwell or turn count beyond the
 // bounds of bytecode/format.h) is reported here as NCC7017 at its block, so the compiler never
 // writes a file the VM will not run.
+#include <map>
 #include <memory>
 #include <optional>
 #include <vector>
@@ -45,6 +46,7 @@ class BytecodeWriter : public ir::BlockSink {
   bytecode::StreamWriter writer_;
   std::optional<uint32_t> main_file_;  // file of the first block: names the main unit
   std::shared_ptr<const std::vector<uint8_t>> blocks_;  // of ir::Prepare: after the units
+  std::map<uint32_t, std::string> variable_names_;      // of named ir::SetVariable
   bool ok_ = true;
   bool finished_ = false;
 };

@@ -11,11 +11,12 @@ namespace ncc::bytecode {
 
 inline constexpr char kMagic[4] = {'N', 'C', 'C', 'B'};
 // 2.0 added the file checksum (checksum.h) and the value bounds below; 1.x files are refused.
-// 2.1 added SKIP (G31); 2.2 added PREPARE and the block store after the unit table. Older
-// minors load unchanged.
+// 2.1 added SKIP (G31); 2.2 added PREPARE and the block store after the unit table; 2.3 the
+// variable names after the units (DIN's R10, COUNT). Older minors load unchanged.
 inline constexpr uint16_t kVersionMajor = 2;
-inline constexpr uint16_t kVersionMinor = 2;
+inline constexpr uint16_t kVersionMinor = 3;
 inline constexpr uint16_t kFirstMinorWithBlocks = 2;
+inline constexpr uint16_t kFirstMinorWithNames = 3;
 
 // Fixed part of the header; the axis table (kAxisEntrySize bytes per axis) follows it and the
 // code section starts right after the axis table.
@@ -25,6 +26,7 @@ inline constexpr uint32_t kAxisEntrySize = 16;
 inline constexpr uint32_t kMaxAxisNameLength = 14;
 inline constexpr uint32_t kLineEntrySize = 16;  // code offset, file, line, column (u32 each)
 inline constexpr uint32_t kUnitEntrySize = 8;   // entry offset, name string (u32 each)
+inline constexpr uint32_t kVariableNameEntrySize = 8;  // variable number, name string (u32 each)
 
 // Limits the verifier enforces and the executor sizes its fixed buffers by.
 inline constexpr uint32_t kMaxVariableCount = 100000;   // numbered variables #0..#(count-1)

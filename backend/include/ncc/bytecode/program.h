@@ -51,6 +51,13 @@ struct Unit {
   friend bool operator==(const Unit&, const Unit&) = default;
 };
 
+// A variable the program names (2.3): `--emit=vars` prints it by its name, not as #number.
+struct VariableName {
+  uint32_t number = 0;
+  uint32_t name = 0;  // string pool index
+  friend bool operator==(const VariableName&, const VariableName&) = default;
+};
+
 // Where a paged program's code and line table are in its file.
 struct PagedSections {
   std::shared_ptr<const ProgramFile> file;
@@ -66,6 +73,7 @@ struct Program {
   std::vector<uint8_t> code;         // empty when paged
   std::vector<LineEntry> lines;      // sorted by offset; empty when paged
   std::vector<Unit> units;           // units[0] is the main program
+  std::vector<VariableName> variable_names;  // by number, ascending (2.3; empty before)
   std::optional<PagedSections> paged;  // set: code and lines are read from the file
   // The block store (2.2): every block the run may still prepare, as the compiler parsed them
   // (eval/block_store.h), for PREPARE. Empty when the compiler prepared the whole program.

@@ -44,10 +44,13 @@ class StreamWriter {
 
   // Appends line table, strings and units and patches the section table. The stream is left
   // positioned at the end of the file. Returns the first error (also kept in error()).
-  // `blocks`: the block store (2.2), appended after the units; empty for none.
+  // `blocks`: the block store (2.2), appended after the units; empty for none. `names`: the
+  // variables the program names (2.3), by number ascending, their names in `strings`; the
+  // header's variable count grows to hold them.
   std::optional<Error> finish(const std::vector<std::string>& strings,
                               const std::vector<Unit>& units,
-                              std::span<const uint8_t> blocks = {});
+                              std::span<const uint8_t> blocks = {},
+                              const std::vector<VariableName>& names = {});
 
   const std::optional<Error>& error() const { return error_; }
 

@@ -104,6 +104,9 @@ class StoredProgramStore final : public ProgramStore {
   std::optional<ProgramPoint> findSequence(int64_t n, const ProgramPoint& from,
                                            SequenceSearch order, const ProgramPoint& begin,
                                            const ProgramPoint& end) override;
+  std::optional<ProgramPoint> findLabel(std::string_view label, const ProgramPoint& from,
+                                        SequenceSearch order, const ProgramPoint& begin,
+                                        const ProgramPoint& end) override;
   ProgramPoint programEnd(const ProgramPoint& start) override;
 
  private:

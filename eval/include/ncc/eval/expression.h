@@ -1,10 +1,14 @@
 #pragma once
 // Expressions of Macro B: literals, variables (#n, #[expr]), brackets, + - * / MOD, OR XOR
 // AND, EQ NE GT GE LT LE, and the functions (SIN COS TAN ASIN ACOS ATAN SQRT ABS ROUND FIX
-// FUP LN EXP POW ADP BIN BCD), angles in degrees. Vacant follows the manual: 0 in arithmetic,
+// FUP LN EXP POW ADP BIN BCD), angles in degrees. DIN adds R parameters and named variables,
+// DIV, NOT, the bit operators B_AND B_OR B_XOR B_NOT, and ATAN2 POT TRUNC MINVAL MAXVAL. Vacant follows the manual: 0 in arithmetic,
 // distinct from 0 only in EQ and NE. Nothing here reads the controller: variables come
 // through VariableReader.
 #include <optional>
+#include <vector>
+#include <span>
+#include <string_view>
 
 #include "ncc/eval/failure.h"
 #include "ncc/eval/macro_rules.h"
@@ -18,6 +22,11 @@ class VariableReader {
   virtual ~VariableReader() = default;
   // The value of #number; nullopt after filling `failure` (a number outside every range).
   virtual std::optional<Value> read(int64_t number, SourceLocation loc, Failure& failure) = 0;
+  // DIN: R n, and a variable by name with its indices (named_variables.h). A reader without
+  // them (ISO only) fails with UndefinedName.
+  virtual std::optional<Value> readR(int64_t n, SourceLocation loc, Failure& failure);
+  virtual std::optional<Value> readNamed(std::string_view name, std::span<const int64_t> indices,
+                                         SourceLocation loc, Failure& failure);
 };
 
 struct ExpressionContext {
@@ -29,6 +38,9 @@ struct ExpressionContext {
   int enclosing_brackets = 0;
   // ADP[x]: the factor from least input increments to input units (1000 with 0.001 mm).
   double adp_scale = 1000.0;
+  // The expression is DIN text: AND OR XOR NOT are logic operators on truth values (ISO's AND
+  // OR XOR work on the bits of integers; DIN has B_AND B_OR B_XOR for that).
+  bool din = false;
 };
 
 // The value of `expr`; nullopt after filling `failure` (with the location of the offending
@@ -54,6 +66,11 @@ std::optional<int64_t> variableNumber(const Value& value, const MacroRules& rule
 // Mazak §13-9-3 2.). Whether a system variable may be written is the caller's to say.
 std::optional<int64_t> assignmentTarget(const ast::Expr& target, const ExpressionContext& context,
                                         Failure& failure);
+
+// DIN: the values of an array's indices `A[i,j]` (rounded to integers); nullopt after filling
+// `failure`.
+std::optional<std::vector<int64_t>> indicesOf(const std::vector<ast::Expr>& args,
+                                              const ExpressionContext& context, Failure& failure);
 
 // A condition (IF, WHILE): true when the value is not 0 (vacant is false).
 bool isTrue(const Value& value);

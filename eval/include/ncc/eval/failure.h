@@ -35,6 +35,12 @@ enum class EvalError : uint8_t {
   // A value known only when the program runs (where a G31 stopped, an interface signal): not
   // an error; the compiler leaves the rest of the program to the VM (docs/runtime.md).
   RunTimeValue,
+  // DIN (docs/din.md): a name no DEF declared, an array index outside the array, a jump whose
+  // label or block number is not in the program, a type that does not take the value.
+  UndefinedName,
+  ArrayIndex,
+  JumpTarget,
+  TypeMismatch,
   kCount,
 };
 

@@ -37,6 +37,8 @@ enum class Rounding : uint8_t {
 enum class SequenceSearch : uint8_t {
   ForwardThenFromStart,  // from the block after the GOTO to the end, then from the start
   FromStart,             // from the start of the program
+  Forward,               // DIN GOTOF: from the block after the jump to the end
+  Backward,              // DIN GOTOB: the nearest before, from the jump's block (included) back
 };
 
 struct MacroRules {

@@ -54,6 +54,10 @@ class ProgramStore {
                                                    SequenceSearch order,
                                                    const ProgramPoint& begin,
                                                    const ProgramPoint& end) = 0;
+  // The same for the block carrying DIN jump label `label` (upper case, `MA1:`).
+  virtual std::optional<ProgramPoint> findLabel(std::string_view label, const ProgramPoint& from,
+                                                SequenceSearch order, const ProgramPoint& begin,
+                                                const ProgramPoint& end) = 0;
   // The end of the program that starts at `start`: the next block with an O number, or the
   // end of the file.
   virtual ProgramPoint programEnd(const ProgramPoint& start) = 0;

@@ -11,6 +11,7 @@
 
 #include "ncc/eval/expression.h"
 #include "ncc/eval/macro_rules.h"
+#include "ncc/eval/named_variables.h"
 #include "ncc/eval/value.h"
 
 namespace ncc::eval {
@@ -36,6 +37,17 @@ class Variables final : public VariableReader {
 
   std::optional<Value> read(int64_t number, SourceLocation loc, Failure& failure) override;
   bool write(int64_t number, const Value& value, SourceLocation loc, Failure& failure);
+
+  // DIN's R parameters and DEF'd variables; their writes reach on_write too.
+  NamedVariables& named() { return named_; }
+  const NamedVariables& named() const { return named_; }
+  std::optional<Value> readR(int64_t n, SourceLocation loc, Failure& failure) override {
+    return named_.readR(n, loc, failure);
+  }
+  std::optional<Value> readNamed(std::string_view name, std::span<const int64_t> indices,
+                                 SourceLocation loc, Failure& failure) override {
+    return named_.read(name, indices, loc, failure);
+  }
 
   // A macro call opens a new set of locals (all vacant but the arguments); its return
   // closes it.
@@ -64,6 +76,7 @@ class Variables final : public VariableReader {
   SystemVariables* system_;
   std::vector<Locals> locals_;
   std::map<int64_t, Value> common_values_;
+  NamedVariables named_;
 };
 
 }  // namespace ncc::eval

@@ -1,6 +1,6 @@
 #pragma once
-// The syntax tree of one block of an ISO-family program (FANUC, Mazak, Siemens ISO mode).
-// A block is one line. The tree says what was written, nothing more: values keep whether they
+// The syntax tree of one block, in either language of the controllers: ISO (FANUC, Mazak,
+// Siemens ISO mode) and Siemens DIN. A block is one line (or an ISO block between ';' marks). The tree says what was written, nothing more: values keep whether they
 // had a decimal point (the decimal-point rules are semantics, applied in lowering), addresses
 // keep their letter, and macro expressions stay unevaluated.
 #include <array>
@@ -34,6 +34,7 @@ inline constexpr int kMaxExprDepth = 256;
 template <class T>
 class Box {
  public:
+  using element_type = T;
   Box() = default;
   Box(T value) : p_(std::make_unique<T>(std::move(value))) {}
   Box(const Box& o) : p_(o.p_ ? std::make_unique<T>(*o.p_) : nullptr) {}
@@ -62,6 +63,8 @@ enum class Op : uint8_t {
   None,  // a node that applies none (a literal, a variable, a bracket)
   Plus, Minus, Times, Divide, Mod, Or, Xor, And, Eq, Ne, Gt, Lt, Ge, Le,
   Sin, Cos, Tan, Asin, Acos, Atan, Sqrt, Abs, Bin, Bcd, Round, Fix, Fup, Ln, Exp, Pow, Adp,
+  // DIN only: integer division, the logic and bit operators, and its functions.
+  Div, Not, BAnd, BOr, BXor, BNot, Atan2, Pot, Trunc, MinVal, MaxVal,
 };
 struct OpInfo {
   Op op;
@@ -80,6 +83,10 @@ inline constexpr std::array kOps = {
     OpInfo{Op::Bcd, "BCD", 1},   OpInfo{Op::Round, "ROUND", 1}, OpInfo{Op::Fix, "FIX", 1},
     OpInfo{Op::Fup, "FUP", 1},   OpInfo{Op::Ln, "LN", 1},     OpInfo{Op::Exp, "EXP", 1},
     OpInfo{Op::Pow, "POW", 2},   OpInfo{Op::Adp, "ADP", 1},
+    OpInfo{Op::Div, "DIV", 2},   OpInfo{Op::Not, "NOT", 1},   OpInfo{Op::BAnd, "B_AND", 2},
+    OpInfo{Op::BOr, "B_OR", 2},  OpInfo{Op::BXor, "B_XOR", 2}, OpInfo{Op::BNot, "B_NOT", 1},
+    OpInfo{Op::Atan2, "ATAN2", 2}, OpInfo{Op::Pot, "POT", 1}, OpInfo{Op::Trunc, "TRUNC", 1},
+    OpInfo{Op::MinVal, "MINVAL", 2}, OpInfo{Op::MaxVal, "MAXVAL", 2},
 };
 static_assert([] {
   for (size_t i = 0; i < kOps.size(); ++i)
@@ -97,7 +104,8 @@ constexpr std::optional<Op> opNamed(std::string_view text) {
 }
 // A word operator (MOD, OR, EQ ...), printed with spaces around it.
 constexpr bool isWordOperator(Op op) {
-  return op >= Op::Mod && op <= Op::Le;
+  return (op >= Op::Mod && op <= Op::Le) || op == Op::Div || op == Op::BAnd || op == Op::BOr ||
+         op == Op::BXor;
 }
 
 // An address as written: a letter (`X`), a comma address (`,C`), or a machine axis name of up
@@ -105,16 +113,20 @@ constexpr bool isWordOperator(Op op) {
 // has a handful of words and copying them must not allocate.
 using Address = InlineString<14>;
 
-// An expression: a literal, a `#` variable, a bracketed expression, an operator or a function.
+// An expression: a literal, a `#` variable, a bracketed expression, an operator or a function;
+// in DIN also a named variable, an R parameter or a string.
 struct Expr {
   enum class Kind : uint8_t {
     Number,    // literal; `number`, `has_point`
     Variable,  // #n or #[expr]; args[0] is the number expression
-    Unary,     // op = Minus, Plus; args[0]
-    Binary,    // op = Plus ... Le (the arithmetic, logic and comparison operators); args[0..1]
-    Call,      // op = Sin ... Adp (the functions); args
-    Bracket,   // [ expr ]; args[0]
-    Vacant,    // #0 literal handled as Variable; Vacant reserved for an empty argument
+    Unary,     // op = Minus, Plus, Not, BNot; args[0]
+    Binary,    // op = Plus ... Le, Div, BAnd ... BXor (the operators); args[0..1]
+    Call,      // op = Sin ... Adp, Atan2 ... MaxVal (the functions); args
+    Bracket,   // [ expr ] (DIN: ( expr )); args[0]
+    Vacant,    // an omitted argument (DIN `F(1,,3)`); #0 is a Variable
+    Name,      // DIN: a name (`COUNT`, `$P_UIFR`, a label) in `text`; args: its indices `A[i,j]`
+    RParam,    // DIN: R n or R[expr]; args[0] is the number expression
+    String,    // DIN: a string literal, in `text`
   };
   Kind kind = Kind::Number;
   bool has_point = false;  // literal written with a decimal point ("10." or "1.5")
@@ -123,6 +135,9 @@ struct Expr {
   SourceLocation loc;
   double number = 0.0;
   std::vector<Expr> args;
+  // Name and String: the text (a name upper-cased, a string as written). Boxed: an ISO tree
+  // never has one and its nodes stay small.
+  Box<std::string> text;
 
   static Expr literal(double v, bool point, SourceLocation l) {
     Expr e;
@@ -142,22 +157,37 @@ struct Word {
   SourceLocation loc;   // of the address letter
 };
 
-// Macro statements written in a block (Macro B). Parsed now, evaluated by the Macro B issue.
+// The type of a DIN variable (DEF INT ...).
+enum class DataType : uint8_t { None, Int, Real, Bool, Char, String, Axis, Frame };
+inline constexpr std::array<const char*, 8> kDataTypeNames = {"", "INT", "REAL", "BOOL", "CHAR",
+                                                              "STRING", "AXIS", "FRAME"};
+
+// Where a jump searches for its target. ISO GOTO n searches as the dialect says
+// (MacroRules::goto_search); DIN names the direction (GOTOF forward, GOTOB backward, GOTO and
+// GOTOC forward then backward, GOTOC without an alarm when there is no such target).
+enum class Jump : uint8_t { Sequence, Forward, Backward, Both, BothQuiet };
+
+// The statements of a block: Macro B's, and DIN's.
 struct Statement {
   enum class Kind : uint8_t {
-    Assign,      // #target = value
-    Goto,        // GOTO target
+    Assign,      // #target = value; DIN: a variable or R parameter = value
+    Goto,        // GOTO target (`jump` says where it searches)
     IfGoto,      // IF [cond] GOTO target
     IfThen,      // IF [cond] THEN assignment (then_assign)
     While,       // WHILE [cond] DO id
     End,         // END id
+    Define,      // DIN: DEF type target [= value]; target is a Name, its args the dimensions
+    Label,       // DIN: a jump label `NAME:` (target is the Name)
+    Call,        // DIN: a subprogram call by name; target is the Name, its args the arguments
   };
   Kind kind = Kind::Assign;
   SourceLocation loc;
-  Expr target;  // Assign: the variable (a Variable expr); Goto/IfGoto: the sequence number
-  Expr value;   // Assign: the value; If*/While: the condition
+  Expr target;  // Assign: the variable; Goto/IfGoto: a sequence number, or a Name (DIN label)
+  Expr value;   // Assign: the value; If*/While: the condition; Define: the initial value
   int loop_id = 0;  // DO m / END m
   Box<Statement> then_assign;  // IfThen (copies are deep: the evaluator keeps loop bodies)
+  DataType type = DataType::None;  // Define
+  Jump jump = Jump::Sequence;      // Goto, IfGoto
 };
 
 struct Block {
@@ -205,7 +235,7 @@ struct Schema<Expr> {
   static constexpr auto fields =
       std::tuple{field("kind", &Expr::kind), field("loc", &Expr::loc), field("has_point", &Expr::has_point),
                  field("digits", &Expr::digits), field("op", &Expr::op), field("number", &Expr::number),
-                 field("args", &Expr::args)};
+                 field("args", &Expr::args), field("text", &Expr::text)};
 };
 template <>
 struct Schema<Word> {
@@ -221,7 +251,8 @@ struct Schema<Statement> {
   static constexpr auto fields =
       std::tuple{field("kind", &Statement::kind), field("loc", &Statement::loc),
                  field("target", &Statement::target), field("value", &Statement::value),
-                 field("loop_id", &Statement::loop_id), field("then_assign", &Statement::then_assign)};
+                 field("loop_id", &Statement::loop_id), field("then_assign", &Statement::then_assign),
+                 field("type", &Statement::type), field("jump", &Statement::jump)};
 };
 template <>
 struct Schema<Block> {
@@ -236,9 +267,9 @@ struct Schema<Block> {
 };
 // A new member: list it above, then update the size here (x86-64, the platform CI builds).
 // (A member that fits in padding keeps the size: list it all the same.)
-static_assert(sizeof(Expr) == 48, "Expr changed: update Schema<Expr>");
-static_assert(sizeof(Word) == 80, "Word changed: update Schema<Word>");
-static_assert(sizeof(Statement) == 128, "Statement changed: update Schema<Statement>");
+static_assert(sizeof(Expr) == 56, "Expr changed: update Schema<Expr>");
+static_assert(sizeof(Word) == 88, "Word changed: update Schema<Word>");
+static_assert(sizeof(Statement) == 152, "Statement changed: update Schema<Statement>");
 static_assert(sizeof(Block) == 128, "Block changed: update Schema<Block>");
 
 // Walking a schema: f(field) for each Field of node type N, in order.
@@ -266,9 +297,13 @@ template <size_t N> inline constexpr bool kIsInline<InlineString<N>> = true;
 template <class E>
 inline constexpr uint8_t kEnumValues = 0;
 template <>
-inline constexpr uint8_t kEnumValues<Expr::Kind> = static_cast<uint8_t>(Expr::Kind::Vacant) + 1;
+inline constexpr uint8_t kEnumValues<Expr::Kind> = static_cast<uint8_t>(Expr::Kind::String) + 1;
 template <>
-inline constexpr uint8_t kEnumValues<Statement::Kind> = static_cast<uint8_t>(Statement::Kind::End) + 1;
+inline constexpr uint8_t kEnumValues<Statement::Kind> = static_cast<uint8_t>(Statement::Kind::Call) + 1;
+template <>
+inline constexpr uint8_t kEnumValues<DataType> = static_cast<uint8_t>(kDataTypeNames.size());
+template <>
+inline constexpr uint8_t kEnumValues<Jump> = static_cast<uint8_t>(Jump::BothQuiet) + 1;
 template <>
 inline constexpr uint8_t kEnumValues<Op> = static_cast<uint8_t>(kOps.size());
 template <>

@@ -16,6 +16,8 @@
 #include <cstdint>
 #include <filesystem>
 #include <optional>
+#include <string>
+#include <string_view>
 #include <unordered_map>
 #include <utility>
 #include <vector>
@@ -29,6 +31,8 @@ namespace ncc::frontend {
 enum class SequenceSearch : uint8_t {
   ForwardThenFromStart,  // GOTO on FANUC: after the current block to the end, then from the start
   FromStart,             // M99 P n, M98 restarts: from the start
+  Forward,               // DIN GOTOF: after the current block to the end
+  Backward,              // DIN GOTOB: the nearest before, from the current block (included) back
 };
 
 // A range of blocks [first, end): a block is in it when first <= its position < end.
@@ -48,6 +52,11 @@ class ProgramIndex {
   // start to programEnd(start)); "start" and "end" above are then the range's.
   std::optional<BlockPosition> findSequence(int64_t n, BlockPosition from, SequenceSearch order,
                                             std::optional<BlockRange> within = std::nullopt);
+  // The same for the block that carries DIN jump label `label` (upper case): `NAME:` after the
+  // block's skip mark and number (block_start.h, blockLabel).
+  std::optional<BlockPosition> findLabel(std::string_view label, BlockPosition from,
+                                         SequenceSearch order,
+                                         std::optional<BlockRange> within = std::nullopt);
 
   // The block that starts program O n (`O1234` or `:1234` as the first word of a block),
   // the first one in the file; nullopt if none.
@@ -89,8 +98,16 @@ class ProgramIndex {
   const Stats& stats() const { return stats_; }
 
  private:
+  // A block that starts with N n, or (label not empty) carries the label.
+  struct Target {
+    int64_t n = 0;
+    std::string_view label;
+  };
+  std::optional<BlockPosition> find(Target target, BlockPosition from, SequenceSearch order,
+                                    std::optional<BlockRange> within);
   struct Key {
     int64_t n;
+    std::string label;
     uint64_t from_offset;
     uint32_t from_column;
     SequenceSearch order;
@@ -109,10 +126,11 @@ class ProgramIndex {
   // Reads from `start` for the first block starting with N n that comes after `after`, up to
   // and including `through`, before `end` (each nullopt: no such limit) and before the end
   // of the record.
-  std::optional<BlockPosition> scanFor(int64_t n, BlockPosition start,
+  // `last`: the last match before `through`, not the first (a backward search).
+  std::optional<BlockPosition> scanFor(Target target, BlockPosition start,
                                        std::optional<BlockPosition> after,
                                        std::optional<BlockPosition> through,
-                                       std::optional<BlockPosition> end);
+                                       std::optional<BlockPosition> end, bool last = false);
   void scanPrograms();
   // The first block that is not blank (where a '%' stops being the opening one), and the
   // file's first program number; read once.

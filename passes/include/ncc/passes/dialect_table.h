@@ -397,11 +397,13 @@ struct DialectTable {
 const DialectTable* dialectTable(Dialect dialect);
 
 // The tables a dialect's blocks are lowered with, by the language they were read in
-// (ast::Block::language): siemens-iso-m reads ISO text and, after G290, DIN text; the other
-// dialects ISO only (din: nullptr).
+// (ast::Block::language): siemens-iso-m reads ISO text and, after G290, DIN text; siemens-din
+// starts in DIN and G291 switches it to ISO mode; the other dialects read ISO only (din:
+// nullptr).
 struct LanguageTables {
   const DialectTable* iso = nullptr;
   const DialectTable* din = nullptr;
+  frontend::Language initial = frontend::Language::Iso;  // the language a file starts in
   const DialectTable* of(frontend::Language language) const {
     return language == frontend::Language::Din ? din : iso;
   }

@@ -1,0 +1,94 @@
+#pragma once
+// The variables of the DIN language (docs/din.md, Variables): the R parameters and the
+// variables DEF declares, by name, typed, arrays up to three dimensions. A DIN variable is
+// never vacant: R parameters and DEF'd variables start at 0 (or their initial value).
+//
+// Each variable of the main program has a number in the run's variable space, after the ISO
+// `#` numbers, so that the IR and the VM keep it as they keep `#n` (ir::SetVariable) and the
+// bytecode names it for `--emit=vars`: R n is kFirstNumber + n, the DEF'd ones follow in the
+// order they are declared, one number per array element. Variables of a called PROC have no
+// number (they end with the call), as the locals of an ISO macro call.
+#include <array>
+#include <cstdint>
+#include <functional>
+#include <optional>
+#include <span>
+#include <string>
+#include <string_view>
+#include <unordered_map>
+#include <vector>
+
+#include "ncc/eval/failure.h"
+#include "ncc/eval/value.h"
+#include "ncc/frontend/ast.h"
+
+namespace ncc::eval {
+
+class NamedVariables {
+ public:
+  // R0 .. R999 (an 840D has 100 by default, machine data MM_NUM_R_PARAM raises it to 1000 and
+  // more; real programs use up to R999).
+  static constexpr int64_t kRParameters = 1000;
+  // The first number after the ISO variables (bytecode::kDefaultVariableCount).
+  static constexpr uint32_t kFirstNumber = 10000;
+  // The numbers DIN variables may take: the VM's variable space ends at 100000.
+  static constexpr uint32_t kLastNumber = 99999;
+  // Elements of one array (the 840D limit for a local array is far lower; this bounds memory).
+  static constexpr int64_t kMaxElements = 1 << 16;
+
+  struct Variable {
+    ast::DataType type = ast::DataType::Real;
+    std::array<int64_t, 3> dims{1, 1, 1};
+    int rank = 0;                // 0: a scalar
+    uint32_t first_number = 0;   // 0: none (a PROC's variable)
+    std::vector<double> values;  // row-major
+  };
+
+  // R n; `failure` (VariableNumber) for n outside 0 .. kRParameters-1.
+  std::optional<Value> readR(int64_t n, SourceLocation loc, Failure& failure) const;
+  bool writeR(int64_t n, const Value& value, SourceLocation loc, Failure& failure);
+
+  // DEF: a new variable of the current scope with its dimensions (empty: a scalar) and initial
+  // value (nullopt: the type's zero). False after filling `failure`: the name is declared
+  // already in this scope, a dimension is not positive, the type is not built yet.
+  bool define(std::string_view name, ast::DataType type, std::span<const int64_t> dims,
+              std::optional<Value> initial, SourceLocation loc, Failure& failure);
+  const Variable* find(std::string_view name) const;
+  // Whether any variable is declared in the current scope (most programs declare none: a word
+  // then needs no look-up).
+  bool any() const { return !scopes_.back().variables.empty(); }
+  // A variable's element; `failure` for an undefined name (UndefinedName) or an index outside
+  // the array (ArrayIndex).
+  std::optional<Value> read(std::string_view name, std::span<const int64_t> indices,
+                            SourceLocation loc, Failure& failure) const;
+  // Writes converting to the variable's type (INT rounds, BOOL is 0 or 1).
+  bool write(std::string_view name, std::span<const int64_t> indices, const Value& value,
+             SourceLocation loc, Failure& failure);
+
+  // A PROC call opens a scope of its own; its return closes it.
+  void pushScope();
+  void popScope();
+
+  // The name of variable number `n` (`R10`, `COUNT`, `A[1,2]`); empty when none has it.
+  std::string nameOf(uint32_t n) const;
+
+  // Every write of a variable with a number, in program order (Variables::on_write).
+  std::function<void(int64_t number, const Value& value, SourceLocation loc)> on_write;
+
+ private:
+  struct Scope {
+    std::unordered_map<std::string, Variable> variables;
+  };
+  Variable* lookup(std::string_view name);
+  std::optional<size_t> element(std::string_view name, const Variable& v,
+                                std::span<const int64_t> indices, SourceLocation loc,
+                                Failure& failure) const;
+
+  std::array<double, kRParameters> r_{};
+  std::vector<Scope> scopes_{Scope{}};
+  uint32_t next_number_ = kFirstNumber + kRParameters;
+  // Number -> (name, the variable's first number): the main program's DEF'd variables.
+  std::vector<std::pair<std::string, const Variable*>> numbered_;
+};
+
+}  // namespace ncc::eval

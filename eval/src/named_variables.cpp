@@ -1,0 +1,176 @@
+#include "ncc/eval/named_variables.h"
+
+#include <cmath>
+
+#include "absl/strings/str_cat.h"
+#include "absl/strings/str_join.h"
+
+namespace ncc::eval {
+
+namespace {
+
+bool fail(Failure& failure, EvalError error, SourceLocation loc, std::string message) {
+  failure = {error, loc, std::move(message), 0};
+  return false;
+}
+
+const char* typeName(ast::DataType t) { return ast::kDataTypeNames[static_cast<size_t>(t)]; }
+
+// The value a variable of type `t` holds after `v` is written to it: INT rounds to the nearest
+// integer (Fundamentals, type conversion REAL -> INT), BOOL is 1 for any value but 0.
+double converted(ast::DataType t, double v) {
+  switch (t) {
+    case ast::DataType::Int: return std::round(v);
+    case ast::DataType::Bool: return v != 0.0 ? 1.0 : 0.0;
+    case ast::DataType::Char: return std::round(v);
+    default: return v;
+  }
+}
+
+}  // namespace
+
+std::optional<Value> NamedVariables::readR(int64_t n, SourceLocation loc, Failure& failure) const {
+  if (n < 0 || n >= kRParameters) {
+    fail(failure, EvalError::VariableNumber, loc,
+         absl::StrCat("R", n, ": R parameters are R0 to R", kRParameters - 1));
+    return std::nullopt;
+  }
+  return Value::of(r_[static_cast<size_t>(n)]);
+}
+
+bool NamedVariables::writeR(int64_t n, const Value& value, SourceLocation loc, Failure& failure) {
+  if (n < 0 || n >= kRParameters)
+    return fail(failure, EvalError::VariableNumber, loc,
+                absl::StrCat("R", n, ": R parameters are R0 to R", kRParameters - 1));
+  r_[static_cast<size_t>(n)] = value.arithmetic();
+  if (on_write) on_write(kFirstNumber + n, Value::of(value.arithmetic()), loc);
+  return true;
+}
+
+bool NamedVariables::define(std::string_view name, ast::DataType type,
+                            std::span<const int64_t> dims, std::optional<Value> initial,
+                            SourceLocation loc, Failure& failure) {
+  if (type == ast::DataType::String || type == ast::DataType::Axis ||
+      type == ast::DataType::Frame || type == ast::DataType::None)
+    return fail(failure, EvalError::NotSupported, loc,
+                absl::StrCat("DEF ", typeName(type), ": variables of type ", typeName(type),
+                             " are not supported yet (docs/din.md)"));
+  Scope& scope = scopes_.back();
+  const std::string key(name);
+  if (scope.variables.count(key))
+    return fail(failure, EvalError::TypeMismatch, loc,
+                absl::StrCat("'", key, "' is declared already"));
+  Variable v;
+  v.type = type;
+  v.rank = static_cast<int>(dims.size());
+  int64_t elements = 1;
+  for (size_t i = 0; i < dims.size(); ++i) {
+    if (dims[i] < 1 || dims[i] > kMaxElements)
+      return fail(failure, EvalError::ArrayIndex, loc,
+                  absl::StrCat("'", key, "': array dimension ", dims[i], " is not 1 to ",
+                               kMaxElements));
+    v.dims[i] = dims[i];
+    elements *= dims[i];
+    if (elements > kMaxElements)
+      return fail(failure, EvalError::ArrayIndex, loc,
+                  absl::StrCat("'", key, "': more than ", kMaxElements, " elements"));
+  }
+  const double start = initial ? converted(type, initial->arithmetic()) : 0.0;
+  v.values.assign(static_cast<size_t>(elements), start);
+  const bool main_level = scopes_.size() == 1;
+  if (main_level && next_number_ + static_cast<uint64_t>(elements) - 1 <= kLastNumber) {
+    v.first_number = next_number_;
+    next_number_ += static_cast<uint32_t>(elements);
+  }
+  auto [it, added] = scope.variables.emplace(key, std::move(v));
+  const Variable& stored = it->second;
+  if (stored.first_number != 0) {
+    numbered_.emplace_back(key, &stored);
+    if (on_write)
+      for (size_t i = 0; i < stored.values.size(); ++i)
+        on_write(stored.first_number + i, Value::of(stored.values[i]), loc);
+  }
+  return true;
+}
+
+NamedVariables::Variable* NamedVariables::lookup(std::string_view name) {
+  auto it = scopes_.back().variables.find(std::string(name));
+  return it == scopes_.back().variables.end() ? nullptr : &it->second;
+}
+
+const NamedVariables::Variable* NamedVariables::find(std::string_view name) const {
+  auto it = scopes_.back().variables.find(std::string(name));
+  return it == scopes_.back().variables.end() ? nullptr : &it->second;
+}
+
+std::optional<size_t> NamedVariables::element(std::string_view name, const Variable& v,
+                                              std::span<const int64_t> indices,
+                                              SourceLocation loc, Failure& failure) const {
+  if (static_cast<int>(indices.size()) != v.rank) {
+    fail(failure, EvalError::ArrayIndex, loc,
+         v.rank == 0 ? absl::StrCat("'", std::string(name), "' is not an array")
+                     : absl::StrCat("'", std::string(name), "' has ", v.rank, " dimension",
+                                    v.rank == 1 ? "" : "s", ", not ", indices.size()));
+    return std::nullopt;
+  }
+  size_t at = 0;
+  for (int i = 0; i < v.rank; ++i) {
+    // Indices count from 0 (Fundamentals, arrays: A[0] .. A[n-1]).
+    if (indices[i] < 0 || indices[i] >= v.dims[i]) {
+      fail(failure, EvalError::ArrayIndex, loc,
+           absl::StrCat("'", std::string(name), "': index ", indices[i], " is outside 0 to ", v.dims[i] - 1));
+      return std::nullopt;
+    }
+    at = at * static_cast<size_t>(v.dims[i]) + static_cast<size_t>(indices[i]);
+  }
+  return at;
+}
+
+std::optional<Value> NamedVariables::read(std::string_view name, std::span<const int64_t> indices,
+                                          SourceLocation loc, Failure& failure) const {
+  const Variable* v = find(name);
+  if (!v) {
+    fail(failure, EvalError::UndefinedName, loc, absl::StrCat("'", std::string(name), "' is not defined"));
+    return std::nullopt;
+  }
+  std::optional<size_t> at = element(name, *v, indices, loc, failure);
+  if (!at) return std::nullopt;
+  return Value::of(v->values[*at]);
+}
+
+bool NamedVariables::write(std::string_view name, std::span<const int64_t> indices,
+                           const Value& value, SourceLocation loc, Failure& failure) {
+  Variable* v = lookup(name);
+  if (!v) return fail(failure, EvalError::UndefinedName, loc, absl::StrCat("'", std::string(name), "' is not defined"));
+  std::optional<size_t> at = element(name, *v, indices, loc, failure);
+  if (!at) return false;
+  const double stored = converted(v->type, value.arithmetic());
+  v->values[*at] = stored;
+  if (v->first_number != 0 && on_write) on_write(v->first_number + *at, Value::of(stored), loc);
+  return true;
+}
+
+void NamedVariables::pushScope() { scopes_.emplace_back(); }
+
+void NamedVariables::popScope() {
+  if (scopes_.size() > 1) scopes_.pop_back();
+}
+
+std::string NamedVariables::nameOf(uint32_t n) const {
+  if (n >= kFirstNumber && n < kFirstNumber + kRParameters)
+    return absl::StrCat("R", n - kFirstNumber);
+  for (const auto& [name, v] : numbered_) {
+    if (n < v->first_number || n >= v->first_number + v->values.size()) continue;
+    if (v->rank == 0) return name;
+    size_t offset = n - v->first_number;
+    std::array<int64_t, 3> index{};
+    for (int i = v->rank - 1; i >= 0; --i) {
+      index[i] = static_cast<int64_t>(offset % static_cast<size_t>(v->dims[i]));
+      offset /= static_cast<size_t>(v->dims[i]);
+    }
+    return absl::StrCat(name, "[", absl::StrJoin(std::span(index.data(), v->rank), ","), "]");
+  }
+  return "";
+}
+
+}  // namespace ncc::eval
