@@ -33,6 +33,7 @@ item
     | name EQUALS expr                                   # assignItem
     | IDENT sign=(PLUS | MINUS) NUMBER                   # signedWordItem
     | WORD                                               # wordItem
+    | WORDS                                              # wordsItem
     | IDENT LPAREN arguments RPAREN                      # callItem
     | IDENT                                              # nameItem
     ;
@@ -179,8 +180,11 @@ B_AND : 'B_AND' ;
 B_NOT : 'B_NOT' ;
 
 // An address letter and its number: `X100`, `G1`, `N10`, `R1`, `X-` is IDENT and a sign.
-WORD  : [A-Z] ([0-9]+ ('.' [0-9]*)? | '.' [0-9]+) ;
+// Several written without blanks (`G1X10.Y5`) are WORDS; a name (`MA1`, `POSITION1`) is IDENT.
+WORD  : [A-Z] NUMBER_TEXT ;
+WORDS : ([A-Z] NUMBER_TEXT)+ ;
 IDENT : [A-Z_$] [A-Z0-9_]* ;
+fragment NUMBER_TEXT : [0-9]+ ('.' [0-9]*)? | '.' [0-9]+ ;
 
 EQEQ      : '==' ;
 NOTEQ     : '<>' ;

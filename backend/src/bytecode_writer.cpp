@@ -63,7 +63,7 @@ void BytecodeWriter::accept(ir::Block&& block) {
 void BytecodeWriter::encode(const ir::Operation& op, const ir::Block& block) {
   if (const auto* prepare = std::get_if<ir::Prepare>(&op)) blocks_ = prepare->store;
   if (const auto* set = std::get_if<ir::SetVariable>(&op); set && !set->name.empty())
-    variable_names_.try_emplace(set->number, set->name);
+    variable_names_.try_emplace(set->number, set->name.str());
   const EncodedOperation code = encodeOperation(op, block, machine_);
   if (code.error) {
     error(code.error->first, block.loc, code.error->second);

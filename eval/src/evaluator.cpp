@@ -255,19 +255,22 @@ bool Evaluator::Impl::wordValue(const ast::Word& w, ast::Block& out, bool din) {
     return false;
   }
   // A computed value is a number in the input unit, as if written with its decimal point;
-  // an integer address takes it as the integer it is.
+  // an integer address takes it as the integer it is. Built in place: this runs for every
+  // computed word of every loop turn.
   ast::Word& computed = out.words.emplace_back();
   computed.address = w.address;
   computed.loc = w.loc;
-  computed.value = ast::Expr::literal(std::abs(a->value), shape == AddressShape::Real, w.value.loc);
+  ast::Expr* number = &computed.value;
   if (a->value < 0) {
-    ast::Expr neg;
-    neg.kind = ast::Expr::Kind::Unary;
-    neg.op = ast::Op::Minus;
-    neg.loc = computed.value.loc;
-    neg.args.push_back(std::move(computed.value));
-    computed.value = std::move(neg);
+    computed.value.kind = ast::Expr::Kind::Unary;
+    computed.value.op = ast::Op::Minus;
+    computed.value.loc = w.value.loc;
+    number = &computed.value.args.emplace_back();
   }
+  number->kind = ast::Expr::Kind::Number;
+  number->number = std::abs(a->value);
+  number->has_point = shape == AddressShape::Real;
+  number->loc = w.value.loc;
   return true;
 }
 

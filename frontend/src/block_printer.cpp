@@ -37,7 +37,8 @@ class Printer {
   // An expression without the brackets a binary operation would get at top level.
   std::string bare(const ast::Expr& e) const {
     if (e.kind != ast::Expr::Kind::Binary || e.args.size() != 2) return print(e);
-    const char* space = ast::isWordOperator(e.op) ? " " : "";
+    const bool symbol = din_ && e.op >= ast::Op::Eq && e.op <= ast::Op::Le;  // DIN's `==` `<`
+    const char* space = ast::isWordOperator(e.op) && !symbol ? " " : "";
     return absl::StrCat(print(e.args[0]), space, op(e.op), space, print(e.args[1]));
   }
 

@@ -36,7 +36,8 @@ struct BlockReader::Impl {
   Language language;
   BlockCursor cursor;
   IsoBlockParser parser;
-  DinBlockParser din;
+  // Made at the first DIN block: an ISO program does not pay for the DIN grammar's set-up.
+  std::unique_ptr<DinBlockParser> din;
   ReaderStats stats;
   BlockPosition last;  // of the block last returned
 };
@@ -68,7 +69,8 @@ bool BlockReader::next(ast::Block& out) {
     bool read = false;
     if (r.language == Language::Din) {
       if (isBlankText(segment)) continue;  // a DIN comment line
-      read = readDin(r.parser, r.din, segment, where, r.diags, out);
+      if (!r.din) r.din = std::make_unique<DinBlockParser>();
+      read = readDin(r.parser, *r.din, segment, where, r.diags, r.options.parser, out);
     } else {
       read = r.parser.parse(segment, where, r.diags, r.options.parser, out, &fast);
     }

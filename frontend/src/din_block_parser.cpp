@@ -49,20 +49,8 @@ ast::DataType typeNamed(std::string_view name) {
   return ast::DataType::None;
 }
 
-// An identifier of address words written without blanks (`G1X10`): letters each followed by
-// digits. Such text is words, not a subprogram name.
-bool isRunOfWords(std::string_view s) {
-  if (s.empty()) return false;
-  size_t i = 0;
-  while (i < s.size()) {
-    if (s[i] < 'A' || s[i] > 'Z') return false;
-    ++i;
-    const size_t digits = i;
-    while (i < s.size() && isDigit(s[i])) ++i;
-    if (i == digits) return false;
-  }
-  return true;
-}
+// Variable names: letters, digits and '_', at most 31 (Fundamentals, variable names).
+constexpr size_t kMaxNameLength = 31;
 
 // R parameters are `R` and a number (R0 .. R99 on a standard 840D; machine data raises it).
 bool isRParameter(std::string_view s) {
@@ -228,23 +216,21 @@ class Builder {
       jump(s, ig->jump(), ig->jumpTarget());
     } else if (auto* c = dynamic_cast<DinParser::CallItemContext*>(ctx)) {
       call(b, c->IDENT()->getSymbol(), c->arguments());
+    } else if (auto* ws = dynamic_cast<DinParser::WordsItemContext*>(ctx)) {
+      wordsRun(b, ws->WORDS()->getSymbol(), first);
     } else if (auto* n = dynamic_cast<DinParser::NameItemContext*>(ctx)) {
-      const Token* t = n->IDENT()->getSymbol();
-      if (isRunOfWords(upper(t))) {
-        wordsRun(b, t, first);
-      } else {
-        call(b, t, nullptr);
-      }
+      call(b, n->IDENT()->getSymbol(), nullptr);
     } else if (auto* m = dynamic_cast<DinParser::MainBlockItemContext*>(ctx)) {
       // A main block `:10` is numbered like an N block (Fundamentals, block structure).
       sequence(b, at(m->COLON()), upper(m->NUMBER()));
     }
   }
 
-  // `X100`, `G1`, `N10`: a letter and its number. The first N of a block is its number.
+  // `X100`, `G1`, `N10`: a letter and its number. N numbers the block: it comes first.
   void word(ast::Block& b, const Token* t, bool first) {
     std::string_view text = upper(t);
-    if (text[0] == 'N' && first) {
+    if (text[0] == 'N') {
+      numberFirst(b, at(t), first);
       sequence(b, at(t), text.substr(1));
       return;
     }
@@ -254,16 +240,17 @@ class Builder {
     w.value = literal(t, 1, nullptr).expr;
   }
 
-  // `G1X10`: one identifier of several words.
+  // `G1X10.Y5`: words without blanks between them.
   void wordsRun(ast::Block& b, const Token* t, bool first) {
     std::string_view text = upper(t);
     size_t i = 0;
     while (i < text.size()) {
       size_t end = i + 1;
-      while (end < text.size() && isDigit(text[end])) ++end;
+      while (end < text.size() && (isDigit(text[end]) || text[end] == '.')) ++end;
       const SourceLocation where = at(t->getStartIndex() + i);
       std::string_view digits = text.substr(i + 1, end - i - 1);
-      if (text[i] == 'N' && first && i == 0) {
+      if (text[i] == 'N') {
+        numberFirst(b, where, first && i == 0);
         sequence(b, where, digits);
       } else {
         ast::Word& w = b.words.emplace_back();
@@ -273,6 +260,12 @@ class Builder {
       }
       i = end;
     }
+  }
+
+  void numberFirst(const ast::Block& b, SourceLocation where, bool first) {
+    if (b.sequence) fail(codes::kDuplicateNumber, where, "second block number in one block");
+    if (!first)
+      fail(codes::kUnexpectedToken, where, "a block number 'N' must start the block");
   }
 
   void sequence(ast::Block& b, SourceLocation where, std::string_view digits) {
@@ -360,9 +353,10 @@ class Builder {
       s.loc = at(def->IDENT());
       s.type = type;
       s.target = name(def->IDENT()->getSymbol());
-      if (isRParameter(upper(def->IDENT())))
+      if (s.target.text->size() > kMaxNameLength)
         fail(codes::kUnexpectedToken, at(def->IDENT()),
-             absl::StrCat("'", str(upper(def->IDENT())), "' is an R parameter, not a new name"));
+             absl::StrCat("'", *s.target.text, "': a name has at most ", kMaxNameLength,
+                          " characters"));
       std::vector<DinParser::ExprContext*> exprs = def->expr();
       const size_t dims = exprs.size() - (def->EQUALS() ? 1 : 0);
       if (dims > 3)
@@ -606,6 +600,29 @@ class Builder {
   DiagnosticEngine& diags_;
 };
 
+// The program header a Sinumerik file starts with, `%_N_NAME_MPF` or `%_N_NAME_SPF` (the
+// cycles notes §2: `%_N_MYKONTUR_SPF`), or a bare `%`: a tape mark block with the header kept
+// as its comment. Anything else after a '%' is left to the parser, which refuses it.
+bool readHeader(std::string_view text, SourceLocation start, ast::Block& out) {
+  size_t i = 0;
+  while (i < text.size() && isBlank(text[i])) ++i;
+  if (i == text.size() || text[i] != '%') return false;
+  size_t end = text.size();
+  while (end > i && isBlank(text[end - 1])) --end;
+  const std::string_view header = text.substr(i + 1, end - i - 1);
+  const bool bare = header.empty();
+  const bool named = header.size() > 7 && header.substr(0, 3) == "_N_" &&
+                     std::all_of(header.begin(), header.end(), [](char c) {
+                       return isLetter(c) || isDigit(c) || c == '_';
+                     });
+  if (!bare && !named) return false;
+  out.loc = start;
+  out.language = Language::Din;
+  out.percent = true;
+  if (named) out.comments.emplace_back(header);
+  return true;
+}
+
 }  // namespace
 
 struct DinBlockParser::Engine {
@@ -643,9 +660,10 @@ bool DinBlockParser::parse(std::string_view text, SourceLocation start, Diagnost
   e.tokens.setTokenSource(&e.lexer);
   e.tokens.fill();
 
+  out = ast::Block{};
+  if (readHeader(text, start, out)) return true;
   Builder builder(text, e.upper, start, diags);
   bool ok = true;
-  out = ast::Block{};
   try {
     builder.checkTokens(e.tokens.getTokens());
     DinParser::BlockContext* tree = e.run(antlr4::atn::PredictionMode::SLL);

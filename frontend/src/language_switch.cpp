@@ -1,5 +1,6 @@
 #include "language_switch.h"
 
+#include "lexical.h"
 #include "ncc/support/diagnostics.h"
 
 namespace ncc::frontend {
@@ -11,10 +12,19 @@ bool isLiteralG(const ast::Word& w, double code) {
          !w.value.has_point;
 }
 
-bool isPlainDin(const ast::Block& b) {
+// What the DIN parser reads as the ISO fast path did: words of a letter and a number written
+// right after it (`G 90` is ISO only), an N only as the first word.
+bool isPlainDin(const ast::Block& b, std::string_view text) {
   if (!b.statements.empty() || !b.comments.empty() || b.program_number || b.percent) return false;
-  for (const ast::Word& w : b.words)
+  for (const ast::Word& w : b.words) {
     if (w.address.size() != 1) return false;  // `,C`: an ISO corner word
+    if (w.value.loc.column != w.loc.column + 1) return false;
+  }
+  if (b.sequence) {
+    size_t i = 0;
+    while (i < text.size() && (isBlank(text[i]) || text[i] == '/' || isDigit(text[i]))) ++i;
+    if (i + 1 >= text.size() || upperAscii(text[i]) != 'N' || !isDigit(text[i + 1])) return false;
+  }
   return true;
 }
 
@@ -25,15 +35,16 @@ bool readPlainDin(IsoBlockParser& parser, std::string_view text, SourceLocation 
   DiagnosticEngine scratch;
   bool fast = false;
   if (!parser.parse(text, start, scratch, ParserChoice::Auto, out, &fast) || !fast ||
-      !isPlainDin(out))
+      !isPlainDin(out, text))
     return false;
   out.language = Language::Din;
   return true;
 }
 
 bool readDin(IsoBlockParser& iso, DinBlockParser& din, std::string_view text,
-             SourceLocation start, DiagnosticEngine& diags, ast::Block& out) {
-  return readPlainDin(iso, text, start, out) || din.parse(text, start, diags, out);
+             SourceLocation start, DiagnosticEngine& diags, ParserChoice choice, ast::Block& out) {
+  return (choice == ParserChoice::Auto && readPlainDin(iso, text, start, out)) ||
+         din.parse(text, start, diags, out);
 }
 
 Language languageAfter(const ast::Block& b, Language now) {
@@ -46,12 +57,15 @@ Language languageAfter(const ast::Block& b, Language now) {
 Language languageAfterText(std::string_view text, Language now) {
   if (text.find("29") == std::string_view::npos) return now;
   thread_local IsoBlockParser parser;
-  thread_local DinBlockParser din;
   DiagnosticEngine scratch;
   ast::Block b;
-  const bool read = now == Language::Iso
-                        ? parser.parse(text, SourceLocation{}, scratch, ParserChoice::Auto, b)
-                        : readDin(parser, din, text, SourceLocation{}, scratch, b);
+  bool read = false;
+  if (now == Language::Iso) {
+    read = parser.parse(text, SourceLocation{}, scratch, ParserChoice::Auto, b);
+  } else {
+    thread_local DinBlockParser din;  // made at the first DIN text
+    read = readDin(parser, din, text, SourceLocation{}, scratch, ParserChoice::Auto, b);
+  }
   return read ? languageAfter(b, now) : now;  // a block the reader skips switches nothing
 }
 

@@ -20,9 +20,10 @@ namespace ncc::frontend {
 bool readPlainDin(IsoBlockParser& parser, std::string_view text, SourceLocation start,
                   ast::Block& out);
 
-// A DIN block: the fast path, else the DIN parser (which reports what it cannot read).
+// A DIN block: the fast path (with ParserChoice::Auto), else the DIN parser (which reports
+// what it cannot read).
 bool readDin(IsoBlockParser& iso, DinBlockParser& din, std::string_view text,
-             SourceLocation start, DiagnosticEngine& diags, ast::Block& out);
+             SourceLocation start, DiagnosticEngine& diags, ParserChoice choice, ast::Block& out);
 
 // The language after `block`, a block read in `now`.
 Language languageAfter(const ast::Block& block, Language now);

@@ -149,7 +149,7 @@ struct OperationPrinter {
     return out;
   }
   std::string operator()(const SetVariable& v) const {
-    return absl::StrCat("set ", v.name.empty() ? absl::StrCat("#", v.number) : v.name, " = ",
+    return absl::StrCat("set ", v.name.empty() ? absl::StrCat("#", v.number) : v.name.str(), " = ",
                         v.vacant ? "vacant" : num(v.value));
   }
 };

@@ -325,7 +325,7 @@ void Lowering::variablesWritten(SourceLocation loc, std::vector<ir::SetVariable>
   out.modal = st.cs().modal;
   out.modal.work_offset = st.cs().work_name;
   out.frame = frameOf(st.cs(), st.table->behaviour);
-  out.ops.assign(writes.begin(), writes.end());
+  out.ops.assign(std::make_move_iterator(writes.begin()), std::make_move_iterator(writes.end()));
   out.comp = compensationInForce(st, st.cs(), loc);
   st.out.accept(std::move(out));
 }

@@ -66,19 +66,25 @@ BlockLoop::BlockLoop(const Settings& settings, eval::ProgramStore& store, uint32
   // value: a loop of assignments that runs a million turns adds nothing per turn.
   variables_.on_write = [this](int64_t n, const eval::Value& v, SourceLocation loc) {
     if (n <= 0 || n > eval::NamedVariables::kLastNumber) return;
-    std::string name;
-    if (n >= bytecode::kDefaultVariableCount) {
-      name = variables_.named().nameOf(static_cast<uint32_t>(n));
-      if (name.empty()) return;
+    const uint32_t number = static_cast<uint32_t>(n);
+    auto [it, added] = write_index_.try_emplace(number, writes_.size());
+    if (added) {
+      ir::SetVariable& write = writes_.emplace_back();
+      write.number = number;
+      // A DIN variable's name, looked up once per block of writes.
+      if (number >= bytecode::kDefaultVariableCount) {
+        write.name = variables_.named().nameOf(number);
+        if (write.name.empty()) {
+          writes_.pop_back();
+          write_index_.erase(it);
+          return;
+        }
+      }
     }
     writes_loc_ = loc;
-    const ir::SetVariable write{static_cast<uint32_t>(n), v.vacant ? 0.0 : v.number, v.vacant,
-                                std::move(name)};
-    auto [it, added] = write_index_.try_emplace(write.number, writes_.size());
-    if (added)
-      writes_.push_back(write);
-    else
-      writes_[it->second] = write;
+    ir::SetVariable& write = writes_[it->second];
+    write.value = v.vacant ? 0.0 : v.number;
+    write.vacant = v.vacant;
   };
   const MachineConfig& machine = *settings.machine;
   eval::EvaluatorOptions options;

@@ -56,9 +56,12 @@ Run read(const SourceManager& sm, uint32_t file, ReaderOptions options) {
 }
 
 // Compares the two paths on one source; returns how many blocks the fast path read.
-uint64_t expectSamePaths(const SourceManager& sm, uint32_t file, bool semicolon_ends_block) {
+uint64_t expectSamePaths(const SourceManager& sm, uint32_t file, bool semicolon_ends_block,
+                         Language language = Language::Iso) {
   ReaderOptions fast, antlr;
   fast.semicolon_ends_block = antlr.semicolon_ends_block = semicolon_ends_block;
+  fast.initial_language = antlr.initial_language = language;
+  fast.language_switch = antlr.language_switch = language == Language::Din;
   antlr.parser = ParserChoice::AntlrOnly;
   Run a = read(sm, file, fast);
   Run b = read(sm, file, antlr);
@@ -91,6 +94,10 @@ TEST(Differential, EveryCorpusAndConformanceFile) {
     const uint32_t f = sm.addFile(path);
     fast_blocks += expectSamePaths(sm, f, true);
     fast_blocks += expectSamePaths(sm, f, false);
+    // Siemens programs in DIN too: the ISO fast path reads its plain word blocks for DIN.
+    const std::string ext = path.extension().string();
+    if (ext == ".mpf" || ext == ".spf" || ext == ".MPF" || ext == ".SPF")
+      expectSamePaths(sm, f, false, Language::Din);
   }
   // The comparison means something only if the fast path did the bulk of the work.
   EXPECT_GT(fast_blocks, 100'000u);
@@ -117,6 +124,26 @@ TEST(Differential, TrickyLines) {
   const uint32_t f = sm.addBuffer("tricky.nc", all);
   EXPECT_GT(expectSamePaths(sm, f, true), 10u);
   expectSamePaths(sm, f, false);
+  expectSamePaths(sm, f, false, Language::Din);
+}
+
+// Lines a DIN reader meets: the fast path may take only those the DIN parser reads alike.
+TEST(Differential, TrickyDinLines) {
+  const char* lines[] = {
+      "N10 G1 X10 Y-5.5 F200", "G1X10Y20", "X-10", "X - 10", "X.5", "X10.", "N10", "N10 N20",
+      "R1=5", "R1 X1", "R10", "X1 N20", "N10 N20", "X=R1", "MA1: X1", "N20 MA1: G0 X1", ":10 X1", "/1 X1", "/ X1",
+      "/12 X1", "x1 y2", "T1 D1 M6", "S1000 M3", "G4 F2", "CR=25", "X1=10", "X1.5=3", "A=ACP(5)",
+      "DEF INT A=1, B", "IF R1>2 GOTOB MA1", "GOTOF END", "GOTO N10", "GOTOC 20", "F(1,,3)",
+      "POSITION1 (10, 20)", "MYSUB", "T=\"DRILL\"", "X=(1+2)*3", "X=-(1)", "X=--1", "NOT 1",
+      "X=1 DIV 2 MOD 3", "X=1<2", "X=1<<2", "WHILE 1", "IF 1", "ENDIF", "X=SIN(30)", "X=SIN()",
+      "X=FOO(1)", "X=\"", "%_N_MAIN_MPF", "X1 @", "X\xC3\xA9", "G0 X1 Y2 Z3 A4 B5 C6",
+      "M17", "M30", "G291", "G290", "N99999999999999999999 X1", "X99999999999999999999",
+  };
+  SourceManager sm;
+  std::string all;
+  for (const char* l : lines) absl::StrAppend(&all, l, "\n");
+  const uint32_t f = sm.addBuffer("tricky.mpf", all);
+  expectSamePaths(sm, f, false, Language::Din);
 }
 
 }  // namespace

@@ -1,5 +1,5 @@
 // libFuzzer target: arbitrary bytes through the BlockReader (both ';' rules, both parser
-// choices, a DIN switch) and printBlock. It must never crash, and the two parser choices must
+// choices, a DIN switch, and a file that starts in DIN: the DIN grammar) and printBlock. It must never crash, and the two parser choices must
 // agree, which extends the differential test of the fast path to fuzz inputs.
 #include <cstddef>
 #include <cstdint>
@@ -44,5 +44,14 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     Outcome b = readAll(sources, file, antlr);
     if (a.blocks != b.blocks || a.diagnostics != b.diagnostics) std::abort();  // paths disagree
   }
+  // siemens-din: the file starts in DIN (the DIN parser; the ISO fast path for plain words).
+  ncc::frontend::ReaderOptions fast, antlr;
+  fast.semicolon_ends_block = antlr.semicolon_ends_block = false;
+  fast.language_switch = antlr.language_switch = true;
+  fast.initial_language = antlr.initial_language = ncc::frontend::Language::Din;
+  antlr.parser = ncc::frontend::ParserChoice::AntlrOnly;
+  Outcome a = readAll(sources, file, fast);
+  Outcome b = readAll(sources, file, antlr);
+  if (a.blocks != b.blocks || a.diagnostics != b.diagnostics) std::abort();  // paths disagree
   return 0;
 }

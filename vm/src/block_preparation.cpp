@@ -56,7 +56,7 @@ struct BlockPreparation::Impl final : passes::RunTimeState, ir::BlockSink {
     const SourcePosition where = block.loc;
     for (const ir::Operation& op : block.ops) {
       if (const auto* set = std::get_if<ir::SetVariable>(&op); set && !set->name.empty())
-        variable_names.try_emplace(set->number, set->name);
+        variable_names.try_emplace(set->number, set->name.str());
       if (std::holds_alternative<ir::Prepare>(op)) {
         fail("NCC9001", where, "internal error: a block prepared at run time asks to be prepared at run time");
         return;

@@ -165,9 +165,10 @@ struct SetVariable {
   uint32_t number = 0;
   double value = 0.0;
   bool vacant = false;  // `#100 = #0`: the variable becomes vacant again
-  // A DIN variable's name (`R10`, `COUNT`, `A[1]`; eval/named_variables.h), which the bytecode
-  // keeps for printing; empty for `#n`.
-  std::string name;
+  // A DIN variable's name (`R10`, `COUNT`, `A[1,2]`; eval/named_variables.h), which the
+  // bytecode keeps for printing; empty for `#n`. Inline, so that the op copies as bytes: a name
+  // is at most 31 characters and 3 indices.
+  InlineString<55> name;
 };
 
 // The rest of the program is prepared while it runs (docs/runtime.md): a value it needs is

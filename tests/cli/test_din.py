@@ -1,0 +1,193 @@
+#!/usr/bin/env python3
+"""The Siemens DIN language end to end (docs/din.md): programs run with `ncc run` and their
+moves, variables and alarms are checked against values worked out by hand. ctest runs the file
+twice, the second time with every command also run with --defer (cli_harness.run_ncc).
+
+Run by ctest as: test_din.py NCC_BINARY
+"""
+import json
+import re
+import sys
+import unittest
+
+from cli_harness import ScratchDirTest, run_ncc
+
+NCC = None
+DIAGNOSTIC = re.compile(r"^(?P<file>[^:\s]+):(?P<line>\d+):(?P<col>\d+): (?P<severity>error|warning)\[(?P<code>[^\]]+)\]: (?P<message>.*)$")
+
+
+def ncc(*args, cwd=None):
+    return run_ncc(NCC, args, cwd=cwd, timeout=120)
+
+
+def errors(stderr):
+    return [m.groupdict() for m in map(DIAGNOSTIC.match, stderr.splitlines()) if m and m["severity"] == "error"]
+
+
+class DinTest(ScratchDirTest):
+    def run_din(self, text, name="p.mpf", *extra):
+        path = self.write(name, text)
+        moves = ncc("run", path, "--emit=moves", *extra)
+        return moves, [json.loads(line) for line in moves.stdout.splitlines() if line.strip()]
+
+    def variables(self, text, name="p.mpf"):
+        proc = ncc("run", self.write(name, text), "--emit=vars")
+        self.assertEqual(proc.returncode, 0, proc.stderr)
+        return json.loads(proc.stdout)
+
+    def assertAlarm(self, text, code, line, col=None, message=None):
+        proc = ncc("run", self.write("p.mpf", text), "--emit=moves")
+        self.assertNotEqual(proc.returncode, 0, proc.stdout)
+        found = errors(proc.stderr)
+        self.assertTrue(found, proc.stderr)
+        self.assertEqual(found[0]["code"], code, proc.stderr)
+        self.assertEqual(int(found[0]["line"]), line, proc.stderr)
+        if col is not None:
+            self.assertEqual(int(found[0]["col"]), col, proc.stderr)
+        if message is not None:
+            self.assertIn(message, found[0]["message"])
+        return proc
+
+    # ---- values and variables -----------------------------------------------------------
+
+    def test_operator_priority_as_the_manual_lists_it(self):
+        # Fundamentals "priority of the operations": * / DIV MOD before + -, left to right.
+        proc, moves = self.run_din(
+            "G0 X=2+3*4\nX=10-6/2\nX=2+6 DIV 4\nX=1+7 MOD 4\nX=(2+3)*4\nX=2*-3\nX=100-10*2+5\nM30\n")
+        self.assertEqual(proc.returncode, 0, proc.stderr)
+        self.assertEqual([m["to"]["X"] for m in moves], [14.0, 7.0, 3.0, 4.0, 20.0, -6.0, 85.0])
+
+    def test_functions_and_logic(self):
+        vars_ = self.variables(
+            "R1=SQRT(16)+ABS(-2)+POT(3)\n"      # 4 + 2 + 9
+            "R2=TRUNC(-2.7)+ROUND(2.5)\n"       # -2 + 3
+            "R3=ATAN2(1,-1)\n"                  # 135 degrees
+            "R4=MINVAL(3,-1)*10+MAXVAL(3,-1)\n"  # -10 + 3
+            "R5=(1<2) AND (5==5)\n"             # logic AND of two truths
+            "R6=6 AND 1\n"                      # DIN's AND is logic: true
+            "R7=6 B_AND 3\n"                    # bits: 2
+            "R8=NOT (1>2)\n"
+            "R9=7 DIV 2\n"
+            "R10=2<>2 OR 1==1\n"                # comparisons bind last: 2 <> (2 OR 1) == 1
+            "M30\n")
+        self.assertEqual(vars_["R1"], 15.0)
+        self.assertEqual(vars_["R2"], 1.0)
+        self.assertAlmostEqual(vars_["R3"], 135.0)
+        self.assertEqual(vars_["R4"], -7.0)
+        self.assertEqual(vars_["R5"], 1.0)
+        self.assertEqual(vars_["R6"], 1.0)
+        self.assertEqual(vars_["R7"], 2.0)
+        self.assertEqual(vars_["R8"], 1.0)
+        self.assertEqual(vars_["R9"], 3.0)
+        self.assertEqual(vars_["R10"], 1.0)
+
+    def test_def_types_arrays_and_case(self):
+        vars_ = self.variables(
+            "DEF INT I=2.6, J\n"          # INT rounds: 3; J starts at 0
+            "DEF BOOL B=5\n"              # BOOL: 1
+            "DEF REAL A[2,3]\n"
+            "A[1,2]=I*10 a[0,0]=-1\n"     # names are case-insensitive
+            "j=A[1,2]+1\n"
+            "R[J-30]=A[0,0]\n"            # R[expr]
+            "M30\n")
+        self.assertEqual(vars_["I"], 3.0)
+        self.assertEqual(vars_["J"], 31.0)
+        self.assertEqual(vars_["B"], 1.0)
+        self.assertEqual(vars_["A[1,2]"], 30.0)
+        self.assertEqual(vars_["A[0,0]"], -1.0)
+        self.assertEqual(vars_["A[0,1]"], 0.0)
+        self.assertEqual(vars_["R1"], -1.0)
+
+    def test_a_block_runs_left_to_right(self):
+        # R2 sees the R1 written before it in the same block; X the R1 of this block.
+        proc, moves = self.run_din("R1=5 R2=R1*2 G0 X=R1+R2\nR1=1 X=R1 R1=7\nM30\n")
+        self.assertEqual(proc.returncode, 0, proc.stderr)
+        self.assertEqual([m["to"]["X"] for m in moves], [15.0, 1.0])
+
+    # ---- jumps ------------------------------------------------------------------------------
+
+    def test_gotof_gotob_goto_gotoc_and_block_numbers(self):
+        # A loop by label (GOTOB), jumps forward past blocks (GOTOF to a label and to N90),
+        # GOTOC to a missing label falls through, GOTO searches forward then from the start.
+        program = (
+            "N10 R1=30 R2=10 R4=3\n"
+            "N20 GOTOF MIDDLE\n"
+            "N30 G0 X=999\n"
+            "N40 REPEAT_HERE: G0 X=R1\n"
+            "N50 R1=R1+R2 R4=R4-1\n"
+            "N60 IF R4>0 GOTOB REPEAT_HERE\n"
+            "N70 GOTOF N90\n"
+            "N80 G0 X=999\n"
+            "N90 GOTOC NOWHERE\n"
+            "N100 GOTO FINISH\n"
+            "N110 G0 X=999\n"
+            "N120 FINISH: M30\n"
+            "MIDDLE: G0 Y=1\n"
+            "GOTOB REPEAT_HERE\n")
+        proc, moves = self.run_din(program)
+        self.assertEqual(proc.returncode, 0, proc.stderr)
+        self.assertEqual([(m["to"]["X"], m["to"]["Y"]) for m in moves],
+                         [(0.0, 1.0), (30.0, 1.0), (40.0, 1.0), (50.0, 1.0)])
+
+    def test_goto_loop_back_over_a_g291_switch_in_iso_mode(self):
+        # siemens-iso-m: a DIN loop after G290 that jumps back, then ISO again after G291.
+        program = ("G90 G0 X1. Y1.\n"
+                   "G290\n"
+                   "DEF INT K=0\n"
+                   "LOOP1: K=K+1 G0 X=K*10\n"
+                   "IF K<3 GOTOB LOOP1\n"
+                   "G291\n"
+                   "G0 Y5.\n"
+                   "M30\n")
+        path = self.write("iso.nc", program)
+        proc = ncc("run", path, "--dialect", "siemens-iso-m", "--emit=moves")
+        self.assertEqual(proc.returncode, 0, proc.stderr)
+        moves = [json.loads(line) for line in proc.stdout.splitlines()]
+        self.assertEqual([(m["to"]["X"], m["to"]["Y"]) for m in moves],
+                         [(1.0, 1.0), (10.0, 1.0), (20.0, 1.0), (30.0, 1.0), (30.0, 5.0)])
+
+    # ---- alarms at their block ----------------------------------------------------------
+
+    def test_alarms_carry_the_sinumerik_numbers_and_positions(self):
+        self.assertAlarm("G0 X1\nR1=UNKNOWN+1\nM30\n", "12550", 2, 4, "'UNKNOWN' is not defined")
+        self.assertAlarm("DEF REAL A[3]\nA[3]=1\nM30\n", "17020", 2, None, "index 3 is outside 0 to 2")
+        self.assertAlarm("N10 G0 X1\nGOTOB NOWHERE\nM30\n", "14080", 2, 1, "label NOWHERE")
+        self.assertAlarm("N10 GOTOF N5\nN5 X1\nM30\n".replace("N5 X1", "N6 X1"), "14080", 1, 5)
+        self.assertAlarm("DEF INT A\nDEF REAL A\nM30\n", "12150", 2, 10, "declared already")
+        self.assertAlarm("R1=1/0\nM30\n", "NCC2402", 1)
+
+    def test_what_is_not_built_yet_is_refused_at_its_position(self):
+        self.assertAlarm("G0 X1\nWHILE R1<3\nENDWHILE\nM30\n", "NCC1090", 2, 1, "'WHILE'")
+        self.assertAlarm("G0 X=IC(5)\nM30\n", "NCC1090", 1, 6, "function 'IC'")
+        self.assertAlarm("G0 X1\nMYSUB\nM30\n", "NCC2010", 2, 1, "MYSUB")
+        self.assertAlarm("DEF STRING[8] S\nM30\n", "NCC2010", 1, 15, "STRING")
+
+    def test_syntax_errors_name_the_place(self):
+        self.assertAlarm("G0 X1\nX=(1+2\nM30\n", "NCC1003", 2, 3)
+        self.assertAlarm("DEF FOO A\nM30\n", "NCC1019", 1, 5, "unknown type 'FOO'")
+        self.assertAlarm("X=\"abc\nM30\n", "NCC1018", 1, 3)
+        self.assertAlarm("X=SIN(1,2)\nM30\n", "NCC1011", 1, 3)
+        self.assertAlarm("G0 X1 @\nM30\n", "NCC1001", 1, 7)
+
+    def test_nothing_is_written_after_an_alarm(self):
+        path = self.write("p.mpf", "G0 X1\nR1=NOPE\nM30\n")
+        out = self.path("p.ncb")
+        proc = ncc("compile", path, "-o", out)
+        self.assertNotEqual(proc.returncode, 0)
+        import os
+        self.assertFalse(os.path.exists(out))
+
+    def test_bytecode_keeps_the_names(self):
+        path = self.write("p.mpf", "DEF REAL SUM=1.5\nR7=2\nG0 X=SUM\nM30\n")
+        out = self.path("p.ncb")
+        self.assertEqual(ncc("compile", path, "-o", out).returncode, 0)
+        dis = ncc("dis", out)
+        self.assertIn("; variable   #10007 R7", dis.stdout)
+        self.assertIn("; variable   #11000 SUM", dis.stdout)
+        proc = ncc("run", out, "--emit=vars")
+        self.assertEqual(json.loads(proc.stdout), {"R7": 2.0, "SUM": 1.5})
+
+
+if __name__ == "__main__":
+    NCC = sys.argv.pop(1)
+    unittest.main(verbosity=2)

@@ -1,0 +1,153 @@
+// The DIN parser (grammar/Din.g4, frontend/src/din_block_parser.cpp): the tree of each
+// construct, printed (block_printer.cpp), and the diagnostic of each kind of bad text.
+#include <gtest/gtest.h>
+
+#include "din_block_parser.h"
+#include "ncc/frontend/block_reader.h"
+
+namespace ncc::frontend {
+namespace {
+
+struct Parsed {
+  bool ok = false;
+  ast::Block block;
+  std::string diagnostics;
+};
+
+Parsed parse(std::string_view text) {
+  SourceManager sm;
+  const uint32_t f = sm.addBuffer("p.mpf", std::string(text));
+  DiagnosticEngine diags(&sm);
+  DinBlockParser parser;
+  Parsed p;
+  p.ok = parser.parse(text, SourceLocation{f, 1, 1}, diags, p.block);
+  for (const Diagnostic& d : diags.diagnostics()) p.diagnostics += diags.format(d) + "\n";
+  return p;
+}
+
+std::string printed(std::string_view text) {
+  Parsed p = parse(text);
+  EXPECT_TRUE(p.ok) << text << "\n" << p.diagnostics;
+  EXPECT_EQ(p.block.language, Language::Din);
+  return printBlock(p.block);
+}
+
+TEST(DinParser, WordsAndAddressesWithValues) {
+  EXPECT_EQ(printed("N10 G1 X10 Y-5.5 F200"), "N10 G1 X10 Y-5.5 F200");
+  EXPECT_EQ(printed("g1x10y20"), "G1 X10 Y20");  // words without blanks, any case
+  EXPECT_EQ(printed("X=R1+5 CR=25 X1=-3"), "X=R1+5 CR=25 X1=-3");
+  EXPECT_EQ(printed("X=2+3*4"), "X=2+(3*4)");  // * before +
+  EXPECT_EQ(printed("X=(2+3)*4"), "X=(2+3)*4");
+  EXPECT_EQ(printed("T=\"Drill 8\""), "T=\"Drill 8\"");  // a string keeps its case
+  EXPECT_EQ(printed(":10 X1"), "N10 X1");  // a main block number
+  EXPECT_EQ(printed("/1 X1"), "/1 X1");
+  EXPECT_EQ(printed("%_N_MYKONTUR_SPF"), "% (_N_MYKONTUR_SPF)");  // the file's header
+  EXPECT_EQ(printed("%"), "%");
+}
+
+TEST(DinParser, PriorityLoosestFirstComparisonThenLogicThenArithmetic) {
+  EXPECT_EQ(printed("R1=1+2 == 3 AND 4"), "R1=(1+2)==(3 AND 4)");
+  EXPECT_EQ(printed("R1=1 OR 2 XOR 3 AND 4"), "R1=1 OR (2 XOR (3 AND 4))");
+  EXPECT_EQ(printed("R1=1 B_OR 2 B_XOR 3 B_AND 4+5"), "R1=1 B_OR (2 B_XOR (3 B_AND (4+5)))");
+  EXPECT_EQ(printed("R1=8 DIV 3 MOD 2"), "R1=(8 DIV 3) MOD 2");
+  EXPECT_EQ(printed("R1=NOT R2 <> -R3"), "R1=NOT R2<>-R3");
+  EXPECT_EQ(printed("R1=ATAN2(1,2)+POT(3)+MINVAL(1,2)"), "R1=(ATAN2(1,2)+POT(3))+MINVAL(1,2)");
+}
+
+TEST(DinParser, StatementsVariablesLabelsAndJumps) {
+  EXPECT_EQ(printed("N20 MA1: R3=R1*COUNT"), "N20 MA1: R3=R1*COUNT");
+  EXPECT_EQ(printed("R[R1+1]=2"), "R[R1+1]=2");
+  EXPECT_EQ(printed("DEF REAL A[3,4], b=2"), "DEF REAL A[3,4] DEF REAL B=2");
+  EXPECT_EQ(printed("DEF STRING[8] NAME"), "DEF STRING NAME");
+  EXPECT_EQ(printed("A[1,2]=A[0,0]+$P_UIFR[1]"), "A[1,2]=A[0,0]+$P_UIFR[1]");
+  EXPECT_EQ(printed("IF COUNT<6 GOTOB MA1"), "IF COUNT<6 GOTOB MA1");
+  EXPECT_EQ(printed("GOTOF N100"), "GOTOF 100");
+  EXPECT_EQ(printed("GOTO 100"), "GOTO 100");
+  EXPECT_EQ(printed("GOTOC END_1"), "GOTOC END_1");
+  EXPECT_EQ(printed("POSITION1 (10, , 30)"), "POSITION1(10,,30)");
+  EXPECT_EQ(printed("MYKONTUR"), "MYKONTUR");
+  EXPECT_EQ(printed("CYCLE81()"), "CYCLE81");
+  // The jump's kind and target, the DEF's type and dimensions are in the tree.
+  Parsed p = parse("IF R1==TRUE GOTOF LBL");
+  ASSERT_TRUE(p.ok);
+  ASSERT_EQ(p.block.statements.size(), 1u);
+  EXPECT_EQ(p.block.statements[0].kind, ast::Statement::Kind::IfGoto);
+  EXPECT_EQ(p.block.statements[0].jump, ast::Jump::Forward);
+  EXPECT_EQ(*p.block.statements[0].target.text, "LBL");
+  p = parse("DEF INT K[2]");
+  ASSERT_TRUE(p.ok);
+  EXPECT_EQ(p.block.statements[0].type, ast::DataType::Int);
+  EXPECT_EQ(p.block.statements[0].target.args.size(), 1u);
+  EXPECT_EQ(p.block.statements[0].value.kind, ast::Expr::Kind::Vacant);
+}
+
+TEST(DinParser, LocationsAreColumnsOfTheLine) {
+  Parsed p = parse("N5 R1=2 X=R1");
+  ASSERT_TRUE(p.ok);
+  ASSERT_EQ(p.block.statements.size(), 1u);
+  EXPECT_EQ(p.block.statements[0].loc.column, 4u);
+  ASSERT_EQ(p.block.words.size(), 1u);
+  EXPECT_EQ(p.block.words[0].loc.column, 9u);
+  EXPECT_EQ(p.block.words[0].value.loc.column, 11u);
+}
+
+TEST(DinParser, BadTextGetsOneDiagnosticAtItsColumn) {
+  struct Case {
+    const char* text;
+    const char* expected;
+  };
+  const Case cases[] = {
+      {"X=(1+2", "p.mpf:1:3: error[NCC1003]: unbalanced '('"},
+      {"X=1+2)", "p.mpf:1:6: error[NCC1004]: unbalanced ')'"},
+      {"X=A[1)", "p.mpf:1:6: error[NCC1004]: unbalanced ')'"},
+      {"X=\"abc", "p.mpf:1:3: error[NCC1018]: string '\"' is not closed by '\"'"},
+      {"DEF FOO A", "p.mpf:1:5: error[NCC1019]: unknown type 'FOO'"},
+      {"DEF INT[3] A", "p.mpf:1:8: error[NCC1006]: only STRING takes a length [n]"},
+      {"DEF REAL R5", "p.mpf:1:10: error[NCC1006]: unexpected 'R5'"},
+      {"DEF REAL ABCDEFGHIJABCDEFGHIJABCDEFGHIJAB",
+       "p.mpf:1:10: error[NCC1006]: 'ABCDEFGHIJABCDEFGHIJABCDEFGHIJAB': a name has at most 31"},
+      {"X=SIN(1,2)", "p.mpf:1:3: error[NCC1011]: function 'SIN' takes 1 argument"},
+      {"X=SIN(,)", "p.mpf:1:7: error[NCC1011]: 'SIN': an argument is missing"},
+      {"X=FOO(1)", "p.mpf:1:3: error[NCC1090]: DIN function 'FOO' is not supported yet"},
+      {"X=1<<2", "p.mpf:1:4: error[NCC1090]: DIN string concatenation '<<'"},
+      {"IF R1>2", "p.mpf:1:1: error[NCC1090]: DIN 'IF' is not supported yet"},
+      {"N10 WHILE 1", "p.mpf:1:5: error[NCC1090]: DIN 'WHILE'"},
+      {"G0 X1 @", "p.mpf:1:7: error[NCC1001]: unexpected character '@'"},
+      {"%_N_A B", "p.mpf:1:1: error[NCC1001]: unexpected character '%'"},
+      {"X1.5=3", "p.mpf:1:1: error[NCC1006]: 'X1.5' is not a name"},
+      {"XY-5", "p.mpf:1:1: error[NCC1006]: address 'XY' takes its value after '='"},
+      {"GOTOF X5", "p.mpf:1:7: error[NCC1006]: 'X5' is neither a label nor a block number"},
+      {"N1.5 X1", "p.mpf:1:1: error[NCC1009]"},
+      {"N10 N20", "p.mpf:1:5: error[NCC1014]: second block number in one block"},
+      {"X1 N20", "p.mpf:1:4: error[NCC1006]: a block number 'N' must start the block"},
+      {"X=1 =", "p.mpf:1:5: error[NCC1006]: unexpected '='"},
+      {"X=", "p.mpf:1:3: error[NCC1010]: block ends before the statement is complete"},
+      {"/12 X1", "p.mpf:1:2: error[NCC1008]"},
+      {"X=A[1,2,3,4]", "p.mpf:1:3: error[NCC1011]: 'A': arrays have at most 3 dimensions"},
+  };
+  for (const Case& c : cases) {
+    Parsed p = parse(c.text);
+    EXPECT_FALSE(p.ok) << c.text;
+    EXPECT_EQ(p.diagnostics.rfind(c.expected, 0), 0u) << c.text << "\n" << p.diagnostics;
+    EXPECT_EQ(std::count(p.diagnostics.begin(), p.diagnostics.end(), '\n'), 1) << c.text;
+  }
+}
+
+TEST(DinParser, DeepTextIsRefusedBeforeTheParserRecurses) {
+  std::string deep = "X=" + std::string(100, '(') + "1" + std::string(100, ')');
+  Parsed p = parse(deep);
+  EXPECT_FALSE(p.ok);
+  EXPECT_NE(p.diagnostics.find("NCC1016"), std::string::npos) << p.diagnostics;
+  std::string signs = "X=" + std::string(100, '-') + "1";
+  p = parse(signs);
+  EXPECT_FALSE(p.ok);
+  EXPECT_NE(p.diagnostics.find("NCC1016"), std::string::npos) << p.diagnostics;
+  std::string chain = "X=1";
+  for (int i = 0; i < 300; ++i) chain += "+1";
+  p = parse(chain);
+  EXPECT_FALSE(p.ok);
+  EXPECT_NE(p.diagnostics.find("NCC1017"), std::string::npos) << p.diagnostics;
+}
+
+}  // namespace
+}  // namespace ncc::frontend
