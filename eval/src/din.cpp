@@ -43,13 +43,7 @@ bool Evaluator::Impl::dinPlain(const ast::Block& block) const {
 }
 
 const ast::Block* Evaluator::Impl::evaluateDin(const ast::Block& block, const ProgramPoint& at) {
-  ast::Block& out = evaluated.emplace();
-  out.loc = block.loc;
-  out.skip_level = block.skip_level;
-  out.sequence = block.sequence;
-  out.percent = block.percent;
-  out.language = block.language;
-  out.comments = block.comments;
+  ast::Block& out = startEvaluated(block);
 
   // Words and statements in the order they were written.
   struct Item {

@@ -227,6 +227,18 @@ bool Evaluator::Impl::plain(const ast::Block& block) const {
   return true;
 }
 
+ast::Block& Evaluator::Impl::startEvaluated(const ast::Block& block) {
+  ast::Block& out = evaluated.emplace();
+  out.loc = block.loc;
+  out.skip_level = block.skip_level;
+  out.sequence = block.sequence;
+  out.program_number = block.program_number;
+  out.percent = block.percent;
+  out.language = block.language;
+  out.comments = block.comments;
+  return out;
+}
+
 bool Evaluator::Impl::wordValue(const ast::Word& w, ast::Block& out, bool din) {
   if (isLiteral(w.value)) {
     out.words.push_back(w);
@@ -391,14 +403,7 @@ const ast::Block* Evaluator::Impl::evaluateBlock(const ast::Block& block, const 
   // The block as lowering gets it, built before anything below reads the cursor again (a
   // skipped loop does: `block` is the cursor's): the words with the values from before the
   // block's assignments, no statements.
-  ast::Block& out = evaluated.emplace();
-  out.loc = block.loc;
-  out.skip_level = block.skip_level;
-  out.sequence = block.sequence;
-  out.program_number = block.program_number;
-  out.percent = block.percent;
-  out.language = block.language;
-  out.comments = block.comments;
+  ast::Block& out = startEvaluated(block);
   out.words.reserve(block.words.size());
   for (const ast::Word& w : block.words)
     if (!wordValue(w, out)) return nullptr;

@@ -97,6 +97,8 @@ struct Evaluator::Impl {
   // nullptr when nothing of it goes on (a jump, a call, an error).
   const ast::Block* evaluateBlock(const ast::Block& block, const ProgramPoint& at);
   std::optional<ast::Block> evaluated;  // the last block evaluateBlock made
+  // `evaluated` started anew with `block`'s number, skip level, marks and comments.
+  ast::Block& startEvaluated(const ast::Block& block);
   // Reports the failure with the dialect's alarm number and stops the program.
   void fail(const Failure& failure);
   void fail(EvalError error, SourceLocation loc, std::string message);

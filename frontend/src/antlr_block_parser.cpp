@@ -27,34 +27,9 @@ std::string str(std::string_view s) { return std::string(s); }
 
 // Builds the AST of one successfully parsed block and performs the checks the grammar leaves
 // to the frontend. Every node gets the location of its first character in the original line.
-class Builder {
+class Builder : public BlockText {
  public:
-  Builder(std::string_view original, const std::string& upper, SourceLocation start,
-          DiagnosticEngine& diags)
-      : original_(original), upper_(upper), start_(start), diags_(diags) {}
-
-  [[noreturn]] void fail(const char* code, SourceLocation where, std::string message) {
-    diags_.error(code, where, std::move(message));
-    throw BlockRejected{};
-  }
-
-  SourceLocation at(size_t index) const {
-    return SourceLocation{start_.file, start_.line,
-                          start_.column + static_cast<uint32_t>(index)};
-  }
-  SourceLocation at(const Token* t) const { return at(t->getStartIndex()); }
-  SourceLocation at(antlr4::tree::TerminalNode* n) const { return at(n->getSymbol()); }
-
-  // Token text as written (original case); for EOF, empty.
-  std::string_view written(const Token* t) const {
-    if (t->getType() == Token::EOF) return {};
-    return original_.substr(t->getStartIndex(), t->getStopIndex() - t->getStartIndex() + 1);
-  }
-  std::string_view upper(const Token* t) const {
-    return std::string_view(upper_).substr(t->getStartIndex(),
-                                           t->getStopIndex() - t->getStartIndex() + 1);
-  }
-  std::string_view upper(antlr4::tree::TerminalNode* n) const { return upper(n->getSymbol()); }
+  using BlockText::BlockText;
 
   // ---- checks on the token list, before parsing: they give the precise messages ----------
 
@@ -427,11 +402,6 @@ class Builder {
     return static_cast<int>(*id);
   }
 
- private:
-  std::string_view original_;
-  const std::string& upper_;
-  SourceLocation start_;
-  DiagnosticEngine& diags_;
 };
 
 }  // namespace

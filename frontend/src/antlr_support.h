@@ -1,13 +1,14 @@
 #pragma once
 // What the two ANTLR block parsers (ISO: antlr_block_parser.cpp, DIN: din_block_parser.cpp)
-// share: the first-error listener, the exception that ends a rejected block, and the depth
-// message.
+// share: the first-error listener, the exception that ends a rejected block, the depth
+// message, and the tokens' text and locations in the block's line.
 #include <exception>
 #include <string>
 
 #include "absl/strings/str_cat.h"
 #include "antlr4-runtime.h"
 #include "ncc/frontend/ast.h"
+#include "ncc/support/diagnostics.h"
 
 namespace ncc::frontend {
 
@@ -38,5 +39,43 @@ inline std::string tooDeep() {
   return absl::StrCat("expression nested deeper than ", ast::kMaxExprDepth,
                       " levels (each operator, sign, bracket and function is one)");
 }
+
+// One block's text as its builder reads it: `original` as written, `upper` its lexical form
+// (lexical.h: same length, so an index is a column of both), `start` where it is in the file.
+class BlockText {
+ public:
+  BlockText(std::string_view original, const std::string& upper, SourceLocation start,
+            DiagnosticEngine& diags)
+      : original_(original), upper_(upper), start_(start), diags_(diags) {}
+
+  // Reports and rejects the block.
+  [[noreturn]] void fail(const char* code, SourceLocation where, std::string message) {
+    diags_.error(code, where, std::move(message));
+    throw BlockRejected{};
+  }
+
+  SourceLocation at(size_t index) const {
+    return SourceLocation{start_.file, start_.line, start_.column + static_cast<uint32_t>(index)};
+  }
+  SourceLocation at(const antlr4::Token* t) const { return at(t->getStartIndex()); }
+  SourceLocation at(antlr4::tree::TerminalNode* n) const { return at(n->getSymbol()); }
+
+  // Token text as written (original case); for EOF, empty.
+  std::string_view written(const antlr4::Token* t) const {
+    if (t->getType() == antlr4::Token::EOF) return {};
+    return original_.substr(t->getStartIndex(), t->getStopIndex() - t->getStartIndex() + 1);
+  }
+  std::string_view upper(const antlr4::Token* t) const {
+    return std::string_view(upper_).substr(t->getStartIndex(),
+                                           t->getStopIndex() - t->getStartIndex() + 1);
+  }
+  std::string_view upper(antlr4::tree::TerminalNode* n) const { return upper(n->getSymbol()); }
+
+ protected:
+  std::string_view original_;
+  const std::string& upper_;
+  SourceLocation start_;
+  DiagnosticEngine& diags_;
+};
 
 }  // namespace ncc::frontend

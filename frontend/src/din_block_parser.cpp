@@ -58,36 +58,14 @@ bool isRParameter(std::string_view s) {
   return std::all_of(s.begin() + 1, s.end(), isDigit);
 }
 
-class Builder {
+class Builder : public BlockText {
  public:
-  Builder(std::string_view original, const std::string& upper, SourceLocation start,
-          DiagnosticEngine& diags)
-      : original_(original), upper_(upper), start_(start), diags_(diags) {}
+  using BlockText::BlockText;
 
-  [[noreturn]] void fail(const char* code, SourceLocation where, std::string message) {
-    diags_.error(code, where, std::move(message));
-    throw BlockRejected{};
-  }
   [[noreturn]] void notYet(SourceLocation where, std::string_view what) {
     fail(codes::kDinNotSupported, where,
          absl::StrCat("DIN ", str(what), " is not supported yet (docs/din.md lists what is)"));
   }
-
-  SourceLocation at(size_t index) const {
-    return SourceLocation{start_.file, start_.line, start_.column + static_cast<uint32_t>(index)};
-  }
-  SourceLocation at(const Token* t) const { return at(t->getStartIndex()); }
-  SourceLocation at(antlr4::tree::TerminalNode* n) const { return at(n->getSymbol()); }
-
-  std::string_view written(const Token* t) const {
-    if (t->getType() == Token::EOF) return {};
-    return original_.substr(t->getStartIndex(), t->getStopIndex() - t->getStartIndex() + 1);
-  }
-  std::string_view upper(const Token* t) const {
-    return std::string_view(upper_).substr(t->getStartIndex(),
-                                           t->getStopIndex() - t->getStartIndex() + 1);
-  }
-  std::string_view upper(antlr4::tree::TerminalNode* n) const { return upper(n->getSymbol()); }
 
   // ---- checks on the token list, before parsing ------------------------------------------
 
@@ -593,11 +571,6 @@ class Builder {
     return node(std::move(e), depth);
   }
 
- private:
-  std::string_view original_;
-  const std::string& upper_;
-  SourceLocation start_;
-  DiagnosticEngine& diags_;
 };
 
 // The program header a Sinumerik file starts with, `%_N_NAME_MPF` or `%_N_NAME_SPF` (the
