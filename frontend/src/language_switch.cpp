@@ -13,12 +13,16 @@ bool isLiteralG(const ast::Word& w, double code) {
 }
 
 // What the DIN parser reads as the ISO fast path did: words of a letter and a number written
-// right after it (`G 90` is ISO only), an N only as the first word.
-bool isPlainDin(const ast::Block& b, std::string_view text) {
+// right after it (`G 90` is ISO only), a signed word after a blank (`G0X-1` is a name `G0X` in
+// DIN), an N only as the first word.
+bool isPlainDin(const ast::Block& b, std::string_view text, SourceLocation start) {
   if (!b.statements.empty() || !b.comments.empty() || b.program_number || b.percent) return false;
   for (const ast::Word& w : b.words) {
     if (w.address.size() != 1) return false;  // `,C`: an ISO corner word
     if (w.value.loc.column != w.loc.column + 1) return false;
+    const size_t at = w.loc.column - start.column;
+    const bool signed_value = at + 1 < text.size() && (text[at + 1] == '-' || text[at + 1] == '+');
+    if (signed_value && at > 0 && at <= text.size() && !isBlank(text[at - 1])) return false;
   }
   if (b.sequence) {
     size_t i = 0;
@@ -35,7 +39,7 @@ bool readPlainDin(IsoBlockParser& parser, std::string_view text, SourceLocation 
   DiagnosticEngine scratch;
   bool fast = false;
   if (!parser.parse(text, start, scratch, ParserChoice::Auto, out, &fast) || !fast ||
-      !isPlainDin(out, text))
+      !isPlainDin(out, text, start))
     return false;
   out.language = Language::Din;
   return true;
