@@ -406,29 +406,7 @@ class Builder : public BlockText {
 
 }  // namespace
 
-struct AntlrBlockParser::Engine {
-  Engine() : lexer(&input), tokens(&lexer), parser(&tokens) {
-    lexer.removeErrorListeners();
-    parser.removeErrorListeners();
-    parser.addErrorListener(&errors);
-  }
-  std::string upper;
-  antlr4::ANTLRInputStream input;
-  IsoLexer lexer;
-  antlr4::CommonTokenStream tokens;
-  IsoParser parser;
-  FirstErrorListener errors;
-
-  // Parses the token stream from its start with the given prediction mode.
-  IsoParser::BlockContext* run(antlr4::atn::PredictionMode mode) {
-    tokens.seek(0);
-    parser.getTreeTracker().reset();
-    parser.setTokenStream(&tokens);
-    errors.clear();
-    parser.getInterpreter<antlr4::atn::ParserATNSimulator>()->setPredictionMode(mode);
-    return parser.block();
-  }
-};
+struct AntlrBlockParser::Engine : AntlrEngine<IsoLexer, IsoParser> {};
 
 AntlrBlockParser::AntlrBlockParser() : engine_(std::make_unique<Engine>()) {}
 AntlrBlockParser::~AntlrBlockParser() = default;
@@ -436,25 +414,19 @@ AntlrBlockParser::~AntlrBlockParser() = default;
 std::optional<ast::Block> AntlrBlockParser::parse(std::string_view text, SourceLocation start,
                                                   DiagnosticEngine& diags) {
   Engine& e = *engine_;
-  e.upper = lexicalForm(text);
-  e.input.load(e.upper);
-  e.lexer.setInputStream(&e.input);
-  e.tokens.setTokenSource(&e.lexer);
-  e.tokens.fill();
-
+  const std::vector<Token*> tokens = e.lex(text);
   Builder builder(text, e.upper, start, diags);
   std::optional<ast::Block> result;
   try {
-    builder.checkTokens(e.tokens.getTokens());
-    // SLL prediction is enough for this grammar; LL is the exact fallback if SLL fails.
-    IsoParser::BlockContext* tree = e.run(antlr4::atn::PredictionMode::SLL);
-    if (e.errors.seen) tree = e.run(antlr4::atn::PredictionMode::LL);
-    if (e.errors.seen) builder.failAt(e.errors.offending_token);
+    builder.checkTokens(tokens);
+    Token* offending = nullptr;
+    IsoParser::BlockContext* tree = e.parse(offending);
+    if (!tree) builder.failAt(offending);
     result = builder.block(tree);
   } catch (const BlockRejected&) {
     result.reset();
   }
-  e.parser.getTreeTracker().reset();
+  e.reset();
   return result;
 }
 

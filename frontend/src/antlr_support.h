@@ -4,9 +4,12 @@
 // message, and the tokens' text and locations in the block's line.
 #include <exception>
 #include <string>
+#include <string_view>
+#include <vector>
 
 #include "absl/strings/str_cat.h"
 #include "antlr4-runtime.h"
+#include "lexical.h"
 #include "ncc/frontend/ast.h"
 #include "ncc/support/diagnostics.h"
 
@@ -39,6 +42,55 @@ inline std::string tooDeep() {
   return absl::StrCat("expression nested deeper than ", ast::kMaxExprDepth,
                       " levels (each operator, sign, bracket and function is one)");
 }
+
+// The lexer and parser of one grammar, made once and reused for every block (their set-up costs
+// more than a parse).
+template <class Lexer, class Parser>
+struct AntlrEngine {
+  AntlrEngine() : lexer(&input), tokens(&lexer), parser(&tokens) {
+    lexer.removeErrorListeners();
+    parser.removeErrorListeners();
+    parser.addErrorListener(&errors);
+  }
+
+  // Lexes `text` in its lexical form (`upper`); the tokens, EOF last.
+  std::vector<antlr4::Token*> lex(std::string_view text) {
+    upper = lexicalForm(text);
+    input.load(upper);
+    lexer.setInputStream(&input);
+    tokens.setTokenSource(&lexer);
+    tokens.fill();
+    return tokens.getTokens();
+  }
+
+  // The block's parse tree: SLL prediction is enough for these grammars, LL the exact fallback
+  // when SLL fails. nullptr with `offending` set at a syntax error. The tree lives until
+  // reset().
+  typename Parser::BlockContext* parse(antlr4::Token*& offending) {
+    typename Parser::BlockContext* tree = run(antlr4::atn::PredictionMode::SLL);
+    if (errors.seen) tree = run(antlr4::atn::PredictionMode::LL);
+    offending = errors.offending_token;
+    return errors.seen ? nullptr : tree;
+  }
+  void reset() { parser.getTreeTracker().reset(); }
+
+  std::string upper;
+  antlr4::ANTLRInputStream input;
+  Lexer lexer;
+  antlr4::CommonTokenStream tokens;
+  Parser parser;
+  FirstErrorListener errors;
+
+ private:
+  typename Parser::BlockContext* run(antlr4::atn::PredictionMode mode) {
+    tokens.seek(0);
+    parser.getTreeTracker().reset();
+    parser.setTokenStream(&tokens);
+    errors.clear();
+    parser.template getInterpreter<antlr4::atn::ParserATNSimulator>()->setPredictionMode(mode);
+    return parser.block();
+  }
+};
 
 // One block's text as its builder reads it: `original` as written, `upper` its lexical form
 // (lexical.h: same length, so an index is a column of both), `start` where it is in the file.

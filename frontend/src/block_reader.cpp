@@ -120,9 +120,7 @@ BlockPosition BlockReader::position() const {
 }
 void BlockReader::seek(BlockPosition p) {
   impl_->cursor.seek(p);
-  // The start of the file is read in the file's first language, whatever position named it.
-  const bool file_start = p.offset == 0 && p.column <= 1;
-  impl_->language = file_start ? impl_->options.initial_language : p.language;
+  impl_->language = languageAt(p, impl_->options.initial_language);
 }
 uint32_t BlockReader::file() const { return impl_->file; }
 

@@ -598,55 +598,29 @@ bool readHeader(std::string_view text, SourceLocation start, ast::Block& out) {
 
 }  // namespace
 
-struct DinBlockParser::Engine {
-  Engine() : lexer(&input), tokens(&lexer), parser(&tokens) {
-    lexer.removeErrorListeners();
-    parser.removeErrorListeners();
-    parser.addErrorListener(&errors);
-  }
-  std::string upper;
-  antlr4::ANTLRInputStream input;
-  DinLexer lexer;
-  antlr4::CommonTokenStream tokens;
-  DinParser parser;
-  FirstErrorListener errors;
-
-  DinParser::BlockContext* run(antlr4::atn::PredictionMode mode) {
-    tokens.seek(0);
-    parser.getTreeTracker().reset();
-    parser.setTokenStream(&tokens);
-    errors.clear();
-    parser.getInterpreter<antlr4::atn::ParserATNSimulator>()->setPredictionMode(mode);
-    return parser.block();
-  }
-};
+struct DinBlockParser::Engine : AntlrEngine<DinLexer, DinParser> {};
 
 DinBlockParser::DinBlockParser() : engine_(std::make_unique<Engine>()) {}
 DinBlockParser::~DinBlockParser() = default;
 
 bool DinBlockParser::parse(std::string_view text, SourceLocation start, DiagnosticEngine& diags,
                            ast::Block& out) {
-  Engine& e = *engine_;
-  e.upper = lexicalForm(text);
-  e.input.load(e.upper);
-  e.lexer.setInputStream(&e.input);
-  e.tokens.setTokenSource(&e.lexer);
-  e.tokens.fill();
-
   out = ast::Block{};
   if (readHeader(text, start, out)) return true;
+  Engine& e = *engine_;
+  const std::vector<Token*> tokens = e.lex(text);
   Builder builder(text, e.upper, start, diags);
   bool ok = true;
   try {
-    builder.checkTokens(e.tokens.getTokens());
-    DinParser::BlockContext* tree = e.run(antlr4::atn::PredictionMode::SLL);
-    if (e.errors.seen) tree = e.run(antlr4::atn::PredictionMode::LL);
-    if (e.errors.seen) builder.failAt(e.errors.offending_token);
+    builder.checkTokens(tokens);
+    Token* offending = nullptr;
+    DinParser::BlockContext* tree = e.parse(offending);
+    if (!tree) builder.failAt(offending);
     builder.block(tree, out);
   } catch (const BlockRejected&) {
     ok = false;
   }
-  e.parser.getTreeTracker().reset();
+  e.reset();
   return ok;
 }
 

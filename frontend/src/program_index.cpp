@@ -98,9 +98,7 @@ std::optional<BlockPosition> ProgramIndex::scanFor(Target target, BlockPosition 
   cursor.seek(start);
   std::optional<BlockPosition> found;
   BlockCursor::Segment s;
-  // The start of the file is read in the file's first language, whatever position named it.
-  const bool file_start = start.offset == 0 && start.column <= 1;
-  for (Language now = file_start ? initial_language_ : start.language;
+  for (Language now = languageAt(start, initial_language_);
        cursor.next(s, semicolon_ends_block_);
        now = languageAfterSegment(s.text, now)) {
     s.at.language = now;

@@ -28,4 +28,11 @@ inline bool operator<(const BlockPosition& a, const BlockPosition& b) {
 }
 inline bool operator<=(const BlockPosition& a, const BlockPosition& b) { return !(b < a); }
 
+// The language the text from `p` is read in, in a file that starts in `initial`: the start of
+// a file is read in the file's first language whatever position named it (a caller that only
+// knows "the file's start" writes BlockPosition{}).
+inline Language languageAt(const BlockPosition& p, Language initial) {
+  return p.offset == 0 && p.column <= 1 ? initial : p.language;
+}
+
 }  // namespace ncc::frontend
