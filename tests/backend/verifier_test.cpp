@@ -29,6 +29,39 @@ std::string verifyCode(const bytecode::Program& p, const bytecode::VerifyOptions
 
 TEST(Verifier, AcceptsValidProgram) { EXPECT_EQ(verifyCode(test::smallProgram()), "ok"); }
 
+// The variable names of 2.3 (DIN's R10, COUNT): each names a variable of the program, in
+// ascending order, by a string of the pool; a name table that does not is refused, and the
+// paged path answers the same (the names travel through the writer and the loader).
+TEST(Verifier, VariableNamesNameVariablesOfTheProgram) {
+  bytecode::Program p = test::smallProgram();
+  p.header.variable_count = 11001;
+  p.strings.push_back("R7");
+  p.strings.push_back("COUNT");
+  const uint32_t r7 = static_cast<uint32_t>(p.strings.size() - 2);
+  p.variable_names = {{10007, r7}, {11000, r7 + 1}};
+  EXPECT_EQ(verifyCode(p), "ok");
+  // (In memory only: the writer grows the header's count to hold every name it writes.)
+  bytecode::Program beyond = p;
+  beyond.variable_names[1].number = 11001;
+  const std::optional<bytecode::Error> e = bytecode::verify(beyond, {});
+  ASSERT_TRUE(e);
+  EXPECT_EQ(e->code + ": " + e->message,
+            "NCC7117: variable name for #11001: not a variable of the program, or out of order");
+  bytecode::Program unordered = p;
+  std::swap(unordered.variable_names[0], unordered.variable_names[1]);
+  EXPECT_EQ(verifyCode(unordered), "NCC7117");
+  bytecode::Program zero = p;
+  zero.variable_names[0].number = 0;
+  EXPECT_EQ(verifyCode(zero), "NCC7117");
+  bytecode::Program no_string = p;
+  no_string.variable_names[1].name = 999;
+  EXPECT_EQ(verifyMessage(no_string),
+            "NCC7117: variable name for #11000: string 999 is not in the pool");
+  bytecode::Program empty_string = p;
+  empty_string.variable_names[0].name = 0;  // string 0 is ""
+  EXPECT_EQ(verifyCode(empty_string), "NCC7117");
+}
+
 TEST(Verifier, RejectsUnknownOpcode) {
   bytecode::Program p = test::smallProgram();
   p.code.insert(p.code.begin(), 0x00);
