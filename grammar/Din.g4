@@ -16,8 +16,9 @@ block
     : blockStart? item* EOF
     ;
 
-// The control structures (IF ... ENDIF, WHILE, FOR, REPEAT, LOOP, CASE) and PROC/RET are
-// keywords so that no name takes them; the frontend says they are not built yet.
+// The control structures (IF ... ENDIF, WHILE, FOR, REPEAT, LOOP, CASE) stand alone in their
+// block, with its number and labels: the frontend checks that. PROC and RET are keywords so that
+// no name takes them; the frontend says they are not built yet.
 
 // Block skip '/', '/0' .. '/9'.
 blockStart
@@ -29,6 +30,18 @@ item
     | IDENT COLON                                        # labelItem
     | DEF typeName definition (COMMA definition)*        # defItem
     | IF expr jump jumpTarget                            # ifGotoItem
+    | IF expr                                            # ifItem
+    | ELSE                                               # elseItem
+    | ENDIF                                              # endIfItem
+    | WHILE expr                                         # whileItem
+    | ENDWHILE                                           # endWhileItem
+    | FOR name EQUALS expr TO expr                       # forItem
+    | ENDFOR                                             # endForItem
+    | REPEAT                                             # repeatItem
+    | UNTIL expr                                         # untilItem
+    | LOOP                                               # loopItem
+    | ENDLOOP                                            # endLoopItem
+    | CASE expr OF caseBranch+ (DEFAULT jump jumpTarget)?  # caseItem
     | jump jumpTarget                                    # gotoItem
     | name EQUALS expr                                   # assignItem
     | IDENT sign=(PLUS | MINUS) NUMBER                   # signedWordItem
@@ -45,6 +58,11 @@ typeName
 // A variable and its initial value; arrays give their sizes: DEF REAL A[3,4].
 definition
     : IDENT (LBRACK expr (COMMA expr)* RBRACK)? (EQUALS expr)?
+    ;
+
+// `7 GOTOF LABEL_1`: a constant of CASE and where it jumps.
+caseBranch
+    : (sign=(PLUS | MINUS)? NUMBER | STRING) jump jumpTarget
     ;
 
 jump
@@ -161,6 +179,9 @@ UNTIL    : 'UNTIL' ;
 LOOP     : 'LOOP' ;
 ENDLOOP  : 'ENDLOOP' ;
 CASE     : 'CASE' ;
+OF       : 'OF' ;
+DEFAULT  : 'DEFAULT' ;
+TO       : 'TO' ;
 PROC     : 'PROC' ;
 RET      : 'RET' ;
 GOTOF    : 'GOTOF' ;

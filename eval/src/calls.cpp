@@ -443,6 +443,8 @@ bool Evaluator::Impl::ret(const Pending& p) {
     // the simulated time, or by the loop limits when it neither moves nor dwells).
     if (!countBackJump(p.loc)) return false;
     f.loops.clear();
+    f.structures.clear();
+    f.for_resume.reset();
     if (p.sequence)
       return jumpToSequence(f, *p.sequence, p.at, rules.return_search, p.loc,
                             EvalError::GotoTarget);
@@ -453,6 +455,8 @@ bool Evaluator::Impl::ret(const Pending& p) {
     if (!countBackJump(p.loc)) return false;  // nested repeats multiply: bounded as loops
     --f.repeats_left;
     f.loops.clear();
+    f.structures.clear();
+    f.for_resume.reset();
     f.cursor->seek(f.begin);
     if (f.figure_rotation) options.figure_rotation.run(++f.run);
     return true;

@@ -392,6 +392,18 @@ const ast::Block* Evaluator::Impl::evaluateBlock(const ast::Block& block, const 
       case K::Define:
       case K::Label:
       case K::Call:
+      case K::If:
+      case K::Else:
+      case K::EndIf:
+      case K::EndWhile:
+      case K::For:
+      case K::EndFor:
+      case K::Repeat:
+      case K::Until:
+      case K::Loop:
+      case K::EndLoop:
+      case K::Case:
+      case K::CaseBranch:
         // DIN statements: a DIN block goes to evaluateDin (din.cpp); an ISO block never has
         // them (a tree from elsewhere, a damaged store).
         fail(EvalError::NotSupported, st.loc, "a DIN statement in an ISO block");

@@ -22,6 +22,19 @@ struct Loop {
   ProgramPoint at;
 };
 
+// An open DIN control structure (din.cpp): IF, WHILE, FOR, REPEAT or LOOP, and where its
+// opening block starts.
+struct Structure {
+  ast::Statement::Kind kind = ast::Statement::Kind::If;
+  ProgramPoint at;
+  // FOR: the counter (R r, or a variable and its indices) and the end value, taken once when
+  // the loop starts.
+  double end = 0;
+  int64_t r = -1;
+  std::string name;
+  std::vector<int64_t> indices;
+};
+
 // One program being run: the main program, or a subprogram / macro called by the frame below.
 struct Frame {
   std::unique_ptr<BlockCursor> cursor;
@@ -38,6 +51,8 @@ struct Frame {
   std::string code;              // a code macro's code ("M6"): it acts as the plain code inside
   bool seen_content = false;
   std::vector<Loop> loops;
+  std::vector<Structure> structures;
+  std::optional<ProgramPoint> for_resume;  // ENDFOR went back to this FOR: run its body again
 };
 
 // A modal macro call in force (G66: after each motion block; G66.1: every block).
@@ -127,6 +142,17 @@ struct Evaluator::Impl {
   const ast::Block* evaluateDin(const ast::Block& block, const ProgramPoint& at);
   // A DIN jump (GOTOF, GOTOB, GOTO, GOTOC) to a label or block number of the current program.
   bool dinJump(const ast::Statement& jump, const ProgramPoint& at);
+  // A control structure's keyword (IF, ELSE, ENDIF, WHILE, FOR, REPEAT, LOOP, CASE, and their
+  // ends) in `block`; false after failing.
+  bool dinControl(const ast::Block& block, const ast::Statement& st, const ProgramPoint& at);
+  bool openStructure(ast::Statement::Kind kind, const ProgramPoint& at, SourceLocation loc);
+  // The innermost open structure of `kind` (those opened inside it were left by a jump and
+  // are dropped); nullptr after failing (`st` closes nothing).
+  Structure* closeStructure(ast::Statement::Kind kind, const ast::Statement& st);
+  // Reads on without running anything to the block of `ends` that closes `st`'s level (an
+  // ELSE or ENDIF for an IF); the kind found, nullopt after failing.
+  std::optional<ast::Statement::Kind> skipStructure(const ast::Statement& st,
+                                                    std::initializer_list<ast::Statement::Kind> ends);
 
   // ---- calls.cpp ----
   // Whether a literal word is a call word (M98, M99, G65, G66, G66.1, G67) or a code macro:

@@ -17,13 +17,17 @@ constexpr std::string_view kFiles[] = {"{:04}.spf", "{}.spf", "{:04}.mpf", "{}.m
 // The DIN text of the same control (G290, or the siemens-din dialect) raises the Sinumerik NCK
 // alarms (Diagnostics Manual; the cycles notes §6 cite the 12xxx range): 12550 "name not
 // defined", 17020 "illegal array index", 14080 "jump destination not found", 12150 "operation
-// not compatible with data type". The ISO-mode errors keep the NCC codes (§6 numbers none).
+// not compatible with data type", 12640 "invalid nesting of control structures", 12641
+// "nesting depth of control structures too large". The ISO-mode errors keep the NCC codes
+// (§6 numbers none).
 constexpr std::array<std::string_view, kNccCodes.size()> alarms() {
   auto a = kNccCodes;
   a[static_cast<size_t>(EvalError::UndefinedName)] = "12550";
   a[static_cast<size_t>(EvalError::ArrayIndex)] = "17020";
   a[static_cast<size_t>(EvalError::JumpTarget)] = "14080";
   a[static_cast<size_t>(EvalError::TypeMismatch)] = "12150";
+  a[static_cast<size_t>(EvalError::StructureNesting)] = "12640";
+  a[static_cast<size_t>(EvalError::StructureDepth)] = "12641";
   return a;
 }
 constexpr auto kAlarms = alarms();

@@ -41,6 +41,8 @@ inline constexpr std::array<std::string_view, static_cast<size_t>(EvalError::kCo
         "NCC2423",  // ArrayIndex
         "NCC2424",  // JumpTarget
         "NCC2425",  // TypeMismatch
+        "NCC2426",  // StructureNesting
+        "NCC2427",  // StructureDepth
 };
 
 // Argument specification I: A#1 B#2 C#3 I#4 J#5 K#6 D#7 E#8 F#9 H#11 M#13 Q#17 R#18 S#19

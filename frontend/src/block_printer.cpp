@@ -17,7 +17,9 @@
 // A DIN block prints in DIN: `( )` for brackets and function arguments, `==` `<>` `<` `>` `<=`
 // `>=` for comparisons, `X=expr` for a word whose value is not a number or whose address is
 // longer than a letter, names and R parameters as written (`COUNT`, `R[..]`), strings quoted,
-// statements `R1=expr`, `DEF INT A=1`, `MA1:`, `IF c GOTOB MA1`, `GOTOF N10`, `NAME(args)`.
+// statements `R1=expr`, `DEF INT A=1`, `MA1:`, `IF c GOTOB MA1`, `GOTOF N10`, `NAME(args)`,
+// the control structures `IF c`, `WHILE c`, `FOR I=0 TO n`, `UNTIL c`, `CASE c OF 7 GOTOF L1
+// DEFAULT GOTOF L2`, `ELSE`, `ENDIF` ... as keywords.
 #include <cmath>
 
 #include "absl/strings/str_cat.h"
@@ -93,6 +95,7 @@ class Printer {
         return absl::StrCat("IF [", bare(s.value), "] THEN ",
                             s.then_assign ? print(*s.then_assign) : "");
       case K::While:
+        if (din_) return absl::StrCat("WHILE ", bare(s.value));
         return absl::StrCat("WHILE [", bare(s.value), "] DO ", s.loop_id);
       case K::End:
         return absl::StrCat("END ", s.loop_id);
@@ -106,6 +109,25 @@ class Printer {
       case K::Call:
         return absl::StrCat(s.target.text ? *s.target.text : "",
                             s.target.args.empty() ? "" : list(s.target.args, "(", ")"));
+      case K::If:
+        return absl::StrCat("IF ", bare(s.value));
+      case K::Else: return "ELSE";
+      case K::EndIf: return "ENDIF";
+      case K::EndWhile: return "ENDWHILE";
+      case K::For:
+        return absl::StrCat("FOR ", s.then_assign ? print(*s.then_assign) : "", " TO ",
+                            bare(s.value));
+      case K::EndFor: return "ENDFOR";
+      case K::Repeat: return "REPEAT";
+      case K::Until:
+        return absl::StrCat("UNTIL ", bare(s.value));
+      case K::Loop: return "LOOP";
+      case K::EndLoop: return "ENDLOOP";
+      case K::Case:
+        return absl::StrCat("CASE ", bare(s.value), " OF");
+      case K::CaseBranch:
+        return absl::StrCat(s.value.kind == ast::Expr::Kind::Vacant ? "DEFAULT" : print(s.value),
+                            " ", jump(s.jump), " ", print(s.target));
     }
     return "";
   }

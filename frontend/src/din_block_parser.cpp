@@ -77,24 +77,13 @@ class Builder : public BlockText {
       if (t->getType() == DinLexer::OPEN_STRING)
         fail(codes::kUnclosedString, at(t), "string '\"' is not closed by '\"'");
     }
-    // Control structures are keywords the grammar has no statement for yet; IF is one unless
-    // a jump follows it (IF cond GOTOB label).
-    bool jump_follows = false;
-    for (size_t i = tokens.size(); i-- > 0;) {
-      const size_t type = tokens[i]->getType();
-      if (type == DinLexer::GOTOF || type == DinLexer::GOTOB || type == DinLexer::GOTO ||
-          type == DinLexer::GOTOC)
-        jump_follows = true;
-      const bool structured = type == DinLexer::ELSE || type == DinLexer::ENDIF ||
-                              type == DinLexer::WHILE || type == DinLexer::ENDWHILE ||
-                              type == DinLexer::FOR || type == DinLexer::ENDFOR ||
-                              type == DinLexer::REPEAT || type == DinLexer::UNTIL ||
-                              type == DinLexer::LOOP || type == DinLexer::ENDLOOP ||
-                              type == DinLexer::CASE || type == DinLexer::PROC ||
-                              type == DinLexer::RET ||
-                              (type == DinLexer::IF && !jump_follows);
-      if (structured)
-        notYet(at(tokens[i]), absl::StrCat("'", str(upper(tokens[i])), "'"));
+    // Subprogram definitions are keywords the grammar has no statement for yet; REPEATB
+    // repeats a program section (REPEAT alone opens a REPEAT ... UNTIL loop).
+    for (const Token* t : tokens) {
+      const size_t type = t->getType();
+      if (type == DinLexer::PROC || type == DinLexer::RET ||
+          (type == DinLexer::REPEAT && upper(t) == "REPEATB"))
+        notYet(at(t), absl::StrCat("'", str(upper(t)), "'"));
     }
     // The parser recurses once per sign and a few times per bracket: bound both before it runs.
     int open = 0;
@@ -158,6 +147,68 @@ class Builder : public BlockText {
     }
     const std::vector<DinParser::ItemContext*> items = ctx->item();
     for (size_t i = 0; i < items.size(); ++i) item(b, items[i], i == 0);
+    structureAlone(b);
+  }
+
+  static bool isStructure(SKind k) {
+    switch (k) {
+      case SKind::If: case SKind::Else: case SKind::EndIf: case SKind::While:
+      case SKind::EndWhile: case SKind::For: case SKind::EndFor: case SKind::Repeat:
+      case SKind::Until: case SKind::Loop: case SKind::EndLoop: case SKind::Case:
+        return true;
+      default:
+        return false;
+    }
+  }
+
+  // A control structure's keyword stands alone in its block, with the block number and labels
+  // (Job Planning, program flow control: the structures are executed by the interpreter, not
+  // by the block's motion): `IF A>1 X10` is refused rather than half-read.
+  void structureAlone(const ast::Block& b) {
+    const ast::Statement* structure = nullptr;
+    for (const ast::Statement& st : b.statements)
+      if (isStructure(st.kind)) structure = &st;
+    if (!structure) return;
+    SourceLocation other{};
+    bool found = false;
+    auto consider = [&](SourceLocation loc) {
+      if (!found || loc.column < other.column) other = loc;
+      found = true;
+    };
+    for (const ast::Word& w : b.words) consider(w.loc);
+    for (const ast::Statement& st : b.statements)
+      if (&st != structure && st.kind != SKind::Label && st.kind != SKind::CaseBranch)
+        consider(st.loc);
+    if (!found) return;
+    if (structure->kind == SKind::Repeat)
+      notYet(structure->loc, "'REPEAT label P=n' (repeating a program section)");
+    fail(codes::kUnexpectedToken, other,
+         absl::StrCat("a control structure keyword (", structureName(structure->kind),
+                      ") stands alone in its block, with its block number and labels"));
+  }
+
+  static const char* structureName(SKind k) {
+    switch (k) {
+      case SKind::If: return "IF";
+      case SKind::Else: return "ELSE";
+      case SKind::EndIf: return "ENDIF";
+      case SKind::While: return "WHILE";
+      case SKind::EndWhile: return "ENDWHILE";
+      case SKind::For: return "FOR";
+      case SKind::EndFor: return "ENDFOR";
+      case SKind::Repeat: return "REPEAT";
+      case SKind::Until: return "UNTIL";
+      case SKind::Loop: return "LOOP";
+      case SKind::EndLoop: return "ENDLOOP";
+      default: return "CASE";
+    }
+  }
+
+  ast::Statement& statement(ast::Block& b, SKind kind, const Token* t) {
+    ast::Statement& s = b.statements.emplace_back();
+    s.kind = kind;
+    s.loc = at(t);
+    return s;
   }
 
   void item(ast::Block& b, DinParser::ItemContext* ctx, bool first) {
@@ -192,6 +243,30 @@ class Builder : public BlockText {
       s.loc = at(ig->IF());
       s.value = expr(ig->expr()).expr;
       jump(s, ig->jump(), ig->jumpTarget());
+    } else if (auto* i = dynamic_cast<DinParser::IfItemContext*>(ctx)) {
+      statement(b, SKind::If, i->IF()->getSymbol()).value = expr(i->expr()).expr;
+    } else if (auto* w = dynamic_cast<DinParser::WhileItemContext*>(ctx)) {
+      statement(b, SKind::While, w->WHILE()->getSymbol()).value = expr(w->expr()).expr;
+    } else if (auto* u = dynamic_cast<DinParser::UntilItemContext*>(ctx)) {
+      statement(b, SKind::Until, u->UNTIL()->getSymbol()).value = expr(u->expr()).expr;
+    } else if (auto* f = dynamic_cast<DinParser::ForItemContext*>(ctx)) {
+      forLoop(b, f);
+    } else if (auto* cs = dynamic_cast<DinParser::CaseItemContext*>(ctx)) {
+      caseOf(b, cs);
+    } else if (dynamic_cast<DinParser::ElseItemContext*>(ctx)) {
+      statement(b, SKind::Else, ctx->getStart());
+    } else if (dynamic_cast<DinParser::EndIfItemContext*>(ctx)) {
+      statement(b, SKind::EndIf, ctx->getStart());
+    } else if (dynamic_cast<DinParser::EndWhileItemContext*>(ctx)) {
+      statement(b, SKind::EndWhile, ctx->getStart());
+    } else if (dynamic_cast<DinParser::EndForItemContext*>(ctx)) {
+      statement(b, SKind::EndFor, ctx->getStart());
+    } else if (dynamic_cast<DinParser::RepeatItemContext*>(ctx)) {
+      statement(b, SKind::Repeat, ctx->getStart());
+    } else if (dynamic_cast<DinParser::LoopItemContext*>(ctx)) {
+      statement(b, SKind::Loop, ctx->getStart());
+    } else if (dynamic_cast<DinParser::EndLoopItemContext*>(ctx)) {
+      statement(b, SKind::EndLoop, ctx->getStart());
     } else if (auto* c = dynamic_cast<DinParser::CallItemContext*>(ctx)) {
       call(b, c->IDENT()->getSymbol(), c->arguments());
     } else if (auto* ws = dynamic_cast<DinParser::WordsItemContext*>(ctx)) {
@@ -368,6 +443,36 @@ class Builder : public BlockText {
       if (upper(t->NUMBER()).find('.') != std::string_view::npos)
         fail(codes::kBlockNumber, at(t->NUMBER()), "a block number has no decimal point");
       s.target = literal(t->NUMBER()->getSymbol(), 0, nullptr).expr;
+    }
+  }
+
+  // FOR COUNTER = 0 TO NUMBER: the counter is an R parameter or a variable.
+  void forLoop(ast::Block& b, DinParser::ForItemContext* f) {
+    DinParser::NameContext* n = f->name();
+    ast::Statement& s = statement(b, SKind::For, f->FOR()->getSymbol());
+    ast::Statement& init = s.then_assign.emplace();
+    init.kind = SKind::Assign;
+    init.loc = at(n->getStart());
+    init.target = target(n);
+    init.value = expr(f->expr(0)).expr;
+    s.value = expr(f->expr(1)).expr;
+  }
+
+  // CASE (expr) OF 7 GOTOF L1 9 GOTOF L2 DEFAULT GOTOF L3: the Case statement, then a branch
+  // per constant, DEFAULT's with a vacant constant.
+  void caseOf(ast::Block& b, DinParser::CaseItemContext* c) {
+    statement(b, SKind::Case, c->CASE()->getSymbol()).value = expr(c->expr()).expr;
+    for (DinParser::CaseBranchContext* br : c->caseBranch()) {
+      if (br->STRING()) notYet(at(br->STRING()), "a string constant of CASE");
+      ast::Statement& s = statement(b, SKind::CaseBranch, br->getStart());
+      s.value = literal(br->NUMBER()->getSymbol(), 0, br->sign).expr;
+      jump(s, br->jump(), br->jumpTarget());
+    }
+    if (c->DEFAULT()) {
+      ast::Statement& s = statement(b, SKind::CaseBranch, c->DEFAULT()->getSymbol());
+      s.value.kind = Kind::Vacant;
+      s.value.loc = s.loc;
+      jump(s, c->jump(), c->jumpTarget());
     }
   }
 

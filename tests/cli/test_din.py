@@ -148,6 +148,74 @@ class DinTest(ScratchDirTest):
 
     # ---- alarms at their block ----------------------------------------------------------
 
+    # ---- control structures --------------------------------------------------------------
+
+    def test_if_else_endif_nested(self):
+        # The outer IF is false: its ELSE branch runs, and in it a nested IF ... ELSE.
+        proc, moves = self.run_din(
+            "DEF INT A=2\nG0 X-1 Y0\n"
+            "IF A==1\n  X1\n  IF A>0\n    X2\n  ENDIF\nELSE\n"
+            "  IF A==2\n    X3\n  ELSE\n    X4\n  ENDIF\n  Y5\nENDIF\nX6\nM30\n")
+        self.assertEqual(proc.returncode, 0, proc.stderr)
+        self.assertEqual([m["to"] for m in moves[1:]],
+                         [{"X": 3.0, "Y": 0.0, "Z": 0.0}, {"X": 3.0, "Y": 5.0, "Z": 0.0},
+                          {"X": 6.0, "Y": 5.0, "Z": 0.0}])
+
+    def test_while_for_repeat_loop_and_their_counts(self):
+        vars_ = self.variables(
+            "DEF INT I, N=0, K\n"
+            "WHILE I<5\n  I=I+1\n  N=N+I\nENDWHILE\n"        # N = 1+2+3+4+5 = 15
+            "FOR K=2 TO 4\n  R1=R1+K\nENDFOR\n"              # R1 = 9, K ends at 5
+            "FOR R2=3 TO 1\n  R3=99\nENDFOR\n"               # never runs
+            "REPEAT\n  R4=R4+1\nUNTIL R4>=3\n"                # runs 3 times
+            "LOOP\n  R5=R5+2\n  IF R5>=6 GOTOF OUT\nENDLOOP\n"  # left by a jump
+            "OUT: R6=1\nM30\n")
+        self.assertEqual(vars_["I"], 5.0)
+        self.assertEqual(vars_["N"], 15.0)
+        self.assertEqual(vars_["R1"], 9.0)
+        self.assertEqual(vars_["K"], 5.0)
+        self.assertEqual(vars_["R2"], 3.0)
+        self.assertNotIn("R3", vars_)  # never written
+        self.assertEqual(vars_["R4"], 3.0)
+        self.assertEqual(vars_["R5"], 6.0)
+        self.assertEqual(vars_["R6"], 1.0)
+
+    def test_nested_for_loops_move_a_grid(self):
+        proc, moves = self.run_din(
+            "DEF INT I, J\nFOR J=0 TO 1\n  FOR I=1 TO 2\n    G1 X=I*10 Y=J*5 F100\n"
+            "  ENDFOR\nENDFOR\nM30\n")
+        self.assertEqual(proc.returncode, 0, proc.stderr)
+        self.assertEqual([(m["to"]["X"], m["to"]["Y"]) for m in moves],
+                         [(10.0, 0.0), (20.0, 0.0), (10.0, 5.0), (20.0, 5.0)])
+
+    def test_case_jumps_to_the_matching_constant_or_default(self):
+        program = ("DEF INT V={v}\nG0 X0\nCASE(V+1) OF 7 GOTOF LA7 -2 GOTOF LM DEFAULT GOTOF LD\n"
+                   "LA7: X7\nGOTOF ENDE\nLM: X-2\nGOTOF ENDE\nLD: X99\nENDE: M30\n")
+        for v, x in ((6, 7.0), (-3, -2.0), (0, 99.0)):
+            proc, moves = self.run_din(program.format(v=v))
+            self.assertEqual(proc.returncode, 0, proc.stderr)
+            self.assertEqual(moves[-1]["to"]["X"], x, v)
+        # No DEFAULT and no match: the next block.
+        proc, moves = self.run_din("G0 X0\nCASE(5) OF 1 GOTOF ENDE\nX5\nENDE: M30\n")
+        self.assertEqual(moves[-1]["to"]["X"], 5.0)
+
+    def test_a_while_loop_that_never_ends_is_stopped(self):
+        proc = ncc("run", self.write("p.mpf", "LOOP\nR1=R1+1\nENDLOOP\nM30\n"), "--emit=moves",
+                   "--max-back-jumps", "1000")
+        self.assertNotEqual(proc.returncode, 0)
+        self.assertEqual(errors(proc.stderr)[0]["code"], "NCC2419", proc.stderr)
+
+    def test_control_structure_alarms(self):
+        self.assertAlarm("G0 X1\nENDIF\nM30\n", "12640", 2, 1, "ENDIF without IF")
+        self.assertAlarm("R1=1\nIF R1==0\nX1\nM30\n", "12640", 2, 1, "IF without ENDIF")
+        self.assertAlarm("WHILE 0\nX1\nENDFOR\nM30\n", "12640", 3, 1, "ENDFOR where ENDWHILE")
+        self.assertAlarm("UNTIL 1\nM30\n", "12640", 1, 1, "UNTIL without REPEAT")
+        deep = "".join("IF 1\n" for _ in range(17)) + "".join("ENDIF\n" for _ in range(17)) + "M30\n"
+        self.assertAlarm(deep, "12641", 17, 1, "nested more than 16")
+        # A structure stands alone in its block.
+        self.assertAlarm("IF 1 X10\nENDIF\nM30\n", "NCC1006", 1, 6, "stands alone")
+        self.assertAlarm("REPEAT MA1 P=2\nM30\n", "NCC1090", 1, 1, "REPEAT label P=n")
+
     def test_alarms_carry_the_sinumerik_numbers_and_positions(self):
         self.assertAlarm("G0 X1\nR1=UNKNOWN+1\nM30\n", "12550", 2, 4, "'UNKNOWN' is not defined")
         self.assertAlarm("DEF REAL A[3]\nA[3]=1\nM30\n", "17020", 2, None, "index 3 is outside 0 to 2")
@@ -157,7 +225,7 @@ class DinTest(ScratchDirTest):
         self.assertAlarm("R1=1/0\nM30\n", "NCC2402", 1)
 
     def test_what_is_not_built_yet_is_refused_at_its_position(self):
-        self.assertAlarm("G0 X1\nWHILE R1<3\nENDWHILE\nM30\n", "NCC1090", 2, 1, "'WHILE'")
+        self.assertAlarm("G0 X1\nPROC A\nM30\n", "NCC1090", 2, 1, "'PROC'")
         self.assertAlarm("G0 X=IC(5)\nM30\n", "NCC1090", 1, 6, "function 'IC'")
         self.assertAlarm("G0 X1\nMYSUB\nM30\n", "NCC2010", 2, 1, "MYSUB")
         self.assertAlarm("DEF STRING[8] S\nM30\n", "NCC2010", 1, 15, "STRING")

@@ -81,6 +81,43 @@ TEST(DinParser, StatementsVariablesLabelsAndJumps) {
   EXPECT_EQ(p.block.statements[0].value.kind, ast::Expr::Kind::Vacant);
 }
 
+TEST(DinParser, ControlStructuresStandAloneWithNumberAndLabel) {
+  // Comparisons bind last in DIN: A==(1 AND B).
+  EXPECT_EQ(printed("N10 IF (A==1 AND B)"), "N10 IF (A==(1 AND B))");
+  EXPECT_EQ(printed("IF (A==1) AND (B<2)"), "IF (A==1) AND (B<2)");
+  EXPECT_EQ(printed("ELSE"), "ELSE");
+  EXPECT_EQ(printed("N20 LBL: ENDIF"), "N20 LBL: ENDIF");
+  EXPECT_EQ(printed("WHILE Y<=Y_END"), "WHILE Y<=Y_END");
+  EXPECT_EQ(printed("endwhile"), "ENDWHILE");
+  EXPECT_EQ(printed("N110 FOR COUNTER=0 TO NUMBER-1"), "N110 FOR COUNTER=0 TO NUMBER-1");
+  EXPECT_EQ(printed("FOR R[R1]=1 TO 3"), "FOR R[R1]=1 TO 3");
+  EXPECT_EQ(printed("ENDFOR"), "ENDFOR");
+  EXPECT_EQ(printed("REPEAT"), "REPEAT");
+  EXPECT_EQ(printed("UNTIL $AA_IW[Z] > (H-0.05)"), "UNTIL $AA_IW[Z]>(H-0.05)");
+  EXPECT_EQ(printed("LOOP"), "LOOP");
+  EXPECT_EQ(printed("ENDLOOP"), "ENDLOOP");
+  EXPECT_EQ(printed("N30 CASE(V1+V2) OF 7 GOTOF L_1 -9 GOTOB N20 DEFAULT GOTOF L_3"),
+            "N30 CASE (V1+V2) OF 7 GOTOF L_1 -9 GOTOB 20 DEFAULT GOTOF L_3");
+  EXPECT_EQ(printed("CASE(1) OF 1 GOTOF A"), "CASE (1) OF 1 GOTOF A");
+  // FOR holds its counter's assignment and the end value; CASE its branches after it.
+  Parsed p = parse("FOR I=2 TO 5");
+  ASSERT_TRUE(p.ok);
+  ASSERT_EQ(p.block.statements.size(), 1u);
+  const ast::Statement& f = p.block.statements[0];
+  EXPECT_EQ(f.kind, ast::Statement::Kind::For);
+  ASSERT_TRUE(f.then_assign);
+  EXPECT_EQ(*f.then_assign->target.text, "I");
+  EXPECT_EQ(f.then_assign->value.number, 2.0);
+  EXPECT_EQ(f.value.number, 5.0);
+  p = parse("CASE(X) OF 1 GOTOF A DEFAULT GOTOB B");
+  ASSERT_TRUE(p.ok);
+  ASSERT_EQ(p.block.statements.size(), 3u);
+  EXPECT_EQ(p.block.statements[1].kind, ast::Statement::Kind::CaseBranch);
+  EXPECT_EQ(p.block.statements[1].jump, ast::Jump::Forward);
+  EXPECT_EQ(p.block.statements[2].value.kind, ast::Expr::Kind::Vacant);
+  EXPECT_EQ(p.block.statements[2].jump, ast::Jump::Backward);
+}
+
 TEST(DinParser, LocationsAreColumnsOfTheLine) {
   Parsed p = parse("N5 R1=2 X=R1");
   ASSERT_TRUE(p.ok);
@@ -110,8 +147,14 @@ TEST(DinParser, BadTextGetsOneDiagnosticAtItsColumn) {
       {"X=SIN(,)", "p.mpf:1:7: error[NCC1011]: 'SIN': an argument is missing"},
       {"X=FOO(1)", "p.mpf:1:3: error[NCC1090]: DIN function 'FOO' is not supported yet"},
       {"X=1<<2", "p.mpf:1:4: error[NCC1090]: DIN string concatenation '<<'"},
-      {"IF R1>2", "p.mpf:1:1: error[NCC1090]: DIN 'IF' is not supported yet"},
-      {"N10 WHILE 1", "p.mpf:1:5: error[NCC1090]: DIN 'WHILE'"},
+      {"PROC A", "p.mpf:1:1: error[NCC1090]: DIN 'PROC' is not supported yet"},
+      {"N10 REPEATB MA1 P=2", "p.mpf:1:5: error[NCC1090]: DIN 'REPEATB'"},
+      {"N10 WHILE 1 X10", "p.mpf:1:13: error[NCC1006]: a control structure keyword (WHILE) stands alone"},
+      {"X1 ENDIF", "p.mpf:1:1: error[NCC1006]: a control structure keyword (ENDIF) stands alone"},
+      {"FOR 1=2 TO 3", "p.mpf:1:5: error[NCC1006]"},
+      {"FOR I=1", "p.mpf:1:8: error[NCC1010]"},
+      {"CASE(1) OF X GOTOF A", "p.mpf:1:12: error[NCC1006]"},
+      {"CASE(1) OF \"A\" GOTOF A", "p.mpf:1:12: error[NCC1090]: DIN a string constant of CASE"},
       {"G0 X1 @", "p.mpf:1:7: error[NCC1001]: unexpected character '@'"},
       {"%_N_A B", "p.mpf:1:1: error[NCC1001]: unexpected character '%'"},
       {"X1.5=3", "p.mpf:1:1: error[NCC1006]: 'X1.5' is not a name"},

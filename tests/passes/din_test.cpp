@@ -46,7 +46,7 @@ TEST(Din, WhatDinReadsOtherwiseIsRefusedAtItsPosition) {
       {"R10 X1 F100", "address R is not supported yet"},  // R parameter in DIN
       {"T1", "address T is not supported yet"},
       {"X=IC(10)", "NCC1090"},            // incremental values: not read yet
-      {"WHILE R1<5", "NCC1090"},          // control structures: not read yet
+      {"PROC A", "NCC1090"},              // subprogram definitions: not read yet
       {"N10 (comment) X1", "NCC1006"},    // no ( ) comments in DIN: unexpected '('
   };
   for (const Case& c : cases) {

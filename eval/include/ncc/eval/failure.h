@@ -41,6 +41,10 @@ enum class EvalError : uint8_t {
   ArrayIndex,
   JumpTarget,
   TypeMismatch,
+  // DIN control structures: an ENDIF, ELSE, ENDWHILE ... without its opening, an opening
+  // without its end; nested deeper than kMaxStructures.
+  StructureNesting,
+  StructureDepth,
   kCount,
 };
 

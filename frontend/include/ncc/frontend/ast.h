@@ -179,15 +179,29 @@ struct Statement {
     Define,      // DIN: DEF type target [= value]; target is a Name, its args the dimensions
     Label,       // DIN: a jump label `NAME:` (target is the Name)
     Call,        // DIN: a subprogram call by name; target is the Name, its args the arguments
+    // DIN control structures, each alone in its block (docs/din.md, Control structures). WHILE
+    // is `While` above with loop_id 0 (ISO's DO m pairs by number, DIN's by nesting).
+    If,          // IF cond (value) ... [ELSE ...] ENDIF
+    Else,
+    EndIf,
+    EndWhile,
+    For,         // FOR var = start TO end: then_assign is `var = start`, value the end
+    EndFor,
+    Repeat,      // REPEAT ... UNTIL cond
+    Until,       // value: the condition that ends the loop
+    Loop,        // LOOP ... ENDLOOP (left by a jump)
+    EndLoop,
+    Case,        // CASE (value) OF: the CaseBranch statements after it in the block
+    CaseBranch,  // a constant (value; Vacant for DEFAULT) and its jump (target, jump)
   };
   Kind kind = Kind::Assign;
   SourceLocation loc;
-  Expr target;  // Assign: the variable; Goto/IfGoto: a sequence number, or a Name (DIN label)
-  Expr value;   // Assign: the value; If*/While: the condition; Define: the initial value
+  Expr target;  // Assign: the variable; Goto/IfGoto/CaseBranch: a sequence number, or a Name (DIN label)
+  Expr value;   // Assign: the value; If*/While/Until/Case: the condition; Define: the initial value
   int loop_id = 0;  // DO m / END m
-  Box<Statement> then_assign;  // IfThen (copies are deep: the evaluator keeps loop bodies)
+  Box<Statement> then_assign;  // IfThen, For (copies are deep: the evaluator keeps loop bodies)
   DataType type = DataType::None;  // Define
-  Jump jump = Jump::Sequence;      // Goto, IfGoto
+  Jump jump = Jump::Sequence;      // Goto, IfGoto, CaseBranch
 };
 
 struct Block {
@@ -299,7 +313,7 @@ inline constexpr uint8_t kEnumValues = 0;
 template <>
 inline constexpr uint8_t kEnumValues<Expr::Kind> = static_cast<uint8_t>(Expr::Kind::String) + 1;
 template <>
-inline constexpr uint8_t kEnumValues<Statement::Kind> = static_cast<uint8_t>(Statement::Kind::Call) + 1;
+inline constexpr uint8_t kEnumValues<Statement::Kind> = static_cast<uint8_t>(Statement::Kind::CaseBranch) + 1;
 template <>
 inline constexpr uint8_t kEnumValues<DataType> = static_cast<uint8_t>(kDataTypeNames.size());
 template <>
