@@ -40,7 +40,7 @@ SEED = int(os.environ.get("NCC_FUZZ_CLI_SEED", "21"))
 # release stage runs all 400.
 COUNT = int(os.environ.get("NCC_FUZZ_CLI_COUNT",
                            "200" if os.environ.get("NCC_TEST_SANITIZED") else "400"))
-DIALECTS = ("mazak-m", "siemens-iso-m")  # conformance folders of supported dialects
+DIALECTS = ("mazak-m", "siemens-iso-m", "siemens-din")  # conformance folders of supported dialects
 TIMEOUT = 30  # seconds per run: far above any seed's run time
 MAX_SIMULATED_SECONDS = "600"  # simulated time per run (an instrumented build ticks slowly)
 MAX_STEPS = "200000"
@@ -84,7 +84,11 @@ BLOCKS = ["G95 G01 X10. F0.1", "M05", "S0", "M03 S1000", "G04 X2.", "G04 P1500",
           "G10 L2 P1 X900000.", "M00", "M01", "M99", "M98 P9999", "G43 H99 Z0", "G41 D1 X5.",
           "G40", "T1 M06", "G00 X-99999.999", "G01 F0 X1.", "G94 F1 X1.", "G61", "G63 G01 X2. F10.",
           "G20", "G21", "G17 G02 X1. Y1. R0.5", "G18 G03 Z1. X1. R0.5", "G19", "M30", "M02",
-          "%", "O9999", "G90 G53 X0", "G92 X1000000.", "G52 X-900000."]
+          "%", "O9999", "G90 G53 X0", "G92 X1000000.", "G52 X-900000.",
+          # DIN control structures and jumps (in ISO text they are refused by the parser).
+          "IF R1>2", "ELSE", "ENDIF", "WHILE R1<3", "ENDWHILE", "LOOP", "ENDLOOP", "REPEAT",
+          "UNTIL R1>1", "R1=R1+1", "FOR R2=0 TO 3", "ENDFOR", "CASE(R1) OF 1 GOTOF MA1 DEFAULT GOTOB MA1",
+          "MA1:", "GOTOB MA1"]
 # Blocks that compile but stop the run with an alarm (exit 3): feed per revolution with the
 # spindle stopped (NCC7207).
 ALARM_BLOCKS = ["M05\nG95 G01 X20. Y20. F0.1", "S0\nG95 G01 X-20. F0.2", "M05\nG95 G04 X3.",
@@ -122,7 +126,7 @@ def conformance_cases():
 def source_seeds():
     """(name, program, extra options, extra files) to start mutants from."""
     paths = sorted(glob.glob(os.path.join(ROOT, "examples", "*.nc")))
-    for folder in ("fanuc-m", "cam-iso"):
+    for folder in ("fanuc-m", "cam-iso", "siemens-din"):
         for path in sorted(glob.glob(os.path.join(ROOT, "tests", "corpus", folder, "*"))):
             if os.path.getsize(path) <= 4096:
                 paths.append(path)
