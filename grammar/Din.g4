@@ -17,8 +17,8 @@ block
     ;
 
 // The control structures (IF ... ENDIF, WHILE, FOR, REPEAT, LOOP, CASE) stand alone in their
-// block, with its number and labels: the frontend checks that. PROC and RET are keywords so that
-// no name takes them; the frontend says they are not built yet.
+// block, with its number and labels: the frontend checks that. A PROC block is the first of its
+// program: `PROC NAME(REAL A, VAR INT B) DISPLOF`, the attributes after the parameters.
 
 // Block skip '/', '/0' .. '/9'.
 blockStart
@@ -42,6 +42,8 @@ item
     | LOOP                                               # loopItem
     | ENDLOOP                                            # endLoopItem
     | CASE expr OF caseBranch+ (DEFAULT jump jumpTarget)?  # caseItem
+    | PROC IDENT (LPAREN (parameter (COMMA parameter)*)? RPAREN)? IDENT*  # procItem
+    | RET                                                # retItem
     | jump jumpTarget                                    # gotoItem
     | name EQUALS expr                                   # assignItem
     | IDENT sign=(PLUS | MINUS) NUMBER                   # signedWordItem
@@ -58,6 +60,12 @@ typeName
 // A variable and its initial value; arrays give their sizes: DEF REAL A[3,4].
 definition
     : IDENT (LBRACK expr (COMMA expr)* RBRACK)? (EQUALS expr)?
+    ;
+
+// A parameter of a PROC: by value, or by reference (VAR); arrays give their sizes, the first may
+// be left open (`VAR REAL A[,3]`).
+parameter
+    : VAR? typeName IDENT (LBRACK expr? (COMMA expr?)* RBRACK)?
     ;
 
 // `7 GOTOF LABEL_1`: a constant of CASE and where it jumps.
@@ -183,6 +191,7 @@ OF       : 'OF' ;
 DEFAULT  : 'DEFAULT' ;
 TO       : 'TO' ;
 PROC     : 'PROC' ;
+VAR      : 'VAR' ;
 RET      : 'RET' ;
 GOTOF    : 'GOTOF' ;
 GOTOB    : 'GOTOB' ;

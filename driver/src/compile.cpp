@@ -5,7 +5,9 @@
 #include <charconv>
 #include <fstream>
 #include <streambuf>
+#include <string>
 #include <string_view>
+#include <unordered_set>
 #include <utility>
 #include <system_error>
 
@@ -221,9 +223,24 @@ void prepareAtRunTime(Session& session, SourceProgramStore& store, prepare::Bloc
   bool modal_call = evaluator.modalCallInForce();
   for (const eval::StoredFile& file : blocks.files)
     for (const eval::StoredBlock& b : file.blocks) modal_call |= evaluator.mayStartModalCall(b.block);
+  // DIN: a word whose address a DEF or PROC declares assigns that variable (`E=7` after
+  // `PROC FILL(VAR REAL E)`), which only the run knows: such blocks are left to it.
+  std::unordered_set<std::string> declared;
   for (const eval::StoredFile& file : blocks.files)
     for (const eval::StoredBlock& b : file.blocks)
-      if (!modal_call && !evaluator.mayTakeArguments(b.block) &&
+      for (const ast::Statement& st : b.block.statements)
+        if ((st.kind == ast::Statement::Kind::Define || st.kind == ast::Statement::Kind::Parameter) &&
+            st.target.text)
+          declared.insert(*st.target.text);
+  const auto assignsVariable = [&](const ast::Block& block) {
+    if (declared.empty() || block.language != frontend::Language::Din) return false;
+    for (const ast::Word& w : block.words)
+      if (declared.count(std::string(w.address.view()))) return true;
+    return false;
+  };
+  for (const eval::StoredFile& file : blocks.files)
+    for (const eval::StoredBlock& b : file.blocks)
+      if (!modal_call && !evaluator.mayTakeArguments(b.block) && !assignsVariable(b.block) &&
           !(main_end && file.id == main_end->file && main_end->position < b.position))
         loop.lowering().checkStatically(b.block);
   if (session.diagnostics().hasErrors()) return;

@@ -343,9 +343,9 @@ bool Evaluator::Impl::perform(const Pending& p) {
 bool Evaluator::Impl::call(const Pending& p) {
   if (p.repeats == 0) return true;  // L0: the call is not made
   const int calls = static_cast<int>(frames.size()) - 1;
-  if (calls >= rules.max_call_nesting) {
-    fail(EvalError::CallNesting, p.loc,
-         absl::StrCat("calls nested more than ", rules.max_call_nesting, " deep"));
+  const int limit = p.din ? rules.max_named_call_nesting : rules.max_call_nesting;
+  if (calls >= limit) {
+    fail(EvalError::CallNesting, p.loc, absl::StrCat("calls nested more than ", limit, " deep"));
     return false;
   }
   if (p.macro) {
@@ -377,6 +377,13 @@ bool Evaluator::Impl::call(const Pending& p) {
     std::optional<ProgramPoint> found = p.name.empty()
                                             ? store.findProgram(p.program, caller.cursor->file())
                                             : store.findProgramNamed(p.name);
+    if (!found && p.din) {
+      // Fundamentals: a name that is no variable and no subprogram is not defined.
+      fail(EvalError::UndefinedName, p.loc,
+           absl::StrCat("'", p.name, "' is not defined: no variable, and no subprogram ", p.name,
+                        ".spf (or .mpf) in the program folder"));
+      return false;
+    }
     if (!found) {
       fail(EvalError::ProgramNotFound, p.loc,
            p.name.empty()
@@ -424,12 +431,31 @@ bool Evaluator::Impl::call(const Pending& p) {
   f.macro = p.macro;
   f.code = p.code;
   if (p.macro) variables.pushLocals(p.arguments);
+  if (p.din) {
+    // The subprogram's variables are its own (Fundamentals: local user data); its PROC binds
+    // the arguments.
+    f.din_call = true;
+    f.din_arguments = p.din_arguments;
+    variables.named().pushScope();
+  }
   frames.push_back(std::move(f));
   return true;
 }
 
 void Evaluator::Impl::closeFrame() {
   Frame& f = frames.back();
+  if (f.din_call) {
+    // VAR parameters: their values go back to the caller's variables.
+    std::vector<std::pair<VariableRef, Value>> back;
+    for (const auto& [param, ref] : f.by_reference) {
+      Failure failure;
+      std::optional<Value> v = variables.named().read(param, {}, f.call_loc, failure);
+      if (v) back.emplace_back(ref, *v);
+    }
+    variables.named().popScope();
+    for (const auto& [ref, v] : back)
+      if (!write(ref, v, f.call_loc)) break;
+  }
   if (f.macro) variables.popLocals();
   if (f.figure_rotation) options.figure_rotation.end();
   rejected_closed += f.cursor->rejectedBlocks();
@@ -438,6 +464,11 @@ void Evaluator::Impl::closeFrame() {
 
 bool Evaluator::Impl::ret(const Pending& p) {
   Frame& f = frames.back();
+  if (f.is_main && p.din) {
+    // M17 or RET in the main program: it ends there.
+    end = ProgramEnd::EndOfFile;
+    return true;
+  }
   if (f.is_main) {
     // M99 in the main program: it starts again (endless on a real control; bounded here by
     // the simulated time, or by the loop limits when it neither moves nor dwells).

@@ -32,13 +32,19 @@ const char* jumpName(ast::Jump jump) {
   }
 }
 
+// M17: the end of a subprogram (Fundamentals, subprogram technique), as RET.
+bool isReturnWord(const ast::Word& w) {
+  return w.address.is('M') && isLiteral(w.value) && literalValue(w.value) == 17;
+}
+
 }  // namespace
 
 bool Evaluator::Impl::dinPlain(const ast::Block& block) const {
   if (!block.statements.empty()) return false;
   const NamedVariables& named = variables.named();
   for (const ast::Word& w : block.words)
-    if (!isLiteral(w.value) || (named.any() && named.find(w.address.view()))) return false;
+    if (!isLiteral(w.value) || isReturnWord(w) || (named.any() && named.find(w.address.view())))
+      return false;
   return true;
 }
 
@@ -72,6 +78,10 @@ const ast::Block* Evaluator::Impl::evaluateDin(const ast::Block& block, const Pr
   for (const Item& item : items) {
     if (item.word) {
       const ast::Word& w = *item.word;
+      if (isReturnWord(w)) {
+        dinReturn(w.loc, at);
+        continue;
+      }
       if (named.any() && named.find(w.address.view())) {
         std::optional<Value> v = value(w.value, 0, true);
         if (!v) return nullptr;
@@ -126,10 +136,16 @@ const ast::Block* Evaluator::Impl::evaluateDin(const ast::Block& block, const Pr
         jump = &st;
         break;
       case K::Call:
-        fail(EvalError::NotSupported, st.loc,
-             absl::StrCat("the call of '", st.target.text ? *st.target.text : std::string(),
-                          "': DIN subprogram calls by name are not supported yet (docs/din.md)"));
-        return nullptr;
+        if (!dinCall(st, at)) return nullptr;
+        break;
+      case K::Proc:
+        if (!dinProc(block, st, at)) return nullptr;
+        break;
+      case K::Parameter:
+        break;  // bound by its PROC
+      case K::Return:
+        dinReturn(st.loc, at);
+        break;
       case K::If:
       case K::Else:
       case K::EndIf:
@@ -273,8 +289,6 @@ bool Evaluator::Impl::dinControl(const ast::Block& block, const ast::Statement& 
                                  const ProgramPoint& at) {
   Frame& frame = frames.back();
   std::vector<Structure>& open = frame.structures;
-  NamedVariables& named = variables.named();
-  Failure failure;
   const auto condition = [&]() -> std::optional<bool> {
     std::optional<Value> c = value(st.value, 0, true);
     if (!c) return std::nullopt;
@@ -343,47 +357,17 @@ bool Evaluator::Impl::dinControl(const ast::Block& block, const ast::Statement& 
       }
       const ast::Statement& init = *st.then_assign;
       Structure loop{SK::For, at};
-      ExpressionContext context{rules, variables};
-      context.din = true;
-      if (init.target.kind == ast::Expr::Kind::RParam && !init.target.args.empty()) {
-        std::optional<Value> index = value(init.target.args[0], 0, true);
-        if (!index) return false;
-        std::optional<int64_t> n = variableNumber(*index, rules, init.target.loc, failure);
-        if (!n) {
-          fail(failure);
-          return false;
-        }
-        loop.r = *n;
-      } else if (init.target.kind == ast::Expr::Kind::Name && init.target.text) {
-        std::optional<std::vector<int64_t>> indices = indicesOf(init.target.args, context, failure);
-        if (!indices) {
-          fail(failure);
-          return false;
-        }
-        loop.name = *init.target.text;
-        loop.indices = std::move(*indices);
-      } else {
-        fail(EvalError::VariableNumber, init.target.loc, "the FOR counter is not a variable");
-        return false;
-      }
+      std::optional<VariableRef> counter_ref = variableRef(init.target);
+      if (!counter_ref) return false;
+      loop.counter = std::move(*counter_ref);
       std::optional<Value> start = value(init.value, 0, true);
       if (!start) return false;
       std::optional<Value> end = value(st.value, 0, true);
       if (!end) return false;
       loop.end = end->arithmetic();
-      const bool written = loop.r >= 0
-                               ? named.writeR(loop.r, *start, init.target.loc, failure)
-                               : named.write(loop.name, loop.indices, *start, init.target.loc, failure);
-      if (!written) {
-        fail(failure);
-        return false;
-      }
-      std::optional<Value> counter = loop.r >= 0 ? named.readR(loop.r, st.loc, failure)
-                                                 : named.read(loop.name, loop.indices, st.loc, failure);
-      if (!counter) {
-        fail(failure);
-        return false;
-      }
+      if (!write(loop.counter, *start, init.target.loc)) return false;
+      std::optional<Value> counter = read(loop.counter, st.loc);
+      if (!counter) return false;
       if (counter->arithmetic() <= loop.end) {
         if (!openStructure(SK::For, at, st.loc)) return false;
         open.back() = std::move(loop);
@@ -394,19 +378,10 @@ bool Evaluator::Impl::dinControl(const ast::Block& block, const ast::Statement& 
     case SK::EndFor: {
       Structure* s = closeStructure(SK::For, st);
       if (!s) return false;
-      std::optional<Value> counter = s->r >= 0 ? named.readR(s->r, st.loc, failure)
-                                               : named.read(s->name, s->indices, st.loc, failure);
-      if (!counter) {
-        fail(failure);
-        return false;
-      }
+      std::optional<Value> counter = read(s->counter, st.loc);
+      if (!counter) return false;
       const Value next = Value::of(counter->arithmetic() + 1);
-      const bool written = s->r >= 0 ? named.writeR(s->r, next, st.loc, failure)
-                                     : named.write(s->name, s->indices, next, st.loc, failure);
-      if (!written) {
-        fail(failure);
-        return false;
-      }
+      if (!write(s->counter, next, st.loc)) return false;
       if (next.number > s->end) {
         open.pop_back();
         return true;
@@ -435,6 +410,177 @@ bool Evaluator::Impl::dinControl(const ast::Block& block, const ast::Statement& 
       fail(EvalError::NotSupported, st.loc, "a statement that is not a control structure");
       return false;
   }
+}
+
+// ---- variables named by reference ---------------------------------------------------------
+
+std::optional<VariableRef> Evaluator::Impl::variableRef(const ast::Expr& e) {
+  Failure failure;
+  VariableRef ref;
+  if (e.kind == ast::Expr::Kind::RParam && !e.args.empty()) {
+    std::optional<Value> index = value(e.args[0], 0, true);
+    if (!index) return std::nullopt;
+    std::optional<int64_t> n = variableNumber(*index, rules, e.loc, failure);
+    if (!n) {
+      fail(failure);
+      return std::nullopt;
+    }
+    ref.r = *n;
+    return ref;
+  }
+  if (e.kind == ast::Expr::Kind::Name && e.text) {
+    ExpressionContext context{rules, variables};
+    context.din = true;
+    std::optional<std::vector<int64_t>> indices = indicesOf(e.args, context, failure);
+    if (!indices) {
+      fail(failure);
+      return std::nullopt;
+    }
+    ref.name = *e.text;
+    ref.indices = std::move(*indices);
+    return ref;
+  }
+  fail(EvalError::VariableNumber, e.loc, "not a variable");
+  return std::nullopt;
+}
+
+std::optional<Value> Evaluator::Impl::read(const VariableRef& ref, SourceLocation loc) {
+  Failure failure;
+  NamedVariables& named = variables.named();
+  std::optional<Value> v =
+      ref.r >= 0 ? named.readR(ref.r, loc, failure) : named.read(ref.name, ref.indices, loc, failure);
+  if (!v) fail(failure);
+  return v;
+}
+
+bool Evaluator::Impl::write(const VariableRef& ref, const Value& v, SourceLocation loc) {
+  Failure failure;
+  NamedVariables& named = variables.named();
+  const bool ok = ref.r >= 0 ? named.writeR(ref.r, v, loc, failure)
+                             : named.write(ref.name, ref.indices, v, loc, failure);
+  if (!ok) fail(failure);
+  return ok;
+}
+
+// ---- subprograms (Fundamentals, subprogram technique) --------------------------------------
+
+namespace {
+
+// Names the control knows before the program folder (issue 33 builds the cycles): a call of
+// one is refused as not built yet, never looked for as a file.
+struct BuiltIn {
+  std::string_view name;
+  bool prefix;  // CYCLE81, CYCLE800 ...: every name that starts so
+  const char* what;
+};
+constexpr BuiltIn kBuiltIns[] = {
+    {"TRANS", false, "programmable frame"},   {"ATRANS", false, "programmable frame"},
+    {"ROT", false, "programmable frame"},     {"AROT", false, "programmable frame"},
+    {"RPL", false, "programmable frame"},     {"SCALE", false, "programmable frame"},
+    {"ASCALE", false, "programmable frame"},  {"MIRROR", false, "programmable frame"},
+    {"AMIRROR", false, "programmable frame"}, {"CYCLE", true, "Siemens cycle"},
+    {"POCKET", true, "Siemens milling cycle"}, {"SLOT", true, "Siemens milling cycle"},
+    {"HOLES", true, "Siemens hole pattern"},  {"LONGHOLE", false, "Siemens milling cycle"},
+    {"SETAL", false, "setting an alarm"},     {"MSG", false, "operator message"},
+    {"STOPRE", false, "preprocessing stop"},  {"BSPLINE", false, "spline interpolation"},
+    {"ASPLINE", false, "spline interpolation"}, {"CSPLINE", false, "spline interpolation"},
+    {"POLY", false, "polynomial interpolation"}, {"TRANSMIT", false, "kinematic transformation"},
+    {"TRACYL", false, "kinematic transformation"}, {"TRAORI", false, "kinematic transformation"},
+    {"TRAFOOF", false, "kinematic transformation"}, {"WAITP", false, "positioning axes"},
+    {"WAITS", false, "spindle synchronisation"}, {"SOFT", false, "acceleration profile"},
+    {"BRISK", false, "acceleration profile"}, {"FFWON", false, "feedforward control"},
+    {"FFWOF", false, "feedforward control"}, {"CDON", false, "collision detection"},
+    {"CDOF", false, "collision detection"}, {"MCALL", false, "modal subprogram call"},
+    {"EXTERN", false, "external subprogram declaration"},
+};
+
+const BuiltIn* builtIn(std::string_view name) {
+  for (const BuiltIn& b : kBuiltIns)
+    if (b.prefix ? name.substr(0, b.name.size()) == b.name : name == b.name) return &b;
+  return nullptr;
+}
+
+}  // namespace
+
+bool Evaluator::Impl::dinCall(const ast::Statement& st, const ProgramPoint& at) {
+  const std::string name = st.target.text ? *st.target.text : std::string();
+  if (const BuiltIn* b = builtIn(name)) {
+    fail(EvalError::NotSupported, st.loc,
+         absl::StrCat("'", name, "' (", b->what, ") is not supported yet (docs/din.md)"));
+    return false;
+  }
+  Pending p;
+  p.kind = Pending::Kind::Call;
+  p.din = true;
+  p.name = name;
+  p.loc = st.loc;
+  p.at = at;
+  for (const ast::Expr& arg : st.target.args) {
+    DinArgument& a = p.din_arguments.emplace_back();
+    a.loc = arg.loc;
+    if (arg.kind == ast::Expr::Kind::Vacant) continue;  // omitted: the parameter gets 0
+    a.value = value(arg, 0, true);
+    if (!a.value) return false;
+    if (arg.kind == ast::Expr::Kind::Name || arg.kind == ast::Expr::Kind::RParam) {
+      a.ref = variableRef(arg);
+      if (!a.ref) return false;
+    }
+  }
+  pending.push_back(std::move(p));
+  return true;
+}
+
+bool Evaluator::Impl::dinProc(const ast::Block& block, const ast::Statement& st,
+                              const ProgramPoint& at) {
+  Frame& frame = frames.back();
+  const std::string name = st.target.text ? *st.target.text : std::string();
+  if (!(at == frame.first_content)) {
+    fail(EvalError::ProcPlacement, st.loc,
+         absl::StrCat("PROC ", name, " must be the first block of its program"));
+    return false;
+  }
+  std::vector<const ast::Statement*> params;
+  for (const ast::Statement& s : block.statements)
+    if (s.kind == SK::Parameter) params.push_back(&s);
+  const std::vector<DinArgument>& args = frame.din_arguments;
+  if (args.size() > params.size()) {
+    fail(EvalError::TooManyArguments, frame.call_loc,
+         absl::StrCat("too many parameters: ", name, " takes ", params.size(), ", the call gives ",
+                      args.size()));
+    return false;
+  }
+  NamedVariables& named = variables.named();
+  Failure failure;
+  for (size_t i = 0; i < params.size(); ++i) {
+    const ast::Statement& param = *params[i];
+    const DinArgument* arg = i < args.size() ? &args[i] : nullptr;
+    const std::string param_name = param.target.text ? *param.target.text : std::string();
+    if (param.loop_id == 1 && frame.din_call) {
+      if (!arg || !arg->ref) {
+        fail(EvalError::ArgumentNotVariable, arg ? arg->loc : frame.call_loc,
+             absl::StrCat("parameter ", param_name, " of ", name,
+                          " is VAR (passed by reference): the call must give a variable"));
+        return false;
+      }
+      frame.by_reference.emplace_back(param_name, *arg->ref);
+    }
+    // An omitted argument is 0 (cycles notes §1.3.4).
+    const std::optional<Value> initial = arg ? arg->value : std::nullopt;
+    if (!named.define(param_name, param.type, {}, initial, param.loc, failure)) {
+      fail(failure);
+      return false;
+    }
+  }
+  return true;
+}
+
+void Evaluator::Impl::dinReturn(SourceLocation loc, const ProgramPoint& at) {
+  Pending p;
+  p.kind = Pending::Kind::Return;
+  p.din = true;
+  p.loc = loc;
+  p.at = at;
+  pending.push_back(std::move(p));
 }
 
 bool Evaluator::Impl::dinJump(const ast::Statement& st, const ProgramPoint& at) {

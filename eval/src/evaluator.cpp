@@ -197,13 +197,23 @@ const ast::Block* Evaluator::Impl::next() {
         end = ProgramEnd::EndOfRecord;
         return nullptr;
       }
-      if (!f.is_main) {
+      if (!f.is_main && f.seen_content) {
         programFinished();
         continue;
       }
-      continue;  // the tape's opening '%'
+      continue;  // the tape's opening '%' (a subprogram file's `%_N_NAME_SPF`)
     }
-    if (!block->empty()) f.seen_content = true;
+    if (!f.seen_content && !block->empty()) {
+      f.seen_content = true;
+      f.first_content = at;
+      // A DIN subprogram given arguments binds them in its first block, its PROC.
+      if (f.din_call && !f.din_arguments.empty() &&
+          (block->statements.empty() || block->statements[0].kind != ast::Statement::Kind::Proc)) {
+        fail(EvalError::TooManyArguments, f.call_loc,
+             "too many parameters: the subprogram has no PROC with parameters");
+        return nullptr;
+      }
+    }
     if (options.skipped && options.skipped(*block)) return block;  // lowering skips it
     if (plain(*block)) return block;  // most blocks: nothing to evaluate, nothing to move
     const ast::Block* out = block->language == frontend::Language::Din
@@ -244,7 +254,10 @@ bool Evaluator::Impl::wordValue(const ast::Word& w, ast::Block& out, bool din) {
     out.words.push_back(w);
     return true;
   }
-  std::optional<Value> v = value(w.value, 0, din);
+  // DIN `X=IC(5)` / `X=AC(..)`: the value inside, kept marked for lowering (block_words.cpp).
+  const bool distance = din && w.value.kind == ast::Expr::Kind::Call && w.value.args.size() == 1 &&
+                        (w.value.op == ast::Op::Ic || w.value.op == ast::Op::Ac);
+  std::optional<Value> v = value(distance ? w.value.args[0] : w.value, 0, din);
   if (!v) return false;
   const AddressShape shape = addressShape(w.address);
   AddressLimits limits;
@@ -273,11 +286,17 @@ bool Evaluator::Impl::wordValue(const ast::Word& w, ast::Block& out, bool din) {
   computed.address = w.address;
   computed.loc = w.loc;
   ast::Expr* number = &computed.value;
+  if (distance) {
+    number->kind = ast::Expr::Kind::Call;
+    number->op = w.value.op;
+    number->loc = w.value.loc;
+    number = &number->args.emplace_back();
+  }
   if (a->value < 0) {
-    computed.value.kind = ast::Expr::Kind::Unary;
-    computed.value.op = ast::Op::Minus;
-    computed.value.loc = w.value.loc;
-    number = &computed.value.args.emplace_back();
+    number->kind = ast::Expr::Kind::Unary;
+    number->op = ast::Op::Minus;
+    number->loc = w.value.loc;
+    number = &number->args.emplace_back();
   }
   number->kind = ast::Expr::Kind::Number;
   number->number = std::abs(a->value);
@@ -404,6 +423,9 @@ const ast::Block* Evaluator::Impl::evaluateBlock(const ast::Block& block, const 
       case K::EndLoop:
       case K::Case:
       case K::CaseBranch:
+      case K::Proc:
+      case K::Parameter:
+      case K::Return:
         // DIN statements: a DIN block goes to evaluateDin (din.cpp); an ISO block never has
         // them (a tree from elsewhere, a damaged store).
         fail(EvalError::NotSupported, st.loc, "a DIN statement in an ISO block");

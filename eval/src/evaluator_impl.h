@@ -3,7 +3,8 @@
 //   evaluator.cpp  the block loop: program boundaries, statements (assignments, IF, GOTO,
 //                  WHILE/END), word values, the step limit
 //   calls.cpp      M98/M99, G65, G66/G66.1/G67: frames, arguments, repeats, returns
-//   din.cpp        DIN blocks: DEF, assignments in written order, R parameters, jumps
+//   din.cpp        DIN blocks: DEF, assignments in written order, R parameters, jumps,
+//                  control structures, calls by name and PROC
 #include <cstdint>
 #include <deque>
 #include <memory>
@@ -22,17 +23,29 @@ struct Loop {
   ProgramPoint at;
 };
 
+// A DIN variable a FOR counts with or a VAR argument names: R r, or a variable and its indices.
+struct VariableRef {
+  int64_t r = -1;
+  std::string name;
+  std::vector<int64_t> indices;
+};
+
+// An argument of a DIN call by name: its value (none when omitted, `F(1,,3)`), and the
+// variable it names when it is one (a VAR parameter writes it back on return).
+struct DinArgument {
+  std::optional<Value> value;
+  std::optional<VariableRef> ref;
+  SourceLocation loc;
+};
+
 // An open DIN control structure (din.cpp): IF, WHILE, FOR, REPEAT or LOOP, and where its
 // opening block starts.
 struct Structure {
   ast::Statement::Kind kind = ast::Statement::Kind::If;
   ProgramPoint at;
-  // FOR: the counter (R r, or a variable and its indices) and the end value, taken once when
-  // the loop starts.
+  // FOR: the counter and the end value, taken once when the loop starts.
   double end = 0;
-  int64_t r = -1;
-  std::string name;
-  std::vector<int64_t> indices;
+  VariableRef counter;
 };
 
 // One program being run: the main program, or a subprogram / macro called by the frame below.
@@ -50,9 +63,15 @@ struct Frame {
   bool is_main = false;
   std::string code;              // a code macro's code ("M6"): it acts as the plain code inside
   bool seen_content = false;
+  ProgramPoint first_content;     // the program's first block with content (its PROC)
   std::vector<Loop> loops;
   std::vector<Structure> structures;
   std::optional<ProgramPoint> for_resume;  // ENDFOR went back to this FOR: run its body again
+  // A DIN subprogram called by name: its own scope of variables, the call's arguments (bound
+  // by its PROC), and the VAR parameters to write back to the caller's variables on return.
+  bool din_call = false;
+  std::vector<DinArgument> din_arguments;
+  std::vector<std::pair<std::string, VariableRef>> by_reference;
 };
 
 // A modal macro call in force (G66: after each motion block; G66.1: every block).
@@ -78,6 +97,9 @@ struct Pending {
   bool macro = false;
   Variables::Locals arguments;
   std::optional<std::array<std::optional<double>, 3>> figure;  // M98 I J K with L > 1
+  // DIN: a call by name (`name`) with its arguments, or a return (M17, RET).
+  bool din = false;
+  std::vector<DinArgument> din_arguments;
   SourceLocation loc;
   ProgramPoint at;  // the call or return block
 };
@@ -153,6 +175,17 @@ struct Evaluator::Impl {
   // ELSE or ENDIF for an IF); the kind found, nullopt after failing.
   std::optional<ast::Statement::Kind> skipStructure(const ast::Statement& st,
                                                     std::initializer_list<ast::Statement::Kind> ends);
+  // The variable `e` names (an R parameter, a variable or its element); nullopt after failing.
+  std::optional<VariableRef> variableRef(const ast::Expr& e);
+  std::optional<Value> read(const VariableRef& ref, SourceLocation loc);
+  bool write(const VariableRef& ref, const Value& v, SourceLocation loc);
+  // A call by name: a built-in not built yet is refused; otherwise the call is scheduled with
+  // its arguments evaluated (the subprogram is looked for in the program folder when made).
+  bool dinCall(const ast::Statement& st, const ProgramPoint& at);
+  // PROC: binds the call's arguments to the parameters in a new scope of variables.
+  bool dinProc(const ast::Block& block, const ast::Statement& st, const ProgramPoint& at);
+  // M17 or RET: returns after the block (in the main program: its end).
+  void dinReturn(SourceLocation loc, const ProgramPoint& at);
 
   // ---- calls.cpp ----
   // Whether a literal word is a call word (M98, M99, G65, G66, G66.1, G67) or a code macro:

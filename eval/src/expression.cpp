@@ -313,6 +313,13 @@ class Evaluator {
       case O::MaxVal: return result(std::max(a, x[1]), e);
       case O::Bin:
       case O::Bcd: return bcd(e, a);
+      case O::Ic:
+      case O::Ac:
+        // Only an address's whole value (X=IC(5)): the evaluator reads it there.
+        fail(failure_, EvalError::AddressValue, e.loc,
+             absl::StrCat(ast::opText(e.op), "() gives an axis its value for one block (X=",
+                          ast::opText(e.op), "(5)); it is not a value of an expression"));
+        return std::nullopt;
       default:
         return unknown(e, "function");
     }

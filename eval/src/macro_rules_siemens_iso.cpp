@@ -18,7 +18,8 @@ constexpr std::string_view kFiles[] = {"{:04}.spf", "{}.spf", "{:04}.mpf", "{}.m
 // alarms (Diagnostics Manual; the cycles notes §6 cite the 12xxx range): 12550 "name not
 // defined", 17020 "illegal array index", 14080 "jump destination not found", 12150 "operation
 // not compatible with data type", 12640 "invalid nesting of control structures", 12641
-// "nesting depth of control structures too large". The ISO-mode errors keep the NCC codes
+// "nesting depth of control structures too large", 12320 "parameter is not a variable", 12340
+// "number of parameters too high". The ISO-mode errors keep the NCC codes
 // (§6 numbers none).
 constexpr std::array<std::string_view, kNccCodes.size()> alarms() {
   auto a = kNccCodes;
@@ -28,6 +29,8 @@ constexpr std::array<std::string_view, kNccCodes.size()> alarms() {
   a[static_cast<size_t>(EvalError::TypeMismatch)] = "12150";
   a[static_cast<size_t>(EvalError::StructureNesting)] = "12640";
   a[static_cast<size_t>(EvalError::StructureDepth)] = "12641";
+  a[static_cast<size_t>(EvalError::ArgumentNotVariable)] = "12320";
+  a[static_cast<size_t>(EvalError::TooManyArguments)] = "12340";
   return a;
 }
 constexpr auto kAlarms = alarms();
@@ -49,6 +52,9 @@ constinit const MacroRules kSiemensIsoRules{
     .max_do_nesting = 3,
     .max_call_nesting = 4,   // §4.3: "nesting is limited to 4 levels, more is an error"
     .max_macro_nesting = 4,  // G65/G66 are among the 4 (no separate limit stated)
+    // DIN: 16 program levels, the main program one of them (Programming Manual
+    // Fundamentals, subprogram technique: nesting depth).
+    .max_named_call_nesting = 15,
     .goto_search = SequenceSearch::ForwardThenFromStart,
     // §4.3: M99 P n searches "forward from the call block to the end, then from the start".
     .return_search = SequenceSearch::ForwardThenFromStart,

@@ -125,6 +125,12 @@ class Printer {
       case K::EndLoop: return "ENDLOOP";
       case K::Case:
         return absl::StrCat("CASE ", bare(s.value), " OF");
+      case K::Proc:
+        return absl::StrCat("PROC ", print(s.target));
+      case K::Parameter:
+        return absl::StrCat(s.loop_id ? "VAR " : "",
+                            ast::kDataTypeNames[static_cast<size_t>(s.type)], " ", print(s.target));
+      case K::Return: return "RET";
       case K::CaseBranch:
         return absl::StrCat(s.value.kind == ast::Expr::Kind::Vacant ? "DEFAULT" : print(s.value),
                             " ", jump(s.jump), " ", print(s.target));
@@ -188,7 +194,20 @@ std::string printBlock(const ast::Block& block) {
   if (block.sequence) parts.push_back(absl::StrCat("N", *block.sequence));
   const Printer printer(block.language);
   for (const ast::Word& w : block.words) parts.push_back(printer.word(w));
-  for (const ast::Statement& s : block.statements) parts.push_back(printer.print(s));
+  for (size_t i = 0; i < block.statements.size(); ++i) {
+    const ast::Statement& s = block.statements[i];
+    if (s.kind != ast::Statement::Kind::Proc) {
+      parts.push_back(printer.print(s));
+      continue;
+    }
+    // PROC NAME(REAL A,VAR INT B): the Parameter statements after it, in its brackets.
+    std::vector<std::string> params;
+    while (i + 1 < block.statements.size() &&
+           block.statements[i + 1].kind == ast::Statement::Kind::Parameter)
+      params.push_back(printer.print(block.statements[++i]));
+    parts.push_back(absl::StrCat(printer.print(s), params.empty() ? "" : "(",
+                                 absl::StrJoin(params, ","), params.empty() ? "" : ")"));
+  }
   for (const std::string& c : block.comments) parts.push_back(absl::StrCat("(", c, ")"));
   return absl::StrJoin(parts, " ");
 }

@@ -40,7 +40,8 @@ constexpr std::array kFunctions = {
     DinFunction{"POT", ast::Op::Pot},       DinFunction{"TRUNC", ast::Op::Trunc},
     DinFunction{"ROUND", ast::Op::Round},   DinFunction{"LN", ast::Op::Ln},
     DinFunction{"EXP", ast::Op::Exp},       DinFunction{"MINVAL", ast::Op::MinVal},
-    DinFunction{"MAXVAL", ast::Op::MaxVal},
+    DinFunction{"MAXVAL", ast::Op::MaxVal}, DinFunction{"IC", ast::Op::Ic},
+    DinFunction{"AC", ast::Op::Ac},
 };
 
 ast::DataType typeNamed(std::string_view name) {
@@ -77,14 +78,10 @@ class Builder : public BlockText {
       if (t->getType() == DinLexer::OPEN_STRING)
         fail(codes::kUnclosedString, at(t), "string '\"' is not closed by '\"'");
     }
-    // Subprogram definitions are keywords the grammar has no statement for yet; REPEATB
-    // repeats a program section (REPEAT alone opens a REPEAT ... UNTIL loop).
-    for (const Token* t : tokens) {
-      const size_t type = t->getType();
-      if (type == DinLexer::PROC || type == DinLexer::RET ||
-          (type == DinLexer::REPEAT && upper(t) == "REPEATB"))
+    // REPEATB repeats a program section (REPEAT alone opens a REPEAT ... UNTIL loop).
+    for (const Token* t : tokens)
+      if (t->getType() == DinLexer::REPEAT && upper(t) == "REPEATB")
         notYet(at(t), absl::StrCat("'", str(upper(t)), "'"));
-    }
     // The parser recurses once per sign and a few times per bracket: bound both before it runs.
     int open = 0;
     int signs = 0;
@@ -155,6 +152,7 @@ class Builder : public BlockText {
       case SKind::If: case SKind::Else: case SKind::EndIf: case SKind::While:
       case SKind::EndWhile: case SKind::For: case SKind::EndFor: case SKind::Repeat:
       case SKind::Until: case SKind::Loop: case SKind::EndLoop: case SKind::Case:
+      case SKind::Proc: case SKind::Return:
         return true;
       default:
         return false;
@@ -163,7 +161,7 @@ class Builder : public BlockText {
 
   // A control structure's keyword stands alone in its block, with the block number and labels
   // (Job Planning, program flow control: the structures are executed by the interpreter, not
-  // by the block's motion): `IF A>1 X10` is refused rather than half-read.
+  // by the block's motion): `IF A>1 X10` is refused rather than half-read. So do PROC and RET.
   void structureAlone(const ast::Block& b) {
     const ast::Statement* structure = nullptr;
     for (const ast::Statement& st : b.statements)
@@ -177,7 +175,8 @@ class Builder : public BlockText {
     };
     for (const ast::Word& w : b.words) consider(w.loc);
     for (const ast::Statement& st : b.statements)
-      if (&st != structure && st.kind != SKind::Label && st.kind != SKind::CaseBranch)
+      if (&st != structure && st.kind != SKind::Label && st.kind != SKind::CaseBranch &&
+          st.kind != SKind::Parameter)
         consider(st.loc);
     if (!found) return;
     if (structure->kind == SKind::Repeat)
@@ -200,6 +199,8 @@ class Builder : public BlockText {
       case SKind::Until: return "UNTIL";
       case SKind::Loop: return "LOOP";
       case SKind::EndLoop: return "ENDLOOP";
+      case SKind::Proc: return "PROC";
+      case SKind::Return: return "RET";
       default: return "CASE";
     }
   }
@@ -253,6 +254,10 @@ class Builder : public BlockText {
       forLoop(b, f);
     } else if (auto* cs = dynamic_cast<DinParser::CaseItemContext*>(ctx)) {
       caseOf(b, cs);
+    } else if (auto* pr = dynamic_cast<DinParser::ProcItemContext*>(ctx)) {
+      proc(b, pr);
+    } else if (dynamic_cast<DinParser::RetItemContext*>(ctx)) {
+      statement(b, SKind::Return, ctx->getStart());
     } else if (dynamic_cast<DinParser::ElseItemContext*>(ctx)) {
       statement(b, SKind::Else, ctx->getStart());
     } else if (dynamic_cast<DinParser::EndIfItemContext*>(ctx)) {
@@ -473,6 +478,38 @@ class Builder : public BlockText {
       s.value.kind = Kind::Vacant;
       s.value.loc = s.loc;
       jump(s, c->jump(), c->jumpTarget());
+    }
+  }
+
+  // PROC NAME(REAL A, VAR INT B) DISPLOF: the Proc statement, then one Parameter each.
+  void proc(ast::Block& b, DinParser::ProcItemContext* p) {
+    std::vector<antlr4::tree::TerminalNode*> names = p->IDENT();
+    ast::Statement& s = statement(b, SKind::Proc, p->PROC()->getSymbol());
+    s.target = name(names[0]->getSymbol());
+    for (DinParser::ParameterContext* param : p->parameter()) {
+      DinParser::TypeNameContext* tn = param->typeName();
+      const ast::DataType type = typeNamed(upper(tn->IDENT()));
+      if (type == ast::DataType::None)
+        fail(codes::kUnknownType, at(tn->IDENT()),
+             absl::StrCat("unknown type '", str(upper(tn->IDENT())),
+                          "' (INT, REAL, BOOL, CHAR, STRING[n], AXIS, FRAME)"));
+      if (param->LBRACK()) notYet(at(param->LBRACK()), "array parameters of a PROC");
+      ast::Statement& ps = statement(b, SKind::Parameter, param->IDENT()->getSymbol());
+      ps.type = type;
+      ps.loop_id = param->VAR() ? 1 : 0;
+      ps.target = name(param->IDENT()->getSymbol());
+    }
+    // Attributes: what the operator panel shows and single-block stops, which a run does not
+    // have; SAVE (modal settings and frames restored on return) is not built yet.
+    for (size_t i = 1; i < names.size(); ++i) {
+      const std::string_view attribute = upper(names[i]);
+      if (attribute == "SAVE")
+        notYet(at(names[i]), "'PROC ... SAVE' (restoring modal settings and frames on return)");
+      if (attribute != "DISPLOF" && attribute != "DISPLON" && attribute != "SBLOF" &&
+          attribute != "SBLON" && attribute != "ACTBLOCNO")
+        fail(codes::kUnexpectedToken, at(names[i]),
+             absl::StrCat("'", str(attribute),
+                          "' is not a PROC attribute (SAVE, DISPLOF, DISPLON, SBLOF, SBLON, ACTBLOCNO)"));
     }
   }
 

@@ -186,7 +186,9 @@ void printBlock(std::ostream& out, const Block& block, const AxisNames& axes) {
     out << ")";
   }
   if (block.corner)  // ,C / ,R not yet inserted (before the corners pass)
-    out << (block.corner->kind == CornerRequest::Kind::Chamfer ? " chamfer(" : " round(")
+    out << (block.corner->kind == CornerRequest::Kind::Chamfer         ? " chamfer("
+            : block.corner->kind == CornerRequest::Kind::ChamferLength ? " chamfer_length("
+                                                                       : " round(")
         << num(block.corner->amount) << ")";
   if (block.comp) {  // before the compensation pass: the side, the radius and the specials
     const CutterComp& c = *block.comp;

@@ -74,13 +74,15 @@ class Decoder {
     failed_ = true;
   }
 
-  bool literal(const ast::Word& w, double& v, bool& point) {
-    if (w.value.kind == ast::Expr::Kind::Number) {  // nearly every word: a number as written
-      v = w.value.number;
-      point = w.value.has_point;
+  bool literal(const ast::Word& w, double& v, bool& point) { return literal(w, w.value, v, point); }
+  // `e`: the word's value, or the value inside its IC()/AC().
+  bool literal(const ast::Word& w, const ast::Expr& e, double& v, bool& point) {
+    if (e.kind == ast::Expr::Kind::Number) {  // nearly every word: a number as written
+      v = e.number;
+      point = e.has_point;
       return true;
     }
-    if (foldLiteral(w.value, v, point)) return true;
+    if (foldLiteral(e, v, point)) return true;
     if (ctx_.statically) return false;  // its value is known at run time
     fail(Alarm::MacroNotSupported, w.loc,
          absl::StrCat("macro expressions/statements are not supported yet: ", w.address.c_str(),
@@ -196,17 +198,41 @@ class Decoder {
 
   void otherWord(const ast::Word& w, int order) {
     const std::string_view a = w.address;
+    std::string_view alias;
+    for (const AddressAlias& al : ctx_.table.address_aliases)
+      if (a == al.name) alias = al.to;
     if (const char* what = unsupportedAddress(a)) {
       fail(Alarm::AddressNotSupported, w.loc,
            absl::StrCat("address ", std::string(a), " (", what, ") is not supported yet"));
       return;
     }
     WordValue wv;
-    if (!literal(w, wv.value, wv.point)) return;
-    wv.loc = w.loc;
     wv.mode = distance_;
+    const ast::Expr* value = &w.value;
+    if (w.value.kind == ast::Expr::Kind::Call && w.value.args.size() == 1 &&
+        (w.value.op == ast::Op::Ic || w.value.op == ast::Op::Ac)) {
+      // DIN `X=IC(5)`: this word incremental (AC: absolute) whatever G90/G91 says
+      // (Fundamentals, absolute and incremental dimensions).
+      const bool axis = ctx_.addresses.slot(a) == AddressMap::Slot::Axis ||
+                        (a.size() > 1 && ctx_.machine.axisIndex(a) >= 0);
+      if (!axis) {
+        fail(Alarm::AddressNotSupported, w.loc,
+             absl::StrCat("address ", std::string(a), "=", ast::opText(w.value.op),
+                          "(..) is not supported yet: IC and AC are read on axis positions"));
+        return;
+      }
+      wv.mode = w.value.op == ast::Op::Ic ? ir::DistanceMode::Incremental : ir::DistanceMode::Absolute;
+      value = &w.value.args[0];
+    }
+    if (!literal(w, *value, wv.value, wv.point)) return;
+    wv.loc = w.loc;
     wv.address = a;
     wv.order = order;
+    if (!alias.empty()) {
+      wv.address = alias;
+      if (alias == "R") return store(out_.r, std::move(wv));
+      return store(out_.corner, std::move(wv), alias != out_.corner_kind());  // ,C ,R CHF
+    }
     const DialectBehaviour& b = ctx_.table.behaviour;
     using Slot = AddressMap::Slot;
     switch (ctx_.addresses.slot(a)) {

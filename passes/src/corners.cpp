@@ -158,7 +158,7 @@ Element elementOf(const ir::Operation& op, Vec start, const Planar& pl) {
 bool heldWithIt(const ir::Block& b) { return !b.corner && ir::onlyVariableWrites(b); }
 
 const char* what(const ir::CornerRequest& c) {
-  return c.kind == ir::CornerRequest::Kind::Chamfer ? "chamfer" : "corner rounding";
+  return c.kind == ir::CornerRequest::Kind::Round ? "corner rounding" : "chamfer";
 }
 
 }  // namespace
@@ -278,11 +278,17 @@ bool CornersPass::insertCorner(ir::Block& held, ir::Block& next, AxisValues& nex
   const Vec t1 = first.tangent(corner), t2 = second.tangent(corner);
   const double turn = cross(t1, t2);
   if (std::fabs(turn) < kStraight) return true;  // (anti)parallel: nothing to insert
-  const double amount = req.amount;
+  double amount = req.amount;
+  if (req.kind == ir::CornerRequest::Kind::ChamferLength) {
+    // CHF gives the chamfer's own length: for legs of length d meeting at angle phi it is
+    // 2 d sin(phi / 2) (measured on the tangents at the corner).
+    const double cos_phi = std::clamp(-dot(t1, t2), -1.0, 1.0);
+    amount /= 2.0 * std::sqrt((1.0 - cos_phi) / 2.0);
+  }
 
   Vec p1, p2;  // where the insert starts (on the first move) and ends (on the second)
   std::optional<Vec> centre;
-  if (req.kind == ir::CornerRequest::Kind::Chamfer) {
+  if (req.kind != ir::CornerRequest::Kind::Round) {
     // Points at distance `amount` from the virtual corner: on a line measured along it, on an
     // arc along the chord.
     std::optional<double> best1, best2;
@@ -356,7 +362,7 @@ bool CornersPass::insertCorner(ir::Block& held, ir::Block& next, AxisValues& nex
   AxisValues to = corner_at;
   pl.set(to, p2);
   size_t at = static_cast<size_t>(hop - held.ops.data()) + 1;
-  if (req.kind == ir::CornerRequest::Kind::Chamfer) {
+  if (req.kind != ir::CornerRequest::Kind::Round) {
     held.ops.insert(held.ops.begin() + at, ir::Linear{to, ir::Space::Work, feed, per_rev});
   } else {
     ir::Arc arc;

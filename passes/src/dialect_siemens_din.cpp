@@ -74,6 +74,11 @@ constexpr GCodeEntry kCodes[] = {
     {2910, G::Language, 47, false, A::LanguageIso, 0, "ISO mode"},
 };
 
+// Fundamentals, circular interpolation (CR= radius) and chamfer/rounding: CHF= the chamfer's
+// length, CHR= its legs (as ISO's ,C), RND= the rounding radius (,R).
+constexpr AddressAlias kAliases[] = {
+    {"CR", "R"}, {"CHR", ",C"}, {"RND", ",R"}, {"CHF", "CHF"}};
+
 }  // namespace
 
 const DialectTable& siemensDinTable() {
@@ -83,6 +88,7 @@ const DialectTable& siemensDinTable() {
     DialectTable t = kSiemensIsoMTable;
     t.dialect = Dialect::SiemensDin;
     t.gcodes = kCodes;
+    t.address_aliases = kAliases;
     // R, L, P, H, T, D mean other things in DIN (a parameter, a subprogram call, a repeat
     // count, an auxiliary function, the tool and its edge): not read until they are built.
     t.behaviour.other_meaning_addresses = "RLPQHDT";

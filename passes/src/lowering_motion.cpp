@@ -327,26 +327,28 @@ bool lineAngle(BlockContext& ctx, const AxisValues& start, AxisValues& target) {
   return true;
 }
 
-// ,C / ,R: the corner after this block's move, for the corners pass (docs/semantics.md,
+// ,C / ,R (DIN: CHR / RND, and CHF): the corner after this block's move, for the corners pass (docs/semantics.md,
 // Corner chamfer and rounding). Only a G01-G03 block that moves has a corner.
 void cornerRequest(BlockContext& ctx, GAction kind, bool moves, const AxisValues& start) {
   const WordValue& w = *ctx.words.corner;
   if (ctx.failed) return;
   if (kind != GAction::Linear && kind != GAction::ArcCW && kind != GAction::ArcCCW) {
     ctx.fail(Alarm::AddressWithoutMeaning, w.loc,
-             absl::StrCat("address ", std::string(w.address), " (", w.address == ",C" ? "chamfer" : "rounding",
+             absl::StrCat("address ", std::string(w.address), " (", w.address == ",R" ? "rounding" : "chamfer",
                           ") needs a G01, G02 or G03 move in its block"));
     return;
   }
   double amount = ctx.lengthValue(w);
   if (amount < 0) {
     ctx.fail(Alarm::ValueOutOfRange, w.loc,
-             absl::StrCat("a ", w.address == ",C" ? "chamfer" : "corner radius",
+             absl::StrCat("a ", w.address == ",R" ? "corner radius" : "chamfer",
                           " cannot be negative"));
     return;
   }
   ir::CornerRequest c;
-  c.kind = w.address == ",C" ? ir::CornerRequest::Kind::Chamfer : ir::CornerRequest::Kind::Round;
+  c.kind = w.address == ",C"   ? ir::CornerRequest::Kind::Chamfer
+           : w.address == ",R" ? ir::CornerRequest::Kind::Round
+                               : ir::CornerRequest::Kind::ChamferLength;  // Siemens CHF
   c.amount = amount;
   c.from = start;
   const std::optional<PlaneAxes> plane = bothPlaneAxes(ctx, w.loc, "a corner");

@@ -216,6 +216,56 @@ class DinTest(ScratchDirTest):
         self.assertAlarm("IF 1 X10\nENDIF\nM30\n", "NCC1006", 1, 6, "stands alone")
         self.assertAlarm("REPEAT MA1 P=2\nM30\n", "NCC1090", 1, 1, "REPEAT label P=n")
 
+    # ---- subprograms ----------------------------------------------------------------------
+
+    def test_subprograms_by_name_with_parameters(self):
+        # POS1 takes two REAL parameters; an omitted trailing one is 0 (cycles notes §1.3.4).
+        self.write("POS1.spf", "%_N_POS1_SPF\n;$PATH=/_N_SPF_DIR\nPROC POS1 (REAL XW, REAL YW) DISPLOF\n"
+                               "N10 G0 X=XW Y=YW\nN20 M17\n")
+        self.write("CONTOUR.spf", "G1 X=R1 F100\nY=R1\nRET\n")  # no PROC: no parameters
+        proc, moves = self.run_din("R1=3\nPOS1(10, 20)\nPOS1 (5)\nCONTOUR\nX=R1+1\nM30\n")
+        self.assertEqual(proc.returncode, 0, proc.stderr)
+        self.assertEqual([(m["to"]["X"], m["to"]["Y"]) for m in moves],
+                         [(10.0, 20.0), (5.0, 0.0), (3.0, 0.0), (3.0, 3.0), (4.0, 3.0)])
+
+    def test_var_parameters_write_back_and_locals_are_the_subprograms_own(self):
+        self.write("ADD.spf", "PROC ADD(VAR REAL V, INT N)\nDEF REAL A=100\nV=V+N+A-100\nR2=A\nRET\n")
+        self.write("FILL.spf", "PROC FILL(VAR REAL E)\nE=7\nM17\n")
+        vars_ = self.variables("DEF REAL A=1, T[3]\nADD(A, 2)\nADD(A, 3)\nFILL(T[1])\nFILL(R5)\n"
+                               "R1=A\nR3=T[1]\nM30\n")
+        self.assertEqual(vars_["A"], 6.0)   # 1 + 2 + 3: the caller's A, not ADD's own A
+        self.assertEqual(vars_["R1"], 6.0)
+        self.assertEqual(vars_["R2"], 100.0)
+        self.assertEqual(vars_["R3"], 7.0)  # an array element by reference
+        self.assertEqual(vars_["R5"], 7.0)  # an R parameter by reference
+
+    def test_m17_ends_a_main_program(self):
+        proc, moves = self.run_din("G0 X1\nM17\nX2\nM30\n")
+        self.assertEqual(proc.returncode, 0, proc.stderr)
+        self.assertEqual([m["to"]["X"] for m in moves], [1.0])
+
+    def test_subprogram_alarms(self):
+        self.write("TWO.spf", "PROC TWO(REAL A, REAL B)\nG0 X=A\nM17\n")
+        self.write("REF.spf", "PROC REF(VAR REAL A)\nA=1\nM17\n")
+        self.write("NOPROC.spf", "G0 X1\nM17\n")
+        self.write("LATE.spf", "G0 X1\nPROC LATE\nM17\n")
+        self.write("DEEP.spf", "PROC DEEP\nDEEP\nM17\n")
+        self.assertAlarm("G0 X0\nTWO(1, 2, 3)\nM30\n", "12340", 2, 1, "TWO takes 2")
+        self.assertAlarm("G0 X0\nNOPROC(1)\nM30\n", "12340", 2, 1, "too many parameters")
+        self.assertAlarm("G0 X0\nREF(5)\nM30\n", "12320", 2, 5, "VAR")
+        self.assertAlarm("G0 X0\nMISSING(1)\nM30\n", "12550", 2, 1, "MISSING.spf")
+        self.assertAlarm("G0 X0\nLATE\nM30\n", "NCC2430", 2, 1, "first block")
+        self.assertAlarm("G0 X0\nDEEP\nM30\n", "NCC2413", 2, 1, "nested more than 15")
+        self.assertAlarm("G0 X0\nTRANS X10\nM30\n", "NCC2010", 2, 1, "programmable frame")
+        self.assertAlarm("G0 X0\nPROC A (REAL B) SAVE\nM30\n", "NCC1090", 2, 17, "SAVE")
+
+    def test_ic_and_ac_give_one_word_its_distance_mode(self):
+        proc, moves = self.run_din("G90 G0 X10\nX=IC(5)\nG91 X=AC(2) Y=IC(1)\nX5\nM30\n")
+        self.assertEqual(proc.returncode, 0, proc.stderr)
+        self.assertEqual([(m["to"]["X"], m["to"]["Y"]) for m in moves],
+                         [(10.0, 0.0), (15.0, 0.0), (2.0, 1.0), (7.0, 1.0)])
+        self.assertAlarm("R1=IC(5)\nM30\n", "NCC2406", 1, 4, "IC()")
+
     def test_alarms_carry_the_sinumerik_numbers_and_positions(self):
         self.assertAlarm("G0 X1\nR1=UNKNOWN+1\nM30\n", "12550", 2, 4, "'UNKNOWN' is not defined")
         self.assertAlarm("DEF REAL A[3]\nA[3]=1\nM30\n", "17020", 2, None, "index 3 is outside 0 to 2")
@@ -225,9 +275,9 @@ class DinTest(ScratchDirTest):
         self.assertAlarm("R1=1/0\nM30\n", "NCC2402", 1)
 
     def test_what_is_not_built_yet_is_refused_at_its_position(self):
-        self.assertAlarm("G0 X1\nPROC A\nM30\n", "NCC1090", 2, 1, "'PROC'")
-        self.assertAlarm("G0 X=IC(5)\nM30\n", "NCC1090", 1, 6, "function 'IC'")
-        self.assertAlarm("G0 X1\nMYSUB\nM30\n", "NCC2010", 2, 1, "MYSUB")
+        self.assertAlarm("G0 X1\nREPEATB MA1 P=2\nM30\n", "NCC1090", 2, 1, "'REPEATB'")
+        self.assertAlarm("G0 X=ACP(5)\nM30\n", "NCC1090", 1, 6, "function 'ACP'")
+        self.assertAlarm("G0 X1\nCYCLE81(10, 0, 2, -5)\nM30\n", "NCC2010", 2, 1, "Siemens cycle")
         self.assertAlarm("DEF STRING[8] S\nM30\n", "NCC2010", 1, 15, "STRING")
 
     def test_syntax_errors_name_the_place(self):

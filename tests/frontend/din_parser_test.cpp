@@ -118,6 +118,25 @@ TEST(DinParser, ControlStructuresStandAloneWithNumberAndLabel) {
   EXPECT_EQ(p.block.statements[2].jump, ast::Jump::Backward);
 }
 
+TEST(DinParser, ProcParametersAndReturn) {
+  EXPECT_EQ(printed("PROC POSITION1 (REAL XWERT, VAR INT N) DISPLOF SBLOF"),
+            "PROC POSITION1(REAL XWERT,VAR INT N)");
+  EXPECT_EQ(printed("PROC MYKONTUR"), "PROC MYKONTUR");
+  EXPECT_EQ(printed("N90 RET"), "N90 RET");
+  EXPECT_EQ(printed("X=IC(5) Y=AC(R1*2)"), "X=IC(5) Y=AC(R1*2)");
+  Parsed p = parse("PROC P(REAL A, VAR BOOL B)");
+  ASSERT_TRUE(p.ok);
+  ASSERT_EQ(p.block.statements.size(), 3u);
+  EXPECT_EQ(p.block.statements[0].kind, ast::Statement::Kind::Proc);
+  EXPECT_EQ(*p.block.statements[0].target.text, "P");
+  EXPECT_EQ(p.block.statements[1].kind, ast::Statement::Kind::Parameter);
+  EXPECT_EQ(p.block.statements[1].type, ast::DataType::Real);
+  EXPECT_EQ(p.block.statements[1].loop_id, 0);
+  EXPECT_EQ(p.block.statements[2].type, ast::DataType::Bool);
+  EXPECT_EQ(p.block.statements[2].loop_id, 1);  // VAR
+  EXPECT_EQ(*p.block.statements[2].target.text, "B");
+}
+
 TEST(DinParser, LocationsAreColumnsOfTheLine) {
   Parsed p = parse("N5 R1=2 X=R1");
   ASSERT_TRUE(p.ok);
@@ -147,7 +166,11 @@ TEST(DinParser, BadTextGetsOneDiagnosticAtItsColumn) {
       {"X=SIN(,)", "p.mpf:1:7: error[NCC1011]: 'SIN': an argument is missing"},
       {"X=FOO(1)", "p.mpf:1:3: error[NCC1090]: DIN function 'FOO' is not supported yet"},
       {"X=1<<2", "p.mpf:1:4: error[NCC1090]: DIN string concatenation '<<'"},
-      {"PROC A", "p.mpf:1:1: error[NCC1090]: DIN 'PROC' is not supported yet"},
+      {"PROC A SAVE", "p.mpf:1:8: error[NCC1090]: DIN 'PROC ... SAVE'"},
+      {"PROC A FOO", "p.mpf:1:8: error[NCC1006]: 'FOO' is not a PROC attribute"},
+      {"PROC A X1", "p.mpf:1:8: error[NCC1006]: a control structure keyword (PROC) stands alone"},
+      {"PROC A(VAR REAL B[3])", "p.mpf:1:18: error[NCC1090]: DIN array parameters"},
+      {"PROC A(VECTOR B)", "p.mpf:1:8: error[NCC1019]: unknown type 'VECTOR'"},
       {"N10 REPEATB MA1 P=2", "p.mpf:1:5: error[NCC1090]: DIN 'REPEATB'"},
       {"N10 WHILE 1 X10", "p.mpf:1:13: error[NCC1006]: a control structure keyword (WHILE) stands alone"},
       {"X1 ENDIF", "p.mpf:1:1: error[NCC1006]: a control structure keyword (ENDIF) stands alone"},

@@ -45,8 +45,8 @@ TEST(Din, WhatDinReadsOtherwiseIsRefusedAtItsPosition) {
       {"G500", "NCC2010"},                // no settable frame
       {"R10 X1 F100", "address R is not supported yet"},  // R parameter in DIN
       {"T1", "address T is not supported yet"},
-      {"X=IC(10)", "NCC1090"},            // incremental values: not read yet
-      {"PROC A", "NCC1090"},              // subprogram definitions: not read yet
+      {"X=ACP(10)", "NCC1090"},           // rotary positioning: not read yet
+      {"PROC A SAVE", "NCC1090"},         // SAVE: not built yet
       {"N10 (comment) X1", "NCC1006"},    // no ( ) comments in DIN: unexpected '('
   };
   for (const Case& c : cases) {

@@ -45,6 +45,11 @@ enum class EvalError : uint8_t {
   // without its end; nested deeper than kMaxStructures.
   StructureNesting,
   StructureDepth,
+  // DIN subprograms: more arguments than the PROC has parameters; a VAR parameter given no
+  // variable; a PROC that is not the first block of its program.
+  TooManyArguments,
+  ArgumentNotVariable,
+  ProcPlacement,
   kCount,
 };
 

@@ -65,6 +65,9 @@ struct MacroRules {
   int max_do_nesting;
   int max_call_nesting;                     // M98 + G65 + G66 + code calls together
   int max_macro_nesting;                    // G65 / G66 / code calls among them
+  // DIN subprograms called by name (siemens-din, and DIN text after G290): 0 where the
+  // dialect has no DIN.
+  int max_named_call_nesting = 0;
   SequenceSearch goto_search;
   SequenceSearch return_search;             // M99 P n
   RepeatEncoding repeat;

@@ -65,6 +65,8 @@ enum class Op : uint8_t {
   Sin, Cos, Tan, Asin, Acos, Atan, Sqrt, Abs, Bin, Bcd, Round, Fix, Fup, Ln, Exp, Pow, Adp,
   // DIN only: integer division, the logic and bit operators, and its functions.
   Div, Not, BAnd, BOr, BXor, BNot, Atan2, Pot, Trunc, MinVal, MaxVal,
+  // DIN: an axis word's value given incrementally or absolutely for this block (`X=IC(5)`).
+  Ic, Ac,
 };
 struct OpInfo {
   Op op;
@@ -87,6 +89,7 @@ inline constexpr std::array kOps = {
     OpInfo{Op::BOr, "B_OR", 2},  OpInfo{Op::BXor, "B_XOR", 2}, OpInfo{Op::BNot, "B_NOT", 1},
     OpInfo{Op::Atan2, "ATAN2", 2}, OpInfo{Op::Pot, "POT", 1}, OpInfo{Op::Trunc, "TRUNC", 1},
     OpInfo{Op::MinVal, "MINVAL", 2}, OpInfo{Op::MaxVal, "MAXVAL", 2},
+    OpInfo{Op::Ic, "IC", 1},     OpInfo{Op::Ac, "AC", 1},
 };
 static_assert([] {
   for (size_t i = 0; i < kOps.size(); ++i)
@@ -193,12 +196,18 @@ struct Statement {
     EndLoop,
     Case,        // CASE (value) OF: the CaseBranch statements after it in the block
     CaseBranch,  // a constant (value; Vacant for DEFAULT) and its jump (target, jump)
+    // DIN subprograms: `PROC NAME(REAL A, VAR INT B)` (target: the Name) and a Parameter
+    // statement after it for each parameter (type, target: its Name; loop_id 1 for VAR, a
+    // parameter passed by reference); RET returns to the caller.
+    Proc,
+    Parameter,
+    Return,
   };
   Kind kind = Kind::Assign;
   SourceLocation loc;
   Expr target;  // Assign: the variable; Goto/IfGoto/CaseBranch: a sequence number, or a Name (DIN label)
   Expr value;   // Assign: the value; If*/While/Until/Case: the condition; Define: the initial value
-  int loop_id = 0;  // DO m / END m
+  int loop_id = 0;  // DO m / END m; Parameter: 1 for VAR
   Box<Statement> then_assign;  // IfThen, For (copies are deep: the evaluator keeps loop bodies)
   DataType type = DataType::None;  // Define
   Jump jump = Jump::Sequence;      // Goto, IfGoto, CaseBranch
@@ -313,7 +322,7 @@ inline constexpr uint8_t kEnumValues = 0;
 template <>
 inline constexpr uint8_t kEnumValues<Expr::Kind> = static_cast<uint8_t>(Expr::Kind::String) + 1;
 template <>
-inline constexpr uint8_t kEnumValues<Statement::Kind> = static_cast<uint8_t>(Statement::Kind::CaseBranch) + 1;
+inline constexpr uint8_t kEnumValues<Statement::Kind> = static_cast<uint8_t>(Statement::Kind::Return) + 1;
 template <>
 inline constexpr uint8_t kEnumValues<DataType> = static_cast<uint8_t>(kDataTypeNames.size());
 template <>

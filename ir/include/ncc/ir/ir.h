@@ -248,7 +248,9 @@ inline bool isMove(const Operation& op) {
 // arc (radius `amount`) between the block's move and the next block's. The corners pass
 // inserts it and clears the request (docs/semantics.md, Corner chamfer and rounding).
 struct CornerRequest {
-  enum class Kind : uint8_t { Chamfer, Round } kind = Kind::Chamfer;
+  // Chamfer: `amount` from the corner along each move (,C; Siemens CHR); Round: the radius
+  // (,R; RND); ChamferLength: the chamfer's own length (Siemens CHF).
+  enum class Kind : uint8_t { Chamfer, Round, ChamferLength } kind = Kind::Chamfer;
   double amount = 0.0;  // mm
   AxisValues from{};    // where the block's move starts (work space)
   int plane_a = 0, plane_b = 1;  // the machine axes of the plane in force (first, second)

@@ -375,6 +375,13 @@ struct CompRules {
   bool cycle_in_3d_is_error;        // Mazak 901: a hole cycle in 3-D compensation
 };
 
+// An address written with another's meaning: DIN's CR= is the arc radius R, CHR= and RND= the
+// ISO corner words ,C and ,R; CHF= (a chamfer by its own length) names itself.
+struct AddressAlias {
+  std::string_view name;
+  std::string_view to;
+};
+
 struct DialectTable {
   Dialect dialect;
   std::span<const GCodeEntry> gcodes;
@@ -385,6 +392,7 @@ struct DialectTable {
   const TransformRules* transforms = nullptr;  // coordinate rotation, scaling, mirror
   const PolarRules* polar = nullptr;   // G16; null where the dialect has no polar command
   const CompRules* comp = nullptr;     // G40/G41/G42; null: compensation is not supported
+  std::span<const AddressAlias> address_aliases;
 
   const GCodeEntry* findG(int code10) const;
   std::string_view alarm(Alarm a) const { return alarm_codes[static_cast<size_t>(a)]; }
