@@ -198,9 +198,6 @@ class Decoder {
 
   void otherWord(const ast::Word& w, int order) {
     const std::string_view a = w.address;
-    std::string_view alias;
-    for (const AddressAlias& al : ctx_.table.address_aliases)
-      if (a == al.name) alias = al.to;
     if (const char* what = unsupportedAddress(a)) {
       fail(Alarm::AddressNotSupported, w.loc,
            absl::StrCat("address ", std::string(a), " (", what, ") is not supported yet"));
@@ -228,11 +225,6 @@ class Decoder {
     wv.loc = w.loc;
     wv.address = a;
     wv.order = order;
-    if (!alias.empty()) {
-      wv.address = alias;
-      if (alias == "R") return store(out_.r, std::move(wv));
-      return store(out_.corner, std::move(wv), alias != out_.corner_kind());  // ,C ,R CHF
-    }
     const DialectBehaviour& b = ctx_.table.behaviour;
     using Slot = AddressMap::Slot;
     switch (ctx_.addresses.slot(a)) {
@@ -282,6 +274,14 @@ class Decoder {
     }
     // ,C / ,R: one corner per block; of both, the last written is used (Mazak §13-14).
     if (a == ",C" || a == ",R") return store(out_.corner, std::move(wv), a != out_.corner_kind());
+    // A name with another address's meaning (DIN: CR= is R, CHR= ,C ...): looked up only here,
+    // for what no slot and no axis took, so the common words never search the list.
+    for (const AddressAlias& alias : ctx_.table.address_aliases) {
+      if (a != alias.name) continue;
+      wv.address = alias.to;
+      if (alias.to == "R") return store(out_.r, std::move(wv));
+      return store(out_.corner, std::move(wv), alias.to != out_.corner_kind());  // ,C ,R CHF
+    }
     if (a.size() == 1 && std::string_view("XYZABCUVW").find(a[0]) != std::string_view::npos) {
       fail(Alarm::AddressNotAnAxis, w.loc,
            absl::StrCat("address ", std::string(a), ": the machine has no axis ", std::string(a)));

@@ -259,6 +259,20 @@ class DinTest(ScratchDirTest):
         self.assertAlarm("G0 X0\nTRANS X10\nM30\n", "NCC2010", 2, 1, "programmable frame")
         self.assertAlarm("G0 X0\nPROC A (REAL B) SAVE\nM30\n", "NCC1090", 2, 17, "SAVE")
 
+    def test_cr_arcs_and_chf_chr_rnd_corners(self):
+        # CHF=2 on a 90-degree corner: legs of 2/sqrt(2); RND=1: an arc of radius 1 tangent to
+        # both lines; CHR=1: legs of 1, the second measured along the chord of the next arc;
+        # CR=5: the arc's radius.
+        proc, moves = self.run_din("G0 X0 Y0\nG1 X10 F100 CHF=2\nY10 RND=1\nX0 CHR=1\n"
+                                   "G2 X-5 Y5 CR=5\nM30\n")
+        self.assertEqual(proc.returncode, 0, proc.stderr)
+        got = [(m["kind"], round(m["to"]["X"], 4), round(m["to"]["Y"], 4)) for m in moves]
+        self.assertEqual(got, [("line", 8.5858, 0.0), ("line", 10.0, 1.4142), ("line", 10.0, 9.0),
+                               ("arc", 9.0, 10.0), ("line", 1.0, 10.0), ("line", -0.1, 9.005),
+                               ("arc", -5.0, 5.0)])
+        self.assertEqual((moves[3]["center"]["X"], moves[3]["center"]["Y"]), (9.0, 9.0))
+        self.assertEqual((moves[6]["center"]["X"], moves[6]["center"]["Y"]), (-5.0, 10.0))
+
     def test_ic_and_ac_give_one_word_its_distance_mode(self):
         proc, moves = self.run_din("G90 G0 X10\nX=IC(5)\nG91 X=AC(2) Y=IC(1)\nX5\nM30\n")
         self.assertEqual(proc.returncode, 0, proc.stderr)
