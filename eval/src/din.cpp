@@ -249,6 +249,7 @@ Structure* Evaluator::Impl::closeStructure(SK kind, const ast::Statement& st) {
   return nullptr;
 }
 
+// Reads past `st`'s block: a caller that needs `st` afterwards copies what it needs first.
 std::optional<SK> Evaluator::Impl::skipStructure(const ast::Statement& st,
                                                  std::initializer_list<SK> ends) {
   Frame& frame = frames.back();
@@ -304,9 +305,10 @@ bool Evaluator::Impl::dinControl(const ast::Block& block, const ast::Statement& 
       std::optional<bool> c = condition();
       if (!c) return false;
       if (*c) return openStructure(SK::If, at, st.loc);
+      const SourceLocation loc = st.loc;  // `st` is the cursor's: skipping reads past it
       std::optional<SK> reached = skipStructure(st, {SK::Else, SK::EndIf});
       if (!reached) return false;
-      return *reached == SK::EndIf || openStructure(SK::If, at, st.loc);
+      return *reached == SK::EndIf || openStructure(SK::If, at, loc);
     }
     case SK::Else:
       // The end of the IF branch: on past the ENDIF.
