@@ -111,19 +111,14 @@ const ast::Block* Evaluator::Impl::evaluateDin(const ast::Block& block, const Pr
       case K::Assign: {
         std::optional<Value> v = value(st.value, 0, true);
         if (!v) return nullptr;
-        if (st.target.kind == ast::Expr::Kind::RParam && !st.target.args.empty()) {
-          std::optional<Value> index = value(st.target.args[0], 0, true);
-          if (!index) return nullptr;
-          std::optional<int64_t> n = variableNumber(*index, rules, st.target.loc, failure);
-          if (!n || !named.writeR(*n, *v, st.target.loc, failure)) return failed();
-        } else if (st.target.kind == ast::Expr::Kind::Name && st.target.text) {
-          std::optional<std::vector<int64_t>> indices = indicesOf(st.target.args, context, failure);
-          if (!indices || !named.write(*st.target.text, *indices, *v, st.target.loc, failure))
-            return failed();
-        } else {
+        const bool variable = (st.target.kind == ast::Expr::Kind::RParam && !st.target.args.empty()) ||
+                              (st.target.kind == ast::Expr::Kind::Name && st.target.text);
+        if (!variable) {
           fail(EvalError::VariableNumber, st.target.loc, "the left side is not a variable");
           return nullptr;
         }
+        std::optional<VariableRef> ref = variableRef(st.target);
+        if (!ref || !write(*ref, *v, st.target.loc)) return nullptr;
         break;
       }
       case K::IfGoto: {
