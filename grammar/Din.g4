@@ -18,7 +18,8 @@ block
 
 // The control structures (IF ... ENDIF, WHILE, FOR, REPEAT, LOOP, CASE) stand alone in their
 // block, with its number and labels: the frontend checks that. A PROC block is the first of its
-// program: `PROC NAME(REAL A, VAR INT B) DISPLOF`, the attributes after the parameters.
+// program: `PROC NAME(REAL A, VAR INT B) DISPLOF`, the attributes after the parameters. The name
+// may be a number in a program called from ISO mode (`PROC 0010`, the body of G65 P10).
 
 // Block skip '/', '/0' .. '/9'.
 blockStart
@@ -42,7 +43,7 @@ item
     | LOOP                                               # loopItem
     | ENDLOOP                                            # endLoopItem
     | CASE expr OF caseBranch+ (DEFAULT jump jumpTarget)?  # caseItem
-    | PROC IDENT (LPAREN (parameter (COMMA parameter)*)? RPAREN)? IDENT*  # procItem
+    | PROC procName=(IDENT | NUMBER) (LPAREN (parameter (COMMA parameter)*)? RPAREN)? attributes+=IDENT*  # procItem
     | RET                                                # retItem
     | jump jumpTarget                                    # gotoItem
     | name EQUALS expr                                   # assignItem

@@ -431,12 +431,12 @@ bool Evaluator::Impl::call(const Pending& p) {
   f.macro = p.macro;
   f.code = p.code;
   if (p.macro) variables.pushLocals(p.arguments);
-  if (p.din) {
-    // The subprogram's variables are its own (Fundamentals: local user data); its PROC binds
-    // the arguments.
+  // A called program's DEF variables are its own (Fundamentals: local user data), whether it
+  // is called by name or, in ISO mode, as a G65/M98/M-code macro body that is DIN (§4.11).
+  variables.named().pushScope();
+  if (p.din) {  // its PROC binds the arguments
     f.din_call = true;
     f.din_arguments = p.din_arguments;
-    variables.named().pushScope();
   }
   frames.push_back(std::move(f));
   return true;
@@ -455,6 +455,8 @@ void Evaluator::Impl::closeFrame() {
     variables.named().popScope();
     for (const auto& [ref, v] : back)
       if (!write(ref, v, f.call_loc)) break;
+  } else {
+    variables.named().popScope();
   }
   if (f.macro) variables.popLocals();
   if (f.figure_rotation) options.figure_rotation.end();
@@ -485,6 +487,8 @@ bool Evaluator::Impl::ret(const Pending& p) {
   if (f.repeats_left > 0) {
     if (!countBackJump(p.loc)) return false;  // nested repeats multiply: bounded as loops
     --f.repeats_left;
+    variables.named().popScope();  // each run declares its variables afresh
+    variables.named().pushScope();
     f.loops.clear();
     f.structures.clear();
     f.for_resume.reset();

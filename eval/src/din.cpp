@@ -131,7 +131,7 @@ const ast::Block* Evaluator::Impl::evaluateDin(const ast::Block& block, const Pr
         jump = &st;
         break;
       case K::Call:
-        if (!dinCall(st, at)) return nullptr;
+        if (!dinCall(st, at, out)) return nullptr;
         break;
       case K::Proc:
         if (!dinProc(block, st, at)) return nullptr;
@@ -228,7 +228,10 @@ bool Evaluator::Impl::openStructure(SK kind, const ProgramPoint& at, SourceLocat
          absl::StrCat("control structures nested more than ", kMaxStructures, " deep"));
     return false;
   }
-  open.push_back(Structure{kind, at});
+  Structure opened;
+  opened.kind = kind;
+  opened.at = at;
+  open.push_back(std::move(opened));
   return true;
 }
 
@@ -353,7 +356,9 @@ bool Evaluator::Impl::dinControl(const ast::Block& block, const ast::Statement& 
         return false;
       }
       const ast::Statement& init = *st.then_assign;
-      Structure loop{SK::For, at};
+      Structure loop;
+      loop.kind = SK::For;
+      loop.at = at;
       std::optional<VariableRef> counter_ref = variableRef(init.target);
       if (!counter_ref) return false;
       loop.counter = std::move(*counter_ref);
@@ -464,21 +469,31 @@ bool Evaluator::Impl::write(const VariableRef& ref, const Value& v, SourceLocati
 namespace {
 
 // Names the control knows before the program folder (issue 33 builds the cycles): a call of
-// one is refused as not built yet, never looked for as a file.
+// one is never looked for as a file. Block commands are words of their block: lowering reads
+// them with the block's other words (the frame instructions: DialectTable::frame_commands,
+// lowering_frames.cpp); the rest not built yet is refused.
 struct BuiltIn {
+  enum class Use : uint8_t { NotBuilt, BlockCommand, SetAlarm };
   std::string_view name;
   bool prefix;  // CYCLE81, CYCLE800 ...: every name that starts so
   const char* what;
+  Use use = Use::NotBuilt;
 };
+using U = BuiltIn::Use;
 constexpr BuiltIn kBuiltIns[] = {
-    {"TRANS", false, "programmable frame"},   {"ATRANS", false, "programmable frame"},
-    {"ROT", false, "programmable frame"},     {"AROT", false, "programmable frame"},
-    {"RPL", false, "programmable frame"},     {"SCALE", false, "programmable frame"},
-    {"ASCALE", false, "programmable frame"},  {"MIRROR", false, "programmable frame"},
-    {"AMIRROR", false, "programmable frame"}, {"CYCLE", true, "Siemens cycle"},
+    {"TRANS", false, "programmable frame", U::BlockCommand},
+    {"ATRANS", false, "programmable frame", U::BlockCommand},
+    {"ROT", false, "programmable frame", U::BlockCommand},
+    {"AROT", false, "programmable frame", U::BlockCommand},
+    {"SCALE", false, "programmable frame", U::BlockCommand},
+    {"ASCALE", false, "programmable frame", U::BlockCommand},
+    {"MIRROR", false, "programmable frame", U::BlockCommand},
+    {"AMIRROR", false, "programmable frame", U::BlockCommand},
+    {"SETAL", false, "setting an alarm", U::SetAlarm},
+    {"CYCLE", true, "Siemens cycle"},
     {"POCKET", true, "Siemens milling cycle"}, {"SLOT", true, "Siemens milling cycle"},
     {"HOLES", true, "Siemens hole pattern"},  {"LONGHOLE", false, "Siemens milling cycle"},
-    {"SETAL", false, "setting an alarm"},     {"MSG", false, "operator message"},
+    {"MSG", false, "operator message"},
     {"STOPRE", false, "preprocessing stop"},  {"BSPLINE", false, "spline interpolation"},
     {"ASPLINE", false, "spline interpolation"}, {"CSPLINE", false, "spline interpolation"},
     {"POLY", false, "polynomial interpolation"}, {"TRANSMIT", false, "kinematic transformation"},
@@ -491,6 +506,12 @@ constexpr BuiltIn kBuiltIns[] = {
     {"EXTERN", false, "external subprogram declaration"},
 };
 
+// SETAL(n) (Fundamentals, "Set alarm"; the alarm ranges of the Diagnostics Manual): the cycle
+// and user alarms 60000-69999; those of 62000-62999 and 67000-67999 are shown and the program
+// goes on, the others stop it.
+constexpr int64_t kFirstCycleAlarm = 60000, kLastCycleAlarm = 69999;
+bool alarmContinues(int64_t n) { return (n >= 62000 && n <= 62999) || (n >= 67000 && n <= 67999); }
+
 const BuiltIn* builtIn(std::string_view name) {
   for (const BuiltIn& b : kBuiltIns)
     if (b.prefix ? name.substr(0, b.name.size()) == b.name : name == b.name) return &b;
@@ -499,9 +520,20 @@ const BuiltIn* builtIn(std::string_view name) {
 
 }  // namespace
 
-bool Evaluator::Impl::dinCall(const ast::Statement& st, const ProgramPoint& at) {
+bool Evaluator::Impl::dinCall(const ast::Statement& st, const ProgramPoint& at, ast::Block& out) {
   const std::string name = st.target.text ? *st.target.text : std::string();
   if (const BuiltIn* b = builtIn(name)) {
+    if (b->use == U::BlockCommand && st.target.args.empty()) {
+      out.words.push_back(ast::Word{name, ast::Expr::literal(0, false, st.loc), st.loc});
+      return true;
+    }
+    if (b->use == U::BlockCommand) {
+      fail(EvalError::NotSupported, st.loc,
+           absl::StrCat(name, " takes its values as words of its block (", name,
+                        " X.. Y..), not in parentheses"));
+      return false;
+    }
+    if (b->use == U::SetAlarm) return setAlarm(st);
     fail(EvalError::NotSupported, st.loc,
          absl::StrCat("'", name, "' (", b->what, ") is not supported yet (docs/din.md)"));
     return false;
@@ -525,6 +557,30 @@ bool Evaluator::Impl::dinCall(const ast::Statement& st, const ProgramPoint& at) 
   }
   pending.push_back(std::move(p));
   return true;
+}
+
+bool Evaluator::Impl::setAlarm(const ast::Statement& st) {
+  if (st.target.args.empty() || st.target.args.size() > 2 ||
+      st.target.args[0].kind == ast::Expr::Kind::Vacant) {
+    fail(EvalError::TooManyArguments, st.loc, "SETAL takes the alarm number (and a text)");
+    return false;
+  }
+  std::optional<Value> v = value(st.target.args[0], 0, true);
+  if (!v) return false;
+  const double n = v->arithmetic();
+  if (!(n >= kFirstCycleAlarm && n <= kLastCycleAlarm) || n != std::floor(n)) {
+    fail(EvalError::AddressValue, st.target.args[0].loc,
+         absl::StrCat("SETAL(", n, "): cycle and user alarms are ", kFirstCycleAlarm, " to ",
+                      kLastCycleAlarm));
+    return false;
+  }
+  const int64_t code = static_cast<int64_t>(n);
+  if (alarmContinues(code)) {
+    diags.warning(absl::StrCat(code), st.loc, absl::StrCat("SETAL(", code, "): the program goes on"));
+    return true;
+  }
+  fail(Failure{EvalError::UserAlarm, st.loc, absl::StrCat("SETAL(", code, ")"), code});
+  return false;
 }
 
 bool Evaluator::Impl::dinProc(const ast::Block& block, const ast::Statement& st,

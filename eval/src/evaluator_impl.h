@@ -181,7 +181,10 @@ struct Evaluator::Impl {
   bool write(const VariableRef& ref, const Value& v, SourceLocation loc);
   // A call by name: a built-in not built yet is refused; otherwise the call is scheduled with
   // its arguments evaluated (the subprogram is looked for in the program folder when made).
-  bool dinCall(const ast::Statement& st, const ProgramPoint& at);
+  // A subprogram call by name; a block command (TRANS ...) becomes a word of `out`.
+  bool dinCall(const ast::Statement& st, const ProgramPoint& at, ast::Block& out);
+  // SETAL(n): a cycle or user alarm; the program stops, or goes on after a warning.
+  bool setAlarm(const ast::Statement& st);
   // PROC: binds the call's arguments to the parameters in a new scope of variables.
   bool dinProc(const ast::Block& block, const ast::Statement& st, const ProgramPoint& at);
   // M17 or RET: returns after the block (in the main program: its end).

@@ -14,6 +14,7 @@
 #include <numbers>
 #include <string>
 
+#include "absl/container/inlined_vector.h"
 #include "absl/strings/str_cat.h"
 #include "number_format.h"
 
@@ -121,10 +122,35 @@ class Evaluator {
   }
 
   std::optional<Value> named(const ast::Expr& e) {
+    const std::string_view name = e.text ? std::string_view(*e.text) : std::string_view();
+    if (!name.empty() && name[0] == '$') return system(e, name);
     std::optional<std::vector<int64_t>> indices = indicesOf(e.args, context_, failure_);
     if (!indices) return std::nullopt;
     return context_.variables.readNamed(e.text ? std::string_view(*e.text) : std::string_view(),
                                         *indices, e.loc, failure_);
+  }
+
+  // `$AA_IW[Z]`: a name that is no variable is an axis name; anything else a number.
+  std::optional<Value> system(const ast::Expr& e, std::string_view name) {
+    absl::InlinedVector<SystemIndex, 2> indices;
+    for (const ast::Expr& a : e.args) {
+      SystemIndex& index = indices.emplace_back();
+      if (a.kind == ast::Expr::Kind::Name && a.args.empty() && a.text) {
+        Failure unused;
+        if (!context_.variables.readNamed(*a.text, {}, a.loc, unused)) {
+          index.axis = *a.text;
+          continue;
+        }
+      }
+      std::optional<Value> v = eval(a);
+      if (!v) return std::nullopt;
+      if (v->vacant || !std::isfinite(v->number) || std::fabs(v->number) > 1e9) {
+        fail(failure_, EvalError::Domain, a.loc, absl::StrCat("the index of ", std::string(name), " is out of range"));
+        return std::nullopt;
+      }
+      index.number = static_cast<int64_t>(std::llround(v->number));
+    }
+    return context_.variables.readSystem(name, indices, e.loc, failure_);
   }
 
   std::optional<Value> variable(const ast::Expr& e) {
@@ -448,6 +474,13 @@ std::optional<Value> VariableReader::readR(int64_t n, SourceLocation loc, Failur
 std::optional<Value> VariableReader::readNamed(std::string_view name, std::span<const int64_t>,
                                                SourceLocation loc, Failure& failure) {
   fail(failure, EvalError::UndefinedName, loc, absl::StrCat("'", std::string(name), "' is not defined"));
+  return std::nullopt;
+}
+
+std::optional<Value> VariableReader::readSystem(std::string_view name, std::span<const SystemIndex>,
+                                                SourceLocation loc, Failure& failure) {
+  fail(failure, EvalError::NotSupported, loc,
+       absl::StrCat("system variable ", std::string(name), " is not supported yet (docs/din.md)"));
   return std::nullopt;
 }
 

@@ -4,6 +4,39 @@
 
 namespace ncc::eval {
 
+std::optional<Value> Variables::readSystem(std::string_view name, std::span<const SystemIndex> indices,
+                                           SourceLocation loc, Failure& failure) {
+  // ISO mode's macro arguments in a DIN body (840D ISO §4.11, table 4.10): $C_X is the value of
+  // X (the local G65 type I gives it), $C_X_PROG (the manual's example writes _PROC) whether it
+  // was programmed.
+  constexpr std::string_view kArgument = "$C_";
+  if (name.substr(0, kArgument.size()) == kArgument && indices.empty()) {
+    std::string_view rest = name.substr(kArgument.size());
+    bool programmed = false;
+    if (rest.size() == 6 && (rest.substr(1) == "_PROG" || rest.substr(1) == "_PROC")) {
+      programmed = true;
+      rest = rest.substr(0, 1);
+    }
+    if (rest.size() == 1 && rest[0] >= 'A' && rest[0] <= 'Z') {
+      if (const int local = rules_.argument_spec1[static_cast<size_t>(rest[0] - 'A')]; local != 0) {
+        std::optional<Value> v = read(local, loc, failure);
+        if (!v || !programmed) return v;
+        return Value::of(v->vacant ? 0.0 : 1.0);
+      }
+    }
+  }
+  return system_ ? system_->readSystem(name, indices, loc, failure)
+                 : VariableReader::readSystem(name, indices, loc, failure);
+}
+
+std::optional<Value> SystemVariables::readSystem(std::string_view name,
+                                                 std::span<const SystemIndex>,
+                                                 SourceLocation loc, Failure& failure) {
+  failure = {EvalError::NotSupported, loc,
+             absl::StrCat("system variable ", std::string(name), " is not supported yet (docs/din.md)"), 0};
+  return std::nullopt;
+}
+
 namespace {
 // #1000 and up are the controller's (interface signals, offsets, positions, ...).
 constexpr int64_t kFirstSystemVariable = 1000;

@@ -21,7 +21,10 @@ bool isBlankText(std::string_view text) {
 
 struct BlockReader::Impl {
   Impl(const SourceManager& s, uint32_t f, DiagnosticEngine& d, ReaderOptions o)
-      : file(f), diags(d), options(o), language(o.initial_language), cursor(s, f) {}
+      : file(f), diags(d), options(o), cursor(s, f) {
+    options.initial_language = startLanguage(s, f, o);
+    language = options.initial_language;
+  }
 
   // The next block of text: cuts the line at ';' as the current language wants. Returns false
   // at end of input.

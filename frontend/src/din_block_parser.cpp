@@ -483,9 +483,8 @@ class Builder : public BlockText {
 
   // PROC NAME(REAL A, VAR INT B) DISPLOF: the Proc statement, then one Parameter each.
   void proc(ast::Block& b, DinParser::ProcItemContext* p) {
-    std::vector<antlr4::tree::TerminalNode*> names = p->IDENT();
     ast::Statement& s = statement(b, SKind::Proc, p->PROC()->getSymbol());
-    s.target = name(names[0]->getSymbol());
+    s.target = name(p->procName);
     for (DinParser::ParameterContext* param : p->parameter()) {
       DinParser::TypeNameContext* tn = param->typeName();
       const ast::DataType type = typeNamed(upper(tn->IDENT()));
@@ -501,13 +500,13 @@ class Builder : public BlockText {
     }
     // Attributes: what the operator panel shows and single-block stops, which a run does not
     // have; SAVE (modal settings and frames restored on return) is not built yet.
-    for (size_t i = 1; i < names.size(); ++i) {
-      const std::string_view attribute = upper(names[i]);
+    for (const Token* a : p->attributes) {
+      const std::string_view attribute = upper(a);
       if (attribute == "SAVE")
-        notYet(at(names[i]), "'PROC ... SAVE' (restoring modal settings and frames on return)");
+        notYet(at(a), "'PROC ... SAVE' (restoring modal settings and frames on return)");
       if (attribute != "DISPLOF" && attribute != "DISPLON" && attribute != "SBLOF" &&
           attribute != "SBLON" && attribute != "ACTBLOCNO")
-        fail(codes::kUnexpectedToken, at(names[i]),
+        fail(codes::kUnexpectedToken, at(a),
              absl::StrCat("'", str(attribute),
                           "' is not a PROC attribute (SAVE, DISPLOF, DISPLON, SBLOF, SBLON, ACTBLOCNO)"));
     }

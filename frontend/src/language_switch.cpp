@@ -1,5 +1,7 @@
 #include "language_switch.h"
 
+#include "block_cursor.h"
+
 #include "lexical.h"
 #include "ncc/support/diagnostics.h"
 
@@ -71,6 +73,31 @@ Language languageAfterText(std::string_view text, Language now) {
     read = readDin(parser, din, text, SourceLocation{}, scratch, ParserChoice::Auto, b);
   }
   return read ? languageAfter(b, now) : now;  // a block the reader skips switches nothing
+}
+
+Language startLanguage(const SourceManager& sources, uint32_t file, const ReaderOptions& options) {
+  if (!options.language_switch || options.initial_language == Language::Din)
+    return options.initial_language;
+  BlockCursor cursor(sources, file);
+  BlockCursor::Segment segment;
+  // A header longer than this is no header: the file is what the options say.
+  for (int n = 0; n < 64 && cursor.next(segment, /*semicolon_ends_block=*/false); ++n) {
+    std::string_view t = segment.text;
+    while (!t.empty() && (t.front() == ' ' || t.front() == '\t')) t.remove_prefix(1);
+    if (t.empty() || t.front() == '%') continue;  // blank, `;` only, the tape mark or header
+    if ((t.front() == 'N' || t.front() == 'n') && t.size() > 1 && t[1] >= '0' && t[1] <= '9') {
+      t.remove_prefix(1);  // a block number before it
+      while (!t.empty() && t.front() >= '0' && t.front() <= '9') t.remove_prefix(1);
+      while (!t.empty() && (t.front() == ' ' || t.front() == '\t')) t.remove_prefix(1);
+    }
+    constexpr std::string_view kProc = "PROC";
+    if (t.size() <= kProc.size() || (t[kProc.size()] != ' ' && t[kProc.size()] != '\t'))
+      return options.initial_language;
+    for (size_t k = 0; k < kProc.size(); ++k)
+      if ((t[k] & ~0x20) != kProc[k]) return options.initial_language;
+    return Language::Din;
+  }
+  return options.initial_language;
 }
 
 }  // namespace ncc::frontend

@@ -4,11 +4,13 @@
 // text after it to DIN, and one that writes G291 in DIN text switches back. The reader, which
 // parses every block, and the program index, which scans text for labels without parsing,
 // decide it here alike, and read a DIN block here alike.
+#include <string>
 #include <string_view>
 
 #include "din_block_parser.h"
 #include "iso_block_parser.h"
 #include "ncc/frontend/ast.h"
+#include "ncc/frontend/block_reader.h"
 #include "ncc/frontend/language.h"
 
 namespace ncc::frontend {
@@ -31,5 +33,12 @@ Language languageAfter(const ast::Block& block, Language now);
 // The same for a block's text not parsed yet (the program index): the text is parsed only when
 // it holds "29", as every G290 / G291 does.
 Language languageAfterText(std::string_view text, Language now);
+
+// The language a file starts in: `options.initial_language`, except that where the dialect
+// switches languages a file whose first block is `PROC` is DIN from its start (840D ISO mode
+// §4.11: a macro body called by G65/M98 or an M-code macro "whose first block is PROC runs in
+// the Siemens language"). Blank lines, `;` annotations and a `%` header line before it are
+// passed over. Reads the file's first lines (the files are streamed, not held).
+Language startLanguage(const SourceManager& sources, uint32_t file, const ReaderOptions& options);
 
 }  // namespace ncc::frontend

@@ -64,7 +64,7 @@ ProgramIndex::ProgramIndex(const SourceManager& sources, uint32_t file, ReaderOp
     : sources_(sources),
       file_(file),
       semicolon_ends_block_(semicolonEndsBlock(options)),
-      initial_language_(options.initial_language),
+      initial_language_(startLanguage(sources, file, options)),
       language_switch_(options.language_switch) {}
 
 Language ProgramIndex::languageAfterSegment(std::string_view text, Language now) const {

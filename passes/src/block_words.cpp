@@ -274,6 +274,18 @@ class Decoder {
     }
     // ,C / ,R: one corner per block; of both, the last written is used (Mazak §13-14).
     if (a == ",C" || a == ",R") return store(out_.corner, std::move(wv), a != out_.corner_kind());
+    if (const FrameCommand* c = ctx_.table.findFrameCommand(a)) {
+      if (out_.frame) {
+        fail(Alarm::OneShotConflict, w.loc,
+             absl::StrCat(std::string(a), " and ", std::string(out_.frame->name),
+                          " cannot be given in one block: one frame instruction per block"));
+        return;
+      }
+      out_.frame = c;
+      out_.frame_loc = w.loc;
+      return;
+    }
+    if (a == "RPL" && !ctx_.table.frame_commands.empty()) return store(out_.rpl, std::move(wv));
     // A name with another address's meaning (DIN: CR= is R, CHR= ,C ...): looked up only here,
     // for what no slot and no axis took, so the common words never search the list.
     for (const AddressAlias& alias : ctx_.table.address_aliases) {

@@ -82,6 +82,10 @@ struct TransformState {
   };
   std::optional<FigureCall> figure_call;
   std::optional<ir::Affine> figure;
+  // DIN: the programmable frame (TRANS, ROT, SCALE, MIRROR and their A-forms; lowering_frames.cpp),
+  // programmed point -> work coordinates. It acts first, before every stage of
+  // TransformRules::order: on the 840D it sits between the workpiece and the settable frame.
+  std::optional<ir::Affine> programmable;
   // Where the tool is (machine coordinates) when that is not the commanded point, which is
   // `ControllerState::position`: after a block that moved under a transform. A block whose
   // programmed point stays may still move the tool (a transform changed since).
@@ -90,7 +94,7 @@ struct TransformState {
   bool mirrorsAny() const { return mirrored[0] || mirrored[1] || mirrored[2]; }
   // A stage or G92.5 is in force (tool_at alone is not a transform).
   bool inForce() const {
-    return work_rotation || figure || scaling || mirrorsAny() || !rotations.empty();
+    return work_rotation || figure || programmable || scaling || mirrorsAny() || !rotations.empty();
   }
 };
 

@@ -19,15 +19,15 @@ constexpr GCodeEntry kCodes[] = {
     {20, G::Motion, 1, false, A::ArcCW, 0, "circular interpolation CW"},
     {30, G::Motion, 1, false, A::ArcCCW, 0, "circular interpolation CCW"},
     // group 2 (non-modal): DIN's G4 takes F seconds or S spindle revolutions, not ISO's X/P
-    {40, G::OneShot, 2, false, A::NotSupported, 0, "dwell (G4 F / G4 S)"},
+    {40, G::OneShot, 2, false, A::DwellFeedOrSpindle, 0, "dwell (G4 F seconds / G4 S revolutions)"},
     // group 6 (cycles notes §3: G17 X/Y, G18 Z/X, G19 Y/Z)
     {170, G::Plane, 6, true, A::PlaneXY, 0, "working plane X/Y"},
     {180, G::Plane, 6, false, A::PlaneZX, 0, "working plane Z/X"},
     {190, G::Plane, 6, false, A::PlaneYZ, 0, "working plane Y/Z"},
-    // group 7: in DIN the radius comes from the active tool's edge (T, D), not built yet
+    // group 7: the radius of the active edge (D), on the ISO mode's compensation rules
     {400, G::CutterComp, 7, true, A::CompCancel, 0, "tool radius compensation off"},
-    {410, G::CutterComp, 7, false, A::NotSupported, 0, "tool radius compensation left"},
-    {420, G::CutterComp, 7, false, A::NotSupported, 0, "tool radius compensation right"},
+    {410, G::CutterComp, 7, false, A::CompLeft, 0, "tool radius compensation left"},
+    {420, G::CutterComp, 7, false, A::CompRight, 0, "tool radius compensation right"},
     // group 8: settable zero offsets (cycles notes §3: "G54 settable zero offset"); G500
     // (no settable frame) and G505..G599 wait for the frame chain
     {5000, G::WorkOffset, 8, false, A::NotSupported, 0, "settable frame off"},
@@ -65,8 +65,8 @@ constexpr GCodeEntry kCodes[] = {
     {1100, G::Polar, 3, false, A::NotSupported, 0, "pole relative to the last position"},
     {1110, G::Polar, 3, false, A::NotSupported, 0, "pole relative to the workpiece zero"},
     {1120, G::Polar, 3, false, A::NotSupported, 0, "pole relative to the last pole"},
-    // group 18: corners with tool radius compensation, which is not built in DIN yet; G450,
-    // the power-on setting, changes nothing without it
+    // group 18: corners with tool radius compensation: G450, the power-on setting, joins outer
+    // corners by an arc (the ISO mode's rule, CompRules::arc_corners); G451 is not built yet
     {4500, G::Other, 18, false, A::CancelNoEffect, 0, "transition circle at outer corners"},
     {4510, G::Other, 18, false, A::NotSupported, 0, "intersection at outer corners"},
     // group 47 (iso-milling notes §4.1): G290 in DIN text changes nothing; G291 back to ISO
@@ -79,6 +79,15 @@ constexpr GCodeEntry kCodes[] = {
 constexpr AddressAlias kAliases[] = {
     {"CR", "R"}, {"CHR", ",C"}, {"RND", ",R"}, {"CHF", "CHF"}};
 
+// Fundamentals, "Frames": the programmable frame's instructions (one per block, alone in it).
+using FC = FrameCommand::Component;
+constexpr FrameCommand kFrameCommands[] = {
+    {"TRANS", FC::Translation, false}, {"ATRANS", FC::Translation, true},
+    {"ROT", FC::Rotation, false},      {"AROT", FC::Rotation, true},
+    {"SCALE", FC::Scale, false},       {"ASCALE", FC::Scale, true},
+    {"MIRROR", FC::Mirror, false},     {"AMIRROR", FC::Mirror, true},
+};
+
 }  // namespace
 
 const DialectTable& siemensDinTable() {
@@ -89,9 +98,12 @@ const DialectTable& siemensDinTable() {
     t.dialect = Dialect::SiemensDin;
     t.gcodes = kCodes;
     t.address_aliases = kAliases;
-    // R, L, P, H, T, D mean other things in DIN (a parameter, a subprogram call, a repeat
-    // count, an auxiliary function, the tool and its edge): not read until they are built.
-    t.behaviour.other_meaning_addresses = "RLPQHDT";
+    t.frame_commands = kFrameCommands;
+    // R, L, P, H mean other things in DIN (a parameter, a subprogram call, a repeat count, an
+    // auxiliary function): not read until they are built. T selects the tool as in ISO mode;
+    // D the edge, with its length.
+    t.behaviour.other_meaning_addresses = "RLPQH";
+    t.behaviour.d_selects_length = true;
     t.behaviour.decimal_point_from_params = false;  // `X20` is 20 mm in DIN
     t.behaviour.decimal_point_default = "calculator";
     return t;

@@ -68,6 +68,7 @@ void oneShot(BlockContext& ctx) {
   const GWord& g = *ctx.words.one_shot;
   switch (g.entry->action) {
     case GAction::Dwell: return dwell(ctx, g);
+    case GAction::DwellFeedOrSpindle: return dwellFeedOrSpindle(ctx, g);
     case GAction::DataSet: return dataSet(ctx, g);
     case GAction::ReferenceCheck: return referenceCheck(ctx, g);
     case GAction::ReferenceReturn: return referenceReturn(ctx, g, 1);
@@ -230,9 +231,11 @@ LowerResult lowerBlock(LoweringCore& core, const ast::Block& block) {
   }
   ctx.silent = depends.words || depends.motion;
   applyTransformCodes(ctx);
+  applyFrameInstruction(ctx);
   applyCutterComp(ctx);
-  // G68 / G51 / G51.1 / G50.1 take the axis words as their centres: such a block moves nothing.
-  const bool centres = transformTakesAxisWords(ctx);
+  // G68 / G51 / G51.1 / G50.1 take the axis words as their centres, a DIN frame instruction as
+  // its values: such a block moves nothing.
+  const bool centres = transformTakesAxisWords(ctx) || frameTakesAxisWords(ctx);
   // G16: the plane words become Cartesian before anything reads them.
   if (!ctx.failed && !centres) convertPolarWords(ctx);
   if (ctx.failed || centres)

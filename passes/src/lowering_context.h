@@ -17,6 +17,7 @@
 //   lowering_transforms.cpp        G68/G69, G51/G50, G51.1/G50.1, G92.5 into TransformState
 //   lowering_transform_map.cpp     the transforms as one map; the tool under it
 //   lowering_figure_rotation.cpp   Mazak's figure rotation (M98 I J K L)
+//   lowering_frames.cpp            DIN programmable frame: TRANS, ROT, SCALE, MIRROR (A-forms)
 //   lowering_cutter_comp.cpp       G40/G41/G42, D, G38/G39: the block's ir::CutterComp
 //   lowering_recovery.cpp          after a rejected block: what is unknown, which later
 //                                  blocks depend on it (skipped without a diagnostic)
@@ -332,6 +333,13 @@ void figureRotationEnd(LoweringCore& core);
 // `machine` (after a move given in machine coordinates: G53, a reference return).
 AxisValues programmedAt(const BlockContext& ctx, const AxisValues& machine);
 
+// ---- lowering_frames.cpp ----
+// Whether the block is a DIN frame instruction (TRANS X.. ...): its axis words are the
+// frame's values, and it moves nothing.
+bool frameTakesAxisWords(const BlockContext& ctx);
+// The frame instruction into TransformState::programmable; the tool stays where it is.
+void applyFrameInstruction(BlockContext& ctx);
+
 // ---- lowering_polar.cpp ----
 // G15/G16 into the state; G16 (or a plane chosen under it) in a plane whose axes the machine
 // lacks is AxisMissing.
@@ -371,6 +379,14 @@ std::optional<ir::CutterComp> compensationInForce(const LoweringCore& core,
 
 // ---- lowering_machine_functions.cpp ----
 void dwell(BlockContext& ctx, const GWord& g);  // G04
+// DIN G4 F (seconds) / G4 S (spindle revolutions): F and S are the dwell's, not the feed or
+// the spindle speed.
+void dwellFeedOrSpindle(BlockContext& ctx, const GWord& g);
+inline bool isDwell(GAction a) { return a == GAction::Dwell || a == GAction::DwellFeedOrSpindle; }
+// The block's F and S belong to a DIN dwell (G4 F / G4 S).
+inline bool dwellTakesFeedAndSpindle(const DecodedBlock& w) {
+  return w.one_shot && w.one_shot->entry->action == GAction::DwellFeedOrSpindle;
+}
 // S and T: spindle speed and tool number into the modal state.
 void applySpindleAndToolWords(BlockContext& ctx);
 // S, T and M as IR machine functions, ordered around the block's motion.

@@ -17,7 +17,9 @@ namespace {
 
 // Siemens §3.3.1: the dwell block holds G04 and its X or P only. The first other command of
 // the block, in written order (nullopt when there is none).
-std::optional<std::pair<SourceLocation, std::string>> otherThanDwell(const BlockContext& ctx) {
+// `its_f_s`: F and S are the dwell's (DIN G4 F / G4 S).
+std::optional<std::pair<SourceLocation, std::string>> otherThanDwell(const BlockContext& ctx,
+                                                                     bool its_f_s = false) {
   const DecodedBlock& w = ctx.words;
   std::optional<std::pair<SourceLocation, std::string>> first;
   int first_order = 0;
@@ -31,7 +33,8 @@ std::optional<std::pair<SourceLocation, std::string>> otherThanDwell(const Block
     if (g) consider(g->loc, g->order, gCodeName(g->entry->code10));
   if (w.exact_stop) consider(w.exact_stop->loc, w.exact_stop->order, "G09");
   for (const auto* v : {&w.f, &w.s, &w.h, &w.d})
-    if (*v) consider((*v)->loc, (*v)->order, std::string((*v)->address));
+    if (*v && !(its_f_s && (v == &w.f || v == &w.s)))
+      consider((*v)->loc, (*v)->order, std::string((*v)->address));
   for (const auto* list : {&w.t, &w.m})
     for (const WordValue& v : *list) consider(v.loc, v.order, std::string(v.address));
   return first;
@@ -94,8 +97,42 @@ void dwell(BlockContext& ctx, const GWord& g) {
   ctx.ops.push_back(ir::Dwell{value, revs});
 }
 
+void dwellFeedOrSpindle(BlockContext& ctx, const GWord& g) {
+  // Fundamentals, "Dwell time (G4)": G4 in a block of its own, with F (seconds) or S
+  // (revolutions of the spindle); the F and S in force stay.
+  if (auto other = otherThanDwell(ctx, /*its_f_s=*/true)) {
+    ctx.fail(Alarm::AddressWithoutMeaning, other->first,
+             absl::StrCat("address ", other->second,
+                          " cannot be given in a G4 block: it holds G4 F.. or G4 S.. alone"));
+    return;
+  }
+  for (int i = 0; i < ctx.axisCount(); ++i)
+    if (ctx.words.axes[i]) {
+      ctx.fail(Alarm::AddressWithoutMeaning, ctx.words.axes[i]->loc,
+               absl::StrCat("address ", std::string(ctx.words.axes[i]->address),
+                            " has no meaning in a G4 block (G4 F seconds, G4 S revolutions)"));
+      return;
+    }
+  const std::optional<WordValue>& f = ctx.words.f;
+  const std::optional<WordValue>& s = ctx.words.s;
+  if (f && s) {
+    ctx.fail(Alarm::AddressWithoutMeaning, s->loc, "G4 takes the time in F or the revolutions in S, not both");
+    return;
+  }
+  if (!f && !s) {
+    ctx.fail(Alarm::AddressWithoutMeaning, g.loc, "G4 needs F (seconds) or S (spindle revolutions)");
+    return;
+  }
+  const WordValue& w = f ? *f : *s;
+  if (w.value < 0 || !std::isfinite(w.value)) {
+    ctx.fail(Alarm::ValueOutOfRange, w.loc, "a dwell cannot be negative");
+    return;
+  }
+  ctx.ops.push_back(ir::Dwell{w.value, /*revolutions=*/!f});
+}
+
 void applySpindleAndToolWords(BlockContext& ctx) {
-  if (ctx.words.s) {
+  if (ctx.words.s && !dwellTakesFeedAndSpindle(ctx.words)) {
     auto n = ctx.integer(*ctx.words.s);
     if (n && *n < 0)
       ctx.fail(Alarm::ValueOutOfRange, ctx.words.s->loc, "a spindle speed cannot be negative");
@@ -129,7 +166,7 @@ void machineFunctions(BlockContext& ctx, LowerResult& result) {
     }
   }
   std::vector<ir::Operation> before, after;
-  if (ctx.words.s)
+  if (ctx.words.s && !dwellTakesFeedAndSpindle(ctx.words))
     before.push_back(ir::MachineFunction{K::SpindleSpeed, 0, ctx.next.modal.spindle_speed});
   for (const WordValue& t : ctx.words.t)
     before.push_back(

@@ -41,7 +41,7 @@ void leaveInverseTime(BlockContext& ctx) {
 
 void applyFeed(BlockContext& ctx) {
   leaveInverseTime(ctx);
-  if (!ctx.words.f) return;
+  if (!ctx.words.f || dwellTakesFeedAndSpindle(ctx.words)) return;
   const WordValue& f = *ctx.words.f;
   ir::Modal& m = ctx.next.modal;
   if (f.value < 0) {

@@ -97,6 +97,7 @@ PolarPoint polarPoint(const BlockContext& ctx, const PolarWords& w, const AxisVa
 bool wordsAreNoPosition(GAction a) {
   switch (a) {
     case GAction::Dwell:
+    case GAction::DwellFeedOrSpindle:
     case GAction::DataSet:
     case GAction::LocalShift:
     case GAction::MachineCoordinates:

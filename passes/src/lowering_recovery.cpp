@@ -94,7 +94,7 @@ bool motionDepends(const BlockContext& ctx, const U& before, uint32_t groups) {
   const DecodedBlock& w = ctx.words;
   bool axes = w.anyAxis();
   if (w.one_shot) {
-    if (w.one_shot->entry->action == GAction::Dwell) return false;  // its X is a time
+    if (isDwell(w.one_shot->entry->action)) return false;  // its X is a time
     // G28/G30/G92/G52/G53/G10 with axis words: relative to the position or a frame.
     return axes && (unknown(GGroup::Distance) || (before.axes & ctx.namedAxes()) != 0);
   }
@@ -146,7 +146,7 @@ void relearn(BlockContext& ctx) {
   if (w.f && !ctx.failed) u.feed = false;
   if (w.one_shot) {
     // A skipped G28/G92/G52 ... leaves its axes unknown; a lowered one named none unknown.
-    if (ctx.silent && w.one_shot->entry->action != GAction::Dwell) u.axes |= ctx.namedAxes();
+    if (ctx.silent && !isDwell(w.one_shot->entry->action)) u.axes |= ctx.namedAxes();
     return;
   }
   bool values_known = !u.group(GGroup::Units);

@@ -27,6 +27,7 @@ bool wordsArePositions(const DecodedBlock& w) {
   if (!w.one_shot) return true;
   switch (w.one_shot->entry->action) {
     case GAction::Dwell:
+    case GAction::DwellFeedOrSpindle:
     case GAction::DataSet:
     case GAction::LocalShift:
       return false;

@@ -37,8 +37,60 @@ bool lengthChangeAllowed(BlockContext& ctx, const std::optional<GWord>& g, int s
   return false;
 }
 
+// DIN D n: edge n's length on the axis normal to the plane (DialectBehaviour::d_selects_length).
+int edgeLengthAxis(const BlockContext& ctx) {
+  switch (ctx.next.modal.plane) {
+    case ir::Plane::XY: return ctx.axisNamed("Z");
+    case ir::Plane::ZX: return ctx.axisNamed("Y");
+    case ir::Plane::YZ: return ctx.axisNamed("X");
+  }
+  return -1;
+}
+
+// The length in force becomes `length` on `axis` (-1: none); the change it makes on the
+// length axis is traversed now or when the axis is next programmed (length_change_moves).
+void setLength(BlockContext& ctx, int axis, double length) {
+  double old = ctx.core.cs().tool_length_axis >= 0 ? ctx.core.cs().tool_length : 0.0;
+  int changed_axis = axis >= 0 ? axis : ctx.core.cs().tool_length_axis;
+  if (changed_axis >= 0 && length != old) {
+    if (ctx.settings.length_change_moves) {
+      ctx.length_delta_axis = changed_axis;
+      ctx.length_delta = length - old;
+    } else {
+      // Traversed when the axis is next programmed (Siemens MD20382 = FALSE).
+      ControllerState& n = ctx.next;
+      if (n.length_pending_axis != changed_axis) n.length_pending = 0.0;
+      n.length_pending_axis = changed_axis;
+      n.length_pending += length - old;
+    }
+  }
+  ctx.next.tool_length_axis = axis;
+  ctx.next.tool_length = length;
+}
+
+void changeEdgeLength(BlockContext& ctx) {
+  if (!ctx.words.d) return;
+  auto n = ctx.integer(*ctx.words.d);
+  if (!n || *n < 0 || *n > ctx.settings.offset_count) return;  // applyRadiusOffsetNumber reports
+  const int sign = *n != 0 ? 1 : 0;
+  int axis = -1;
+  if (sign != 0) {
+    axis = edgeLengthAxis(ctx);
+    if (axis < 0) {
+      ctx.fail(Alarm::AxisMissing, ctx.words.d->loc,
+               "the tool length needs the axis normal to the plane, which the machine does not have");
+      return;
+    }
+  }
+  ctx.next.h_selected = static_cast<int>(*n);
+  setLength(ctx, axis, sign != 0 ? ctx.core.tables.toolLength(static_cast<int>(*n)) : 0.0);
+  ctx.next.modal.length_offset_sign = sign;
+  ctx.next.modal.length_offset_h = sign != 0 ? static_cast<int>(*n) : 0;
+}
+
 // H with G43/G44/G49: the new length, and the change it makes on the length axis.
 void changeLengthOffset(BlockContext& ctx) {
+  if (ctx.behaviour.d_selects_length) return changeEdgeLength(ctx);
   const auto& g = ctx.words.group(GGroup::LengthComp);
   if (ctx.words.h) {
     auto n = ctx.integer(*ctx.words.h);
@@ -74,22 +126,7 @@ void changeLengthOffset(BlockContext& ctx) {
     }
     length = sign * ctx.core.tables.toolLength(ctx.next.h_selected);
   }
-  double old = ctx.core.cs().tool_length_axis >= 0 ? ctx.core.cs().tool_length : 0.0;
-  int changed_axis = axis >= 0 ? axis : ctx.core.cs().tool_length_axis;
-  if (changed_axis >= 0 && length != old) {
-    if (ctx.settings.length_change_moves) {
-      ctx.length_delta_axis = changed_axis;
-      ctx.length_delta = length - old;
-    } else {
-      // Traversed when the axis is next programmed (Siemens MD20382 = FALSE).
-      ControllerState& n = ctx.next;
-      if (n.length_pending_axis != changed_axis) n.length_pending = 0.0;
-      n.length_pending_axis = changed_axis;
-      n.length_pending += length - old;
-    }
-  }
-  ctx.next.tool_length_axis = axis;
-  ctx.next.tool_length = length;
+  setLength(ctx, axis, length);
   ctx.next.modal.length_offset_sign = sign;
   ctx.next.modal.length_offset_h = sign != 0 ? ctx.next.h_selected : 0;
 }

@@ -27,8 +27,9 @@ ir::Transform transformOf(const LoweringCore& core, const ControllerState& cs) {
   if (!rules || !t.inForce()) return out;
   const std::array<int8_t, 3>& xyz = core.xyz;
   if (t.work_rotation) out.machine = *t.work_rotation;
-  if (!t.figure && !t.mirrorsAny() && !t.scaling && t.rotations.empty()) return out;
-  ir::Affine map = identityAffine(xyz);
+  if (!t.figure && !t.programmable && !t.mirrorsAny() && !t.scaling && t.rotations.empty())
+    return out;
+  ir::Affine map = t.programmable ? *t.programmable : identityAffine(xyz);
   for (Stage stage : rules->order) {
     switch (stage) {
       case Stage::FigureRotation:

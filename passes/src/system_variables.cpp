@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "absl/strings/str_cat.h"
+#include "affine.h"
 #include "lowering_context.h"
 
 namespace ncc::passes {
@@ -385,6 +386,71 @@ std::vector<ir::SetVariable> variablesOf(const TableWrite& write, const Controll
     }
   }
   return out;
+}
+
+// ---- DIN: system variables by name (Sinumerik "Lists System Variables") ---------------------
+
+namespace {
+
+// What a `$` name reads, each per axis (`$AA_IW[X]`).
+enum class Named : uint8_t {
+  ActualMachine,  // $AA_IM: where the tool is, machine coordinates
+  ActualWork,     // $AA_IW: the same in the workpiece coordinates (every frame in force)
+  EndPoint,       // $P_EP: the programmed end point of the last block, workpiece coordinates
+};
+struct NamedSystemVariable {
+  std::string_view name;
+  Named kind;
+};
+constexpr NamedSystemVariable kNamed[] = {
+    {"$AA_IM", Named::ActualMachine},
+    {"$AA_IW", Named::ActualWork},
+    {"$P_EP", Named::EndPoint},
+};
+
+}  // namespace
+
+std::optional<eval::Value> ControllerVariables::readSystem(std::string_view name,
+                                                           std::span<const eval::SystemIndex> indices,
+                                                           SourceLocation loc,
+                                                           eval::Failure& failure) {
+  const NamedSystemVariable* v = nullptr;
+  for (const NamedSystemVariable& each : kNamed)
+    if (each.name == name) v = &each;
+  if (!v)
+    return SystemVariables::readSystem(name, indices, loc, failure);
+  const int axis = indices.size() == 1 ? core_.machine->axisIndex(indices[0].axis) : -1;
+  if (axis < 0 || axis >= kMaxAxes) {
+    failure = {eval::EvalError::UndefinedName, loc,
+               absl::StrCat(std::string(name), " takes one index, the name of an axis of the machine (",
+                            std::string(name), "[X])"),
+               0};
+    return std::nullopt;
+  }
+  core_.resolveSkip();  // at run time, where a G31 stopped is known from here
+  const ControllerState& cs = core_.cs();
+  if (cs.skip_axes & (1u << axis)) {
+    failure = {eval::EvalError::RunTimeValue, loc,
+               absl::StrCat(std::string(name), "[", indices[0].axis, "] depends on where G31 stopped"), 0};
+    return std::nullopt;
+  }
+  const AxisValues total = frameOf(cs, core_.table->behaviour).total();
+  const std::optional<AxisValues>& tool_at = cs.transforms->tool_at;
+  const AxisValues tool = tool_at ? *tool_at : cs.position;
+  double value = 0.0;
+  switch (v->kind) {
+    case Named::ActualMachine: value = tool[axis]; break;
+    case Named::EndPoint: value = cs.position[axis] - total[axis]; break;
+    case Named::ActualWork: {
+      AxisValues work = tool;
+      const ir::Transform t = transformOf(core_, cs);
+      if (t.any())
+        if (const auto inv = inverse(machineSpaceMap(t, total))) applyPoint(*inv, work);
+      value = work[axis] - total[axis];
+      break;
+    }
+  }
+  return eval::Value::of(value / unitScale(cs));
 }
 
 }  // namespace ncc::passes

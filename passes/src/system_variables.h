@@ -20,6 +20,9 @@ class ControllerVariables final : public eval::SystemVariables {
                                   eval::Failure& failure) override;
   bool write(int64_t number, const eval::Value& value, SourceLocation loc,
              eval::Failure& failure) override;
+  std::optional<eval::Value> readSystem(std::string_view name,
+                                        std::span<const eval::SystemIndex> indices,
+                                        SourceLocation loc, eval::Failure& failure) override;
 
  private:
   LoweringCore& core_;

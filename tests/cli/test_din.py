@@ -146,6 +146,63 @@ class DinTest(ScratchDirTest):
         self.assertEqual([(m["to"]["X"], m["to"]["Y"]) for m in moves],
                          [(1.0, 1.0), (10.0, 1.0), (20.0, 1.0), (30.0, 1.0), (30.0, 5.0)])
 
+    def test_an_iso_macro_call_runs_a_proc_body_in_din_with_c_arguments(self):
+        # 840D ISO §4.11: a G65 body whose first block is PROC is DIN; $C_X is the argument X,
+        # $C_X_PROG whether it was given. Its DEF variables are its own: a second call declares
+        # them afresh. Arguments move nothing (§4.10.2).
+        self.write("0010.spf", "%_N_0010_SPF\n; macro body\nPROC 0010\nDEF REAL XA=$C_X, N=R1\n"
+                               "R1=N+1\nR2=XA\nR3=$C_Z_PROG\nR4=$C_Y_PROG\nM17\n")
+        path = self.write("iso.nc", "G0 X1. Y1.\nG65 P10 X7. Y2.\nG65 P10 X8.\nG0 X2.\nM30\n")
+        proc = ncc("run", path, "--dialect", "siemens-iso-m", "--emit=vars")
+        self.assertEqual(proc.returncode, 0, proc.stderr)
+        got = json.loads(proc.stdout)
+        self.assertEqual({k: got[k] for k in ("R1", "R2", "R3", "R4")},
+                         {"R1": 2.0, "R2": 8.0, "R3": 0.0, "R4": 0.0})
+        moves = ncc("run", path, "--dialect", "siemens-iso-m", "--emit=moves")
+        self.assertEqual([json.loads(l)["to"]["X"] for l in moves.stdout.splitlines()], [1.0, 2.0])
+
+    def test_g290_g291_several_switches_calls_a_jump_back_and_a_skip_across_them(self):
+        # siemens-iso-m: an ISO G65 call of a DIN body, a DIN loop whose GOTOB goes back over a
+        # G291 ... G290 pair (the ISO block between is read as ISO again), then a G31 whose end
+        # is known only when the program runs: the blocks after it, a G290 among them, are
+        # prepared in the VM ($AA_IW[X] read there). Worked out by hand: R1 = 3 from the call;
+        # X = K*10 + 3 for K = 1, 2; the skip (no signal) ends at X50, and Y goes to it.
+        self.write("0020.spf", "PROC 0020\nR1=$C_X\nM17\n")
+        program = ("G90 G0 X1. Y1. Z0\n"
+                   "G65 P20 X3.\n"
+                   "G290\n"
+                   "DEF INT K=0\n"
+                   "MA1: K=K+1\n"
+                   "G0 X=K*10+R1\n"
+                   "G291\n"
+                   "G0 Y2.\n"
+                   "G290\n"
+                   "IF K<2 GOTOB MA1\n"
+                   "G291\n"
+                   "G31 X50. F100.\n"
+                   "G290\n"
+                   "G0 Y=$AA_IW[X]\n"
+                   "G291\n"
+                   "G0 Z5.\n"
+                   "M30\n")
+        path = self.write("iso.nc", program)
+        proc = ncc("run", path, "--dialect", "siemens-iso-m", "--emit=moves")
+        self.assertEqual(proc.returncode, 0, proc.stderr)
+        moves = [json.loads(line) for line in proc.stdout.splitlines()]
+        got = [(m["line"], m["to"]["X"], m["to"]["Y"], m["to"]["Z"]) for m in moves]
+        self.assertEqual(got, [(1, 1, 1, 0), (6, 13, 1, 0), (8, 13, 2, 0), (6, 23, 2, 0),
+                               (12, 50, 2, 0), (14, 50, 50, 0), (16, 50, 50, 5)])
+        self.assertEqual((moves[4]["kind"], moves[4]["feed"]), ("line", 100.0))  # the G31 move
+
+    def test_setal_stops_the_program_or_warns(self):
+        proc = self.assertAlarm("G0 X1\nSETAL(61000)\nG0 X2\nM30\n", "61000", 2, 1, "SETAL(61000)")
+        self.assertNotIn('"X": 2.0', proc.stdout)
+        proc, moves = self.run_din("G0 X1\nSETAL(62001)\nG0 X2\nM30\n")
+        self.assertEqual(proc.returncode, 0, proc.stderr)
+        self.assertIn("warning[62001]", proc.stderr)
+        self.assertEqual([m["to"]["X"] for m in moves], [1.0, 2.0])
+        self.assertAlarm("SETAL(12345)\nM30\n", "NCC2406", 1, 7, "60000 to 69999")
+
     # ---- alarms at their block ----------------------------------------------------------
 
     # ---- control structures --------------------------------------------------------------
@@ -256,7 +313,7 @@ class DinTest(ScratchDirTest):
         self.assertAlarm("G0 X0\nMISSING(1)\nM30\n", "12550", 2, 1, "MISSING.spf")
         self.assertAlarm("G0 X0\nLATE\nM30\n", "NCC2430", 2, 1, "first block")
         self.assertAlarm("G0 X0\nDEEP\nM30\n", "NCC2413", 2, 1, "nested more than 15")
-        self.assertAlarm("G0 X0\nTRANS X10\nM30\n", "NCC2010", 2, 1, "programmable frame")
+        self.assertAlarm("G0 X0\nTRAFOOF\nM30\n", "NCC2010", 2, 1, "kinematic transformation")
         self.assertAlarm("G0 X0\nPROC A (REAL B) SAVE\nM30\n", "NCC1090", 2, 17, "SAVE")
 
     def test_cr_arcs_and_chf_chr_rnd_corners(self):
@@ -279,6 +336,76 @@ class DinTest(ScratchDirTest):
         self.assertEqual([(m["to"]["X"], m["to"]["Y"]) for m in moves],
                          [(10.0, 0.0), (15.0, 0.0), (2.0, 1.0), (7.0, 1.0)])
         self.assertAlarm("R1=IC(5)\nM30\n", "NCC2406", 1, 4, "IC()")
+
+    def test_programmable_frames_replace_or_add_in_the_frames_coordinates(self):
+        # TRANS/ROT/SCALE/MIRROR replace the whole programmable frame (alone: delete it); the
+        # A-forms act in the coordinates of the frame in force. Worked out by hand: after
+        # TRANS X100, AROT RPL=90 the point (10, 0) turns to (0, 10), then shifts to (100, 10);
+        # ATRANS X5 shifts along the turned X (the machine's Y).
+        proc, moves = self.run_din(
+            "G1 X0 Y0 Z0 F1000\nROT RPL=90\nX10 Y0\nAROT RPL=-90\nX10 Y0\nTRANS X100\n"
+            "AROT RPL=90\nX10\nATRANS X5\nX0 Y0\nSCALE X2 Y2\nX10 Y10\nASCALE X0.5\nX10 Y10\n"
+            "MIRROR X0\nX10 Y10\nAMIRROR X0\nX10 Y10\nROT Z90\nX10 Y0\nROT X90\nX0 Y10 Z0\n"
+            "TRANS\nX0 Y0 Z0\nM30\n")
+        self.assertEqual(proc.returncode, 0, proc.stderr)
+        got = [(m["line"], round(m["to"]["X"], 6), round(m["to"]["Y"], 6), round(m["to"]["Z"], 6))
+               for m in moves]
+        self.assertEqual(got, [(3, 0, 10, 0), (5, 10, 0, 0), (8, 100, 10, 0), (10, 100, 5, 0),
+                               (12, 20, 20, 0), (14, 10, 20, 0), (16, -10, 10, 0), (18, 10, 10, 0),
+                               (20, 0, 10, 0), (22, 0, 0, 10), (24, 0, 0, 0)])
+
+    def test_a_mirrored_arc_turns_the_other_way_and_ic_moves_in_the_frame(self):
+        proc, moves = self.run_din("G1 X0 Y0 F100\nMIRROR Y0\nG2 X10 Y0 CR=5\nTRANS X100\n"
+                                   "G1 X=IC(1)\nX=IC(2)\nM30\n")
+        self.assertEqual(proc.returncode, 0, proc.stderr)
+        self.assertEqual((moves[0]["kind"], moves[0]["cw"], moves[0]["center"]["X"]), ("arc", False, 5.0))
+        # MD42440 = 1: an incremental word traverses the new offset too (10 + 100 + 1).
+        self.assertEqual([m["to"]["X"] for m in moves[1:]], [111.0, 113.0])
+
+    def test_d_activates_the_edges_length_and_radius(self):
+        # Flat D numbers: D n is the machine file's H n (length) and D n (radius). The length
+        # acts on Z (G17) when Z is next programmed; G41 offsets left by the radius; D0 ends it.
+        machine = self.write("m.toml", "[machine.offsets]\nH1 = 100.0\nD1 = 5.0\nH2 = 50.0\nD2 = 2.0\n")
+        proc, moves = self.run_din("G0 X0 Y-20 Z200\nT1 M6\nD1\nG0 Z10\nG41 G1 X0 Y0 F100\nX30\n"
+                                   "Y30\nG40 X50 Y50\nD2\nZ20\nD0\nZ30\nM30\n", "p.mpf",
+                                   "--machine", machine)
+        self.assertEqual(proc.returncode, 0, proc.stderr)
+        got = [(m["line"], m["to"]["X"], m["to"]["Y"], m["to"]["Z"]) for m in moves]
+        # The corner at (30, 0) is inside the left offset: the paths meet at (25, 5).
+        self.assertEqual(got, [(1, 0, -20, 200), (4, 0, -20, 110), (5, 0, 5, 110), (6, 25, 5, 110),
+                               (7, 25, 30, 110), (8, 50, 50, 110), (10, 50, 50, 70), (12, 50, 50, 30)])
+
+    def test_g4_dwells_f_seconds_or_s_revolutions_and_keeps_the_feed(self):
+        # G4 F2: 2 s; G4 S10 at S600: 10 revolutions = 1 s. The feed (100) and the spindle speed
+        # (600) stay: the moves after the dwells run at F100.
+        proc, moves = self.run_din("G1 X10 F100\nG4 F2\nX20\nM3 S600\nG4 S10\nX30\nM30\n")
+        self.assertEqual(proc.returncode, 0, proc.stderr)
+        lines = [m for m in moves if m["kind"] == "line"]
+        self.assertEqual([(m["to"]["X"], m["feed"]) for m in lines], [(10.0, 100.0), (20.0, 100.0), (30.0, 100.0)])
+        dwells = [m for m in moves if m["kind"] == "dwell"]
+        self.assertEqual([(m["line"], m.get("seconds"), m.get("revolutions")) for m in dwells],
+                         [(2, 2.0, None), (5, 10.0, True)])
+        self.assertAlarm("G4 F1 X5\nM30\n", "NCC2014", 1, 7, "no meaning in a G4 block")
+        self.assertAlarm("G4 F1 S5\nM30\n", "NCC2014", 1, 7, "not both")
+        self.assertAlarm("G4\nM30\n", "NCC2014", 1, 1, "needs F")
+        self.assertAlarm("G4 F1 M3\nM30\n", "NCC2014", 1, 7, "address M cannot be given")
+
+    def test_frame_instruction_alarms(self):
+        self.assertAlarm("TRANS X10 F100\nM30\n", "NCC2112", 1, 11, "block of its own")
+        self.assertAlarm("G0 TRANS X10\nM30\n", "NCC2112", 1, 1, "G")
+        self.assertAlarm("ROT RPL=10 Z5\nM30\n", "NCC2014", 1, None, "RPL=")
+        self.assertAlarm("SCALE X0\nM30\n", "NCC2116", 1, 7, "cannot be 0")
+        self.assertAlarm("G0 X1 RPL=5\nM30\n", "NCC2014", 1, 7, "ROT or AROT")
+        self.assertAlarm("TRANS(1)\nM30\n", "NCC2010", 1, 1, "not in parentheses")
+
+    def test_actual_positions_by_system_variable(self):
+        # $AA_IM: where the tool is (machine); $AA_IW: the same in the workpiece coordinates of
+        # every frame in force; $P_EP: the programmed end point.
+        got = self.variables("G1 X0 Y0 Z10 F100\nTRANS Z100\nR1=$AA_IW[Z]\nR2=$AA_IM[Z]\n"
+                             "R3=$P_EP[Z]\nG1 X5\nR4=$AA_IM[Z]\nR5=$AA_IW[X]\nM30\n")
+        self.assertEqual(got, {"R1": -90.0, "R2": 10.0, "R3": 10.0, "R4": 110.0, "R5": 5.0})
+        self.assertAlarm("R1=$AA_IW[Q]\nM30\n", "12550", 1, 4, "an axis of the machine")
+        self.assertAlarm("R1=$AA_FOO[X]\nM30\n", "NCC2010", 1, 4, "$AA_FOO")
 
     def test_alarms_carry_the_sinumerik_numbers_and_positions(self):
         self.assertAlarm("G0 X1\nR1=UNKNOWN+1\nM30\n", "12550", 2, 4, "'UNKNOWN' is not defined")

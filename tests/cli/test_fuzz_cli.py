@@ -88,7 +88,10 @@ BLOCKS = ["G95 G01 X10. F0.1", "M05", "S0", "M03 S1000", "G04 X2.", "G04 P1500",
           # DIN control structures and jumps (in ISO text they are refused by the parser).
           "IF R1>2", "ELSE", "ENDIF", "WHILE R1<3", "ENDWHILE", "LOOP", "ENDLOOP", "REPEAT",
           "UNTIL R1>1", "R1=R1+1", "FOR R2=0 TO 3", "ENDFOR", "CASE(R1) OF 1 GOTOF MA1 DEFAULT GOTOB MA1",
-          "MA1:", "GOTOB MA1"]
+          "MA1:", "GOTOB MA1",
+          # DIN frames, system variables, alarms (lowering_frames.cpp, system_variables.cpp).
+          "TRANS X10 Y5", "AROT RPL=30", "ROT Z45", "SCALE X0.5", "AMIRROR X0", "TRANS",
+          "R3=$AA_IW[X]", "R4=$AA_IM[Z]", "SETAL(62000)", "SETAL(61000)"]
 # Blocks that compile but stop the run with an alarm (exit 3): feed per revolution with the
 # spindle stopped (NCC7207).
 ALARM_BLOCKS = ["M05\nG95 G01 X20. Y20. F0.1", "S0\nG95 G01 X-20. F0.2", "M05\nG95 G04 X3.",

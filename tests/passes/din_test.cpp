@@ -39,12 +39,12 @@ TEST(Din, WhatDinReadsOtherwiseIsRefusedAtItsPosition) {
     const char* expected;  // in the diagnostics
   };
   const Case cases[] = {
-      {"G41 X1 F100", "NCC2010"},         // radius compensation from T/D: not built
-      {"G4 F2", "NCC2010"},               // DIN dwell (F seconds)
+      {"G451", "NCC2010"},                // intersection at outer corners: not built
+      {"G96 S100", "NCC2010"},            // constant cutting speed
       {"G70 X1 F100", "NCC2010"},         // geometry-only inch
       {"G500", "NCC2010"},                // no settable frame
       {"R10 X1 F100", "address R is not supported yet"},  // R parameter in DIN
-      {"T1", "address T is not supported yet"},
+      {"H1", "address H is not supported yet"},  // an auxiliary function in DIN
       {"X=ACP(10)", "NCC1090"},           // rotary positioning: not read yet
       {"PROC A SAVE", "NCC1090"},         // SAVE: not built yet
       {"N10 (comment) X1", "NCC1006"},    // no ( ) comments in DIN: unexpected '('

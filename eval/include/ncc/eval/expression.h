@@ -8,6 +8,7 @@
 #include <optional>
 #include <vector>
 #include <span>
+#include <string>
 #include <string_view>
 
 #include "ncc/eval/failure.h"
@@ -16,6 +17,12 @@
 #include "ncc/frontend/ast.h"
 
 namespace ncc::eval {
+
+// DIN: one index of a `$` system variable: an axis name (`$AA_IW[X]`), else a number.
+struct SystemIndex {
+  std::string axis;
+  int64_t number = 0;
+};
 
 class VariableReader {
  public:
@@ -27,6 +34,9 @@ class VariableReader {
   virtual std::optional<Value> readR(int64_t n, SourceLocation loc, Failure& failure);
   virtual std::optional<Value> readNamed(std::string_view name, std::span<const int64_t> indices,
                                          SourceLocation loc, Failure& failure);
+  // DIN: a `$` system variable by name; a reader without a controller fails with NotSupported.
+  virtual std::optional<Value> readSystem(std::string_view name, std::span<const SystemIndex> indices,
+                                          SourceLocation loc, Failure& failure);
 };
 
 struct ExpressionContext {

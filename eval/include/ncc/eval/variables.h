@@ -27,6 +27,9 @@ class SystemVariables {
   // False after filling `failure` (read-only, out of range).
   virtual bool write(int64_t number, const Value& value, SourceLocation loc,
                      Failure& failure) = 0;
+  // DIN: a `$` system variable by name (`$AA_IW[X]`); this default has none.
+  virtual std::optional<Value> readSystem(std::string_view name, std::span<const SystemIndex> indices,
+                                          SourceLocation loc, Failure& failure);
 };
 
 class Variables final : public VariableReader {
@@ -48,6 +51,9 @@ class Variables final : public VariableReader {
                                  SourceLocation loc, Failure& failure) override {
     return named_.read(name, indices, loc, failure);
   }
+  // `$C_X` (the macro argument X) here; other `$` names from the controller (`system`).
+  std::optional<Value> readSystem(std::string_view name, std::span<const SystemIndex> indices,
+                                  SourceLocation loc, Failure& failure) override;
 
   // A macro call opens a new set of locals (all vacant but the arguments); its return
   // closes it.

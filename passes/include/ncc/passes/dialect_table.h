@@ -28,6 +28,7 @@ enum class GAction : uint8_t {
   WorkOffsetExtended,                           // G54.1 Pn
   ExactStopMode, CornerOverride, TappingMode, ContinuousMode,  // G61 G62 G63 G64
   Dwell,                                        // G04
+  DwellFeedOrSpindle,                           // DIN G4 F (seconds) / G4 S (revolutions)
   ExactStopOneShot,                             // G09
   DataSet,                                      // G10
   ReferenceCheck,                               // G27
@@ -199,11 +200,15 @@ struct DialectBehaviour {
   // Data addresses (block_words.h, AddressMap) this language gives another meaning, not built
   // yet: such a letter, unless it is an axis of the machine, is "not supported yet". Siemens
   // DIN reads R as a parameter, L as a subprogram call, P as a repeat count, H as an auxiliary
-  // function, T and D as the tool and its edge. Empty: every data address as ISO reads it.
+  // function. Empty: every data address as ISO reads it.
   std::string_view other_meaning_addresses = "";
   // Whether [machine.params] decimal_point applies (MD10884 EXTERN_FLOATINGPOINT_PROG is an
   // ISO-mode parameter: Siemens DIN always reads `X20` as 20 mm).
   bool decimal_point_from_params = true;
+  // Siemens DIN: D n makes edge n's length active as well as its radius (no G43/H), on the
+  // axis normal to the working plane; D0 deselects both. The edges are numbered flat (MD18102
+  // = 1): D n is register n, whatever T is.
+  bool d_selects_length = false;
 };
 
 // What a block of system variables (#1000 and up) holds; the controller model reads and
@@ -382,6 +387,17 @@ struct AddressAlias {
   std::string_view to;
 };
 
+// A DIN frame instruction (Fundamentals, "Frames"; lowering_frames.cpp): the programmable
+// frame's translation (TRANS X.. Y.. Z..), rotation (ROT X.. Y.. Z.. in space, or RPL= in the
+// plane), scale factors (SCALE) or mirrored axes (MIRROR X0). The plain command replaces the
+// whole programmable frame (alone, it deletes it); the A-form (ATRANS ...) acts onto the frame
+// in force, in its coordinates.
+struct FrameCommand {
+  std::string_view name;
+  enum class Component : uint8_t { Translation, Rotation, Scale, Mirror } component;
+  bool additive;
+};
+
 struct DialectTable {
   Dialect dialect;
   std::span<const GCodeEntry> gcodes;
@@ -392,8 +408,14 @@ struct DialectTable {
   const TransformRules* transforms = nullptr;  // coordinate rotation, scaling, mirror
   const PolarRules* polar = nullptr;   // G16; null where the dialect has no polar command
   const CompRules* comp = nullptr;     // G40/G41/G42; null: compensation is not supported
-  std::span<const AddressAlias> address_aliases;
+  std::span<const AddressAlias> address_aliases{};
+  std::span<const FrameCommand> frame_commands{};  // DIN TRANS, ATRANS ...; empty in ISO
 
+  const FrameCommand* findFrameCommand(std::string_view name) const {
+    for (const FrameCommand& c : frame_commands)
+      if (c.name == name) return &c;
+    return nullptr;
+  }
   const GCodeEntry* findG(int code10) const;
   std::string_view alarm(Alarm a) const { return alarm_codes[static_cast<size_t>(a)]; }
   // The power-on code of a group (nullptr if the group has none).
