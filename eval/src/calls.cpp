@@ -77,6 +77,13 @@ std::string codeName(const ast::Word& w) {
 }  // namespace
 
 bool Evaluator::mayTakeArguments(const ast::Block& block) const {
+  if (block.language == frontend::Language::Din) {
+    // A call by name or by L: the block's P is its repeat count (din.cpp).
+    for (const ast::Statement& st : block.statements)
+      if (st.kind == ast::Statement::Kind::Call) return true;
+    for (const ast::Word& w : block.words)
+      if (w.address.is('L')) return true;
+  }
   for (const ast::Word& w : block.words)
     if (impl_->isCallWord(w) || (w.address == "G" && !isLiteral(w.value))) return true;
   return false;

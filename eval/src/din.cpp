@@ -37,13 +37,23 @@ bool isReturnWord(const ast::Word& w) {
   return w.address.is('M') && isLiteral(w.value) && literalValue(w.value) == 17;
 }
 
+// `L10`: a call of the subprogram L10 (Fundamentals, "subprogram call"), unless a DEF or PROC
+// made L a variable of the program.
+bool isSubprogramWord(const ast::Word& w, const NamedVariables& named) {
+  return w.address.is('L') && !(named.any() && named.find(w.address.view()));
+}
+
+struct BuiltIn;
+const BuiltIn* builtIn(std::string_view name);
+
 }  // namespace
 
 bool Evaluator::Impl::dinPlain(const ast::Block& block) const {
   if (!block.statements.empty()) return false;
   const NamedVariables& named = variables.named();
   for (const ast::Word& w : block.words)
-    if (!isLiteral(w.value) || isReturnWord(w) || (named.any() && named.find(w.address.view())))
+    if (!isLiteral(w.value) || isReturnWord(w) || w.address.is('L') ||
+        (named.any() && named.find(w.address.view())))
       return false;
   return true;
 }
@@ -73,6 +83,16 @@ const ast::Block* Evaluator::Impl::evaluateDin(const ast::Block& block, const Pr
     return nullptr;
   };
 
+  // `MYKONTUR P3`, `L10 P3`: P is the call's repeat count, not a word of the block.
+  repeat_word = nullptr;
+  bool calls = false;
+  for (const ast::Statement& st : block.statements)
+    calls = calls || (st.kind == ast::Statement::Kind::Call && st.target.text && !builtIn(*st.target.text));
+  for (const ast::Word& w : block.words) calls = calls || isSubprogramWord(w, named);
+  if (calls)
+    for (const ast::Word& w : block.words)
+      if (w.address.is('P') && !(named.any() && named.find(w.address.view()))) repeat_word = &w;
+
   const ast::Statement* jump = nullptr;
   const ast::Statement* structure = nullptr;
   for (const Item& item : items) {
@@ -80,6 +100,11 @@ const ast::Block* Evaluator::Impl::evaluateDin(const ast::Block& block, const Pr
       const ast::Word& w = *item.word;
       if (isReturnWord(w)) {
         dinReturn(w.loc, at);
+        continue;
+      }
+      if (&w == repeat_word) continue;  // read by the call
+      if (isSubprogramWord(w, named)) {
+        if (!dinCallNumbered(w, at)) return nullptr;
         continue;
       }
       if (named.any() && named.find(w.address.view())) {
@@ -510,6 +535,7 @@ constexpr BuiltIn kBuiltIns[] = {
 // and user alarms 60000-69999; those of 62000-62999 and 67000-67999 are shown and the program
 // goes on, the others stop it.
 constexpr int64_t kFirstCycleAlarm = 60000, kLastCycleAlarm = 69999;
+constexpr int64_t kMaxRepeats = 9999;  // `P` of a subprogram call (Fundamentals)
 bool alarmContinues(int64_t n) { return (n >= 62000 && n <= 62999) || (n >= 67000 && n <= 67999); }
 
 const BuiltIn* builtIn(std::string_view name) {
@@ -544,6 +570,7 @@ bool Evaluator::Impl::dinCall(const ast::Statement& st, const ProgramPoint& at, 
   p.name = name;
   p.loc = st.loc;
   p.at = at;
+  if (!repeatCount(p)) return false;
   for (const ast::Expr& arg : st.target.args) {
     DinArgument& a = p.din_arguments.emplace_back();
     a.loc = arg.loc;
@@ -555,6 +582,43 @@ bool Evaluator::Impl::dinCall(const ast::Statement& st, const ProgramPoint& at, 
       if (!a.ref) return false;
     }
   }
+  pending.push_back(std::move(p));
+  return true;
+}
+
+bool Evaluator::Impl::repeatCount(Pending& p) {
+  if (!repeat_word) return true;
+  std::optional<Value> v = value(repeat_word->value, 0, true);
+  if (!v) return false;
+  const double n = v->arithmetic();
+  if (!(n >= 1 && n <= kMaxRepeats) || n != std::floor(n)) {
+    fail(EvalError::AddressValue, repeat_word->loc,
+         absl::StrCat("P", n, ": a subprogram runs 1 to ", kMaxRepeats, " times"));
+    return false;
+  }
+  p.repeats = static_cast<int64_t>(n);
+  return true;
+}
+
+bool Evaluator::Impl::dinCallNumbered(const ast::Word& w, const ProgramPoint& at) {
+  // The name keeps the digits as written: L0123 and L123 are different programs.
+  std::optional<Value> v = value(w.value, 0, true);
+  if (!v) return false;
+  const double n = v->arithmetic();
+  if (!(n >= 0 && n <= 9999999) || n != std::floor(n)) {
+    fail(EvalError::AddressValue, w.loc, absl::StrCat("L", n, ": subprogram numbers are 0 to 9999999"));
+    return false;
+  }
+  std::string digits = absl::StrCat(static_cast<int64_t>(n));
+  if (w.value.kind == ast::Expr::Kind::Number && w.value.digits > digits.size())
+    digits.insert(0, w.value.digits - digits.size(), '0');
+  Pending p;
+  p.kind = Pending::Kind::Call;
+  p.din = true;
+  p.name = "L" + digits;
+  p.loc = w.loc;
+  p.at = at;
+  if (!repeatCount(p)) return false;
   pending.push_back(std::move(p));
   return true;
 }

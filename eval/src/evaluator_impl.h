@@ -185,6 +185,11 @@ struct Evaluator::Impl {
   bool dinCall(const ast::Statement& st, const ProgramPoint& at, ast::Block& out);
   // SETAL(n): a cycle or user alarm; the program stops, or goes on after a warning.
   bool setAlarm(const ast::Statement& st);
+  // `L10`: a call of the subprogram L10 (the digits as written).
+  bool dinCallNumbered(const ast::Word& w, const ProgramPoint& at);
+  // The repeat count of the block's call (`P3`, repeat_word) into `p`.
+  bool repeatCount(Pending& p);
+  const ast::Word* repeat_word = nullptr;  // the DIN block's P of a call, while evaluating it
   // PROC: binds the call's arguments to the parameters in a new scope of variables.
   bool dinProc(const ast::Block& block, const ast::Statement& st, const ProgramPoint& at);
   // M17 or RET: returns after the block (in the main program: its end).

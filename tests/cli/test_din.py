@@ -285,6 +285,19 @@ class DinTest(ScratchDirTest):
         self.assertEqual([(m["to"]["X"], m["to"]["Y"]) for m in moves],
                          [(10.0, 20.0), (5.0, 0.0), (3.0, 0.0), (3.0, 3.0), (4.0, 3.0)])
 
+    def test_l_subprograms_and_p_repeats(self):
+        # L10 and L0010 are different programs (the digits as written); P repeats the call, each
+        # run with its own DEF variables and PROC parameters.
+        self.write("L10.spf", "G91 G1 X1 F100\nG90\nM17\n")
+        self.write("L0010.spf", "G0 Z5\nM17\n")
+        self.write("KONT.spf", "PROC KONT(REAL D)\nDEF REAL E=D\nG91 G1 Y=E F100\nG90\nRET\n")
+        proc, moves = self.run_din("G0 X0 Y0 Z0\nL10 P3\nKONT(2) P2\nL0010\nM30\n")
+        self.assertEqual(proc.returncode, 0, proc.stderr)
+        self.assertEqual([(m["to"]["X"], m["to"]["Y"], m["to"]["Z"]) for m in moves],
+                         [(1, 0, 0), (2, 0, 0), (3, 0, 0), (3, 2, 0), (3, 4, 0), (3, 4, 5)])
+        self.assertAlarm("L10 P0\nM30\n", "NCC2406", 1, 5, "1 to 9999 times")
+        self.assertAlarm("G0 X1\nL99\nM30\n", "12550", 2, 1, "L99")
+
     def test_var_parameters_write_back_and_locals_are_the_subprograms_own(self):
         self.write("ADD.spf", "PROC ADD(VAR REAL V, INT N)\nDEF REAL A=100\nV=V+N+A-100\nR2=A\nRET\n")
         self.write("FILL.spf", "PROC FILL(VAR REAL E)\nE=7\nM17\n")

@@ -90,7 +90,8 @@ class Evaluator {
   void programEndCode();
   // Whether evaluation may read `block`'s words as a call's arguments rather than as the
   // dialect's addresses: a call word or code macro in it, a G code computed only when it runs,
-  // or a modal call (G66/G66.1) in force now or started by a block of `others`. A compile
+  // or a modal call (G66/G66.1) in force now or started by a block of `others`; DIN: a call by
+  // name or by L (its P is the repeat count). A compile
   // checks the blocks it leaves to run time only where this is false.
   bool mayTakeArguments(const ast::Block& block) const;
   // Whether `block` may start a modal call (G66, G66.1, or a G computed at run time).
