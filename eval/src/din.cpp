@@ -37,10 +37,15 @@ bool isReturnWord(const ast::Word& w) {
   return w.address.is('M') && isLiteral(w.value) && literalValue(w.value) == 17;
 }
 
+// DIN `V=7`: the word assigns V when a DEF or PROC declared it in the running program.
+bool namesVariable(const ast::Word& w, const NamedVariables& named) {
+  return named.any() && named.find(w.address.view());
+}
+
 // `L10`: a call of the subprogram L10 (Fundamentals, "subprogram call"), unless a DEF or PROC
 // made L a variable of the program.
 bool isSubprogramWord(const ast::Word& w, const NamedVariables& named) {
-  return w.address.is('L') && !(named.any() && named.find(w.address.view()));
+  return w.address.is('L') && !namesVariable(w, named);
 }
 
 struct BuiltIn;
@@ -52,8 +57,8 @@ bool Evaluator::Impl::dinPlain(const ast::Block& block) const {
   if (!block.statements.empty()) return false;
   const NamedVariables& named = variables.named();
   for (const ast::Word& w : block.words)
-    if (!isLiteral(w.value) || isReturnWord(w) || w.address.is('L') ||
-        (named.any() && named.find(w.address.view())))
+    if (!isLiteral(w.value) || isReturnWord(w) || isSubprogramWord(w, named) ||
+        namesVariable(w, named))
       return false;
   return true;
 }
@@ -91,7 +96,7 @@ const ast::Block* Evaluator::Impl::evaluateDin(const ast::Block& block, const Pr
   for (const ast::Word& w : block.words) calls = calls || isSubprogramWord(w, named);
   if (calls)
     for (const ast::Word& w : block.words)
-      if (w.address.is('P') && !(named.any() && named.find(w.address.view()))) repeat_word = &w;
+      if (w.address.is('P') && !namesVariable(w, named)) repeat_word = &w;
 
   const ast::Statement* jump = nullptr;
   const ast::Statement* structure = nullptr;
@@ -107,7 +112,7 @@ const ast::Block* Evaluator::Impl::evaluateDin(const ast::Block& block, const Pr
         if (!dinCallNumbered(w, at)) return nullptr;
         continue;
       }
-      if (named.any() && named.find(w.address.view())) {
+      if (namesVariable(w, named)) {
         std::optional<Value> v = value(w.value, 0, true);
         if (!v) return nullptr;
         if (!named.write(w.address.view(), {}, *v, w.loc, failure)) return failed();
@@ -564,13 +569,9 @@ bool Evaluator::Impl::dinCall(const ast::Statement& st, const ProgramPoint& at, 
          absl::StrCat("'", name, "' (", b->what, ") is not supported yet (docs/din.md)"));
     return false;
   }
-  Pending p;
-  p.kind = Pending::Kind::Call;
-  p.din = true;
-  p.name = name;
-  p.loc = st.loc;
-  p.at = at;
-  if (!repeatCount(p)) return false;
+  std::optional<Pending> call = dinPending(name, st.loc, at);
+  if (!call) return false;
+  Pending& p = *call;
   for (const ast::Expr& arg : st.target.args) {
     DinArgument& a = p.din_arguments.emplace_back();
     a.loc = arg.loc;
@@ -586,18 +587,25 @@ bool Evaluator::Impl::dinCall(const ast::Statement& st, const ProgramPoint& at, 
   return true;
 }
 
-bool Evaluator::Impl::repeatCount(Pending& p) {
-  if (!repeat_word) return true;
+std::optional<Pending> Evaluator::Impl::dinPending(std::string name, SourceLocation loc,
+                                                   const ProgramPoint& at) {
+  Pending p;
+  p.kind = Pending::Kind::Call;
+  p.din = true;
+  p.name = std::move(name);
+  p.loc = loc;
+  p.at = at;
+  if (!repeat_word) return p;
   std::optional<Value> v = value(repeat_word->value, 0, true);
-  if (!v) return false;
+  if (!v) return std::nullopt;
   const double n = v->arithmetic();
   if (!(n >= 1 && n <= kMaxRepeats) || n != std::floor(n)) {
     fail(EvalError::AddressValue, repeat_word->loc,
          absl::StrCat("P", n, ": a subprogram runs 1 to ", kMaxRepeats, " times"));
-    return false;
+    return std::nullopt;
   }
   p.repeats = static_cast<int64_t>(n);
-  return true;
+  return p;
 }
 
 bool Evaluator::Impl::dinCallNumbered(const ast::Word& w, const ProgramPoint& at) {
@@ -612,14 +620,9 @@ bool Evaluator::Impl::dinCallNumbered(const ast::Word& w, const ProgramPoint& at
   std::string digits = absl::StrCat(static_cast<int64_t>(n));
   if (w.value.kind == ast::Expr::Kind::Number && w.value.digits > digits.size())
     digits.insert(0, w.value.digits - digits.size(), '0');
-  Pending p;
-  p.kind = Pending::Kind::Call;
-  p.din = true;
-  p.name = "L" + digits;
-  p.loc = w.loc;
-  p.at = at;
-  if (!repeatCount(p)) return false;
-  pending.push_back(std::move(p));
+  std::optional<Pending> call = dinPending("L" + digits, w.loc, at);
+  if (!call) return false;
+  pending.push_back(std::move(*call));
   return true;
 }
 

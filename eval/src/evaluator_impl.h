@@ -187,8 +187,9 @@ struct Evaluator::Impl {
   bool setAlarm(const ast::Statement& st);
   // `L10`: a call of the subprogram L10 (the digits as written).
   bool dinCallNumbered(const ast::Word& w, const ProgramPoint& at);
-  // The repeat count of the block's call (`P3`, repeat_word) into `p`.
-  bool repeatCount(Pending& p);
+  // A DIN call of `name`, run as often as the block's P says (`P3`, repeat_word); nullopt
+  // after reporting a bad count.
+  std::optional<Pending> dinPending(std::string name, SourceLocation loc, const ProgramPoint& at);
   const ast::Word* repeat_word = nullptr;  // the DIN block's P of a call, while evaluating it
   // PROC: binds the call's arguments to the parameters in a new scope of variables.
   bool dinProc(const ast::Block& block, const ast::Statement& st, const ProgramPoint& at);

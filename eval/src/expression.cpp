@@ -126,8 +126,7 @@ class Evaluator {
     if (!name.empty() && name[0] == '$') return system(e, name);
     std::optional<std::vector<int64_t>> indices = indicesOf(e.args, context_, failure_);
     if (!indices) return std::nullopt;
-    return context_.variables.readNamed(e.text ? std::string_view(*e.text) : std::string_view(),
-                                        *indices, e.loc, failure_);
+    return context_.variables.readNamed(name, *indices, e.loc, failure_);
   }
 
   // `$AA_IW[Z]`: a name that is no variable is an axis name; anything else a number.
@@ -477,11 +476,16 @@ std::optional<Value> VariableReader::readNamed(std::string_view name, std::span<
   return std::nullopt;
 }
 
-std::optional<Value> VariableReader::readSystem(std::string_view name, std::span<const SystemIndex>,
-                                                SourceLocation loc, Failure& failure) {
+std::optional<Value> unsupportedSystemVariable(std::string_view name, SourceLocation loc,
+                                               Failure& failure) {
   fail(failure, EvalError::NotSupported, loc,
        absl::StrCat("system variable ", std::string(name), " is not supported yet (docs/din.md)"));
   return std::nullopt;
+}
+
+std::optional<Value> VariableReader::readSystem(std::string_view name, std::span<const SystemIndex>,
+                                                SourceLocation loc, Failure& failure) {
+  return unsupportedSystemVariable(name, loc, failure);
 }
 
 std::optional<std::vector<int64_t>> indicesOf(const std::vector<ast::Expr>& args,

@@ -26,15 +26,13 @@ std::optional<Value> Variables::readSystem(std::string_view name, std::span<cons
     }
   }
   return system_ ? system_->readSystem(name, indices, loc, failure)
-                 : VariableReader::readSystem(name, indices, loc, failure);
+                 : unsupportedSystemVariable(name, loc, failure);
 }
 
 std::optional<Value> SystemVariables::readSystem(std::string_view name,
                                                  std::span<const SystemIndex>,
                                                  SourceLocation loc, Failure& failure) {
-  failure = {EvalError::NotSupported, loc,
-             absl::StrCat("system variable ", std::string(name), " is not supported yet (docs/din.md)"), 0};
-  return std::nullopt;
+  return unsupportedSystemVariable(name, loc, failure);
 }
 
 namespace {

@@ -4,7 +4,6 @@
 // text after it to DIN, and one that writes G291 in DIN text switches back. The reader, which
 // parses every block, and the program index, which scans text for labels without parsing,
 // decide it here alike, and read a DIN block here alike.
-#include <string>
 #include <string_view>
 
 #include "din_block_parser.h"

@@ -282,7 +282,6 @@ class Decoder {
         return;
       }
       out_.frame = c;
-      out_.frame_loc = w.loc;
       return;
     }
     if (a == "RPL" && !ctx_.table.frame_commands.empty()) return store(out_.rpl, std::move(wv));

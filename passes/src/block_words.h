@@ -50,7 +50,6 @@ struct DecodedBlock {
   std::optional<WordValue> line_angle;  // Mazak A (not an axis): the angle of a G01 line
   // DIN frame instruction (TRANS ...; lowering_frames.cpp) and its angle in the plane (RPL=).
   const FrameCommand* frame = nullptr;
-  SourceLocation frame_loc;
   std::optional<WordValue> rpl;
   std::string_view corner_kind() const { return corner ? corner->address : std::string_view(); }
   std::optional<SourceLocation> first_axis_loc;

@@ -332,6 +332,7 @@ void figureRotationEnd(LoweringCore& core);
 // The machine coordinates of the programmed point that the transforms in force take to
 // `machine` (after a move given in machine coordinates: G53, a reference return).
 AxisValues programmedAt(const BlockContext& ctx, const AxisValues& machine);
+AxisValues programmedAt(const LoweringCore& core, const ControllerState& cs, const AxisValues& machine);
 
 // ---- lowering_frames.cpp ----
 // Whether the block is a DIN frame instruction (TRANS X.. ...): its axis words are the

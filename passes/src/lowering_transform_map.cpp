@@ -133,9 +133,13 @@ void trackTool(BlockContext& ctx) {
 }
 
 AxisValues programmedAt(const BlockContext& ctx, const AxisValues& machine) {
-  const ir::Transform tr = transformOf(ctx);
+  return programmedAt(ctx.core, ctx.next, machine);
+}
+
+AxisValues programmedAt(const LoweringCore& core, const ControllerState& cs, const AxisValues& machine) {
+  const ir::Transform tr = transformOf(core, cs);
   if (!tr.any()) return machine;
-  const auto inv = inverse(machineSpaceMap(tr, frameOf(ctx.next, ctx.behaviour).total()));
+  const auto inv = inverse(machineSpaceMap(tr, frameOf(cs, core.table->behaviour).total()));
   if (!inv) return machine;
   AxisValues programmed = machine;
   applyPoint(*inv, programmed);

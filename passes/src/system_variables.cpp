@@ -3,7 +3,6 @@
 #include <cmath>
 
 #include "absl/strings/str_cat.h"
-#include "affine.h"
 #include "lowering_context.h"
 
 namespace ncc::passes {
@@ -441,14 +440,7 @@ std::optional<eval::Value> ControllerVariables::readSystem(std::string_view name
   switch (v->kind) {
     case Named::ActualMachine: value = tool[axis]; break;
     case Named::EndPoint: value = cs.position[axis] - total[axis]; break;
-    case Named::ActualWork: {
-      AxisValues work = tool;
-      const ir::Transform t = transformOf(core_, cs);
-      if (t.any())
-        if (const auto inv = inverse(machineSpaceMap(t, total))) applyPoint(*inv, work);
-      value = work[axis] - total[axis];
-      break;
-    }
+    case Named::ActualWork: value = programmedAt(core_, cs, tool)[axis] - total[axis]; break;
   }
   return eval::Value::of(value / unitScale(cs));
 }

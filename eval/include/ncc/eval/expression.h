@@ -24,6 +24,10 @@ struct SystemIndex {
   int64_t number = 0;
 };
 
+// The failure for a `$` system variable ncc does not read (NotSupported, naming it).
+std::optional<Value> unsupportedSystemVariable(std::string_view name, SourceLocation loc,
+                                               Failure& failure);
+
 class VariableReader {
  public:
   virtual ~VariableReader() = default;
