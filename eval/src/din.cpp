@@ -627,9 +627,12 @@ bool Evaluator::Impl::dinCallNumbered(const ast::Word& w, const ProgramPoint& at
 }
 
 bool Evaluator::Impl::setAlarm(const ast::Statement& st) {
-  if (st.target.args.empty() || st.target.args.size() > 2 ||
-      st.target.args[0].kind == ast::Expr::Kind::Vacant) {
+  if (st.target.args.size() > 2) {
     fail(EvalError::TooManyArguments, st.loc, "SETAL takes the alarm number (and a text)");
+    return false;
+  }
+  if (st.target.args.empty() || st.target.args[0].kind == ast::Expr::Kind::Vacant) {
+    fail(EvalError::AddressValue, st.loc, "SETAL takes the alarm number (and a text): it is missing");
     return false;
   }
   std::optional<Value> v = value(st.target.args[0], 0, true);

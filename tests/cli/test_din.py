@@ -202,6 +202,8 @@ class DinTest(ScratchDirTest):
         self.assertIn("warning[62001]", proc.stderr)
         self.assertEqual([m["to"]["X"] for m in moves], [1.0, 2.0])
         self.assertAlarm("SETAL(12345)\nM30\n", "NCC2406", 1, 7, "60000 to 69999")
+        self.assertAlarm("G0 X1\nSETAL()\nM30\n", "NCC2406", 2, 1, "the alarm number (and a text): it is missing")
+        self.assertAlarm("G0 X1\nSETAL(61000, 1, 2)\nM30\n", "12340", 2, 1, "SETAL takes the alarm number")
 
     # ---- alarms at their block ----------------------------------------------------------
 
@@ -296,6 +298,7 @@ class DinTest(ScratchDirTest):
         self.assertEqual([(m["to"]["X"], m["to"]["Y"], m["to"]["Z"]) for m in moves],
                          [(1, 0, 0), (2, 0, 0), (3, 0, 0), (3, 2, 0), (3, 4, 0), (3, 4, 5)])
         self.assertAlarm("L10 P0\nM30\n", "NCC2406", 1, 5, "1 to 9999 times")
+        self.assertAlarm("G0 X1\nL99999999\nM30\n", "NCC2406", 2, 1, "subprogram numbers are 0 to 9999999")
         self.assertAlarm("G0 X1\nL99\nM30\n", "12550", 2, 1, "L99")
 
     def test_var_parameters_write_back_and_locals_are_the_subprograms_own(self):
@@ -410,6 +413,14 @@ class DinTest(ScratchDirTest):
         self.assertAlarm("SCALE X0\nM30\n", "NCC2116", 1, 7, "cannot be 0")
         self.assertAlarm("G0 X1 RPL=5\nM30\n", "NCC2014", 1, 7, "ROT or AROT")
         self.assertAlarm("TRANS(1)\nM30\n", "NCC2010", 1, 1, "not in parentheses")
+        self.assertAlarm("TRANS X1\nG0 X0\nM30\n".replace("TRANS X1", "TRANS X1 AROT Z5"), "NCC2021", 1, 10,
+                         "one frame instruction per block")
+        machine = self.write("a.toml", "[machine]\naxes = [\"X\", \"Y\", \"Z\", \"A\"]\n")
+        proc = ncc("run", self.write("p.mpf", "TRANS A10\nM30\n"), "--machine", machine, "--emit=moves")
+        found = errors(proc.stderr)
+        self.assertEqual((proc.returncode, found[0]["code"], found[0]["line"], found[0]["col"]),
+                         (1, "NCC2011", "1", "7"), proc.stderr)
+        self.assertIn("frames on axes other than X, Y and Z are not supported yet", found[0]["message"])
 
     def test_actual_positions_by_system_variable(self):
         # $AA_IM: where the tool is (machine); $AA_IW: the same in the workpiece coordinates of
@@ -419,6 +430,7 @@ class DinTest(ScratchDirTest):
         self.assertEqual(got, {"R1": -90.0, "R2": 10.0, "R3": 10.0, "R4": 110.0, "R5": 5.0})
         self.assertAlarm("R1=$AA_IW[Q]\nM30\n", "12550", 1, 4, "an axis of the machine")
         self.assertAlarm("R1=$AA_FOO[X]\nM30\n", "NCC2010", 1, 4, "$AA_FOO")
+        self.assertAlarm("R1=$AA_IW[20000000000]\nM30\n", "NCC2403", 1, 11, "the index of $AA_IW is out of range")
 
     def test_alarms_carry_the_sinumerik_numbers_and_positions(self):
         self.assertAlarm("G0 X1\nR1=UNKNOWN+1\nM30\n", "12550", 2, 4, "'UNKNOWN' is not defined")
