@@ -453,10 +453,10 @@ void Evaluator::Impl::closeFrame() {
   Frame& f = frames.back();
   if (f.din_call) {
     // VAR parameters: their values go back to the caller's variables.
-    std::vector<std::pair<VariableRef, Value>> back;
+    std::vector<std::pair<VariableRef, Datum>> back;
     for (const auto& [param, ref] : f.by_reference) {
       Failure failure;
-      std::optional<Value> v = variables.named().read(param, {}, f.call_loc, failure);
+      std::optional<Datum> v = variables.named().readDatum(param, {}, f.call_loc, failure);
       if (v) back.emplace_back(ref, *v);
     }
     variables.named().popScope();

@@ -113,10 +113,18 @@ const ast::Block* Evaluator::Impl::evaluateDin(const ast::Block& block, const Pr
         continue;
       }
       if (namesVariable(w, named)) {
-        std::optional<Value> v = value(w.value, 0, true);
+        std::optional<Datum> v = datum(w.value, named.find(w.address.view())->type);
         if (!v) return nullptr;
         if (!named.write(w.address.view(), {}, *v, w.loc, failure)) return failed();
         continue;
+      }
+      if (w.address.is('T') && w.value.kind == ast::Expr::Kind::String) {
+        // T="name" selects a tool by its name under tool management (Fundamentals, tool
+        // selection); ncc's tools are numbers (machine file).
+        fail(EvalError::NotSupported, w.loc,
+             absl::StrCat("T=\"", *w.value.text,
+                          "\": tools by name (tool management) are not supported yet; T n selects tool n"));
+        return nullptr;
       }
       if (!wordValue(w, out, true)) return nullptr;
       continue;
@@ -129,17 +137,21 @@ const ast::Block* Evaluator::Impl::evaluateDin(const ast::Block& block, const Pr
       case K::Define: {
         std::optional<std::vector<int64_t>> dims = indicesOf(st.target.args, context, failure);
         if (!dims) return failed();
-        std::optional<Value> initial;
+        std::optional<Datum> initial;
         if (st.value.kind != ast::Expr::Kind::Vacant) {
-          initial = value(st.value, 0, true);
+          initial = datum(st.value, st.type);
           if (!initial) return nullptr;
         }
         const std::string_view name = st.target.text ? *st.target.text : std::string_view();
-        if (!named.define(name, st.type, *dims, initial, st.loc, failure)) return failed();
+        if (!named.define(name, st.type, st.length, *dims, initial, st.loc, failure))
+          return failed();
         break;
       }
       case K::Assign: {
-        std::optional<Value> v = value(st.value, 0, true);
+        const NamedVariables::Variable* target =
+            st.target.kind == ast::Expr::Kind::Name && st.target.text ? named.find(*st.target.text)
+                                                                      : nullptr;
+        std::optional<Datum> v = datum(st.value, target ? target->type : ast::DataType::Real);
         if (!v) return nullptr;
         const bool variable = (st.target.kind == ast::Expr::Kind::RParam && !st.target.args.empty()) ||
                               (st.target.kind == ast::Expr::Kind::Name && st.target.text);
@@ -422,7 +434,9 @@ bool Evaluator::Impl::dinControl(const ast::Block& block, const ast::Statement& 
       return loopBack(s->at);
     }
     case SK::Case: {
-      std::optional<Value> c = value(st.value, 0, true);
+      // CASE on a string (or a CHAR) compares texts: CASE(FORM) OF "A" GOTOF ...
+      const bool text = kindOf(st.value, variables) != ValueKind::Number;
+      std::optional<Datum> c = datum(st.value, text ? ast::DataType::String : ast::DataType::Real);
       if (!c) return false;
       bool after = false;
       for (const ast::Statement& branch : block.statements) {
@@ -430,9 +444,10 @@ bool Evaluator::Impl::dinControl(const ast::Block& block, const ast::Statement& 
         if (!after || branch.kind != SK::CaseBranch) continue;
         bool taken = branch.value.kind == ast::Expr::Kind::Vacant;
         if (!taken) {
-          std::optional<Value> constant = value(branch.value, 0, true);
+          std::optional<Datum> constant =
+              datum(branch.value, text ? ast::DataType::String : ast::DataType::Real);
           if (!constant) return false;
-          taken = constant->arithmetic() == c->arithmetic();
+          taken = *constant == *c;
         }
         if (taken) return dinJump(branch, at);
       }
@@ -476,6 +491,24 @@ std::optional<VariableRef> Evaluator::Impl::variableRef(const ast::Expr& e) {
   return std::nullopt;
 }
 
+std::optional<Datum> Evaluator::Impl::datum(const ast::Expr& e, ast::DataType type) {
+  if (type != ast::DataType::String && kindOf(e, variables) != ValueKind::String) {
+    std::optional<Value> v = value(e, 0, true);
+    if (!v) return std::nullopt;
+    return Datum(*v);
+  }
+  ExpressionContext context{rules, variables};
+  context.adp_scale = options.adp_scale;
+  context.din = true;
+  Failure failure;
+  std::optional<std::string> t = evaluateText(e, context, failure);
+  if (!t) {
+    fail(failure);
+    return std::nullopt;
+  }
+  return Datum(std::move(*t));
+}
+
 std::optional<Value> Evaluator::Impl::read(const VariableRef& ref, SourceLocation loc) {
   Failure failure;
   NamedVariables& named = variables.named();
@@ -485,11 +518,18 @@ std::optional<Value> Evaluator::Impl::read(const VariableRef& ref, SourceLocatio
   return v;
 }
 
-bool Evaluator::Impl::write(const VariableRef& ref, const Value& v, SourceLocation loc) {
+bool Evaluator::Impl::write(const VariableRef& ref, const Datum& v, SourceLocation loc) {
   Failure failure;
   NamedVariables& named = variables.named();
-  const bool ok = ref.r >= 0 ? named.writeR(ref.r, v, loc, failure)
-                             : named.write(ref.name, ref.indices, v, loc, failure);
+  bool ok = false;
+  if (ref.r < 0) {
+    ok = named.write(ref.name, ref.indices, v, loc, failure);
+  } else if (const Value* number = std::get_if<Value>(&v)) {
+    ok = named.writeR(ref.r, *number, loc, failure);
+  } else {
+    failure = {EvalError::TypeMismatch, loc,
+               absl::StrCat("R", ref.r, " is REAL: a string is not a number (NUMBER(\"...\") reads one)"), 0};
+  }
   if (!ok) fail(failure);
   return ok;
 }
@@ -576,7 +616,7 @@ bool Evaluator::Impl::dinCall(const ast::Statement& st, const ProgramPoint& at, 
     DinArgument& a = p.din_arguments.emplace_back();
     a.loc = arg.loc;
     if (arg.kind == ast::Expr::Kind::Vacant) continue;  // omitted: the parameter gets 0
-    a.value = value(arg, 0, true);
+    a.value = datum(arg, ast::DataType::None);
     if (!a.value) return false;
     if (arg.kind == ast::Expr::Kind::Name || arg.kind == ast::Expr::Kind::RParam) {
       a.ref = variableRef(arg);
@@ -688,8 +728,9 @@ bool Evaluator::Impl::dinProc(const ast::Block& block, const ast::Statement& st,
       frame.by_reference.emplace_back(param_name, *arg->ref);
     }
     // An omitted argument is 0 (cycles notes §1.3.4).
-    const std::optional<Value> initial = arg ? arg->value : std::nullopt;
-    if (!named.define(param_name, param.type, {}, initial, param.loc, failure)) {
+    const std::optional<Datum> initial = arg ? arg->value : std::nullopt;
+    if (!named.define(param_name, param.type, param.length, {}, initial,
+                      arg ? arg->loc : param.loc, failure)) {
       fail(failure);
       return false;
     }

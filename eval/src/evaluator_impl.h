@@ -33,7 +33,7 @@ struct VariableRef {
 // An argument of a DIN call by name: its value (none when omitted, `F(1,,3)`), and the
 // variable it names when it is one (a VAR parameter writes it back on return).
 struct DinArgument {
-  std::optional<Value> value;
+  std::optional<Datum> value;
   std::optional<VariableRef> ref;
   SourceLocation loc;
 };
@@ -178,7 +178,10 @@ struct Evaluator::Impl {
   // The variable `e` names (an R parameter, a variable or its element); nullopt after failing.
   std::optional<VariableRef> variableRef(const ast::Expr& e);
   std::optional<Value> read(const VariableRef& ref, SourceLocation loc);
-  bool write(const VariableRef& ref, const Value& v, SourceLocation loc);
+  bool write(const VariableRef& ref, const Datum& v, SourceLocation loc);
+  // The value of `e` for a variable of type `type` (None: not known yet, a PROC's argument): a
+  // text for a STRING or where `e` is a string, else a number.
+  std::optional<Datum> datum(const ast::Expr& e, ast::DataType type);
   // A call by name: a built-in not built yet is refused; otherwise the call is scheduled with
   // its arguments evaluated (the subprogram is looked for in the program folder when made).
   // A subprogram call by name; a block command (TRANS ...) becomes a word of `out`.

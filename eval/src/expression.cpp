@@ -15,7 +15,10 @@
 #include <string>
 
 #include "absl/container/inlined_vector.h"
+#include "absl/strings/ascii.h"
+#include "absl/strings/numbers.h"
 #include "absl/strings/str_cat.h"
+#include "absl/strings/str_format.h"
 #include "number_format.h"
 
 namespace ncc::eval {
@@ -62,6 +65,8 @@ class Evaluator {
   Evaluator(const ExpressionContext& context, Failure& failure)
       : rules_(context.rules), context_(context), failure_(failure) {}
 
+  std::optional<std::string> evalText(const ast::Expr& e) { return text(e); }
+
   std::optional<Value> eval(const ast::Expr& e) {
     // A tree the parser did not build (a test, a fuzzer) must not be read past its ends.
     if (e.args.size() < operandCount(e)) {
@@ -89,11 +94,270 @@ class Evaluator {
       case ast::Expr::Kind::Name:
         return named(e);
       case ast::Expr::Kind::String:
-        fail(failure_, EvalError::NotSupported, e.loc,
-             "DIN strings are not supported yet in expressions (docs/din.md)");
-        return std::nullopt;
+        return notANumber(e);
     }
     fail(failure_, EvalError::Domain, e.loc, "unknown expression");
+    return std::nullopt;
+  }
+
+  // ---- strings (docs/din.md, Strings) ----
+
+  ValueKind kind(const ast::Expr& e) const { return kindOf(e, context_.variables); }
+
+  std::optional<Value> notANumber(const ast::Expr& e) {
+    fail(failure_, EvalError::TypeMismatch, e.loc,
+         "a string where a number is needed (NUMBER(...) reads the number a string holds)");
+    return std::nullopt;
+  }
+
+  std::optional<std::string> text(const ast::Expr& e) {
+    if (e.args.size() < operandCount(e)) {
+      fail(failure_, EvalError::Domain, e.loc, "malformed expression: an operand is missing");
+      return std::nullopt;
+    }
+    switch (e.kind) {
+      case ast::Expr::Kind::String:
+        return e.text ? *e.text : std::string();
+      case ast::Expr::Kind::Vacant:
+        return std::string();
+      case ast::Expr::Kind::Bracket:
+        return text(e.args[0]);
+      case ast::Expr::Kind::Name:
+        if (kind(e) != ValueKind::Number) {
+          std::optional<std::vector<int64_t>> indices = indicesOf(e.args, context_, failure_);
+          if (!indices) return std::nullopt;
+          return context_.variables.readText(*e.text, *indices, e.loc, failure_);
+        }
+        break;
+      case ast::Expr::Kind::Binary:
+        if (e.op == ast::Op::Concat) {
+          std::optional<std::string> a = text(e.args[0]);
+          if (!a) return std::nullopt;
+          std::optional<std::string> b = text(e.args[1]);
+          if (!b) return std::nullopt;
+          return bounded(*a + *b, e);
+        }
+        break;
+      case ast::Expr::Kind::Call:
+        switch (e.op) {
+          case ast::Op::SubStr: return substr(e);
+          case ast::Op::ToUpper:
+          case ast::Op::ToLower: {
+            std::optional<std::string> a = text(e.args[0]);
+            if (!a) return std::nullopt;
+            for (char& c : *a)
+              c = e.op == ast::Op::ToUpper ? absl::ascii_toupper(c) : absl::ascii_tolower(c);
+            return a;
+          }
+          case ast::Op::Sprint: return sprint(e);
+          default: break;
+        }
+        break;
+      default:
+        break;
+    }
+    std::optional<Value> v = eval(e);
+    if (!v) return std::nullopt;
+    return formatNumber(v->arithmetic());
+  }
+
+  // A string longer than any STRING holds is refused where it is made (a `<<` in a loop
+  // would otherwise grow without bound).
+  std::optional<std::string> bounded(std::string s, const ast::Expr& e) {
+    if (s.size() > kMaxText) {
+      fail(failure_, EvalError::ValueRange, e.loc,
+           absl::StrCat("a string of ", s.size(), " characters: strings hold at most ", kMaxText));
+      return std::nullopt;
+    }
+    return s;
+  }
+  static constexpr size_t kMaxText = 2 * ast::kMaxStringLength;
+
+  // A comparison of two strings (or a CHAR and a string): by character codes.
+  std::optional<Value> compareTexts(const ast::Expr& e) {
+    const ValueKind a = kind(e.args[0]), b = kind(e.args[1]);
+    if (a == ValueKind::Number || b == ValueKind::Number) {
+      const ast::Expr& number = a == ValueKind::Number ? e.args[0] : e.args[1];
+      fail(failure_, EvalError::TypeMismatch, number.loc,
+           "a string is compared with a number (NUMBER(...) reads the number a string holds)");
+      return std::nullopt;
+    }
+    std::optional<std::string> x = text(e.args[0]);
+    if (!x) return std::nullopt;
+    std::optional<std::string> y = text(e.args[1]);
+    if (!y) return std::nullopt;
+    const int c = x->compare(*y);
+    bool r = false;
+    switch (e.op) {
+      case ast::Op::Eq: r = c == 0; break;
+      case ast::Op::Ne: r = c != 0; break;
+      case ast::Op::Lt: r = c < 0; break;
+      case ast::Op::Gt: r = c > 0; break;
+      case ast::Op::Le: r = c <= 0; break;
+      default: r = c >= 0; break;
+    }
+    return Value::of(r ? 1.0 : 0.0);
+  }
+
+  // STRLEN INDEX RINDEX MINDEX MATCH NUMBER ISNUMBER: numbers from strings. Positions count
+  // from 0; -1 when there is none.
+  std::optional<Value> textFunction(const ast::Expr& e) {
+    std::optional<std::string> s = text(e.args[0]);
+    if (!s) return std::nullopt;
+    using O = ast::Op;
+    const auto position = [](size_t at) {
+      return Value::of(at == std::string::npos ? -1.0 : static_cast<double>(at));
+    };
+    switch (e.op) {
+      case O::StrLen: return Value::of(static_cast<double>(s->size()));
+      case O::Number:
+      case O::IsNumber: {
+        std::optional<double> n = numberIn(*s);
+        if (e.op == O::IsNumber) return Value::of(n ? 1.0 : 0.0);
+        if (!n) {
+          fail(failure_, EvalError::TypeMismatch, e.args[0].loc,
+               absl::StrCat("NUMBER: \"", s->substr(0, 40), "\" is not a number"));
+          return std::nullopt;
+        }
+        return result(*n, e);
+      }
+      default: break;
+    }
+    std::optional<std::string> t = text(e.args[1]);
+    if (!t) return std::nullopt;
+    if (e.op == O::Match) return position(s->find(*t));
+    if (e.op == O::MIndex) return position(s->find_first_of(*t));
+    if (t->size() != 1) {
+      fail(failure_, EvalError::TypeMismatch, e.args[1].loc,
+           absl::StrCat(ast::opText(e.op), " looks for one character, not \"", t->substr(0, 40), "\""));
+      return std::nullopt;
+    }
+    return position(e.op == O::Index ? s->find((*t)[0]) : s->rfind((*t)[0]));
+  }
+
+  // "12.5", " -3 ": a number and nothing else (blanks around it allowed).
+  static std::optional<double> numberIn(const std::string& text) {
+    const absl::string_view s = absl::StripAsciiWhitespace(text);
+    double v = 0.0;
+    if (s.empty() || !absl::SimpleAtod(s, &v) || !std::isfinite(v)) return std::nullopt;
+    for (char c : s)  // SimpleAtod also reads "inf", "nan" and hexadecimal
+      if (!(absl::ascii_isdigit(c) || c == '.' || c == '-' || c == '+' || c == 'e' || c == 'E'))
+        return std::nullopt;
+    return v;
+  }
+
+  // SUBSTR(s, start[, length]): from character `start` (from 0), `length` characters or to the end.
+  std::optional<std::string> substr(const ast::Expr& e) {
+    std::optional<std::string> s = text(e.args[0]);
+    if (!s) return std::nullopt;
+    std::optional<int64_t> start = count(e.args[1], "SUBSTR's start");
+    if (!start) return std::nullopt;
+    int64_t length = static_cast<int64_t>(s->size());
+    if (e.args.size() > 2) {
+      std::optional<int64_t> n = count(e.args[2], "SUBSTR's length");
+      if (!n) return std::nullopt;
+      length = *n;
+    }
+    if (*start >= static_cast<int64_t>(s->size())) return std::string();
+    return s->substr(static_cast<size_t>(*start), static_cast<size_t>(length));
+  }
+
+  // A count or position: a whole number from 0.
+  std::optional<int64_t> count(const ast::Expr& e, std::string_view what) {
+    std::optional<Value> v = eval(e);
+    if (!v) return std::nullopt;
+    const double r = std::round(snapToInteger(v->arithmetic()));
+    if (!(r >= 0.0 && r <= 1e6)) {
+      fail(failure_, EvalError::Domain, e.loc,
+           absl::StrCat(std::string(what), " is ", formatNumber(v->arithmetic()),
+                        ": a whole number from 0 is needed"));
+      return std::nullopt;
+    }
+    return static_cast<int64_t>(r);
+  }
+
+  // SPRINT("format", values...) (Job Planning, string functions): the format's text with each
+  // %... replaced by the next value: %D an integer, %F a number with 6 decimals (%.nF n), %E
+  // exponent notation, %G the shorter, %S a string, %C a character, %B TRUE or FALSE, %X
+  // hexadecimal, %% a '%'. A width before the letter pads on the left (%8.3F).
+  std::optional<std::string> sprint(const ast::Expr& e) {
+    std::optional<std::string> format = text(e.args[0]);
+    if (!format) return std::nullopt;
+    std::string out;
+    size_t next = 1;
+    for (size_t i = 0; i < format->size(); ++i) {
+      const char c = (*format)[i];
+      if (c != '%') {
+        out += c;
+        continue;
+      }
+      size_t j = i + 1;
+      int width = 0, precision = -1;
+      while (j < format->size() && absl::ascii_isdigit((*format)[j]) && width < 1000)
+        width = width * 10 + ((*format)[j++] - '0');
+      if (j < format->size() && (*format)[j] == '.') {
+        precision = 0;
+        for (++j; j < format->size() && absl::ascii_isdigit((*format)[j]) && precision < 1000;)
+          precision = precision * 10 + ((*format)[j++] - '0');
+      }
+      if (j >= format->size()) return badFormat(e, *format, "ends inside a %");
+      const char letter = absl::ascii_toupper((*format)[j]);
+      i = j;
+      if (letter == '%') {
+        out += '%';
+        continue;
+      }
+      if (width > ast::kMaxStringLength || precision > 20)
+        return badFormat(e, *format, "has a width above 200 or more than 20 decimals");
+      if (next >= e.args.size()) return badFormat(e, *format, "has more % than values");
+      const ast::Expr& arg = e.args[next++];
+      std::string piece;
+      if (letter == 'S' || letter == 'C') {
+        std::optional<std::string> t = text(arg);
+        if (!t) return std::nullopt;
+        piece = letter == 'C' ? t->substr(0, 1) : *t;
+      } else {
+        if (kind(arg) == ValueKind::String) {
+          notANumber(arg);
+          return std::nullopt;
+        }
+        std::optional<Value> v = eval(arg);
+        if (!v) return std::nullopt;
+        const double x = v->arithmetic();
+        switch (letter) {
+          case 'D':
+          case 'I': piece = absl::StrCat(static_cast<int64_t>(std::llround(std::clamp(x, -9e15, 9e15)))); break;
+          case 'F': piece = absl::StrFormat("%.*f", precision < 0 ? 6 : precision, x); break;
+          case 'E': piece = absl::StrFormat("%.*E", precision < 0 ? 6 : precision, x); break;
+          case 'G': piece = absl::StrFormat("%.*G", precision < 0 ? 6 : precision, x); break;
+          case 'B': piece = x != 0.0 ? "TRUE" : "FALSE"; break;
+          case 'X': {
+            auto bits = bits32(x);
+            if (!bits) {
+              bitRange(arg, x);
+              return std::nullopt;
+            }
+            piece = absl::StrFormat("%X", static_cast<uint32_t>(*bits));
+            break;
+          }
+          default:
+            return badFormat(e, *format, absl::StrCat("has %", std::string(1, letter),
+                                                      " (D F E G S C B X are the conversions)"));
+        }
+      }
+      if (static_cast<int>(piece.size()) < width) piece.insert(0, width - piece.size(), ' ');
+      out += piece;
+      if (out.size() > kMaxText) return bounded(std::move(out), e);
+    }
+    if (next < e.args.size()) return badFormat(e, *format, "has fewer % than values");
+    return out;
+  }
+
+  std::optional<std::string> badFormat(const ast::Expr& e, std::string_view format,
+                                       std::string_view why) {
+    fail(failure_, EvalError::Domain, e.loc,
+         absl::StrCat("SPRINT: the format \"", std::string(format.substr(0, 40)), "\" ",
+                      std::string(why)));
     return std::nullopt;
   }
 
@@ -209,11 +473,18 @@ class Evaluator {
   }
 
   std::optional<Value> binary(const ast::Expr& e) {
+    using O = ast::Op;
+    if (context_.din) {
+      if (e.op == O::Concat) return notANumber(e);
+      const bool comparison = e.op == O::Eq || e.op == O::Ne || e.op == O::Lt ||
+                              e.op == O::Gt || e.op == O::Le || e.op == O::Ge;
+      if (comparison && (kind(e.args[0]) == ValueKind::String || kind(e.args[1]) == ValueKind::String))
+        return compareTexts(e);
+    }
     auto lhs = eval(e.args[0]);
     if (!lhs) return std::nullopt;
     auto rhs = eval(e.args[1]);
     if (!rhs) return std::nullopt;
-    using O = ast::Op;
     const O op = e.op;
     // EQ and NE tell vacant from 0 (vacant equals only vacant); the other comparisons and
     // the arithmetic read vacant as 0.
@@ -274,6 +545,15 @@ class Evaluator {
   }
 
   std::optional<Value> call(const ast::Expr& e) {
+    switch (e.op) {
+      case ast::Op::StrLen: case ast::Op::Index: case ast::Op::RIndex: case ast::Op::MIndex:
+      case ast::Op::Match: case ast::Op::Number: case ast::Op::IsNumber:
+        return textFunction(e);
+      case ast::Op::SubStr: case ast::Op::ToUpper: case ast::Op::ToLower: case ast::Op::Sprint:
+        return notANumber(e);
+      default:
+        break;
+    }
     double x[2] = {0.0, 0.0};
     for (size_t i = 0; i < e.args.size() && i < 2; ++i) {
       auto v = eval(e.args[i]);
@@ -425,6 +705,38 @@ std::optional<Value> evaluate(const ast::Expr& expr, const ExpressionContext& co
   return Evaluator(context, failure).eval(expr);
 }
 
+ValueKind kindOf(const ast::Expr& e, const VariableReader& variables) {
+  switch (e.kind) {
+    case ast::Expr::Kind::String:
+      return ValueKind::String;
+    case ast::Expr::Kind::Bracket:
+      return e.args.empty() ? ValueKind::Number : kindOf(e.args[0], variables);
+    case ast::Expr::Kind::Name: {
+      if (!e.text || (*e.text)[0] == '$') return ValueKind::Number;
+      const ast::DataType t = variables.namedType(*e.text);
+      return t == ast::DataType::String ? ValueKind::String
+             : t == ast::DataType::Char ? ValueKind::Char
+                                        : ValueKind::Number;
+    }
+    case ast::Expr::Kind::Binary:
+      return e.op == ast::Op::Concat ? ValueKind::String : ValueKind::Number;
+    case ast::Expr::Kind::Call:
+      return e.op == ast::Op::SubStr || e.op == ast::Op::ToUpper || e.op == ast::Op::ToLower ||
+                     e.op == ast::Op::Sprint
+                 ? ValueKind::String
+                 : ValueKind::Number;
+    default:
+      return ValueKind::Number;
+  }
+}
+
+std::optional<std::string> evaluateText(const ast::Expr& expr, const ExpressionContext& context,
+                                        Failure& failure) {
+  if (!checkBracketDepth(expr, context.rules, context.enclosing_brackets, failure))
+    return std::nullopt;
+  return Evaluator(context, failure).evalText(expr);
+}
+
 std::optional<int64_t> variableNumber(const Value& value, const MacroRules& rules,
                                       SourceLocation loc, Failure& failure) {
   if (value.vacant) {
@@ -472,6 +784,14 @@ std::optional<Value> VariableReader::readR(int64_t n, SourceLocation loc, Failur
 
 std::optional<Value> VariableReader::readNamed(std::string_view name, std::span<const int64_t>,
                                                SourceLocation loc, Failure& failure) {
+  fail(failure, EvalError::UndefinedName, loc, absl::StrCat("'", std::string(name), "' is not defined"));
+  return std::nullopt;
+}
+
+ast::DataType VariableReader::namedType(std::string_view) const { return ast::DataType::None; }
+
+std::optional<std::string> VariableReader::readText(std::string_view name, std::span<const int64_t>,
+                                                    SourceLocation loc, Failure& failure) {
   fail(failure, EvalError::UndefinedName, loc, absl::StrCat("'", std::string(name), "' is not defined"));
   return std::nullopt;
 }

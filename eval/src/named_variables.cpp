@@ -1,9 +1,11 @@
 #include "ncc/eval/named_variables.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "absl/strings/str_cat.h"
 #include "absl/strings/str_join.h"
+#include "number_format.h"
 
 namespace ncc::eval {
 
@@ -47,21 +49,21 @@ bool NamedVariables::writeR(int64_t n, const Value& value, SourceLocation loc, F
   return true;
 }
 
-bool NamedVariables::define(std::string_view name, ast::DataType type,
-                            std::span<const int64_t> dims, std::optional<Value> initial,
+bool NamedVariables::define(std::string_view name, ast::DataType type, int length,
+                            std::span<const int64_t> dims, const std::optional<Datum>& initial,
                             SourceLocation loc, Failure& failure) {
-  if (type == ast::DataType::String || type == ast::DataType::Axis ||
-      type == ast::DataType::Frame || type == ast::DataType::None)
+  if (type == ast::DataType::Axis || type == ast::DataType::Frame || type == ast::DataType::None)
     return fail(failure, EvalError::NotSupported, loc,
                 absl::StrCat("DEF ", typeName(type), ": variables of type ", typeName(type),
                              " are not supported yet (docs/din.md)"));
   Scope& scope = scopes_.back();
   const std::string key(name);
   if (scope.variables.count(key))
-    return fail(failure, EvalError::TypeMismatch, loc,
+    return fail(failure, EvalError::NameDefinedTwice, loc,
                 absl::StrCat("'", key, "' is declared already"));
   Variable v;
   v.type = type;
+  v.length = type == ast::DataType::String ? std::clamp(length, 1, ast::kMaxStringLength) : 0;
   v.rank = static_cast<int>(dims.size());
   int64_t elements = 1;
   for (size_t i = 0; i < dims.size(); ++i) {
@@ -75,10 +77,27 @@ bool NamedVariables::define(std::string_view name, ast::DataType type,
       return fail(failure, EvalError::ArrayIndex, loc,
                   absl::StrCat("'", key, "': more than ", kMaxElements, " elements"));
   }
-  const double start = initial ? converted(type, initial->arithmetic()) : 0.0;
-  v.values.assign(static_cast<size_t>(elements), start);
+  // The initial value, converted by the type's rules: checked on a scalar of the type first.
+  if (type == ast::DataType::String) {
+    std::string start;
+    if (initial) {
+      std::optional<std::string> t = textFor(v, key, *initial, loc, failure);
+      if (!t) return false;
+      start = std::move(*t);
+    }
+    v.texts.assign(static_cast<size_t>(elements), start);
+  } else {
+    double start = 0.0;
+    if (initial) {
+      std::optional<double> n = numberFor(v, key, *initial, loc, failure);
+      if (!n) return false;
+      start = *n;
+    }
+    v.values.assign(static_cast<size_t>(elements), start);
+  }
   const bool main_level = scopes_.size() == 1;
-  if (main_level && next_number_ + static_cast<uint64_t>(elements) - 1 <= kLastNumber) {
+  if (main_level && type != ast::DataType::String &&
+      next_number_ + static_cast<uint64_t>(elements) - 1 <= kLastNumber) {
     v.first_number = next_number_;
     next_number_ += static_cast<uint32_t>(elements);
   }
@@ -91,6 +110,38 @@ bool NamedVariables::define(std::string_view name, ast::DataType type,
         on_write(stored.first_number + i, Value::of(stored.values[i]), loc);
   }
   return true;
+}
+
+std::optional<std::string> NamedVariables::textFor(const Variable& v, std::string_view name,
+                                                   const Datum& d, SourceLocation loc,
+                                                   Failure& failure) {
+  std::string text = std::holds_alternative<std::string>(d)
+                         ? std::get<std::string>(d)
+                         : formatNumber(std::get<Value>(d).arithmetic());
+  if (static_cast<int>(text.size()) > v.length) {
+    fail(failure, EvalError::ValueRange, loc,
+         absl::StrCat("'", std::string(name), "' is a STRING[", v.length, "]: \"",
+                      text.substr(0, 40), text.size() > 40 ? "..." : "", "\" has ", text.size(),
+                      " characters"));
+    return std::nullopt;
+  }
+  return text;
+}
+
+std::optional<double> NamedVariables::numberFor(const Variable& v, std::string_view name,
+                                                const Datum& d, SourceLocation loc,
+                                                Failure& failure) {
+  if (const Value* n = std::get_if<Value>(&d)) return converted(v.type, n->arithmetic());
+  const std::string& text = std::get<std::string>(d);
+  if (v.type == ast::DataType::Char && text.size() == 1)
+    return static_cast<double>(static_cast<unsigned char>(text[0]));
+  fail(failure, EvalError::TypeMismatch, loc,
+       v.type == ast::DataType::Char
+           ? absl::StrCat("'", std::string(name), "' is a CHAR: it takes one character, not \"",
+                          text.substr(0, 40), "\"")
+           : absl::StrCat("'", std::string(name), "' is ", typeName(v.type),
+                          ": a string is not a number (NUMBER(\"...\") reads one)"));
+  return std::nullopt;
 }
 
 NamedVariables::Variable* NamedVariables::lookup(std::string_view name) {
@@ -133,20 +184,82 @@ std::optional<Value> NamedVariables::read(std::string_view name, std::span<const
     fail(failure, EvalError::UndefinedName, loc, absl::StrCat("'", std::string(name), "' is not defined"));
     return std::nullopt;
   }
+  if (v->type == ast::DataType::String) {
+    fail(failure, EvalError::TypeMismatch, loc,
+         absl::StrCat("'", std::string(name), "' is a STRING, not a number"));
+    return std::nullopt;
+  }
   std::optional<size_t> at = element(name, *v, indices, loc, failure);
   if (!at) return std::nullopt;
   return Value::of(v->values[*at]);
 }
 
+std::optional<std::string> NamedVariables::readText(std::string_view name,
+                                                    std::span<const int64_t> indices,
+                                                    SourceLocation loc, Failure& failure) const {
+  const Variable* v = find(name);
+  if (!v) {
+    fail(failure, EvalError::UndefinedName, loc, absl::StrCat("'", std::string(name), "' is not defined"));
+    return std::nullopt;
+  }
+  if (v->type == ast::DataType::Char) {
+    std::optional<size_t> at = element(name, *v, indices, loc, failure);
+    if (!at) return std::nullopt;
+    const double code = v->values[*at];
+    return code == 0.0 ? std::string() : std::string(1, static_cast<char>(static_cast<int>(code)));
+  }
+  if (v->type != ast::DataType::String) {
+    fail(failure, EvalError::TypeMismatch, loc,
+         absl::StrCat("'", std::string(name), "' is ", typeName(v->type), ", not a string"));
+    return std::nullopt;
+  }
+  // S[i] after the array's indices: the character i of the string (from 0).
+  const bool character = static_cast<int>(indices.size()) == v->rank + 1;
+  std::optional<size_t> at =
+      element(name, *v, character ? indices.first(indices.size() - 1) : indices, loc, failure);
+  if (!at) return std::nullopt;
+  const std::string& text = v->texts[*at];
+  if (!character) return text;
+  const int64_t i = indices.back();
+  if (i < 0 || i >= static_cast<int64_t>(text.size())) {
+    fail(failure, EvalError::ArrayIndex, loc,
+         absl::StrCat("'", std::string(name), "': character ", i, " is outside 0 to ",
+                      static_cast<int64_t>(text.size()) - 1, " (\"", text.substr(0, 40), "\")"));
+    return std::nullopt;
+  }
+  return std::string(1, text[static_cast<size_t>(i)]);
+}
+
+std::optional<Datum> NamedVariables::readDatum(std::string_view name,
+                                               std::span<const int64_t> indices,
+                                               SourceLocation loc, Failure& failure) const {
+  const Variable* v = find(name);
+  if (v && v->type == ast::DataType::String) {
+    std::optional<std::string> t = readText(name, indices, loc, failure);
+    if (!t) return std::nullopt;
+    return Datum(std::move(*t));
+  }
+  std::optional<Value> n = read(name, indices, loc, failure);
+  if (!n) return std::nullopt;
+  return Datum(*n);
+}
+
 bool NamedVariables::write(std::string_view name, std::span<const int64_t> indices,
-                           const Value& value, SourceLocation loc, Failure& failure) {
+                           const Datum& value, SourceLocation loc, Failure& failure) {
   Variable* v = lookup(name);
   if (!v) return fail(failure, EvalError::UndefinedName, loc, absl::StrCat("'", std::string(name), "' is not defined"));
   std::optional<size_t> at = element(name, *v, indices, loc, failure);
   if (!at) return false;
-  const double stored = converted(v->type, value.arithmetic());
-  v->values[*at] = stored;
-  if (v->first_number != 0 && on_write) on_write(v->first_number + *at, Value::of(stored), loc);
+  if (v->type == ast::DataType::String) {
+    std::optional<std::string> text = textFor(*v, name, value, loc, failure);
+    if (!text) return false;
+    v->texts[*at] = std::move(*text);
+    return true;
+  }
+  std::optional<double> stored = numberFor(*v, name, value, loc, failure);
+  if (!stored) return false;
+  v->values[*at] = *stored;
+  if (v->first_number != 0 && on_write) on_write(v->first_number + *at, Value::of(*stored), loc);
   return true;
 }
 

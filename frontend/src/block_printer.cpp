@@ -81,6 +81,12 @@ class Printer {
     return "";
   }
 
+  // INT, STRING[20]: a variable's type as written.
+  static std::string typeText(const ast::Statement& s) {
+    const char* name = ast::kDataTypeNames[static_cast<size_t>(s.type)];
+    return s.length > 0 ? absl::StrCat(name, "[", s.length, "]") : std::string(name);
+  }
+
   std::string print(const ast::Statement& s) const {
     using K = ast::Statement::Kind;
     switch (s.kind) {
@@ -100,8 +106,7 @@ class Printer {
       case K::End:
         return absl::StrCat("END ", s.loop_id);
       case K::Define:
-        return absl::StrCat("DEF ", ast::kDataTypeNames[static_cast<size_t>(s.type)], " ",
-                            print(s.target),
+        return absl::StrCat("DEF ", typeText(s), " ", print(s.target),
                             s.value.kind == ast::Expr::Kind::Vacant ? "" : "=",
                             bare(s.value));
       case K::Label:
@@ -128,8 +133,7 @@ class Printer {
       case K::Proc:
         return absl::StrCat("PROC ", print(s.target));
       case K::Parameter:
-        return absl::StrCat(s.loop_id ? "VAR " : "",
-                            ast::kDataTypeNames[static_cast<size_t>(s.type)], " ", print(s.target));
+        return absl::StrCat(s.loop_id ? "VAR " : "", typeText(s), " ", print(s.target));
       case K::Return: return "RET";
       case K::CaseBranch:
         return absl::StrCat(s.value.kind == ast::Expr::Kind::Vacant ? "DEFAULT" : print(s.value),

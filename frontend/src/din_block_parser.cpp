@@ -27,21 +27,30 @@ using SKind = ast::Statement::Kind;
 
 std::string str(std::string_view s) { return std::string(s); }
 
-// The DIN functions ncc evaluates (Programming Manual Fundamentals, arithmetic functions).
+// The DIN functions ncc evaluates (Programming Manual Fundamentals, arithmetic functions;
+// Job Planning, string functions), with the argument counts they take.
 struct DinFunction {
   const char* name;
   ast::Op op;
+  uint8_t min_args = 1;
+  uint8_t max_args = 1;
 };
 constexpr std::array kFunctions = {
     DinFunction{"SIN", ast::Op::Sin},       DinFunction{"COS", ast::Op::Cos},
     DinFunction{"TAN", ast::Op::Tan},       DinFunction{"ASIN", ast::Op::Asin},
-    DinFunction{"ACOS", ast::Op::Acos},     DinFunction{"ATAN2", ast::Op::Atan2},
+    DinFunction{"ACOS", ast::Op::Acos},     DinFunction{"ATAN2", ast::Op::Atan2, 2, 2},
     DinFunction{"SQRT", ast::Op::Sqrt},     DinFunction{"ABS", ast::Op::Abs},
     DinFunction{"POT", ast::Op::Pot},       DinFunction{"TRUNC", ast::Op::Trunc},
     DinFunction{"ROUND", ast::Op::Round},   DinFunction{"LN", ast::Op::Ln},
-    DinFunction{"EXP", ast::Op::Exp},       DinFunction{"MINVAL", ast::Op::MinVal},
-    DinFunction{"MAXVAL", ast::Op::MaxVal}, DinFunction{"IC", ast::Op::Ic},
+    DinFunction{"EXP", ast::Op::Exp},       DinFunction{"MINVAL", ast::Op::MinVal, 2, 2},
+    DinFunction{"MAXVAL", ast::Op::MaxVal, 2, 2}, DinFunction{"IC", ast::Op::Ic},
     DinFunction{"AC", ast::Op::Ac},
+    DinFunction{"STRLEN", ast::Op::StrLen},  DinFunction{"INDEX", ast::Op::Index, 2, 2},
+    DinFunction{"RINDEX", ast::Op::RIndex, 2, 2}, DinFunction{"MINDEX", ast::Op::MIndex, 2, 2},
+    DinFunction{"MATCH", ast::Op::Match, 2, 2}, DinFunction{"SUBSTR", ast::Op::SubStr, 2, 3},
+    DinFunction{"TOUPPER", ast::Op::ToUpper}, DinFunction{"TOLOWER", ast::Op::ToLower},
+    DinFunction{"NUMBER", ast::Op::Number},  DinFunction{"ISNUMBER", ast::Op::IsNumber},
+    DinFunction{"SPRINT", ast::Op::Sprint, 1, 255},
 };
 
 ast::DataType typeNamed(std::string_view name) {
@@ -388,6 +397,16 @@ class Builder : public BlockText {
     return e;
   }
 
+  // "text": as written, without its quotes.
+  ast::Expr stringLiteral(const Token* t) {
+    ast::Expr e;
+    e.kind = Kind::String;
+    e.loc = at(t);
+    std::string_view text = written(t);
+    e.text = std::string(text.substr(1, text.size() - 2));
+    return e;
+  }
+
   ast::Expr name(const Token* t) {
     ast::Expr e;
     e.kind = Kind::Name;
@@ -403,13 +422,13 @@ class Builder : public BlockText {
       fail(codes::kUnknownType, at(tn->IDENT()),
            absl::StrCat("unknown type '", str(upper(tn->IDENT())),
                         "' (INT, REAL, BOOL, CHAR, STRING[n], AXIS, FRAME)"));
-    if (tn->LBRACK() && type != ast::DataType::String)
-      fail(codes::kUnexpectedToken, at(tn->LBRACK()), "only STRING takes a length [n]");
+    const int length = stringLength(tn, type);
     for (DinParser::DefinitionContext* def : d->definition()) {
       ast::Statement& s = b.statements.emplace_back();
       s.kind = SKind::Define;
       s.loc = at(def->IDENT());
       s.type = type;
+      s.length = length;
       s.target = name(def->IDENT()->getSymbol());
       if (s.target.text->size() > kMaxNameLength)
         fail(codes::kUnexpectedToken, at(def->IDENT()),
@@ -427,6 +446,27 @@ class Builder : public BlockText {
         s.value.loc = s.loc;
       }
     }
+  }
+
+  // STRING[n]: n characters at most, 1 to 200 (Job Planning, variable types: STRING); the
+  // other types take no length.
+  int stringLength(DinParser::TypeNameContext* tn, ast::DataType type) {
+    if (type != ast::DataType::String) {
+      if (tn->LBRACK())
+        fail(codes::kUnexpectedToken, at(tn->LBRACK()), "only STRING takes a length [n]");
+      return 0;
+    }
+    if (!tn->NUMBER())
+      fail(codes::kUnexpectedToken, at(tn->IDENT()),
+           absl::StrCat("STRING takes its length: STRING[n], n from 1 to ", ast::kMaxStringLength));
+    std::string_view text = upper(tn->NUMBER());
+    int n = 0;
+    for (char c : text) n = isDigit(c) && n <= ast::kMaxStringLength ? n * 10 + (c - '0') : 1 << 20;
+    if (n < 1 || n > ast::kMaxStringLength)
+      fail(codes::kNumberRange, at(tn->NUMBER()),
+           absl::StrCat("STRING[", str(text), "]: a string holds 1 to ", ast::kMaxStringLength,
+                        " characters"));
+    return n;
   }
 
   void jump(ast::Statement& s, DinParser::JumpContext* j, DinParser::JumpTargetContext* t) {
@@ -468,9 +508,9 @@ class Builder : public BlockText {
   void caseOf(ast::Block& b, DinParser::CaseItemContext* c) {
     statement(b, SKind::Case, c->CASE()->getSymbol()).value = expr(c->expr()).expr;
     for (DinParser::CaseBranchContext* br : c->caseBranch()) {
-      if (br->STRING()) notYet(at(br->STRING()), "a string constant of CASE");
       ast::Statement& s = statement(b, SKind::CaseBranch, br->getStart());
-      s.value = literal(br->NUMBER()->getSymbol(), 0, br->sign).expr;
+      s.value = br->STRING() ? stringLiteral(br->STRING()->getSymbol())
+                             : literal(br->NUMBER()->getSymbol(), 0, br->sign).expr;
       jump(s, br->jump(), br->jumpTarget());
     }
     if (c->DEFAULT()) {
@@ -495,6 +535,7 @@ class Builder : public BlockText {
       if (param->LBRACK()) notYet(at(param->LBRACK()), "array parameters of a PROC");
       ast::Statement& ps = statement(b, SKind::Parameter, param->IDENT()->getSymbol());
       ps.type = type;
+      ps.length = stringLength(tn, type);
       ps.loop_id = param->VAR() ? 1 : 0;
       ps.target = name(param->IDENT()->getSymbol());
     }
@@ -577,7 +618,7 @@ class Builder : public BlockText {
       case DinLexer::GREATER: return ast::Op::Gt;
       case DinLexer::LESSEQ: return ast::Op::Le;
       case DinLexer::GREATEREQ: return ast::Op::Ge;
-      case DinLexer::CONCAT: notYet(at(t), "string concatenation '<<'");
+      case DinLexer::CONCAT: return ast::Op::Concat;
       default: return ast::opNamed(upper(t)).value_or(ast::Op::None);  // + - * / DIV MOD OR ...
     }
   }
@@ -657,14 +698,7 @@ class Builder : public BlockText {
 
   Node primary(DinParser::PrimaryContext* c) {
     if (auto* n = c->NUMBER()) return literal(n->getSymbol(), 0, nullptr);
-    if (auto* s = c->STRING()) {
-      ast::Expr e;
-      e.kind = Kind::String;
-      e.loc = at(s);
-      std::string_view text = written(s->getSymbol());
-      e.text = std::string(text.substr(1, text.size() - 2));
-      return Node{std::move(e), 1};
-    }
+    if (auto* s = c->STRING()) return Node{stringLiteral(s->getSymbol()), 1};
     if (c->LPAREN() && c->expr()) {
       Node inner = expr(c->expr());
       ast::Expr e;
@@ -701,12 +735,16 @@ class Builder : public BlockText {
     e.op = found->op;
     e.loc = at(t);
     e.args = arguments(args);
-    const size_t expected = ast::opInfo(e.op).arity;
     for (const ast::Expr& a : e.args)
       if (a.kind == Kind::Vacant) fail(codes::kArity, a.loc, absl::StrCat("'", str(fn), "': an argument is missing"));
-    if (e.args.size() != expected)
-      fail(codes::kArity, at(t), absl::StrCat("function '", str(fn), "' takes ", expected,
-                                              expected == 1 ? " argument" : " arguments"));
+    if (e.args.size() < found->min_args || e.args.size() > found->max_args) {
+      const std::string count =
+          found->min_args == found->max_args
+              ? absl::StrCat(found->min_args, found->min_args == 1 ? " argument" : " arguments")
+          : found->max_args == 255 ? absl::StrCat("at least ", found->min_args, " argument")
+                                   : absl::StrCat(found->min_args, " or ", found->max_args, " arguments");
+      fail(codes::kArity, at(t), absl::StrCat("function '", str(fn), "' takes ", count));
+    }
     int depth = 1;
     for (const ast::Expr& a : e.args) depth = std::max(depth, exprDepth(a) + 1);
     return node(std::move(e), depth);

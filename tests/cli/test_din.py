@@ -437,14 +437,67 @@ class DinTest(ScratchDirTest):
         self.assertAlarm("DEF REAL A[3]\nA[3]=1\nM30\n", "17020", 2, None, "index 3 is outside 0 to 2")
         self.assertAlarm("N10 G0 X1\nGOTOB NOWHERE\nM30\n", "14080", 2, 1, "label NOWHERE")
         self.assertAlarm("N10 GOTOF N5\nN5 X1\nM30\n".replace("N5 X1", "N6 X1"), "14080", 1, 5)
-        self.assertAlarm("DEF INT A\nDEF REAL A\nM30\n", "12150", 2, 10, "declared already")
+        self.assertAlarm("DEF INT A\nDEF REAL A\nM30\n", "12170", 2, 10, "declared already")
         self.assertAlarm("R1=1/0\nM30\n", "NCC2402", 1)
 
     def test_what_is_not_built_yet_is_refused_at_its_position(self):
         self.assertAlarm("G0 X1\nREPEATB MA1 P=2\nM30\n", "NCC1090", 2, 1, "'REPEATB'")
         self.assertAlarm("G0 X=ACP(5)\nM30\n", "NCC1090", 1, 6, "function 'ACP'")
         self.assertAlarm("G0 X1\nCYCLE81(10, 0, 2, -5)\nM30\n", "NCC2010", 2, 1, "Siemens cycle")
-        self.assertAlarm("DEF STRING[8] S\nM30\n", "NCC2010", 1, 15, "STRING")
+        self.assertAlarm("DEF AXIS A\nM30\n", "NCC2010", 1, 10, "AXIS")
+        self.assertAlarm('T="BALL_8MM" M6\nM30\n', "NCC2010", 1, 1, "tools by name")
+
+    # ---- strings -----------------------------------------------------------------------
+
+    def test_strings_concatenation_comparison_and_functions(self):
+        # Job Planning, strings: STRING[n] variables, `<<` (numbers as their shortest text),
+        # comparisons by character codes, the string functions; positions count from 0.
+        proc, moves = self.run_din(
+            'DEF STRING[28] CAL = "move_grid_baseline"\n'
+            'DEF STRING[8] TAG = "A-7", NOTE = ""\n'
+            'DEF CHAR FORM = "E"\n'
+            'DEF INT N\nDEF REAL V\n'
+            'TAG = "B-2"\n'
+            'NOTE = TAG << "/" << 3.5\n'                        # "B-2/3.5"
+            'N = STRLEN(NOTE)\n'                                # 7
+            'V = NUMBER("12.5") + INDEX(NOTE, "/") + MATCH(CAL, "grid")\n'  # 12.5 + 3 + 5
+            'G1 X=N Y=V Z=RINDEX(CAL, "e") F100\n'              # 17
+            'IF (NOTE == "B-2/3.5") AND (FORM == "E") AND ("ABC" < "ABD") GOTOF OK\n'
+            'SETAL(61000)\n'
+            'OK: NOTE = TOUPPER(SUBSTR(CAL, 5, 4))\n'           # "GRID"
+            'X=STRLEN(SPRINT("%5.2F|%D|%S", 1.5, 2.6, NOTE))\n'  # " 1.50|3|GRID": 12
+            'X=ISNUMBER("1e3") + ISNUMBER("A1") + MINDEX(CAL, "_b") + FORM\n'  # 1 + 0 + 4 + 69
+            'X=STRLEN(TOLOWER(NOTE) << NOTE[0])\n'               # "gridG": 5
+            'M30\n')
+        self.assertEqual(proc.returncode, 0, proc.stderr)
+        self.assertEqual([(m["to"]["X"], m["to"]["Y"], m["to"]["Z"]) for m in moves],
+                         [(7.0, 20.5, 17.0), (12.0, 20.5, 17.0), (74.0, 20.5, 17.0), (5.0, 20.5, 17.0)])
+
+    def test_case_on_strings_and_string_parameters(self):
+        self.write("SHOW.spf", 'PROC SHOW(STRING[10] NAME, VAR STRING[10] BACK, CHAR C)\n'
+                               'BACK = NAME << "!" << C\nG0 X=STRLEN(BACK)\nRET\n')
+        proc, moves = self.run_din(
+            'DEF STRING[10] TAG = "B", OUT\n'
+            'CASE (TAG) OF "A" GOTOF ONE "B" GOTOF TWO DEFAULT GOTOF ONE\n'
+            'ONE: SETAL(61000)\n'
+            'TWO: SHOW("AB", OUT, "Z")\n'
+            'IF OUT <> "AB!Z" GOTOB ONE\n'
+            'M30\n')
+        self.assertEqual(proc.returncode, 0, proc.stderr)
+        self.assertEqual([m["to"]["X"] for m in moves], [4.0])
+
+    def test_string_alarms(self):
+        self.assertAlarm('DEF STRING[4] S="ABCDE"\nM30\n', "NCC2404", 1, 15, "STRING[4]")
+        self.assertAlarm('DEF STRING[4] S\nDEF REAL A\nA=S\nM30\n', "12150", 3, 1, "a string is not a number")
+        self.assertAlarm('R1="X" << 1\nM30\n', "12150", 1, 1, "R1 is REAL")
+        self.assertAlarm('DEF STRING[9] S="AB"\nIF S==1 GOTOF L\nL: M30\n', "12150", 2, 7, "compared with a number")
+        self.assertAlarm('DEF STRING[9] S="AB"\nR1=STRLEN(S[5])\nM30\n', "17020", 2, None, "character 5")
+        self.assertAlarm('DEF STRING[9] S\nS=SPRINT("%D %D", 1)\nM30\n', "NCC2403", 2, 3, "more % than values")
+        self.assertAlarm('DEF CHAR C="AB"\nM30\n', "12150", 1, 10, "one character")
+        self.assertAlarm('DEF STRING S\nM30\n', "NCC1006", 1, 5, "STRING[n]")
+        self.assertAlarm('DEF STRING[201] S\nM30\n', "NCC1015", 1, 12, "1 to 200")
+        self.assertAlarm('R1=NUMBER("12A")\nM30\n', "12150", 1, 11, "not a number")
+        self.assertAlarm('G0 X="A"\nM30\n', "12150", 1, 6, "a string where a number is needed")
 
     def test_syntax_errors_name_the_place(self):
         self.assertAlarm("G0 X1\nX=(1+2\nM30\n", "NCC1003", 2, 3)

@@ -58,7 +58,9 @@ TEST(DinParser, StatementsVariablesLabelsAndJumps) {
   EXPECT_EQ(printed("N20 MA1: R3=R1*COUNT"), "N20 MA1: R3=R1*COUNT");
   EXPECT_EQ(printed("R[R1+1]=2"), "R[R1+1]=2");
   EXPECT_EQ(printed("DEF REAL A[3,4], b=2"), "DEF REAL A[3,4] DEF REAL B=2");
-  EXPECT_EQ(printed("DEF STRING[8] NAME"), "DEF STRING NAME");
+  EXPECT_EQ(printed("DEF STRING[8] NAME=\"A\" << R1"), "DEF STRING[8] NAME=\"A\"<<R1");
+  EXPECT_EQ(printed("PROC P(VAR STRING[20] S)"), "PROC P(VAR STRING[20] S)");
+  EXPECT_EQ(printed("R1=SUBSTR(S,1,2)"), "R1=SUBSTR(S,1,2)");
   EXPECT_EQ(printed("A[1,2]=A[0,0]+$P_UIFR[1]"), "A[1,2]=A[0,0]+$P_UIFR[1]");
   EXPECT_EQ(printed("IF COUNT<6 GOTOB MA1"), "IF COUNT<6 GOTOB MA1");
   EXPECT_EQ(printed("GOTOF N100"), "GOTOF 100");
@@ -165,7 +167,11 @@ TEST(DinParser, BadTextGetsOneDiagnosticAtItsColumn) {
       {"X=SIN(1,2)", "p.mpf:1:3: error[NCC1011]: function 'SIN' takes 1 argument"},
       {"X=SIN(,)", "p.mpf:1:7: error[NCC1011]: 'SIN': an argument is missing"},
       {"X=FOO(1)", "p.mpf:1:3: error[NCC1090]: DIN function 'FOO' is not supported yet"},
-      {"X=1<<2", "p.mpf:1:4: error[NCC1090]: DIN string concatenation '<<'"},
+      {"X=STRLEN(1,2)", "p.mpf:1:3: error[NCC1011]: function 'STRLEN' takes 1 argument"},
+      {"X=SUBSTR(1)", "p.mpf:1:3: error[NCC1011]: function 'SUBSTR' takes 2 or 3 arguments"},
+      {"X=SPRINT()", "p.mpf:1:3: error[NCC1011]: function 'SPRINT' takes at least 1 argument"},
+      {"DEF STRING S", "p.mpf:1:5: error[NCC1006]: STRING takes its length: STRING[n]"},
+      {"DEF STRING[0] S", "p.mpf:1:12: error[NCC1015]: STRING[0]: a string holds 1 to 200"},
       {"PROC A SAVE", "p.mpf:1:8: error[NCC1090]: DIN 'PROC ... SAVE'"},
       {"PROC A FOO", "p.mpf:1:8: error[NCC1006]: 'FOO' is not a PROC attribute"},
       {"PROC A X1", "p.mpf:1:8: error[NCC1006]: a control structure keyword (PROC) stands alone"},
@@ -177,7 +183,6 @@ TEST(DinParser, BadTextGetsOneDiagnosticAtItsColumn) {
       {"FOR 1=2 TO 3", "p.mpf:1:5: error[NCC1006]"},
       {"FOR I=1", "p.mpf:1:8: error[NCC1010]"},
       {"CASE(1) OF X GOTOF A", "p.mpf:1:12: error[NCC1006]"},
-      {"CASE(1) OF \"A\" GOTOF A", "p.mpf:1:12: error[NCC1090]: DIN a string constant of CASE"},
       {"G0 X1 @", "p.mpf:1:7: error[NCC1001]: unexpected character '@'"},
       {"%_N_A B", "p.mpf:1:1: error[NCC1001]: unexpected character '%'"},
       {"X1.5=3", "p.mpf:1:1: error[NCC1006]: 'X1.5' is not a name"},

@@ -38,6 +38,12 @@ class VariableReader {
   virtual std::optional<Value> readR(int64_t n, SourceLocation loc, Failure& failure);
   virtual std::optional<Value> readNamed(std::string_view name, std::span<const int64_t> indices,
                                          SourceLocation loc, Failure& failure);
+  // DIN: the type of the variable `name` (DataType::None when there is none), and the text of
+  // a STRING or CHAR variable (named_variables.h, readText).
+  virtual ast::DataType namedType(std::string_view name) const;
+  virtual std::optional<std::string> readText(std::string_view name,
+                                              std::span<const int64_t> indices,
+                                              SourceLocation loc, Failure& failure);
   // DIN: a `$` system variable by name; a reader without a controller fails with NotSupported.
   virtual std::optional<Value> readSystem(std::string_view name, std::span<const SystemIndex> indices,
                                           SourceLocation loc, Failure& failure);
@@ -58,9 +64,19 @@ struct ExpressionContext {
 };
 
 // The value of `expr`; nullopt after filling `failure` (with the location of the offending
-// sub-expression).
+// sub-expression). A string where a number is needed is TypeMismatch.
 std::optional<Value> evaluate(const ast::Expr& expr, const ExpressionContext& context,
                               Failure& failure);
+
+// DIN strings (docs/din.md, Strings). What an expression gives: a number, a string (a literal,
+// a STRING variable or one character of it, `<<`, SUBSTR TOUPPER TOLOWER SPRINT), or a
+// character (a CHAR variable: a number in arithmetic, a one-character string beside strings).
+enum class ValueKind : uint8_t { Number, Char, String };
+ValueKind kindOf(const ast::Expr& expr, const VariableReader& variables);
+// The text of `expr`: a string as it is, a number as `<<` writes it (10 significant digits,
+// no trailing zeros: 2.5, 3); nullopt after filling `failure`.
+std::optional<std::string> evaluateText(const ast::Expr& expr, const ExpressionContext& context,
+                                        Failure& failure);
 
 // The first place where `expr` nests brackets deeper than rules.max_bracket_depth (counting
 // [ ], function brackets and #[ ], plus `enclosing` already open); false after filling

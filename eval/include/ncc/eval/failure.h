@@ -50,6 +50,8 @@ enum class EvalError : uint8_t {
   TooManyArguments,
   ArgumentNotVariable,
   ProcPlacement,
+  // DIN: DEF of a name the program (or subprogram) has declared already.
+  NameDefinedTwice,
   kCount,
 };
 

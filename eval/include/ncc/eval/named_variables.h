@@ -16,6 +16,7 @@
 #include <string>
 #include <string_view>
 #include <unordered_map>
+#include <variant>
 #include <vector>
 
 #include "ncc/eval/failure.h"
@@ -23,6 +24,9 @@
 #include "ncc/frontend/ast.h"
 
 namespace ncc::eval {
+
+// What a DIN variable holds or is given: a number, or a text (a STRING; a CHAR given "E").
+using Datum = std::variant<Value, std::string>;
 
 class NamedVariables {
  public:
@@ -40,19 +44,22 @@ class NamedVariables {
     ast::DataType type = ast::DataType::Real;
     std::array<int64_t, 3> dims{1, 1, 1};
     int rank = 0;                // 0: a scalar
-    uint32_t first_number = 0;   // 0: none (a PROC's variable)
-    std::vector<double> values;  // row-major
+    uint32_t first_number = 0;   // 0: none (a PROC's variable, a STRING)
+    std::vector<double> values;  // row-major; a STRING's are in `texts`
+    std::vector<std::string> texts;
+    int length = 0;              // STRING[n]: n
   };
 
   // R n; `failure` (VariableNumber) for n outside 0 .. kRParameters-1.
   std::optional<Value> readR(int64_t n, SourceLocation loc, Failure& failure) const;
   bool writeR(int64_t n, const Value& value, SourceLocation loc, Failure& failure);
 
-  // DEF: a new variable of the current scope with its dimensions (empty: a scalar) and initial
-  // value (nullopt: the type's zero). False after filling `failure`: the name is declared
-  // already in this scope, a dimension is not positive, the type is not built yet.
-  bool define(std::string_view name, ast::DataType type, std::span<const int64_t> dims,
-              std::optional<Value> initial, SourceLocation loc, Failure& failure);
+  // DEF: a new variable of the current scope with its type, STRING length, dimensions (empty:
+  // a scalar) and initial value (nullopt: the type's zero, "" for a STRING), converted as
+  // write() converts. False after filling `failure`: the name is declared already in this
+  // scope, a dimension is not positive, the type is not built yet, the value does not fit.
+  bool define(std::string_view name, ast::DataType type, int length, std::span<const int64_t> dims,
+              const std::optional<Datum>& initial, SourceLocation loc, Failure& failure);
   const Variable* find(std::string_view name) const;
   // Whether any variable is declared in the current scope (most programs declare none: a word
   // then needs no look-up).
@@ -61,8 +68,17 @@ class NamedVariables {
   // the array (ArrayIndex).
   std::optional<Value> read(std::string_view name, std::span<const int64_t> indices,
                             SourceLocation loc, Failure& failure) const;
-  // Writes converting to the variable's type (INT rounds, BOOL is 0 or 1).
-  bool write(std::string_view name, std::span<const int64_t> indices, const Value& value,
+  // A STRING (or one character of it, `S[2]`), or a CHAR as a one-character text; TypeMismatch
+  // for a variable of another type.
+  std::optional<std::string> readText(std::string_view name, std::span<const int64_t> indices,
+                                      SourceLocation loc, Failure& failure) const;
+  // An element as the type holds it: a STRING's text, another type's number.
+  std::optional<Datum> readDatum(std::string_view name, std::span<const int64_t> indices,
+                                 SourceLocation loc, Failure& failure) const;
+  // Writes converting to the variable's type (Job Planning, type conversion): INT rounds, BOOL
+  // is 0 or 1, a STRING takes a number as its text (2.5 -> "2.5") and at most its length, a
+  // CHAR a one-character text as its code. A text written to a number is TypeMismatch.
+  bool write(std::string_view name, std::span<const int64_t> indices, const Datum& value,
              SourceLocation loc, Failure& failure);
 
   // A PROC call opens a scope of its own; its return closes it.
@@ -80,6 +96,11 @@ class NamedVariables {
     std::unordered_map<std::string, Variable> variables;
   };
   Variable* lookup(std::string_view name);
+  // `d` as variable `v` (named `name`) holds it; nullopt after filling `failure`.
+  static std::optional<std::string> textFor(const Variable& v, std::string_view name,
+                                            const Datum& d, SourceLocation loc, Failure& failure);
+  static std::optional<double> numberFor(const Variable& v, std::string_view name, const Datum& d,
+                                         SourceLocation loc, Failure& failure);
   std::optional<size_t> element(std::string_view name, const Variable& v,
                                 std::span<const int64_t> indices, SourceLocation loc,
                                 Failure& failure) const;

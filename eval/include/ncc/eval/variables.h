@@ -51,6 +51,14 @@ class Variables final : public VariableReader {
                                  SourceLocation loc, Failure& failure) override {
     return named_.read(name, indices, loc, failure);
   }
+  ast::DataType namedType(std::string_view name) const override {
+    const NamedVariables::Variable* v = named_.find(name);
+    return v ? v->type : ast::DataType::None;
+  }
+  std::optional<std::string> readText(std::string_view name, std::span<const int64_t> indices,
+                                      SourceLocation loc, Failure& failure) override {
+    return named_.readText(name, indices, loc, failure);
+  }
   // `$C_X` (the macro argument X) here; other `$` names from the controller (`system`).
   std::optional<Value> readSystem(std::string_view name, std::span<const SystemIndex> indices,
                                   SourceLocation loc, Failure& failure) override;

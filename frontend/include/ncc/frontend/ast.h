@@ -58,7 +58,8 @@ class Box {
 // writes them (both parsers, the printers, the evaluator, the block store): a new one is added
 // here and nowhere can forget it. The block store writes an operator as its index here: add
 // new ones at the end (and raise the store's version). `text` is the canonical spelling (aliases such as ATN or SQR
-// are resolved by the parser); `arity` is the argument count (ATAN takes 1 or 2: 0 here).
+// are resolved by the parser); `arity` is the argument count (0: it varies, ATAN takes 1 or 2,
+// SUBSTR 2 or 3, SPRINT a format and its values).
 enum class Op : uint8_t {
   None,  // a node that applies none (a literal, a variable, a bracket)
   Plus, Minus, Times, Divide, Mod, Or, Xor, And, Eq, Ne, Gt, Lt, Ge, Le,
@@ -67,6 +68,8 @@ enum class Op : uint8_t {
   Div, Not, BAnd, BOr, BXor, BNot, Atan2, Pot, Trunc, MinVal, MaxVal,
   // DIN: an axis word's value given incrementally or absolutely for this block (`X=IC(5)`).
   Ic, Ac,
+  // DIN strings (docs/din.md, Strings): concatenation, and the string functions.
+  Concat, StrLen, Index, RIndex, MIndex, Match, SubStr, ToUpper, ToLower, Number, IsNumber, Sprint,
 };
 struct OpInfo {
   Op op;
@@ -90,6 +93,11 @@ inline constexpr std::array kOps = {
     OpInfo{Op::Atan2, "ATAN2", 2}, OpInfo{Op::Pot, "POT", 1}, OpInfo{Op::Trunc, "TRUNC", 1},
     OpInfo{Op::MinVal, "MINVAL", 2}, OpInfo{Op::MaxVal, "MAXVAL", 2},
     OpInfo{Op::Ic, "IC", 1},     OpInfo{Op::Ac, "AC", 1},
+    OpInfo{Op::Concat, "<<", 2}, OpInfo{Op::StrLen, "STRLEN", 1}, OpInfo{Op::Index, "INDEX", 2},
+    OpInfo{Op::RIndex, "RINDEX", 2}, OpInfo{Op::MIndex, "MINDEX", 2}, OpInfo{Op::Match, "MATCH", 2},
+    OpInfo{Op::SubStr, "SUBSTR", 0}, OpInfo{Op::ToUpper, "TOUPPER", 1},
+    OpInfo{Op::ToLower, "TOLOWER", 1}, OpInfo{Op::Number, "NUMBER", 1},
+    OpInfo{Op::IsNumber, "ISNUMBER", 1}, OpInfo{Op::Sprint, "SPRINT", 0},
 };
 static_assert([] {
   for (size_t i = 0; i < kOps.size(); ++i)
@@ -123,8 +131,8 @@ struct Expr {
     Number,    // literal; `number`, `has_point`
     Variable,  // #n or #[expr]; args[0] is the number expression
     Unary,     // op = Minus, Plus, Not, BNot; args[0]
-    Binary,    // op = Plus ... Le, Div, BAnd ... BXor (the operators); args[0..1]
-    Call,      // op = Sin ... Adp, Atan2 ... MaxVal (the functions); args
+    Binary,    // op = Plus ... Le, Div, BAnd ... BXor, Concat (the operators); args[0..1]
+    Call,      // op = Sin ... Adp, Atan2 ... MaxVal, StrLen ... Sprint (the functions); args
     Bracket,   // [ expr ] (DIN: ( expr )); args[0]
     Vacant,    // an omitted argument (DIN `F(1,,3)`); #0 is a Variable
     Name,      // DIN: a name (`COUNT`, `$P_UIFR`, a label) in `text`; args: its indices `A[i,j]`
@@ -159,6 +167,9 @@ struct Word {
   Expr value;
   SourceLocation loc;   // of the address letter
 };
+
+// The most characters a DIN STRING holds (Job Planning, variable types: STRING[n], n <= 200).
+inline constexpr int kMaxStringLength = 200;
 
 // The type of a DIN variable (DEF INT ...).
 enum class DataType : uint8_t { None, Int, Real, Bool, Char, String, Axis, Frame };
@@ -211,6 +222,7 @@ struct Statement {
   Box<Statement> then_assign;  // IfThen, For (copies are deep: the evaluator keeps loop bodies)
   DataType type = DataType::None;  // Define
   Jump jump = Jump::Sequence;      // Goto, IfGoto, CaseBranch
+  int length = 0;                  // Define, Parameter of type STRING[n]: n (0: not written)
 };
 
 struct Block {
@@ -275,7 +287,8 @@ struct Schema<Statement> {
       std::tuple{field("kind", &Statement::kind), field("loc", &Statement::loc),
                  field("target", &Statement::target), field("value", &Statement::value),
                  field("loop_id", &Statement::loop_id), field("then_assign", &Statement::then_assign),
-                 field("type", &Statement::type), field("jump", &Statement::jump)};
+                 field("type", &Statement::type), field("jump", &Statement::jump),
+                 field("length", &Statement::length)};
 };
 template <>
 struct Schema<Block> {
