@@ -38,6 +38,7 @@ item
     | ENDWHILE                                           # endWhileItem
     | FOR name EQUALS expr TO expr                       # forItem
     | ENDFOR                                             # endForItem
+    | REPEAT start=IDENT end=IDENT? (count=IDENT EQUALS expr)?  # repeatSectionItem
     | REPEAT                                             # repeatItem
     | UNTIL expr                                         # untilItem
     | LOOP                                               # loopItem

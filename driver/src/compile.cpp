@@ -101,7 +101,9 @@ void afterEndOfRecord(frontend::BlockReader& reader, DiagnosticEngine& diags) {
 // The text after M02/M30 is never executed (the control stops and rewinds there). It is not
 // parsed, so nothing there is an error. Programs stored after the main program (`O` numbers)
 // are read only when called; other text draws one warning. A '%' there closes the record.
+// DIN text after M30 is read when a REPEAT or a jump reaches its labels (docs/din.md).
 void afterProgramEnd(frontend::BlockReader& reader, DiagnosticEngine& diags) {
+  if (reader.language() == frontend::Language::Din) return;
   std::optional<frontend::BlockReader::Text> next = nextNonComment(reader);
   if (!next) return;
   if (isEndOfRecord(next->text)) return afterEndOfRecord(reader, diags);

@@ -17,7 +17,7 @@ namespace ncc::eval {
 namespace {
 
 constexpr uint8_t kMagic[4] = {'N', 'C', 'B', 'S'};
-constexpr uint16_t kVersion = 6;  // 2: the loop limits; 3: the tree written by its schema; 4: DIN nodes; 5: DIN control structures; 6: DIN strings
+constexpr uint16_t kVersion = 7;  // 2: the loop limits; 3: the tree written by its schema; 4: DIN nodes; 5: DIN control structures; 6: DIN strings; 7: REPEAT sections, SET/REP
 
 uint64_t zigzag(int64_t v) { return (static_cast<uint64_t>(v) << 1) ^ static_cast<uint64_t>(v >> 63); }
 int64_t unzigzag(uint64_t u) { return static_cast<int64_t>((u >> 1) ^ (~(u & 1) + 1)); }

@@ -246,8 +246,13 @@ bool Evaluator::Impl::callWords(ast::Block& block, const ProgramPoint& at, bool&
       if (code == CallCode::G65) {
         pending.push_back(macroCall(*program, repeats, std::move(*args), code_loc, at));
       } else {
-        modal_calls.push_back(
-            {*program, std::move(*args), repeats, code == CallCode::G661, frames.size(), code_loc});
+        ModalCall& mc = modal_calls.emplace_back();
+        mc.program = *program;
+        mc.arguments = std::move(*args);
+        mc.repeats = repeats;
+        mc.every_block = code == CallCode::G661;
+        mc.depth = frames.size();
+        mc.loc = code_loc;
       }
       return true;
     }
@@ -340,6 +345,17 @@ void Evaluator::Impl::modalCallAfter(const ast::Block& block, const ProgramPoint
   bool moves = false;
   for (const ast::Word& w : block.words) moves = moves || options.is_axis(w.address);
   if (!moves) return;
+  if (mc.din) {  // MCALL (din.cpp)
+    Pending p;
+    p.kind = Pending::Kind::Call;
+    p.din = true;
+    p.name = mc.name;
+    p.din_arguments = mc.din_arguments;
+    p.loc = mc.loc;
+    p.at = at;
+    pending.push_back(std::move(p));
+    return;
+  }
   pending.push_back(macroCall(mc.program, mc.repeats, mc.arguments, mc.loc, at));
 }
 

@@ -32,6 +32,11 @@ const char* jumpName(ast::Jump jump) {
   }
 }
 
+// SET(...) or REP(...): the values of an array (fillArray).
+bool isArrayValues(const ast::Expr& e) {
+  return e.kind == ast::Expr::Kind::Call && (e.op == ast::Op::Set || e.op == ast::Op::Rep);
+}
+
 // M17: the end of a subprogram (Fundamentals, subprogram technique), as RET.
 bool isReturnWord(const ast::Word& w) {
   return w.address.is('M') && isLiteral(w.value) && literalValue(w.value) == 17;
@@ -98,6 +103,17 @@ const ast::Block* Evaluator::Impl::evaluateDin(const ast::Block& block, const Pr
     for (const ast::Word& w : block.words)
       if (w.address.is('P') && !namesVariable(w, named)) repeat_word = &w;
 
+  // MCALL NAME(...): the call after it in the block is made modal, not now.
+  const ast::Statement* mcall = nullptr;
+  const ast::Statement* modal_target = nullptr;
+  for (const Item& item : items) {
+    if (!item.statement || item.statement->kind != ast::Statement::Kind::Call) continue;
+    if (!mcall && item.statement->target.text && *item.statement->target.text == "MCALL")
+      mcall = item.statement;
+    else if (mcall && !modal_target)
+      modal_target = item.statement;
+  }
+
   const ast::Statement* jump = nullptr;
   const ast::Statement* structure = nullptr;
   for (const Item& item : items) {
@@ -110,6 +126,10 @@ const ast::Block* Evaluator::Impl::evaluateDin(const ast::Block& block, const Pr
       if (&w == repeat_word) continue;  // read by the call
       if (isSubprogramWord(w, named)) {
         if (!dinCallNumbered(w, at)) return nullptr;
+        continue;
+      }
+      if (namesVariable(w, named) && isArrayValues(w.value)) {
+        if (!fillArray(VariableRef{-1, std::string(w.address.view()), {}}, w.value)) return nullptr;
         continue;
       }
       if (namesVariable(w, named)) {
@@ -137,17 +157,24 @@ const ast::Block* Evaluator::Impl::evaluateDin(const ast::Block& block, const Pr
       case K::Define: {
         std::optional<std::vector<int64_t>> dims = indicesOf(st.target.args, context, failure);
         if (!dims) return failed();
+        const bool array_values = isArrayValues(st.value);
         std::optional<Datum> initial;
-        if (st.value.kind != ast::Expr::Kind::Vacant) {
+        if (st.value.kind != ast::Expr::Kind::Vacant && !array_values) {
           initial = datum(st.value, st.type);
           if (!initial) return nullptr;
         }
         const std::string_view name = st.target.text ? *st.target.text : std::string_view();
         if (!named.define(name, st.type, st.length, *dims, initial, st.loc, failure))
           return failed();
+        if (array_values && !fillArray(VariableRef{-1, std::string(name), {}}, st.value)) return nullptr;
         break;
       }
       case K::Assign: {
+        if (isArrayValues(st.value)) {
+          std::optional<VariableRef> ref = variableRef(st.target);
+          if (!ref || !fillArray(*ref, st.value)) return nullptr;
+          break;
+        }
         const NamedVariables::Variable* target =
             st.target.kind == ast::Expr::Kind::Name && st.target.text ? named.find(*st.target.text)
                                                                       : nullptr;
@@ -173,6 +200,11 @@ const ast::Block* Evaluator::Impl::evaluateDin(const ast::Block& block, const Pr
         jump = &st;
         break;
       case K::Call:
+        if (&st == modal_target) break;  // made modal by the MCALL before it
+        if (&st == mcall) {
+          if (!dinModalCall(modal_target, st.loc)) return nullptr;
+          break;
+        }
         if (!dinCall(st, at, out)) return nullptr;
         break;
       case K::Proc:
@@ -195,6 +227,7 @@ const ast::Block* Evaluator::Impl::evaluateDin(const ast::Block& block, const Pr
       case K::Loop:
       case K::EndLoop:
       case K::Case:
+      case K::RepeatSection:
         structure = &st;
         break;
       case K::CaseBranch:
@@ -223,6 +256,8 @@ const ast::Block* Evaluator::Impl::evaluateDin(const ast::Block& block, const Pr
 namespace {
 
 using SK = ast::Statement::Kind;
+
+constexpr int64_t kMaxSectionRepeats = 9999;  // REPEAT ... P=n
 
 // Structures open at once in one program (840D: 16 per program level).
 constexpr size_t kMaxStructures = 16;
@@ -453,10 +488,102 @@ bool Evaluator::Impl::dinControl(const ast::Block& block, const ast::Statement& 
       }
       return true;  // no constant matches and no DEFAULT: the next block
     }
+    case SK::RepeatSection:
+      return dinRepeatSection(st, at);
     default:
       fail(EvalError::NotSupported, st.loc, "a statement that is not a control structure");
       return false;
   }
+}
+
+// ---- program section repetition (Job Planning, "Program section repetition") --------------
+// REPEATB LABEL P=n runs the block with the label (searched back, then forward) n times;
+// REPEAT START END P=n the blocks from START to END (START searched back, then forward; END
+// after it); REPEAT START P=n the blocks from START (searched back) up to the REPEAT, or up to
+// an ENDLABEL: block between them. Then the program goes on after the REPEAT. P is 1 to 9999
+// (1 when not written); sections nest.
+
+bool Evaluator::Impl::dinRepeatSection(const ast::Statement& st, const ProgramPoint& at) {
+  Frame& frame = frames.back();
+  int64_t n = 1;
+  if (st.value.kind != ast::Expr::Kind::Vacant) {
+    std::optional<Value> v = value(st.value, 0, true);
+    if (!v) return false;
+    const double p = v->arithmetic();
+    if (!(p >= 1 && p <= kMaxSectionRepeats) || p != std::floor(p)) {
+      fail(EvalError::AddressValue, st.value.loc,
+           absl::StrCat("P=", p, ": a section is repeated 1 to ", kMaxSectionRepeats, " times"));
+      return false;
+    }
+    n = static_cast<int64_t>(p);
+  }
+  const ProgramPoint end_point = programEnd(frame);
+  const std::string start_name = st.target.text ? *st.target.text : std::string();
+  const bool single = st.loop_id == 1;
+  const bool end_written = !st.target.args.empty() && st.target.args[0].text;
+  std::optional<ProgramPoint> start =
+      store.findLabel(start_name, at, SequenceSearch::Backward, frame.begin, end_point);
+  if (!start && (single || end_written))
+    start = store.findLabel(start_name, at, SequenceSearch::Forward, frame.begin, end_point);
+  const char* keyword = single ? "REPEATB" : "REPEAT";
+  if (!start) {
+    fail(EvalError::JumpTarget, st.loc,
+         absl::StrCat(keyword, ": label ", start_name, " not found in this program",
+                      single || end_written ? "" : " before the REPEAT"));
+    return false;
+  }
+  Section section{*start, std::nullopt, at, n - 1, st.loc};
+  if (single) {
+    section.end = *start;
+  } else if (end_written) {
+    const std::string& end_name = *st.target.args[0].text;
+    section.end = end_name == start_name
+                      ? start
+                      : store.findLabel(end_name, *start, SequenceSearch::Forward, frame.begin,
+                                        end_point);
+    if (!section.end) {
+      fail(EvalError::JumpTarget, st.loc,
+           absl::StrCat("REPEAT: end label ", end_name, " not found after ", start_name));
+      return false;
+    }
+  } else {
+    section.end = store.findLabel("ENDLABEL", *start, SequenceSearch::Forward, *start, at);
+  }
+  frame.sections.push_back(section);
+  frame.cursor->seek(*start);
+  return before(at, *start) || countBackJump(st.loc);
+}
+
+bool Evaluator::Impl::sectionBoundary(Frame& f, const ProgramPoint& at) {
+  if (f.section_return && at == *f.section_return) {
+    f.section_return.reset();
+    return true;  // the REPEAT whose section is done: the program goes on after it
+  }
+  if (f.sections.empty()) return false;
+  const Section& s = f.sections.back();
+  if (!s.end && at == s.repeat_at) {
+    sectionStep(f);  // back to the REPEAT: the section's end
+    return true;
+  }
+  if (s.end && at == *s.end) f.section_step = true;  // after this block
+  return false;
+}
+
+bool Evaluator::Impl::sectionStep(Frame& f) {
+  Section& s = f.sections.back();
+  if (s.left > 0) {
+    --s.left;
+    f.cursor->seek(s.start);
+    return countBackJump(s.loc);
+  }
+  const ProgramPoint back = s.repeat_at;
+  const bool elsewhere = s.end.has_value();
+  f.sections.pop_back();
+  if (elsewhere) {  // on after the REPEAT, which is not to run again
+    f.cursor->seek(back);
+    f.section_return = back;
+  }
+  return true;
 }
 
 // ---- variables named by reference ---------------------------------------------------------
@@ -534,6 +661,66 @@ bool Evaluator::Impl::write(const VariableRef& ref, const Datum& v, SourceLocati
   return ok;
 }
 
+// ---- array values (Job Planning, "Definition and initialization of array variables") ------
+// `A[1,0]=SET(1, , 3)`: the elements from A[1,0] on, in memory order (the last index runs
+// fastest), take the values in turn; an omitted value leaves its element as it is. `REP(v)`
+// gives v to every element from there to the end of the array, `REP(v, n)` to n of them. In
+// a DEF the values start at the first element. More values than elements is alarm 12260.
+
+bool Evaluator::Impl::fillArray(const VariableRef& ref, const ast::Expr& e) {
+  NamedVariables& named = variables.named();
+  Failure failure;
+  if (ref.r >= 0) {
+    fail(EvalError::TypeMismatch, e.loc,
+         absl::StrCat(ast::opText(e.op), "(...) gives an array its values; R", ref.r, " is no array"));
+    return false;
+  }
+  std::optional<size_t> left = named.elementsFrom(ref.name, ref.indices, e.loc, failure);
+  if (!left) {
+    fail(failure);
+    return false;
+  }
+  const ast::DataType type = named.find(ref.name)->type;
+  std::vector<std::optional<Datum>> values;
+  if (e.op == ast::Op::Rep) {
+    std::optional<Datum> v = datum(e.args[0], type);
+    if (!v) return false;
+    size_t count = *left;
+    if (e.args.size() > 1) {
+      std::optional<int64_t> n = integerOf(e.args[1], e.args[1].loc, "REP's count");
+      if (!n) return false;
+      if (*n < 0 || static_cast<uint64_t>(*n) > *left) {
+        fail(EvalError::TooManyValues, e.args[1].loc,
+             absl::StrCat("REP(..., ", *n, "): ", *left, " elements are left in ", ref.name));
+        return false;
+      }
+      count = static_cast<size_t>(*n);
+    }
+    values.assign(count, *v);
+  } else {
+    if (e.args.size() > *left) {
+      fail(EvalError::TooManyValues, e.args[*left].loc,
+           absl::StrCat("SET: ", e.args.size(), " values, ", *left, " elements are left in ",
+                        ref.name));
+      return false;
+    }
+    for (const ast::Expr& a : e.args) {
+      if (a.kind == ast::Expr::Kind::Vacant) {
+        values.emplace_back();
+        continue;
+      }
+      std::optional<Datum> v = datum(a, type);
+      if (!v) return false;
+      values.push_back(std::move(*v));
+    }
+  }
+  if (!named.fill(ref.name, ref.indices, values, e.loc, failure)) {
+    fail(failure);
+    return false;
+  }
+  return true;
+}
+
 // ---- subprograms (Fundamentals, subprogram technique) --------------------------------------
 
 namespace {
@@ -543,7 +730,8 @@ namespace {
 // them with the block's other words (the frame instructions: DialectTable::frame_commands,
 // lowering_frames.cpp); the rest not built yet is refused.
 struct BuiltIn {
-  enum class Use : uint8_t { NotBuilt, BlockCommand, SetAlarm };
+  // Done: what the command asks for is how ncc evaluates anyway (STOPRE, docs/din.md).
+  enum class Use : uint8_t { NotBuilt, BlockCommand, SetAlarm, Message, Done };
   std::string_view name;
   bool prefix;  // CYCLE81, CYCLE800 ...: every name that starts so
   const char* what;
@@ -563,8 +751,8 @@ constexpr BuiltIn kBuiltIns[] = {
     {"CYCLE", true, "Siemens cycle"},
     {"POCKET", true, "Siemens milling cycle"}, {"SLOT", true, "Siemens milling cycle"},
     {"HOLES", true, "Siemens hole pattern"},  {"LONGHOLE", false, "Siemens milling cycle"},
-    {"MSG", false, "operator message"},
-    {"STOPRE", false, "preprocessing stop"},  {"BSPLINE", false, "spline interpolation"},
+    {"MSG", false, "operator message", U::Message},
+    {"STOPRE", false, "preprocessing stop", U::Done},  {"BSPLINE", false, "spline interpolation"},
     {"ASPLINE", false, "spline interpolation"}, {"CSPLINE", false, "spline interpolation"},
     {"POLY", false, "polynomial interpolation"}, {"TRANSMIT", false, "kinematic transformation"},
     {"TRACYL", false, "kinematic transformation"}, {"TRAORI", false, "kinematic transformation"},
@@ -572,7 +760,7 @@ constexpr BuiltIn kBuiltIns[] = {
     {"WAITS", false, "spindle synchronisation"}, {"SOFT", false, "acceleration profile"},
     {"BRISK", false, "acceleration profile"}, {"FFWON", false, "feedforward control"},
     {"FFWOF", false, "feedforward control"}, {"CDON", false, "collision detection"},
-    {"CDOF", false, "collision detection"}, {"MCALL", false, "modal subprogram call"},
+    {"CDOF", false, "collision detection"},
     {"EXTERN", false, "external subprogram declaration"},
 };
 
@@ -605,15 +793,25 @@ bool Evaluator::Impl::dinCall(const ast::Statement& st, const ProgramPoint& at, 
       return false;
     }
     if (b->use == U::SetAlarm) return setAlarm(st);
+    if (b->use == U::Message) return message(st);
+    if (b->use == U::Done) {
+      if (st.target.args.empty()) return true;
+      fail(EvalError::TooManyArguments, st.loc, absl::StrCat(name, " takes no arguments"));
+      return false;
+    }
     fail(EvalError::NotSupported, st.loc,
          absl::StrCat("'", name, "' (", b->what, ") is not supported yet (docs/din.md)"));
     return false;
   }
   std::optional<Pending> call = dinPending(name, st.loc, at);
-  if (!call) return false;
-  Pending& p = *call;
+  if (!call || !dinArguments(st, call->din_arguments)) return false;
+  pending.push_back(std::move(*call));
+  return true;
+}
+
+bool Evaluator::Impl::dinArguments(const ast::Statement& st, std::vector<DinArgument>& out) {
   for (const ast::Expr& arg : st.target.args) {
-    DinArgument& a = p.din_arguments.emplace_back();
+    DinArgument& a = out.emplace_back();
     a.loc = arg.loc;
     if (arg.kind == ast::Expr::Kind::Vacant) continue;  // omitted: the parameter gets 0
     a.value = datum(arg, ast::DataType::None);
@@ -623,7 +821,30 @@ bool Evaluator::Impl::dinCall(const ast::Statement& st, const ProgramPoint& at, 
       if (!a.ref) return false;
     }
   }
-  pending.push_back(std::move(p));
+  return true;
+}
+
+// MCALL NAME(args) (Fundamentals, "Modal subprogram call"): NAME is called with the arguments
+// as they are now after each later block of this program level that moves an axis, until
+// MCALL alone cancels it or another MCALL replaces it; the called program's own blocks do not
+// call it again. Siemens cycles (MCALL CYCLE81 ...) are the next issue's.
+bool Evaluator::Impl::dinModalCall(const ast::Statement* st, SourceLocation loc) {
+  if (!modal_calls.empty() && modal_calls.back().din && modal_calls.back().depth == frames.size())
+    modal_calls.pop_back();
+  if (!st) return true;
+  const std::string name = st->target.text ? *st->target.text : std::string();
+  if (const BuiltIn* b = builtIn(name)) {
+    fail(EvalError::NotSupported, st->loc,
+         absl::StrCat("MCALL ", name, ": '", name, "' (", b->what, ") is not supported yet (docs/din.md)"));
+    return false;
+  }
+  ModalCall mc;
+  mc.din = true;
+  mc.name = name;
+  mc.depth = frames.size();
+  mc.loc = loc;
+  if (!dinArguments(*st, mc.din_arguments)) return false;
+  modal_calls.push_back(std::move(mc));
   return true;
 }
 
@@ -691,6 +912,32 @@ bool Evaluator::Impl::setAlarm(const ast::Statement& st) {
   }
   fail(Failure{EvalError::UserAlarm, st.loc, absl::StrCat("SETAL(", code, ")"), code});
   return false;
+}
+
+// MSG("text") shows the text on the operator panel until the next MSG (Fundamentals, "Output
+// messages"); MSG() clears it. A run has no panel: each text is a note at its block, so the
+// run's output shows what the operator would read, in program order. A second argument (the
+// display mode of later software) is read and not used.
+bool Evaluator::Impl::message(const ast::Statement& st) {
+  const std::vector<ast::Expr>& args = st.target.args;
+  if (args.size() > 2) {
+    fail(EvalError::TooManyArguments, st.loc, "MSG takes the text (and a display mode)");
+    return false;
+  }
+  if (args.empty() || args[0].kind == ast::Expr::Kind::Vacant) return true;  // clears the text
+  std::optional<Datum> text = datum(args[0], ast::DataType::String);
+  if (!text) return false;
+  if (args.size() == 2 && args[1].kind != ast::Expr::Kind::Vacant && !value(args[1], 0, true))
+    return false;
+  if (messages_shown == kMaxMessages) {
+    diags.report(Severity::Note, "NCC2440", st.loc,
+                 absl::StrCat("MSG: more than ", kMaxMessages, " messages; the others are not shown"));
+  } else if (messages_shown < kMaxMessages) {
+    diags.report(Severity::Note, "NCC2440", st.loc,
+                 absl::StrCat("MSG: ", std::get<std::string>(*text)));
+  }
+  ++messages_shown;
+  return true;
 }
 
 bool Evaluator::Impl::dinProc(const ast::Block& block, const ast::Statement& st,

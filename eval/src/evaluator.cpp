@@ -165,6 +165,11 @@ const ast::Block* Evaluator::Impl::next() {
       continue;
     }
     Frame& f = frames.back();
+    if (f.section_step) {  // the last block of a repeated section ran (din.cpp)
+      f.section_step = false;
+      if (!sectionStep(f)) return nullptr;
+      continue;
+    }
     const ast::Block* block = f.cursor->next();
     if (!block) {
       programFinished();
@@ -172,6 +177,7 @@ const ast::Block* Evaluator::Impl::next() {
     }
     ++blocks_read;
     const ProgramPoint at = f.cursor->lastPoint();
+    if ((!f.sections.empty() || f.section_return) && sectionBoundary(f, at)) continue;
     if (block->program_number) {
       if (f.header_at_begin && at == f.begin) continue;  // the program's own O block
       if (f.is_main && !f.seen_content) {
@@ -230,7 +236,7 @@ const ast::Block* Evaluator::Impl::next() {
 bool Evaluator::Impl::plain(const ast::Block& block) const {
   // DIN text has none of the ISO calls (M98/M99/G65/G66, code macros); its words name a
   // variable when DEF declared one by the address (din.cpp).
-  if (block.language == frontend::Language::Din) return dinPlain(block);
+  if (block.language == frontend::Language::Din) return modal_calls.empty() && dinPlain(block);
   if (!block.statements.empty() || !modal_calls.empty()) return false;
   for (const ast::Word& w : block.words)
     if (!isLiteral(w.value) || isCallWord(w)) return false;
@@ -426,6 +432,7 @@ const ast::Block* Evaluator::Impl::evaluateBlock(const ast::Block& block, const 
       case K::Proc:
       case K::Parameter:
       case K::Return:
+      case K::RepeatSection:
         // DIN statements: a DIN block goes to evaluateDin (din.cpp); an ISO block never has
         // them (a tree from elsewhere, a damaged store).
         fail(EvalError::NotSupported, st.loc, "a DIN statement in an ISO block");

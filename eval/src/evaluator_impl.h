@@ -48,6 +48,16 @@ struct Structure {
   VariableRef counter;
 };
 
+// A DIN program section being repeated (REPEAT/REPEATB, din.cpp): from `start` to `end`
+// (included; none: up to the REPEAT block itself), `left` more times, then on after `repeat_at`.
+struct Section {
+  ProgramPoint start;
+  std::optional<ProgramPoint> end;
+  ProgramPoint repeat_at;
+  int64_t left = 0;
+  SourceLocation loc;  // the REPEAT, where a repeat counts as a jump back
+};
+
 // One program being run: the main program, or a subprogram / macro called by the frame below.
 struct Frame {
   std::unique_ptr<BlockCursor> cursor;
@@ -72,6 +82,11 @@ struct Frame {
   bool din_call = false;
   std::vector<DinArgument> din_arguments;
   std::vector<std::pair<std::string, VariableRef>> by_reference;
+  // DIN program sections being repeated, innermost last; `section_step` when the block just
+  // run ended the innermost; `section_return`: the REPEAT block to pass over when it is done.
+  std::vector<Section> sections;
+  bool section_step = false;
+  std::optional<ProgramPoint> section_return;
 };
 
 // A modal macro call in force (G66: after each motion block; G66.1: every block).
@@ -82,6 +97,10 @@ struct ModalCall {
   bool every_block = false;
   size_t depth = 0;  // frames open when it was given: blocks deeper do not call it
   SourceLocation loc;
+  // DIN MCALL: the subprogram by name and its arguments, taken when MCALL was given.
+  bool din = false;
+  std::string name;
+  std::vector<DinArgument> din_arguments;
 };
 
 // A call or return to perform before the next block is read (the block's other words were
@@ -182,6 +201,23 @@ struct Evaluator::Impl {
   // The value of `e` for a variable of type `type` (None: not known yet, a PROC's argument): a
   // text for a STRING or where `e` is a string, else a number.
   std::optional<Datum> datum(const ast::Expr& e, ast::DataType type);
+  // The arguments of a DIN call by name, evaluated (a VAR parameter's variable kept).
+  bool dinArguments(const ast::Statement& st, std::vector<DinArgument>& out);
+  // MCALL NAME(...) (`st`: the call made modal) or MCALL alone (nullptr: cancels).
+  bool dinModalCall(const ast::Statement* st, SourceLocation loc);
+  // `A[i]=SET(...)`, `REP(...)`: the values of the array `ref` from its element on.
+  bool fillArray(const VariableRef& ref, const ast::Expr& e);
+  // MSG("text"): the text as a note at the block (din.cpp).
+  bool message(const ast::Statement& st);
+  static constexpr uint64_t kMaxMessages = 100;  // notes of MSG in one run; then one that says so
+  uint64_t messages_shown = 0;
+  // REPEAT START [END] P=n, REPEATB LABEL P=n: opens the section and goes to its start.
+  bool dinRepeatSection(const ast::Statement& st, const ProgramPoint& at);
+  // Before the block at `at` runs: true when it is not to run (the REPEAT that ended its
+  // section, or was passed back over); marks the last block of a section (section_step).
+  bool sectionBoundary(Frame& f, const ProgramPoint& at);
+  // After the last block of the innermost section: its start again, or on after its REPEAT.
+  bool sectionStep(Frame& f);
   // A call by name: a built-in not built yet is refused; otherwise the call is scheduled with
   // its arguments evaluated (the subprogram is looked for in the program folder when made).
   // A subprogram call by name; a block command (TRANS ...) becomes a word of `out`.

@@ -551,6 +551,11 @@ class Evaluator {
         return textFunction(e);
       case ast::Op::SubStr: case ast::Op::ToUpper: case ast::Op::ToLower: case ast::Op::Sprint:
         return notANumber(e);
+      case ast::Op::Set: case ast::Op::Rep:
+        fail(failure_, EvalError::TypeMismatch, e.loc,
+             absl::StrCat(ast::opText(e.op), "(...) gives an array its values (A[0]=",
+                          ast::opText(e.op), "(...)); it is not a value"));
+        return std::nullopt;
       default:
         break;
     }

@@ -17,7 +17,8 @@ constexpr std::string_view kFiles[] = {"{:04}.spf", "{}.spf", "{:04}.mpf", "{}.m
 // The DIN text of the same control (G290, or the siemens-din dialect) raises the Sinumerik NCK
 // alarms (Diagnostics Manual; the cycles notes §6 cite the 12xxx range): 12550 "name not
 // defined", 17020 "illegal array index", 14080 "jump destination not found", 12150 "operation
-// not compatible with data type", 12170 "name defined several times", 12640 "invalid nesting of control structures", 12641
+// not compatible with data type", 12170 "name defined several times", 12260 "too many
+// initialization values", 12640 "invalid nesting of control structures", 12641
 // "nesting depth of control structures too large", 12320 "parameter is not a variable", 12340
 // "number of parameters too high". The ISO-mode errors keep the NCC codes
 // (§6 numbers none).
@@ -28,6 +29,7 @@ constexpr std::array<std::string_view, kNccCodes.size()> alarms() {
   a[static_cast<size_t>(EvalError::JumpTarget)] = "14080";
   a[static_cast<size_t>(EvalError::TypeMismatch)] = "12150";
   a[static_cast<size_t>(EvalError::NameDefinedTwice)] = "12170";
+  a[static_cast<size_t>(EvalError::TooManyValues)] = "12260";
   a[static_cast<size_t>(EvalError::StructureNesting)] = "12640";
   a[static_cast<size_t>(EvalError::StructureDepth)] = "12641";
   a[static_cast<size_t>(EvalError::ArgumentNotVariable)] = "12320";

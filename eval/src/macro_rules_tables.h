@@ -47,6 +47,7 @@ inline constexpr std::array<std::string_view, static_cast<size_t>(EvalError::kCo
         "NCC2429",  // ArgumentNotVariable
         "NCC2430",  // ProcPlacement
         "NCC2431",  // NameDefinedTwice
+        "NCC2432",  // TooManyValues
 };
 
 // Argument specification I: A#1 B#2 C#3 I#4 J#5 K#6 D#7 E#8 F#9 H#11 M#13 Q#17 R#18 S#19

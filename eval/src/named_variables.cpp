@@ -263,6 +263,63 @@ bool NamedVariables::write(std::string_view name, std::span<const int64_t> indic
   return true;
 }
 
+std::optional<size_t> NamedVariables::firstElement(std::string_view name, const Variable& v,
+                                                   std::span<const int64_t> first,
+                                                   SourceLocation loc, Failure& failure) const {
+  if (first.empty()) return 0;  // the whole array: from its first element
+  return element(name, v, first, loc, failure);
+}
+
+std::optional<size_t> NamedVariables::elementsFrom(std::string_view name,
+                                                   std::span<const int64_t> first,
+                                                   SourceLocation loc, Failure& failure) const {
+  const Variable* v = find(name);
+  if (!v) {
+    fail(failure, EvalError::UndefinedName, loc, absl::StrCat("'", std::string(name), "' is not defined"));
+    return std::nullopt;
+  }
+  std::optional<size_t> at = firstElement(name, *v, first, loc, failure);
+  if (!at) return std::nullopt;
+  const size_t count = v->type == ast::DataType::String ? v->texts.size() : v->values.size();
+  return count - *at;
+}
+
+bool NamedVariables::fill(std::string_view name, std::span<const int64_t> first,
+                          std::span<const std::optional<Datum>> values, SourceLocation loc,
+                          Failure& failure) {
+  Variable* v = lookup(name);
+  if (!v) return fail(failure, EvalError::UndefinedName, loc, absl::StrCat("'", std::string(name), "' is not defined"));
+  std::optional<size_t> at = firstElement(name, *v, first, loc, failure);
+  if (!at) return false;
+  const bool text = v->type == ast::DataType::String;
+  const size_t count = text ? v->texts.size() : v->values.size();
+  if (values.size() > count - *at)
+    return fail(failure, EvalError::TooManyValues, loc,
+                absl::StrCat(values.size(), " values, ", count - *at, " elements are left in '",
+                             std::string(name), "'"));
+  // Every value converted first: a value the type refuses leaves the array as it was.
+  std::vector<std::optional<std::string>> texts(values.size());
+  std::vector<std::optional<double>> numbers(values.size());
+  for (size_t i = 0; i < values.size(); ++i) {
+    if (!values[i]) continue;
+    if (text) {
+      texts[i] = textFor(*v, name, *values[i], loc, failure);
+      if (!texts[i]) return false;
+    } else {
+      numbers[i] = numberFor(*v, name, *values[i], loc, failure);
+      if (!numbers[i]) return false;
+    }
+  }
+  for (size_t i = 0; i < values.size(); ++i) {
+    const size_t e = *at + i;
+    if (texts[i]) v->texts[e] = std::move(*texts[i]);
+    if (!numbers[i]) continue;
+    v->values[e] = *numbers[i];
+    if (v->first_number != 0 && on_write) on_write(v->first_number + e, Value::of(*numbers[i]), loc);
+  }
+  return true;
+}
+
 void NamedVariables::pushScope() { scopes_.emplace_back(); }
 
 void NamedVariables::popScope() {

@@ -135,6 +135,12 @@ class Printer {
       case K::Parameter:
         return absl::StrCat(s.loop_id ? "VAR " : "", typeText(s), " ", print(s.target));
       case K::Return: return "RET";
+      case K::RepeatSection:
+        return absl::StrCat(s.loop_id ? "REPEATB " : "REPEAT ", s.target.text ? *s.target.text : "",
+                            s.target.args.empty() || !s.target.args[0].text
+                                ? ""
+                                : absl::StrCat(" ", *s.target.args[0].text),
+                            s.value.kind == ast::Expr::Kind::Vacant ? "" : " P=", bare(s.value));
       case K::CaseBranch:
         return absl::StrCat(s.value.kind == ast::Expr::Kind::Vacant ? "DEFAULT" : print(s.value),
                             " ", jump(s.jump), " ", print(s.target));

@@ -34,6 +34,7 @@ struct DinFunction {
   ast::Op op;
   uint8_t min_args = 1;
   uint8_t max_args = 1;
+  bool omissions = false;  // an argument may be left out (SET(1,,3))
 };
 constexpr std::array kFunctions = {
     DinFunction{"SIN", ast::Op::Sin},       DinFunction{"COS", ast::Op::Cos},
@@ -51,6 +52,7 @@ constexpr std::array kFunctions = {
     DinFunction{"TOUPPER", ast::Op::ToUpper}, DinFunction{"TOLOWER", ast::Op::ToLower},
     DinFunction{"NUMBER", ast::Op::Number},  DinFunction{"ISNUMBER", ast::Op::IsNumber},
     DinFunction{"SPRINT", ast::Op::Sprint, 1, 255},
+    DinFunction{"SET", ast::Op::Set, 1, 255, true}, DinFunction{"REP", ast::Op::Rep, 1, 2},
 };
 
 ast::DataType typeNamed(std::string_view name) {
@@ -87,10 +89,6 @@ class Builder : public BlockText {
       if (t->getType() == DinLexer::OPEN_STRING)
         fail(codes::kUnclosedString, at(t), "string '\"' is not closed by '\"'");
     }
-    // REPEATB repeats a program section (REPEAT alone opens a REPEAT ... UNTIL loop).
-    for (const Token* t : tokens)
-      if (t->getType() == DinLexer::REPEAT && upper(t) == "REPEATB")
-        notYet(at(t), absl::StrCat("'", str(upper(t)), "'"));
     // The parser recurses once per sign and a few times per bracket: bound both before it runs.
     int open = 0;
     int signs = 0;
@@ -161,7 +159,7 @@ class Builder : public BlockText {
       case SKind::If: case SKind::Else: case SKind::EndIf: case SKind::While:
       case SKind::EndWhile: case SKind::For: case SKind::EndFor: case SKind::Repeat:
       case SKind::Until: case SKind::Loop: case SKind::EndLoop: case SKind::Case:
-      case SKind::Proc: case SKind::Return:
+      case SKind::Proc: case SKind::Return: case SKind::RepeatSection:
         return true;
       default:
         return false;
@@ -188,8 +186,6 @@ class Builder : public BlockText {
           st.kind != SKind::Parameter)
         consider(st.loc);
     if (!found) return;
-    if (structure->kind == SKind::Repeat)
-      notYet(structure->loc, "'REPEAT label P=n' (repeating a program section)");
     fail(codes::kUnexpectedToken, other,
          absl::StrCat("a control structure keyword (", structureName(structure->kind),
                       ") stands alone in its block, with its block number and labels"));
@@ -210,6 +206,7 @@ class Builder : public BlockText {
       case SKind::EndLoop: return "ENDLOOP";
       case SKind::Proc: return "PROC";
       case SKind::Return: return "RET";
+      case SKind::RepeatSection: return "REPEAT";
       default: return "CASE";
     }
   }
@@ -275,7 +272,12 @@ class Builder : public BlockText {
       statement(b, SKind::EndWhile, ctx->getStart());
     } else if (dynamic_cast<DinParser::EndForItemContext*>(ctx)) {
       statement(b, SKind::EndFor, ctx->getStart());
+    } else if (auto* rs = dynamic_cast<DinParser::RepeatSectionItemContext*>(ctx)) {
+      repeatSection(b, rs);
     } else if (dynamic_cast<DinParser::RepeatItemContext*>(ctx)) {
+      if (upper(ctx->getStart()) == "REPEATB")
+        fail(codes::kUnexpectedToken, at(ctx->getStart()),
+             "REPEATB takes the label of the block to repeat: REPEATB LABEL P=n");
       statement(b, SKind::Repeat, ctx->getStart());
     } else if (dynamic_cast<DinParser::LoopItemContext*>(ctx)) {
       statement(b, SKind::Loop, ctx->getStart());
@@ -488,6 +490,28 @@ class Builder : public BlockText {
       if (upper(t->NUMBER()).find('.') != std::string_view::npos)
         fail(codes::kBlockNumber, at(t->NUMBER()), "a block number has no decimal point");
       s.target = literal(t->NUMBER()->getSymbol(), 0, nullptr).expr;
+    }
+  }
+
+  // REPEAT START [END] [P=n], REPEATB LABEL [P=n]: the labels and the count.
+  void repeatSection(ast::Block& b, DinParser::RepeatSectionItemContext* r) {
+    const Token* keyword = r->REPEAT()->getSymbol();
+    ast::Statement& s = statement(b, SKind::RepeatSection, keyword);
+    s.loop_id = upper(keyword) == "REPEATB" ? 1 : 0;
+    s.target = name(r->start);
+    if (r->end) {
+      if (s.loop_id == 1)
+        fail(codes::kUnexpectedToken, at(r->end), "REPEATB repeats one block: it takes one label");
+      s.target.args.push_back(name(r->end));
+    }
+    if (r->count) {
+      if (upper(r->count) != "P")
+        fail(codes::kUnexpectedToken, at(r->count),
+             absl::StrCat("'", str(upper(r->count)), "=': the repeat count is P=n"));
+      s.value = expr(r->expr()).expr;
+    } else {
+      s.value.kind = Kind::Vacant;
+      s.value.loc = s.loc;
     }
   }
 
@@ -736,7 +760,8 @@ class Builder : public BlockText {
     e.loc = at(t);
     e.args = arguments(args);
     for (const ast::Expr& a : e.args)
-      if (a.kind == Kind::Vacant) fail(codes::kArity, a.loc, absl::StrCat("'", str(fn), "': an argument is missing"));
+      if (a.kind == Kind::Vacant && !found->omissions)
+        fail(codes::kArity, a.loc, absl::StrCat("'", str(fn), "': an argument is missing"));
     if (e.args.size() < found->min_args || e.args.size() > found->max_args) {
       const std::string count =
           found->min_args == found->max_args

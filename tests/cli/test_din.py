@@ -239,6 +239,42 @@ class DinTest(ScratchDirTest):
         self.assertEqual(vars_["R5"], 6.0)
         self.assertEqual(vars_["R6"], 1.0)
 
+    def test_repeat_program_sections(self):
+        # Job Planning, program section repetition: REPEAT START P=n runs START .. the REPEAT n
+        # more times; REPEATB one labelled block; REPEAT START END a section elsewhere (after
+        # M30 here), then on after the REPEAT; ENDLABEL: ends a section early; sections nest.
+        proc, moves = self.run_din(
+            "G0 X0 Y0 Z0\n"
+            "N10 MA1: G91 G1 X1 F100\n"
+            "N20 G90\n"
+            "N30 REPEAT MA1 P=2\n"           # X 1, 2, 3
+            "N40 ONE: G91 Y2\n"              # Y 2
+            "N45 G90\n"
+            "N50 REPEATB ONE P=2\n"          # Y 4, 6 (ONE in G91 again)
+            "N55 G90\n"
+            "N60 REPEAT SEC SECEND P=2\n"    # Z -1, -2
+            "N65 OUTER: G91 X10\n"
+            "N66 INNER: Y10\n"
+            "N67 G90 REPEAT INNER P=1\n".replace("G90 REPEAT", "REPEAT") +
+            "N68 ENDLABEL: G90\n"
+            "N69 Z=IC(5)\n"
+            "N70 REPEAT OUTER P=1\n"         # OUTER .. ENDLABEL again, not N69
+            "N80 M30\n"
+            "N90 SEC: G91 G1 Z-1\n"
+            "N95 SECEND: G90\n")
+        self.assertEqual(proc.returncode, 0, proc.stderr)
+        self.assertEqual(proc.stderr.count("warning"), 0, proc.stderr)
+        got = [(m["to"]["X"], m["to"]["Y"], m["to"]["Z"]) for m in moves]
+        self.assertEqual(got, [(1, 0, 0), (2, 0, 0), (3, 0, 0), (3, 2, 0), (3, 4, 0), (3, 6, 0),
+                               (3, 6, -1), (3, 6, -2),
+                               (13, 6, -2), (13, 16, -2), (13, 26, -2), (13, 26, 3),
+                               (23, 26, 3), (23, 36, 3), (23, 46, 3)])
+        self.assertAlarm("G0 X1\nREPEAT NOWHERE P=2\nM30\n", "14080", 2, 1, "label NOWHERE")
+        self.assertAlarm("MA: G0 X1\nREPEAT MA P=0\nM30\n", "NCC2406", 2, 13, "1 to 9999 times")
+        self.assertAlarm("MA: G0 X1\nREPEAT MA Q=2\nM30\n", "NCC1006", 2, 11, "P=n")
+        self.assertAlarm("MA: G0 X1\nREPEATB MA EB P=2\nM30\n", "NCC1006", 2, 12, "one label")
+        self.assertAlarm("MA: G0 X1\nREPEAT MA P=2 X5\nM30\n", "NCC1006", 2, 15, "stands alone")
+
     def test_nested_for_loops_move_a_grid(self):
         proc, moves = self.run_din(
             "DEF INT I, J\nFOR J=0 TO 1\n  FOR I=1 TO 2\n    G1 X=I*10 Y=J*5 F100\n"
@@ -273,7 +309,7 @@ class DinTest(ScratchDirTest):
         self.assertAlarm(deep, "12641", 17, 1, "nested more than 16")
         # A structure stands alone in its block.
         self.assertAlarm("IF 1 X10\nENDIF\nM30\n", "NCC1006", 1, 6, "stands alone")
-        self.assertAlarm("REPEAT MA1 P=2\nM30\n", "NCC1090", 1, 1, "REPEAT label P=n")
+        self.assertAlarm("REPEAT MA1 P=2\nM30\n", "14080", 1, 1, "label MA1 not found")
 
     # ---- subprograms ----------------------------------------------------------------------
 
@@ -311,6 +347,21 @@ class DinTest(ScratchDirTest):
         self.assertEqual(vars_["R2"], 100.0)
         self.assertEqual(vars_["R3"], 7.0)  # an array element by reference
         self.assertEqual(vars_["R5"], 7.0)  # an R parameter by reference
+
+    def test_mcall_calls_after_each_move_until_cancelled(self):
+        # Fundamentals, modal subprogram call: after every later block that moves an axis, with
+        # the arguments as they were at the MCALL; a new MCALL replaces it, MCALL alone ends it.
+        self.write("POS.spf", "PROC POS(REAL D)\nG91 G1 Z=-D F100\nZ=D\nG90\nRET\n")
+        proc, moves = self.run_din("R1=2\nG0 X0 Y0 Z10\nMCALL POS(R1)\nG0 X10\nR1=5\nY10\n"
+                                   "MCALL POS(1)\nX20\nMCALL\nX30\nM30\n")
+        self.assertEqual(proc.returncode, 0, proc.stderr)
+        self.assertEqual([(m["file"], m["to"]["X"], m["to"]["Y"], m["to"]["Z"]) for m in moves],
+                         [("p.mpf", 0, 0, 10), ("p.mpf", 10, 0, 10), ("POS.spf", 10, 0, 8),
+                          ("POS.spf", 10, 0, 10), ("p.mpf", 10, 10, 10), ("POS.spf", 10, 10, 8),
+                          ("POS.spf", 10, 10, 10), ("p.mpf", 20, 10, 10), ("POS.spf", 20, 10, 9),
+                          ("POS.spf", 20, 10, 10), ("p.mpf", 30, 10, 10)])
+        self.assertAlarm("MCALL CYCLE81(10, 0, 2, -5)\nM30\n", "NCC2010", 1, 7, "Siemens cycle")
+        self.assertAlarm("MCALL NOPE\nG0 X1\nM30\n", "12550", 1, 1, "NOPE")
 
     def test_m17_ends_a_main_program(self):
         proc, moves = self.run_din("G0 X1\nM17\nX2\nM30\n")
@@ -441,11 +492,45 @@ class DinTest(ScratchDirTest):
         self.assertAlarm("R1=1/0\nM30\n", "NCC2402", 1)
 
     def test_what_is_not_built_yet_is_refused_at_its_position(self):
-        self.assertAlarm("G0 X1\nREPEATB MA1 P=2\nM30\n", "NCC1090", 2, 1, "'REPEATB'")
         self.assertAlarm("G0 X=ACP(5)\nM30\n", "NCC1090", 1, 6, "function 'ACP'")
         self.assertAlarm("G0 X1\nCYCLE81(10, 0, 2, -5)\nM30\n", "NCC2010", 2, 1, "Siemens cycle")
         self.assertAlarm("DEF AXIS A\nM30\n", "NCC2010", 1, 10, "AXIS")
         self.assertAlarm('T="BALL_8MM" M6\nM30\n', "NCC2010", 1, 1, "tools by name")
+
+    def test_set_and_rep_give_arrays_their_values(self):
+        # Job Planning, array initialisation: values in memory order (the last index fastest),
+        # an omitted one left as it is; REP to the end or n elements; from the element named.
+        vars_ = self.variables(
+            "DEF REAL F[3,2]=SET(1,,3,4)\n"
+            "DEF INT G[2,3] = REP(2)\n"
+            "DEF STRING[4] S[3] = SET(\"A\", \"BC\")\n"
+            "F[2,0] = SET(7, 8)\n"
+            "G[1,1] = REP(5, 1)\n"
+            "R1 = STRLEN(S[0] << S[1] << S[2])\n"
+            "M30\n")
+        self.assertEqual([vars_[f"F[{i},{j}]"] for i in range(3) for j in range(2)],
+                         [1.0, 0.0, 3.0, 4.0, 7.0, 8.0])
+        self.assertEqual([vars_[f"G[{i},{j}]"] for i in range(2) for j in range(3)],
+                         [2.0, 2.0, 2.0, 2.0, 5.0, 2.0])
+        self.assertEqual(vars_["R1"], 3.0)
+        self.assertAlarm("DEF REAL F[3]=SET(1,2,3,4)\nM30\n", "12260", 1, 25, "4 values, 3 elements")
+        self.assertAlarm("DEF REAL F[3]\nF[1]=REP(1,3)\nM30\n", "12260", 2, 12, "2 elements are left")
+        self.assertAlarm("R1=SET(1)\nM30\n", "12150", 1, 4, "R1 is no array")
+        self.assertAlarm("DEF REAL F[3]\nG0 X=REP(1)\nM30\n", "12150", 2, 6, "not a value")
+        self.assertAlarm("DEF INT F[3]=SET(1,\"A\")\nM30\n", "12150", 1, 14, "a string is not a number")
+
+    def test_msg_texts_are_notes_in_program_order(self):
+        proc, moves = self.run_din('R1=2\nMSG("PASS " << R1)\nG0 X1\nMSG()\nMSG("DONE", 1)\nM30\n')
+        self.assertEqual(proc.returncode, 0, proc.stderr)
+        notes = [l for l in proc.stderr.splitlines() if "note[NCC2440]" in l]
+        self.assertEqual(len(notes), 2, proc.stderr)
+        self.assertTrue(notes[0].endswith(":2:1: note[NCC2440]: MSG: PASS 2"), notes[0])
+        self.assertTrue(notes[1].endswith(":5:1: note[NCC2440]: MSG: DONE"), notes[1])
+        self.assertAlarm('MSG("A", 1, 2)\nM30\n', "12340", 1, 1, "MSG takes the text")
+        # STOPRE: each block is evaluated with what the blocks before it left.
+        proc, moves = self.run_din("G0 X5\nSTOPRE\nR1=$AA_IM[X]\nG0 Y=R1\nM30\n")
+        self.assertEqual(proc.returncode, 0, proc.stderr)
+        self.assertEqual(moves[-1]["to"]["Y"], 5.0)
 
     # ---- strings -----------------------------------------------------------------------
 

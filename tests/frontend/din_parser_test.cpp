@@ -61,6 +61,8 @@ TEST(DinParser, StatementsVariablesLabelsAndJumps) {
   EXPECT_EQ(printed("DEF STRING[8] NAME=\"A\" << R1"), "DEF STRING[8] NAME=\"A\"<<R1");
   EXPECT_EQ(printed("PROC P(VAR STRING[20] S)"), "PROC P(VAR STRING[20] S)");
   EXPECT_EQ(printed("R1=SUBSTR(S,1,2)"), "R1=SUBSTR(S,1,2)");
+  EXPECT_EQ(printed("N10 REPEAT MA1 MA2 P=R1+1"), "N10 REPEAT MA1 MA2 P=R1+1");
+  EXPECT_EQ(printed("REPEATB MA1"), "REPEATB MA1");
   EXPECT_EQ(printed("A[1,2]=A[0,0]+$P_UIFR[1]"), "A[1,2]=A[0,0]+$P_UIFR[1]");
   EXPECT_EQ(printed("IF COUNT<6 GOTOB MA1"), "IF COUNT<6 GOTOB MA1");
   EXPECT_EQ(printed("GOTOF N100"), "GOTOF 100");
@@ -177,7 +179,7 @@ TEST(DinParser, BadTextGetsOneDiagnosticAtItsColumn) {
       {"PROC A X1", "p.mpf:1:8: error[NCC1006]: a control structure keyword (PROC) stands alone"},
       {"PROC A(VAR REAL B[3])", "p.mpf:1:18: error[NCC1090]: DIN array parameters"},
       {"PROC A(VECTOR B)", "p.mpf:1:8: error[NCC1019]: unknown type 'VECTOR'"},
-      {"N10 REPEATB MA1 P=2", "p.mpf:1:5: error[NCC1090]: DIN 'REPEATB'"},
+      {"N10 REPEATB", "p.mpf:1:5: error[NCC1006]: REPEATB takes the label of the block to repeat"},
       {"N10 WHILE 1 X10", "p.mpf:1:13: error[NCC1006]: a control structure keyword (WHILE) stands alone"},
       {"X1 ENDIF", "p.mpf:1:1: error[NCC1006]: a control structure keyword (ENDIF) stands alone"},
       {"FOR 1=2 TO 3", "p.mpf:1:5: error[NCC1006]"},

@@ -50,8 +50,10 @@ enum class EvalError : uint8_t {
   TooManyArguments,
   ArgumentNotVariable,
   ProcPlacement,
-  // DIN: DEF of a name the program (or subprogram) has declared already.
+  // DIN: DEF of a name the program (or subprogram) has declared already; SET or REP with more
+  // values than the array has elements left.
   NameDefinedTwice,
+  TooManyValues,
   kCount,
 };
 

@@ -81,6 +81,14 @@ class NamedVariables {
   bool write(std::string_view name, std::span<const int64_t> indices, const Datum& value,
              SourceLocation loc, Failure& failure);
 
+  // SET and REP (docs/din.md, Arrays): the elements of array `name` from `first` on (empty: the
+  // first element), in memory order; fill() gives them `values` in turn (nullopt: left as it
+  // is), converted as write() converts, all or none; TooManyValues past the last element.
+  std::optional<size_t> elementsFrom(std::string_view name, std::span<const int64_t> first,
+                                     SourceLocation loc, Failure& failure) const;
+  bool fill(std::string_view name, std::span<const int64_t> first,
+            std::span<const std::optional<Datum>> values, SourceLocation loc, Failure& failure);
+
   // A PROC call opens a scope of its own; its return closes it.
   void pushScope();
   void popScope();
@@ -101,6 +109,9 @@ class NamedVariables {
                                             const Datum& d, SourceLocation loc, Failure& failure);
   static std::optional<double> numberFor(const Variable& v, std::string_view name, const Datum& d,
                                          SourceLocation loc, Failure& failure);
+  std::optional<size_t> firstElement(std::string_view name, const Variable& v,
+                                     std::span<const int64_t> first, SourceLocation loc,
+                                     Failure& failure) const;
   std::optional<size_t> element(std::string_view name, const Variable& v,
                                 std::span<const int64_t> indices, SourceLocation loc,
                                 Failure& failure) const;

@@ -70,6 +70,8 @@ enum class Op : uint8_t {
   Ic, Ac,
   // DIN strings (docs/din.md, Strings): concatenation, and the string functions.
   Concat, StrLen, Index, RIndex, MIndex, Match, SubStr, ToUpper, ToLower, Number, IsNumber, Sprint,
+  // DIN: the values of an array (`A[0]=SET(1,2,3)`, `REP(0)`), not values themselves.
+  Set, Rep,
 };
 struct OpInfo {
   Op op;
@@ -98,6 +100,7 @@ inline constexpr std::array kOps = {
     OpInfo{Op::SubStr, "SUBSTR", 0}, OpInfo{Op::ToUpper, "TOUPPER", 1},
     OpInfo{Op::ToLower, "TOLOWER", 1}, OpInfo{Op::Number, "NUMBER", 1},
     OpInfo{Op::IsNumber, "ISNUMBER", 1}, OpInfo{Op::Sprint, "SPRINT", 0},
+    OpInfo{Op::Set, "SET", 0},   OpInfo{Op::Rep, "REP", 0},
 };
 static_assert([] {
   for (size_t i = 0; i < kOps.size(); ++i)
@@ -213,6 +216,10 @@ struct Statement {
     Proc,
     Parameter,
     Return,
+    // DIN: `REPEAT START END P=n` repeats a program section n times (Job Planning, program
+    // section repetition): target is the start label, target.args[0] the end label when
+    // written; value is P (Vacant: once); loop_id 1 for REPEATB (the label's block alone).
+    RepeatSection,
   };
   Kind kind = Kind::Assign;
   SourceLocation loc;
@@ -335,7 +342,7 @@ inline constexpr uint8_t kEnumValues = 0;
 template <>
 inline constexpr uint8_t kEnumValues<Expr::Kind> = static_cast<uint8_t>(Expr::Kind::String) + 1;
 template <>
-inline constexpr uint8_t kEnumValues<Statement::Kind> = static_cast<uint8_t>(Statement::Kind::Return) + 1;
+inline constexpr uint8_t kEnumValues<Statement::Kind> = static_cast<uint8_t>(Statement::Kind::RepeatSection) + 1;
 template <>
 inline constexpr uint8_t kEnumValues<DataType> = static_cast<uint8_t>(kDataTypeNames.size());
 template <>
