@@ -198,7 +198,8 @@ class Decoder {
 
   void otherWord(const ast::Word& w, int order) {
     const std::string_view a = w.address;
-    if (const char* what = unsupportedAddress(a)) {
+    const char* what = ctx_.addresses.slot(a) == AddressMap::Slot::Axis ? nullptr : unsupportedAddress(a);
+    if (what) {  // a machine axis E is the axis
       fail(Alarm::AddressNotSupported, w.loc,
            absl::StrCat("address ", std::string(a), " (", what, ") is not supported yet"));
       return;
@@ -296,6 +297,18 @@ class Decoder {
     if (a.size() == 1 && std::string_view("XYZABCUVW").find(a[0]) != std::string_view::npos) {
       fail(Alarm::AddressNotAnAxis, w.loc,
            absl::StrCat("address ", std::string(a), ": the machine has no axis ", std::string(a)));
+      return;
+    }
+    for (const UnbuiltAddress& u : ctx_.table.unbuilt_addresses)
+      if (a == u.name) {
+        fail(Alarm::AddressNotSupported, w.loc,
+             absl::StrCat("address ", std::string(a), "= (", std::string(u.what), ") is not supported yet"));
+        return;
+      }
+    if (a.size() > 1 && a[0] != ',') {  // DIN: a name (ISO addresses are one letter)
+      fail(Alarm::NameNotDefined, w.loc,
+           absl::StrCat("'", std::string(a),
+                        "' is not defined: no variable (DEF), machine axis or address has that name"));
       return;
     }
     fail(Alarm::AddressNotSupported, w.loc,

@@ -213,6 +213,7 @@ constexpr std::string_view kAlarms[] = {
     "PS0041",   // CompInterference: interference in compensation (§5.4.6)
     "NCC2128",  // CompWithoutMotion (the controller overcuts silently)
     "NCC2129",  // CompInCycle (not raised: the cycle runs on the programmed points)
+    "NCC2011",  // NameNotDefined (DIN only)
 };
 static_assert(std::size(kAlarms) == static_cast<size_t>(Alarm::kCount));
 

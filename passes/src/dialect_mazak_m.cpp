@@ -202,6 +202,7 @@ constexpr std::string_view kAlarms[] = {
     "837",      // CompInterference: interference (§12-4)
     "NCC2128",  // CompWithoutMotion (more than 4 in a row: the controller over- or under-cuts)
     "901",      // CompInCycle: a cycle in 3-D compensation
+    "NCC2011",  // NameNotDefined (DIN only)
 };
 static_assert(std::size(kAlarms) == static_cast<size_t>(Alarm::kCount));
 

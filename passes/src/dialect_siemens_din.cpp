@@ -79,6 +79,21 @@ constexpr GCodeEntry kCodes[] = {
 constexpr AddressAlias kAliases[] = {
     {"CR", "R"}, {"CHR", ",C"}, {"RND", ",R"}, {"CHF", "CHF"}};
 
+// DIN addresses not built yet (Fundamentals: circles, polar coordinates, contour definition;
+// positioning axes; feeds), refused by name.
+constexpr UnbuiltAddress kUnbuilt[] = {
+    {"AR", "opening angle of an arc"},         {"TURN", "helix turns"},
+    {"AP", "polar angle"},                     {"RP", "polar radius"},
+    {"ANG", "contour angle"},                  {"RNDM", "modal rounding"},
+    {"I1", "intermediate point of CIP"},       {"J1", "intermediate point of CIP"},
+    {"K1", "intermediate point of CIP"},       {"ADIS", "smoothing distance"},
+    {"ADISPOS", "smoothing distance of rapids"}, {"FA", "positioning axis feed"},
+    {"POS", "positioning axis"},               {"POSA", "positioning axis"},
+    {"SPOS", "spindle position"},              {"SPOSA", "spindle position"},
+    {"ACC", "acceleration override"},          {"OVR", "feed override"},
+    {"FL", "axis velocity limit"},             {"FXS", "travel to fixed stop"},
+};
+
 // Fundamentals, "Frames": the programmable frame's instructions (one per block, alone in it).
 using FC = FrameCommand::Component;
 constexpr FrameCommand kFrameCommands[] = {
@@ -99,6 +114,7 @@ const DialectTable& siemensDinTable() {
     t.gcodes = kCodes;
     t.address_aliases = kAliases;
     t.frame_commands = kFrameCommands;
+    t.unbuilt_addresses = kUnbuilt;
     // R, L, P, H mean other things in DIN (a parameter, a subprogram call, a repeat count, an
     // auxiliary function): not read until they are built. T selects the tool as in ISO mode;
     // D the edge, with its length.

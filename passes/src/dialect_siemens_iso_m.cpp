@@ -177,6 +177,7 @@ constexpr std::string_view kAlarms[] = {
     "NCC2127",  // CompInterference: CDON bottleneck (§3.5.4, no number)
     "NCC2128",  // CompWithoutMotion (3 or more: the tool stops at the previous offset point)
     "NCC2129",  // CompInCycle (not raised: compensation is ignored in cycles, §3.5.3)
+    "12550",  // NameNotDefined: name not defined (Sinumerik NCK)
 };
 static_assert(std::size(kAlarms) == static_cast<size_t>(Alarm::kCount));
 

@@ -495,6 +495,9 @@ class DinTest(ScratchDirTest):
         self.assertAlarm("G0 X=ACP(5)\nM30\n", "NCC1090", 1, 6, "function 'ACP'")
         self.assertAlarm("G0 X1\nCYCLE81(10, 0, 2, -5)\nM30\n", "NCC2010", 2, 1, "Siemens cycle")
         self.assertAlarm("DEF AXIS A\nM30\n", "NCC2010", 1, 10, "AXIS")
+        self.assertAlarm("G2 X10 Y0 AR=90\nM30\n", "NCC2011", 1, 11, "opening angle of an arc")
+        # A name no DEF declared and no axis has: the Sinumerik "name not defined".
+        self.assertAlarm("E_MULT = 1\nM30\n", "12550", 1, 1, "'E_MULT' is not defined")
         self.assertAlarm('T="BALL_8MM" M6\nM30\n', "NCC2010", 1, 1, "tools by name")
 
     def test_set_and_rep_give_arrays_their_values(self):
@@ -590,6 +593,13 @@ class DinTest(ScratchDirTest):
         self.assertAlarm("X=\"abc\nM30\n", "NCC1018", 1, 3)
         self.assertAlarm("X=SIN(1,2)\nM30\n", "NCC1011", 1, 3)
         self.assertAlarm("G0 X1 @\nM30\n", "NCC1001", 1, 7)
+
+    def test_an_axis_named_e_is_the_axis(self):
+        machine = self.write("e.toml", "[machine]\naxes = [\"X\", \"Y\", \"Z\", \"E\"]\n")
+        proc = ncc("run", self.write("p.mpf", "G1 X1 E=2.5 F100\nM30\n"), "--machine", machine,
+                   "--emit=moves")
+        self.assertEqual(proc.returncode, 0, proc.stderr)
+        self.assertEqual(json.loads(proc.stdout.splitlines()[0])["to"]["E"], 2.5)
 
     def test_nothing_is_written_after_an_alarm(self):
         path = self.write("p.mpf", "G0 X1\nR1=NOPE\nM30\n")

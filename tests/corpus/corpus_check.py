@@ -22,6 +22,10 @@ from pathlib import Path
 
 # The dialect each corpus folder is written in (tests/corpus/README.md).
 FOLDER_DIALECT = {"cam-iso": "fanuc-m", "fanuc-m": "fanuc-m", "fanuc-t": "fanuc-t", "siemens-din": "siemens-din"}
+# The machine a folder's programs are written for, when it is not the default 3-axis one
+# (machines/, the project's own).
+FOLDER_MACHINE = {"siemens-din": "cead-din.toml"}
+MACHINES = Path(__file__).resolve().parent / "machines"
 DIAGNOSTIC = re.compile(r"^.+:\d+:\d+: error\[(?P<code>[^\]]+)\]: ")
 TIMEOUT_SECONDS = 60
 SKIP = 77
@@ -45,6 +49,8 @@ def check(ncc, program, timeout=TIMEOUT_SECONDS):
     if dialect is None:
         return Outcome("crash", f"{program.parent.name}/ has no dialect in FOLDER_DIALECT")
     command = [str(ncc), "check", str(program), "--dialect", dialect]
+    if program.parent.name in FOLDER_MACHINE:
+        command += ["--machine", str(MACHINES / FOLDER_MACHINE[program.parent.name])]
     try:
         proc = subprocess.run(command, capture_output=True, text=True, errors="replace", timeout=timeout)
     except subprocess.TimeoutExpired:

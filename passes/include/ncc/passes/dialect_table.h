@@ -141,6 +141,8 @@ enum class Alarm : uint8_t {
   CompInterference,         // the compensated path runs against the programmed one: a gouge
   CompWithoutMotion,        // too many blocks without motion in the plane before an inner corner
   CompInCycle,              // a hole cycle while compensating, where that is an alarm
+  // DIN: a name that is no variable, axis or address (`E_MULT=1` without DEF E_MULT).
+  NameNotDefined,
   kCount,
 };
 
@@ -387,6 +389,13 @@ struct AddressAlias {
   std::string_view to;
 };
 
+// An address of the language that ncc does not build yet, with what it is for (DIN `AR=`, the
+// opening angle of an arc): refused by name, never mistaken for an undefined variable.
+struct UnbuiltAddress {
+  std::string_view name;
+  std::string_view what;
+};
+
 // A DIN frame instruction (Fundamentals, "Frames"; lowering_frames.cpp): the programmable
 // frame's translation (TRANS X.. Y.. Z..), rotation (ROT X.. Y.. Z.. in space, or RPL= in the
 // plane), scale factors (SCALE) or mirrored axes (MIRROR X0). The plain command replaces the
@@ -410,6 +419,7 @@ struct DialectTable {
   const CompRules* comp = nullptr;     // G40/G41/G42; null: compensation is not supported
   std::span<const AddressAlias> address_aliases{};
   std::span<const FrameCommand> frame_commands{};  // DIN TRANS, ATRANS ...; empty in ISO
+  std::span<const UnbuiltAddress> unbuilt_addresses{};
 
   const FrameCommand* findFrameCommand(std::string_view name) const {
     for (const FrameCommand& c : frame_commands)
