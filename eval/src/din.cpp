@@ -762,6 +762,10 @@ constexpr BuiltIn kBuiltIns[] = {
     {"FFWOF", false, "feedforward control"}, {"CDON", false, "collision detection"},
     {"CDOF", false, "collision detection"},
     {"EXTERN", false, "external subprogram declaration"},
+    {"CIP", false, "circle through an intermediate point"},
+    {"CT", false, "circle with tangential transition"}, {"SUPA", false, "frame suppression"},
+    {"CFC", false, "constant feed at the contour"}, {"CFTCP", false, "feed at the tool centre"},
+    {"CFIN", false, "constant feed at inner arcs"}, {"DRIVE", false, "acceleration profile"},
 };
 
 // SETAL(n) (Fundamentals, "Set alarm"; the alarm ranges of the Diagnostics Manual): the cycle

@@ -92,6 +92,7 @@ constexpr UnbuiltAddress kUnbuilt[] = {
     {"SPOS", "spindle position"},              {"SPOSA", "spindle position"},
     {"ACC", "acceleration override"},          {"OVR", "feed override"},
     {"FL", "axis velocity limit"},             {"FXS", "travel to fixed stop"},
+    {"OFFN", "contour offset"},
 };
 
 // Fundamentals, "Frames": the programmable frame's instructions (one per block, alone in it).
