@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 #include "absl/strings/str_cat.h"
 #include "absl/strings/str_join.h"
@@ -144,9 +145,16 @@ std::optional<double> NamedVariables::numberFor(const Variable& v, std::string_v
   return std::nullopt;
 }
 
-NamedVariables::Variable* NamedVariables::lookup(std::string_view name) {
-  auto it = scopes_.back().variables.find(std::string(name));
-  return it == scopes_.back().variables.end() ? nullptr : &it->second;
+const NamedVariables::Variable* NamedVariables::declared(std::string_view name, SourceLocation loc,
+                                                        Failure& failure) const {
+  const Variable* v = find(name);
+  if (!v) fail(failure, EvalError::UndefinedName, loc, absl::StrCat("'", std::string(name), "' is not defined"));
+  return v;
+}
+
+NamedVariables::Variable* NamedVariables::declared(std::string_view name, SourceLocation loc,
+                                                  Failure& failure) {
+  return const_cast<Variable*>(std::as_const(*this).declared(name, loc, failure));
 }
 
 const NamedVariables::Variable* NamedVariables::find(std::string_view name) const {
@@ -179,11 +187,8 @@ std::optional<size_t> NamedVariables::element(std::string_view name, const Varia
 
 std::optional<Value> NamedVariables::read(std::string_view name, std::span<const int64_t> indices,
                                           SourceLocation loc, Failure& failure) const {
-  const Variable* v = find(name);
-  if (!v) {
-    fail(failure, EvalError::UndefinedName, loc, absl::StrCat("'", std::string(name), "' is not defined"));
-    return std::nullopt;
-  }
+  const Variable* v = declared(name, loc, failure);
+  if (!v) return std::nullopt;
   if (v->type == ast::DataType::String) {
     fail(failure, EvalError::TypeMismatch, loc,
          absl::StrCat("'", std::string(name), "' is a STRING, not a number"));
@@ -197,11 +202,8 @@ std::optional<Value> NamedVariables::read(std::string_view name, std::span<const
 std::optional<std::string> NamedVariables::readText(std::string_view name,
                                                     std::span<const int64_t> indices,
                                                     SourceLocation loc, Failure& failure) const {
-  const Variable* v = find(name);
-  if (!v) {
-    fail(failure, EvalError::UndefinedName, loc, absl::StrCat("'", std::string(name), "' is not defined"));
-    return std::nullopt;
-  }
+  const Variable* v = declared(name, loc, failure);
+  if (!v) return std::nullopt;
   if (v->type == ast::DataType::Char) {
     std::optional<size_t> at = element(name, *v, indices, loc, failure);
     if (!at) return std::nullopt;
@@ -246,8 +248,8 @@ std::optional<Datum> NamedVariables::readDatum(std::string_view name,
 
 bool NamedVariables::write(std::string_view name, std::span<const int64_t> indices,
                            const Datum& value, SourceLocation loc, Failure& failure) {
-  Variable* v = lookup(name);
-  if (!v) return fail(failure, EvalError::UndefinedName, loc, absl::StrCat("'", std::string(name), "' is not defined"));
+  Variable* v = declared(name, loc, failure);
+  if (!v) return false;
   std::optional<size_t> at = element(name, *v, indices, loc, failure);
   if (!at) return false;
   if (v->type == ast::DataType::String) {
@@ -273,11 +275,8 @@ std::optional<size_t> NamedVariables::firstElement(std::string_view name, const 
 std::optional<size_t> NamedVariables::elementsFrom(std::string_view name,
                                                    std::span<const int64_t> first,
                                                    SourceLocation loc, Failure& failure) const {
-  const Variable* v = find(name);
-  if (!v) {
-    fail(failure, EvalError::UndefinedName, loc, absl::StrCat("'", std::string(name), "' is not defined"));
-    return std::nullopt;
-  }
+  const Variable* v = declared(name, loc, failure);
+  if (!v) return std::nullopt;
   std::optional<size_t> at = firstElement(name, *v, first, loc, failure);
   if (!at) return std::nullopt;
   const size_t count = v->type == ast::DataType::String ? v->texts.size() : v->values.size();
@@ -287,8 +286,8 @@ std::optional<size_t> NamedVariables::elementsFrom(std::string_view name,
 bool NamedVariables::fill(std::string_view name, std::span<const int64_t> first,
                           std::span<const std::optional<Datum>> values, SourceLocation loc,
                           Failure& failure) {
-  Variable* v = lookup(name);
-  if (!v) return fail(failure, EvalError::UndefinedName, loc, absl::StrCat("'", std::string(name), "' is not defined"));
+  Variable* v = declared(name, loc, failure);
+  if (!v) return false;
   std::optional<size_t> at = firstElement(name, *v, first, loc, failure);
   if (!at) return false;
   const bool text = v->type == ast::DataType::String;

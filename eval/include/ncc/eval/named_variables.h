@@ -103,7 +103,9 @@ class NamedVariables {
   struct Scope {
     std::unordered_map<std::string, Variable> variables;
   };
-  Variable* lookup(std::string_view name);
+  // The variable `name` of the current scope; nullptr after filling `failure` (UndefinedName).
+  const Variable* declared(std::string_view name, SourceLocation loc, Failure& failure) const;
+  Variable* declared(std::string_view name, SourceLocation loc, Failure& failure);
   // `d` as variable `v` (named `name`) holds it; nullopt after filling `failure`.
   static std::optional<std::string> textFor(const Variable& v, std::string_view name,
                                             const Datum& d, SourceLocation loc, Failure& failure);
