@@ -345,7 +345,8 @@ void Evaluator::Impl::modalCallAfter(const ast::Block& block, const ProgramPoint
   bool moves = false;
   for (const ast::Word& w : block.words) moves = moves || options.is_axis(w.address);
   if (!moves) return;
-  if (mc.din) {  // MCALL (din.cpp)
+  if (mc.din) {  // MCALL (din.cpp): in its own program level only
+    if (frames.size() != mc.depth) return;
     Pending p;
     p.kind = Pending::Kind::Call;
     p.din = true;
@@ -485,6 +486,9 @@ void Evaluator::Impl::closeFrame() {
   if (f.figure_rotation) options.figure_rotation.end();
   rejected_closed += f.cursor->rejectedBlocks();
   frames.pop_back();
+  // A DIN MCALL belongs to the program level that gave it: it ends with it.
+  while (!modal_calls.empty() && modal_calls.back().din && modal_calls.back().depth > frames.size())
+    modal_calls.pop_back();
 }
 
 bool Evaluator::Impl::ret(const Pending& p) {

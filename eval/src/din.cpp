@@ -106,11 +106,16 @@ const ast::Block* Evaluator::Impl::evaluateDin(const ast::Block& block, const Pr
   // MCALL NAME(...): the call after it in the block is made modal, not now.
   const ast::Statement* mcall = nullptr;
   const ast::Statement* modal_target = nullptr;
+  const ast::Word* modal_l = nullptr;  // MCALL L10
   for (const Item& item : items) {
+    if (mcall && !modal_target && !modal_l && item.word && isSubprogramWord(*item.word, named)) {
+      modal_l = item.word;
+      continue;
+    }
     if (!item.statement || item.statement->kind != ast::Statement::Kind::Call) continue;
     if (!mcall && item.statement->target.text && *item.statement->target.text == "MCALL")
       mcall = item.statement;
-    else if (mcall && !modal_target)
+    else if (mcall && !modal_target && !modal_l)
       modal_target = item.statement;
   }
 
@@ -124,6 +129,7 @@ const ast::Block* Evaluator::Impl::evaluateDin(const ast::Block& block, const Pr
         continue;
       }
       if (&w == repeat_word) continue;  // read by the call
+      if (&w == modal_l) continue;  // made modal by the MCALL before it
       if (isSubprogramWord(w, named)) {
         if (!dinCallNumbered(w, at)) return nullptr;
         continue;
@@ -202,7 +208,15 @@ const ast::Block* Evaluator::Impl::evaluateDin(const ast::Block& block, const Pr
       case K::Call:
         if (&st == modal_target) break;  // made modal by the MCALL before it
         if (&st == mcall) {
-          if (!dinModalCall(modal_target, st.loc)) return nullptr;
+          if (modal_l) {
+            std::optional<std::string> name = subprogramNumbered(*modal_l);
+            if (!name || !dinModalCall(*name, nullptr, st.loc)) return nullptr;
+          } else if (!dinModalCall(modal_target && modal_target->target.text
+                                       ? *modal_target->target.text
+                                       : std::string(),
+                                   modal_target, st.loc)) {
+            return nullptr;
+          }
           break;
         }
         if (!dinCall(st, at, out)) return nullptr;
@@ -258,6 +272,7 @@ namespace {
 using SK = ast::Statement::Kind;
 
 constexpr int64_t kMaxSectionRepeats = 9999;  // REPEAT ... P=n
+constexpr size_t kMaxSections = 16;  // sections repeated inside each other (as structures)
 
 // Structures open at once in one program (840D: 16 per program level).
 constexpr size_t kMaxStructures = 16;
@@ -372,6 +387,7 @@ bool Evaluator::Impl::dinControl(const ast::Block& block, const ast::Statement& 
   };
   const auto loopBack = [&](const ProgramPoint& to) {
     if (!countBackJump(st.loc)) return false;
+    jumpWithinSections(frame, to);
     frame.cursor->seek(to);
     return true;
   };
@@ -469,18 +485,26 @@ bool Evaluator::Impl::dinControl(const ast::Block& block, const ast::Statement& 
       return loopBack(s->at);
     }
     case SK::Case: {
-      // CASE on a string (or a CHAR) compares texts: CASE(FORM) OF "A" GOTOF ...
-      const bool text = kindOf(st.value, variables) != ValueKind::Number;
-      std::optional<Datum> c = datum(st.value, text ? ast::DataType::String : ast::DataType::Real);
-      if (!c) return false;
+      // As `==` compares: a string with string constants, a number with numbers, a CHAR with
+      // either (CASE (FORM) OF "A" GOTOF ..., or its code); a string against a number is 12150.
+      const ValueKind kind = kindOf(st.value, variables);
       bool after = false;
       for (const ast::Statement& branch : block.statements) {
         if (&branch == &st) after = true;
         if (!after || branch.kind != SK::CaseBranch) continue;
         bool taken = branch.value.kind == ast::Expr::Kind::Vacant;
         if (!taken) {
-          std::optional<Datum> constant =
-              datum(branch.value, text ? ast::DataType::String : ast::DataType::Real);
+          const bool text_constant = branch.value.kind == ast::Expr::Kind::String;
+          if ((kind == ValueKind::String && !text_constant) ||
+              (kind == ValueKind::Number && text_constant)) {
+            fail(EvalError::TypeMismatch, branch.value.loc,
+                 "CASE compares a string with a number (NUMBER(...) reads the number a string holds)");
+            return false;
+          }
+          const ast::DataType as = text_constant ? ast::DataType::String : ast::DataType::Real;
+          std::optional<Datum> c = datum(st.value, as);
+          if (!c) return false;
+          std::optional<Datum> constant = datum(branch.value, as);
           if (!constant) return false;
           taken = *constant == *c;
         }
@@ -532,6 +556,12 @@ bool Evaluator::Impl::dinRepeatSection(const ast::Statement& st, const ProgramPo
                       single || end_written ? "" : " before the REPEAT"));
     return false;
   }
+  if (frame.sections.size() >= kMaxSections) {
+    fail(EvalError::StructureDepth, st.loc,
+         absl::StrCat(keyword, ": program sections repeated inside each other more than ",
+                      kMaxSections, " deep"));
+    return false;
+  }
   Section section{*start, std::nullopt, at, n - 1, st.loc};
   if (single) {
     section.end = *start;
@@ -565,8 +595,11 @@ bool Evaluator::Impl::sectionBoundary(Frame& f, const ProgramPoint& at) {
     sectionStep(f);  // back to the REPEAT: the section's end
     return true;
   }
+  // A REPEAT inside the section it repeats (`MA: REPEATB MA P=3`) does not start it again.
+  bool own_repeat = false;
+  for (const Section& open : f.sections) own_repeat = own_repeat || at == open.repeat_at;
   if (s.end && at == *s.end) f.section_step = true;  // after this block
-  return false;
+  return own_repeat;
 }
 
 bool Evaluator::Impl::sectionStep(Frame& f) {
@@ -820,6 +853,7 @@ bool Evaluator::Impl::dinArguments(const ast::Statement& st, std::vector<DinArgu
     if (arg.kind == ast::Expr::Kind::Vacant) continue;  // omitted: the parameter gets 0
     a.value = datum(arg, ast::DataType::None);
     if (!a.value) return false;
+    a.character = kindOf(arg, variables) == ValueKind::Char;
     if (arg.kind == ast::Expr::Kind::Name || arg.kind == ast::Expr::Kind::RParam) {
       a.ref = variableRef(arg);
       if (!a.ref) return false;
@@ -832,13 +866,13 @@ bool Evaluator::Impl::dinArguments(const ast::Statement& st, std::vector<DinArgu
 // as they are now after each later block of this program level that moves an axis, until
 // MCALL alone cancels it or another MCALL replaces it; the called program's own blocks do not
 // call it again. Siemens cycles (MCALL CYCLE81 ...) are the next issue's.
-bool Evaluator::Impl::dinModalCall(const ast::Statement* st, SourceLocation loc) {
+bool Evaluator::Impl::dinModalCall(const std::string& name, const ast::Statement* st,
+                                   SourceLocation loc) {
   if (!modal_calls.empty() && modal_calls.back().din && modal_calls.back().depth == frames.size())
     modal_calls.pop_back();
-  if (!st) return true;
-  const std::string name = st->target.text ? *st->target.text : std::string();
+  if (name.empty()) return true;
   if (const BuiltIn* b = builtIn(name)) {
-    fail(EvalError::NotSupported, st->loc,
+    fail(EvalError::NotSupported, st ? st->loc : loc,
          absl::StrCat("MCALL ", name, ": '", name, "' (", b->what, ") is not supported yet (docs/din.md)"));
     return false;
   }
@@ -847,7 +881,7 @@ bool Evaluator::Impl::dinModalCall(const ast::Statement* st, SourceLocation loc)
   mc.name = name;
   mc.depth = frames.size();
   mc.loc = loc;
-  if (!dinArguments(*st, mc.din_arguments)) return false;
+  if (st && !dinArguments(*st, mc.din_arguments)) return false;
   modal_calls.push_back(std::move(mc));
   return true;
 }
@@ -873,19 +907,25 @@ std::optional<Pending> Evaluator::Impl::dinPending(std::string name, SourceLocat
   return p;
 }
 
-bool Evaluator::Impl::dinCallNumbered(const ast::Word& w, const ProgramPoint& at) {
+std::optional<std::string> Evaluator::Impl::subprogramNumbered(const ast::Word& w) {
   // The name keeps the digits as written: L0123 and L123 are different programs.
   std::optional<Value> v = value(w.value, 0, true);
-  if (!v) return false;
+  if (!v) return std::nullopt;
   const double n = v->arithmetic();
   if (!(n >= 0 && n <= 9999999) || n != std::floor(n)) {
     fail(EvalError::AddressValue, w.loc, absl::StrCat("L", n, ": subprogram numbers are 0 to 9999999"));
-    return false;
+    return std::nullopt;
   }
   std::string digits = absl::StrCat(static_cast<int64_t>(n));
   if (w.value.kind == ast::Expr::Kind::Number && w.value.digits > digits.size())
     digits.insert(0, w.value.digits - digits.size(), '0');
-  std::optional<Pending> call = dinPending("L" + digits, w.loc, at);
+  return "L" + digits;
+}
+
+bool Evaluator::Impl::dinCallNumbered(const ast::Word& w, const ProgramPoint& at) {
+  std::optional<std::string> name = subprogramNumbered(w);
+  if (!name) return false;
+  std::optional<Pending> call = dinPending(*name, w.loc, at);
   if (!call) return false;
   pending.push_back(std::move(*call));
   return true;
@@ -979,7 +1019,12 @@ bool Evaluator::Impl::dinProc(const ast::Block& block, const ast::Statement& st,
       frame.by_reference.emplace_back(param_name, *arg->ref);
     }
     // An omitted argument is 0 (cycles notes §1.3.4).
-    const std::optional<Datum> initial = arg ? arg->value : std::nullopt;
+    std::optional<Datum> initial = arg ? arg->value : std::nullopt;
+    if (arg && arg->character && param.type == ast::DataType::String && initial &&
+        std::holds_alternative<Value>(*initial)) {
+      const double code = std::get<Value>(*initial).arithmetic();
+      initial = Datum(code == 0.0 ? std::string() : std::string(1, static_cast<char>(code)));
+    }
     if (!named.define(param_name, param.type, param.length, {}, initial,
                       arg ? arg->loc : param.loc, failure)) {
       fail(failure);
@@ -1024,8 +1069,21 @@ bool Evaluator::Impl::dinJump(const ast::Statement& st, const ProgramPoint& at) 
     return false;
   }
   if (!before(at, *target) && !countBackJump(st.loc)) return false;
+  jumpWithinSections(frame, *target);
   frame.cursor->seek(*target);
   return true;
+}
+
+// A jump ends the step of a section whose last block it leaves from, and closes every section
+// it leaves: the program goes on from the target, not from the section's start.
+void Evaluator::Impl::jumpWithinSections(Frame& f, const ProgramPoint& target) {
+  f.section_step = false;
+  while (!f.sections.empty()) {
+    const Section& s = f.sections.back();
+    const ProgramPoint& last = s.end ? *s.end : s.repeat_at;
+    if (!before(target, s.start) && !before(last, target)) break;  // inside: it stays open
+    f.sections.pop_back();
+  }
 }
 
 }  // namespace ncc::eval

@@ -34,6 +34,7 @@ struct VariableRef {
 // variable it names when it is one (a VAR parameter writes it back on return).
 struct DinArgument {
   std::optional<Datum> value;
+  bool character = false;  // a CHAR: its code, or its one-character text for a STRING parameter
   std::optional<VariableRef> ref;
   SourceLocation loc;
 };
@@ -203,8 +204,11 @@ struct Evaluator::Impl {
   std::optional<Datum> datum(const ast::Expr& e, ast::DataType type);
   // The arguments of a DIN call by name, evaluated (a VAR parameter's variable kept).
   bool dinArguments(const ast::Statement& st, std::vector<DinArgument>& out);
-  // MCALL NAME(...) (`st`: the call made modal) or MCALL alone (nullptr: cancels).
-  bool dinModalCall(const ast::Statement* st, SourceLocation loc);
+  // MCALL NAME(...) (`st`: the call made modal, null for MCALL L10) or MCALL alone (an empty
+  // name: cancels).
+  bool dinModalCall(const std::string& name, const ast::Statement* st, SourceLocation loc);
+  // L10: the subprogram's name, the digits as written ("L10", "L0010").
+  std::optional<std::string> subprogramNumbered(const ast::Word& w);
   // `A[i]=SET(...)`, `REP(...)`: the values of the array `ref` from its element on.
   bool fillArray(const VariableRef& ref, const ast::Expr& e);
   // MSG("text"): the text as a note at the block (din.cpp).
@@ -218,6 +222,9 @@ struct Evaluator::Impl {
   bool sectionBoundary(Frame& f, const ProgramPoint& at);
   // After the last block of the innermost section: its start again, or on after its REPEAT.
   bool sectionStep(Frame& f);
+  // A jump or loop to `target`: no section step after this block, and the sections it leaves
+  // are closed.
+  void jumpWithinSections(Frame& f, const ProgramPoint& target);
   // A call by name: a built-in not built yet is refused; otherwise the call is scheduled with
   // its arguments evaluated (the subprogram is looked for in the program folder when made).
   // A subprogram call by name; a block command (TRANS ...) becomes a word of `out`.

@@ -132,7 +132,16 @@ std::optional<std::string> NamedVariables::textFor(const Variable& v, std::strin
 std::optional<double> NamedVariables::numberFor(const Variable& v, std::string_view name,
                                                 const Datum& d, SourceLocation loc,
                                                 Failure& failure) {
-  if (const Value* n = std::get_if<Value>(&d)) return converted(v.type, n->arithmetic());
+  if (const Value* n = std::get_if<Value>(&d)) {
+    const double x = converted(v.type, n->arithmetic());
+    if (v.type == ast::DataType::Char && !(x >= 0 && x <= 255)) {
+      fail(failure, EvalError::ValueRange, loc,
+           absl::StrCat("'", std::string(name), "' is a CHAR: a character code is 0 to 255, not ",
+                        formatNumber(n->arithmetic())));
+      return std::nullopt;
+    }
+    return x;
+  }
   const std::string& text = std::get<std::string>(d);
   if (v.type == ast::DataType::Char && text.size() == 1)
     return static_cast<double>(static_cast<unsigned char>(text[0]));

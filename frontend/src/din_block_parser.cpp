@@ -27,13 +27,16 @@ using SKind = ast::Statement::Kind;
 
 std::string str(std::string_view s) { return std::string(s); }
 
+// SET and SPRINT take a list: as many values as an array has elements (NamedVariables::kMaxElements).
+constexpr uint16_t kManyArguments = 65535;
+
 // The DIN functions ncc evaluates (Programming Manual Fundamentals, arithmetic functions;
 // Job Planning, string functions), with the argument counts they take.
 struct DinFunction {
   const char* name;
   ast::Op op;
-  uint8_t min_args = 1;
-  uint8_t max_args = 1;
+  uint16_t min_args = 1;
+  uint16_t max_args = 1;
   bool omissions = false;  // an argument may be left out (SET(1,,3))
 };
 constexpr std::array kFunctions = {
@@ -51,8 +54,8 @@ constexpr std::array kFunctions = {
     DinFunction{"MATCH", ast::Op::Match, 2, 2}, DinFunction{"SUBSTR", ast::Op::SubStr, 2, 3},
     DinFunction{"TOUPPER", ast::Op::ToUpper}, DinFunction{"TOLOWER", ast::Op::ToLower},
     DinFunction{"NUMBER", ast::Op::Number},  DinFunction{"ISNUMBER", ast::Op::IsNumber},
-    DinFunction{"SPRINT", ast::Op::Sprint, 1, 255},
-    DinFunction{"SET", ast::Op::Set, 1, 255, true}, DinFunction{"REP", ast::Op::Rep, 1, 2},
+    DinFunction{"SPRINT", ast::Op::Sprint, 1, kManyArguments},
+    DinFunction{"SET", ast::Op::Set, 1, kManyArguments, true}, DinFunction{"REP", ast::Op::Rep, 1, 2},
 };
 
 ast::DataType typeNamed(std::string_view name) {
@@ -766,7 +769,8 @@ class Builder : public BlockText {
       const std::string count =
           found->min_args == found->max_args
               ? absl::StrCat(found->min_args, found->min_args == 1 ? " argument" : " arguments")
-          : found->max_args == 255 ? absl::StrCat("at least ", found->min_args, " argument")
+          : found->max_args == kManyArguments
+              ? absl::StrCat(found->min_args, " to ", kManyArguments, " arguments")
                                    : absl::StrCat(found->min_args, " or ", found->max_args, " arguments");
       fail(codes::kArity, at(t), absl::StrCat("function '", str(fn), "' takes ", count));
     }

@@ -269,6 +269,17 @@ class DinTest(ScratchDirTest):
                                (3, 6, -1), (3, 6, -2),
                                (13, 6, -2), (13, 16, -2), (13, 26, -2), (13, 26, 3),
                                (23, 26, 3), (23, 36, 3), (23, 46, 3)])
+        # A REPEAT inside the section it repeats does not start it again; a jump or a loop in
+        # the section's last block wins over the repetition and closes the sections it leaves.
+        proc, moves = self.run_din("MA1: REPEATB MA1 P=3\nAA: G0 X1\nREPEAT AA BB P=2\nBB: G0 X0\nM30\n")
+        self.assertEqual(proc.returncode, 0, proc.stderr)
+        self.assertEqual([m["to"]["X"] for m in moves], [1.0, 0.0, 1.0, 0.0])  # X1, then AA..BB twice
+        vars_ = self.variables("DEF INT K\nR1=0\nST: R1=R1+1\nENDS: IF R1>=2 GOTOF OUT\n"
+                               "REPEAT ST ENDS P=5\nR7=1\nOUT: R8=1\n"
+                               "SEC: R2=R2+1\nFOR K=1 TO 2\nR3=R3+1\nFEND: ENDFOR\nREPEAT SEC FEND P=1\nM30\n")
+        self.assertEqual((vars_["R1"], vars_["R8"]), (2.0, 1.0))
+        self.assertNotIn("R7", vars_)  # jumped over
+        self.assertEqual((vars_["R2"], vars_["R3"]), (2.0, 4.0))  # the FOR loop runs whole each time
         self.assertAlarm("G0 X1\nREPEAT NOWHERE P=2\nM30\n", "14080", 2, 1, "label NOWHERE")
         self.assertAlarm("MA: G0 X1\nREPEAT MA P=0\nM30\n", "NCC2406", 2, 13, "1 to 9999 times")
         self.assertAlarm("MA: G0 X1\nREPEAT MA Q=2\nM30\n", "NCC1006", 2, 11, "P=n")
@@ -361,6 +372,14 @@ class DinTest(ScratchDirTest):
                           ("POS.spf", 10, 10, 10), ("p.mpf", 20, 10, 10), ("POS.spf", 20, 10, 9),
                           ("POS.spf", 20, 10, 10), ("p.mpf", 30, 10, 10)])
         self.assertAlarm("MCALL CYCLE81(10, 0, 2, -5)\nM30\n", "NCC2010", 1, 7, "Siemens cycle")
+        # MCALL L10 is modal too; an MCALL given in a subprogram ends with it.
+        self.write("L10.spf", "G91 G0 Z-1\nZ1\nG90\nM17\n")
+        self.write("SETM.spf", "MCALL POS(3)\nG0 X1\nRET\n")
+        proc, moves = self.run_din("G0 X0 Y0 Z10\nMCALL L10\nX5\nMCALL\nSETM\nX7\nM30\n")
+        self.assertEqual(proc.returncode, 0, proc.stderr)
+        self.assertEqual([(m["file"], m["to"]["X"], m["to"]["Z"]) for m in moves],
+                         [("p.mpf", 0, 10), ("p.mpf", 5, 10), ("L10.spf", 5, 9), ("L10.spf", 5, 10),
+                          ("SETM.spf", 1, 10), ("POS.spf", 1, 7), ("POS.spf", 1, 10), ("p.mpf", 7, 10)])
         self.assertAlarm("MCALL NOPE\nG0 X1\nM30\n", "12550", 1, 1, "NOPE")
 
     def test_m17_ends_a_main_program(self):
@@ -573,6 +592,12 @@ class DinTest(ScratchDirTest):
             'M30\n')
         self.assertEqual(proc.returncode, 0, proc.stderr)
         self.assertEqual([m["to"]["X"] for m in moves], [4.0])
+        # A CHAR given to a STRING parameter is its character; CASE compares a CHAR as == does.
+        self.write("LEN.spf", "PROC LEN(STRING[4] T)\nG0 X=STRLEN(T << T)\nRET\n")
+        proc, moves = self.run_din('DEF CHAR C="B"\nLEN(C)\nCASE (C) OF 66 GOTOF OK DEFAULT GOTOF BAD\n'
+                                   'BAD: SETAL(61000)\nOK: CASE (C) OF "B" GOTOF OK2\nSETAL(61001)\nOK2: M30\n')
+        self.assertEqual(proc.returncode, 0, proc.stderr)
+        self.assertEqual([m["to"]["X"] for m in moves], [2.0])
 
     def test_string_alarms(self):
         self.assertAlarm('DEF STRING[4] S="ABCDE"\nM30\n', "NCC2404", 1, 15, "STRING[4]")
@@ -582,6 +607,8 @@ class DinTest(ScratchDirTest):
         self.assertAlarm('DEF STRING[9] S="AB"\nR1=STRLEN(S[5])\nM30\n', "17020", 2, None, "character 5")
         self.assertAlarm('DEF STRING[9] S\nS=SPRINT("%D %D", 1)\nM30\n', "NCC2403", 2, 3, "more % than values")
         self.assertAlarm('DEF CHAR C="AB"\nM30\n', "12150", 1, 10, "one character")
+        self.assertAlarm('DEF CHAR C\nC=300\nM30\n', "NCC2404", 2, 1, "0 to 255")
+        self.assertAlarm('DEF STRING[4] S="5"\nCASE (S) OF 5 GOTOF L\nL: M30\n', "12150", 2, 13, "CASE compares")
         self.assertAlarm('DEF STRING S\nM30\n', "NCC1006", 1, 5, "STRING[n]")
         self.assertAlarm('DEF STRING[201] S\nM30\n', "NCC1015", 1, 12, "1 to 200")
         self.assertAlarm('R1=NUMBER("12A")\nM30\n', "12150", 1, 11, "not a number")

@@ -171,7 +171,7 @@ TEST(DinParser, BadTextGetsOneDiagnosticAtItsColumn) {
       {"X=FOO(1)", "p.mpf:1:3: error[NCC1090]: DIN function 'FOO' is not supported yet"},
       {"X=STRLEN(1,2)", "p.mpf:1:3: error[NCC1011]: function 'STRLEN' takes 1 argument"},
       {"X=SUBSTR(1)", "p.mpf:1:3: error[NCC1011]: function 'SUBSTR' takes 2 or 3 arguments"},
-      {"X=SPRINT()", "p.mpf:1:3: error[NCC1011]: function 'SPRINT' takes at least 1 argument"},
+      {"X=SPRINT()", "p.mpf:1:3: error[NCC1011]: function 'SPRINT' takes 1 to 65535 arguments"},
       {"DEF STRING S", "p.mpf:1:5: error[NCC1006]: STRING takes its length: STRING[n]"},
       {"DEF STRING[0] S", "p.mpf:1:12: error[NCC1015]: STRING[0]: a string holds 1 to 200"},
       {"PROC A SAVE", "p.mpf:1:8: error[NCC1090]: DIN 'PROC ... SAVE'"},
