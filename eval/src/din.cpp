@@ -84,9 +84,7 @@ const ast::Block* Evaluator::Impl::evaluateDin(const ast::Block& block, const Pr
                    [](const Item& a, const Item& b) { return a.column < b.column; });
 
   NamedVariables& named = variables.named();
-  ExpressionContext context{rules, variables};
-  context.adp_scale = options.adp_scale;
-  context.din = true;
+  const ExpressionContext context = expressionContext(true);
   Failure failure;
   const auto failed = [&] {
     fail(failure);
@@ -636,9 +634,7 @@ std::optional<VariableRef> Evaluator::Impl::variableRef(const ast::Expr& e) {
     return ref;
   }
   if (e.kind == ast::Expr::Kind::Name && e.text) {
-    ExpressionContext context{rules, variables};
-    context.din = true;
-    std::optional<std::vector<int64_t>> indices = indicesOf(e.args, context, failure);
+    std::optional<std::vector<int64_t>> indices = indicesOf(e.args, expressionContext(true), failure);
     if (!indices) {
       fail(failure);
       return std::nullopt;
@@ -657,11 +653,8 @@ std::optional<Datum> Evaluator::Impl::datum(const ast::Expr& e, ast::DataType ty
     if (!v) return std::nullopt;
     return Datum(*v);
   }
-  ExpressionContext context{rules, variables};
-  context.adp_scale = options.adp_scale;
-  context.din = true;
   Failure failure;
-  std::optional<std::string> t = evaluateText(e, context, failure);
+  std::optional<std::string> t = evaluateText(e, expressionContext(true), failure);
   if (!t) {
     fail(failure);
     return std::nullopt;

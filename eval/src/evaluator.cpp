@@ -68,13 +68,17 @@ void Evaluator::Impl::fail(EvalError error, SourceLocation loc, std::string mess
   fail(Failure{error, loc, std::move(message), 0});
 }
 
-std::optional<Value> Evaluator::Impl::value(const ast::Expr& e, int enclosing_brackets, bool din) {
-  Failure failure;
+ExpressionContext Evaluator::Impl::expressionContext(bool din, int enclosing_brackets) {
   ExpressionContext context{rules, variables};
   context.enclosing_brackets = enclosing_brackets;
   context.adp_scale = options.adp_scale;
   context.din = din;
-  std::optional<Value> v = evaluate(e, context, failure);
+  return context;
+}
+
+std::optional<Value> Evaluator::Impl::value(const ast::Expr& e, int enclosing_brackets, bool din) {
+  Failure failure;
+  std::optional<Value> v = evaluate(e, expressionContext(din, enclosing_brackets), failure);
   if (!v) fail(failure);
   return v;
 }

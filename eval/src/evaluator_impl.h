@@ -162,6 +162,9 @@ struct Evaluator::Impl {
   // `enclosing_brackets`: 1 for the bracketed condition of IF / WHILE (the parser keeps its
   // contents only).
   std::optional<Value> value(const ast::Expr& e, int enclosing_brackets = 0, bool din = false);
+  // What an expression of this program is evaluated with: the rules, the variables, ADP's
+  // scale, the language; `enclosing_brackets` as ExpressionContext says.
+  ExpressionContext expressionContext(bool din, int enclosing_brackets = 0);
   // A word's value into `out`: as written, or computed and checked for its address (dropped
   // when vacant); false after failing.
   bool wordValue(const ast::Word& w, ast::Block& out, bool din = false);
